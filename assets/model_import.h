@@ -1,0 +1,39 @@
+#pragma once
+// Importers for model files (.gltf, .glb, .obj). An importer appends the file's meshes,
+// materials and textures to a Scene and returns *placements*: which mesh goes where, in the
+// file's own space. The caller turns placements into instances under an object transform, so
+// a file referenced twice is imported once and its meshes are shared.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "render/scene/scene.h"
+#include "render/util/progress.h"
+
+namespace pt {
+
+struct Placement {
+    std::string name;                 // node name (glTF) or object/group name (OBJ)
+    uint32_t mesh = 0;                // Scene::meshes index
+    Affine3 fileToNode;               // node-to-file-root transform (glTF node hierarchy)
+    std::vector<uint32_t> materials;  // Scene::materials index per mesh slot
+};
+
+struct ImportedFile {
+    std::vector<Placement> placements;
+    std::optional<Camera> camera;     // the file's first camera, in file space
+};
+
+// Throws InputError naming the file and the element for malformed or unsupported-fatal input;
+// appends non-fatal warnings (each naming file, mesh, primitive) to scene.warnings.
+// `object` is stored in the materials and textures it adds (their `object` field).
+ImportedFile importGltf(const std::string& path, int32_t object, Scene& scene,
+                        const ProgressFn& progress = {});
+ImportedFile importObj(const std::string& path, int32_t object, Scene& scene,
+                       const ProgressFn& progress = {});
+
+// Picks the importer by extension (case-insensitive); throws InputError for others.
+ImportedFile importModelFile(const std::string& path, int32_t object, Scene& scene,
+                             const ProgressFn& progress = {});
+
+}  // namespace pt

@@ -1,0 +1,25 @@
+#pragma once
+// Scene JSON (schema in scenes/README.md): read and write. Reading resolves paths relative
+// to the JSON file and imports the model files it references; writing stores paths relative
+// to the output file, leaves out every value equal to its default, and replaces the file
+// atomically.
+#include <string>
+
+#include "render/scene/scene.h"
+#include "render/util/progress.h"
+
+namespace pt {
+
+constexpr int kSceneJsonVersion = 1;
+
+// Throws InputError naming the file and the JSON path of the bad element, e.g.
+// "scene.json: objects[3].transform.scale: expected 3 numbers".
+Scene readSceneJson(const std::string& path, const ProgressFn& progress = {});
+
+// The scene as JSON text, paths relative to `outputPath`'s folder.
+std::string sceneToJson(const Scene& scene, const std::string& outputPath);
+
+// Throws InputError on failure; the previous file at `path` survives any failure.
+void writeSceneJson(const Scene& scene, const std::string& path);
+
+}  // namespace pt

@@ -1,0 +1,57 @@
+#pragma once
+// Material: the glTF 2.0 metallic-roughness model and the KHR_materials_* extensions the
+// renderer knows, as one plain struct shared by host and device. The defaults are those an
+// artist expects from a fresh material (dielectric, roughness 0.5), not glTF's (metallic 1,
+// roughness 1): the glTF importer writes glTF's defaults explicitly. Scene JSON leaves out
+// every field equal to these defaults.
+#include <cstdint>
+
+#include "render/math/vec.h"
+
+namespace pt {
+
+// A texture slot: index into RenderScene::textures (-1: none) and KHR_texture_transform.
+struct TextureRef {
+    int32_t texture = -1;
+    int32_t texCoord = 0;  // UV set; only set 0 is imported today
+    Vec2 offset{0.0f, 0.0f};
+    Vec2 scale{1.0f, 1.0f};
+    float rotation = 0.0f;  // radians, counter-clockwise in UV space
+
+    PT_HD bool present() const { return texture >= 0; }
+};
+
+enum class AlphaMode : uint32_t { Opaque = 0, Mask = 1, Blend = 2 };
+
+struct Material {
+    Vec3 baseColor{0.8f, 0.8f, 0.8f};  // linear Rec.709
+    float alpha = 1.0f;
+    float metallic = 0.0f;
+    float roughness = 0.5f;
+    Vec3 emission{0.0f, 0.0f, 0.0f};   // emissiveFactor
+    float emissionStrength = 1.0f;     // KHR_materials_emissive_strength; radiance = emission * strength
+    float ior = 1.5f;                  // KHR_materials_ior
+    float transmission = 0.0f;         // KHR_materials_transmission
+    float specular = 1.0f;             // KHR_materials_specular: specularFactor
+    Vec3 specularColor{1.0f, 1.0f, 1.0f};
+    float clearcoat = 0.0f;            // KHR_materials_clearcoat
+    float clearcoatRoughness = 0.0f;
+    float thickness = 0.0f;            // KHR_materials_volume: thicknessFactor
+    Vec3 attenuationColor{1.0f, 1.0f, 1.0f};
+    float attenuationDistance = kInf;  // world units; infinity means no absorption
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;
+    float normalScale = 1.0f;
+    uint32_t doubleSided = 1;          // back faces shade as front faces with a flipped normal
+
+    TextureRef baseColorTexture;       // sRGB
+    TextureRef metallicRoughnessTexture;  // linear: G = roughness, B = metallic
+    TextureRef normalTexture;          // linear, tangent space
+    TextureRef emissiveTexture;        // sRGB
+    TextureRef transmissionTexture;    // linear, R
+
+    PT_HD Vec3 emittedRadiance() const { return emission * emissionStrength; }
+    PT_HD bool isEmissive() const { return maxComponent(emission) * emissionStrength > 0.0f; }
+};
+
+}  // namespace pt

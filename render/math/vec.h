@@ -1,0 +1,100 @@
+#pragma once
+// Small float vectors for per-ray code. Deliberately not GLM: these are the only vector
+// types the kernels see, so the CPU and CUDA builds round the same way.
+#include <cmath>
+#include <cstdint>
+
+#include "render/math/hd.h"
+
+namespace pt {
+
+struct Vec2 {
+    float x = 0, y = 0;
+    PT_HD constexpr Vec2() = default;
+    PT_HD constexpr Vec2(float x_, float y_) : x(x_), y(y_) {}
+    PT_HD float operator[](int i) const { return i == 0 ? x : y; }
+};
+
+struct Vec3 {
+    float x = 0, y = 0, z = 0;
+    PT_HD constexpr Vec3() = default;
+    PT_HD constexpr explicit Vec3(float s) : x(s), y(s), z(s) {}
+    PT_HD constexpr Vec3(float x_, float y_, float z_) : x(x_), y(y_), z(z_) {}
+    PT_HD float operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
+    PT_HD float& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
+};
+
+struct Vec4 {
+    float x = 0, y = 0, z = 0, w = 0;
+    PT_HD constexpr Vec4() = default;
+    PT_HD constexpr Vec4(float x_, float y_, float z_, float w_) : x(x_), y(y_), z(z_), w(w_) {}
+    PT_HD Vec3 xyz() const { return {x, y, z}; }
+};
+
+PT_HD Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
+PT_HD Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
+PT_HD Vec2 operator*(Vec2 a, float s) { return {a.x * s, a.y * s}; }
+PT_HD Vec2 operator*(float s, Vec2 a) { return {a.x * s, a.y * s}; }
+
+PT_HD Vec3 operator+(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+PT_HD Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+PT_HD Vec3 operator-(Vec3 a) { return {-a.x, -a.y, -a.z}; }
+PT_HD Vec3 operator*(Vec3 a, Vec3 b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
+PT_HD Vec3 operator/(Vec3 a, Vec3 b) { return {a.x / b.x, a.y / b.y, a.z / b.z}; }
+PT_HD Vec3 operator*(Vec3 a, float s) { return {a.x * s, a.y * s, a.z * s}; }
+PT_HD Vec3 operator*(float s, Vec3 a) { return {a.x * s, a.y * s, a.z * s}; }
+PT_HD Vec3 operator/(Vec3 a, float s) { return a * (1.0f / s); }
+PT_HD Vec3& operator+=(Vec3& a, Vec3 b) { a = a + b; return a; }
+PT_HD Vec3& operator-=(Vec3& a, Vec3 b) { a = a - b; return a; }
+PT_HD Vec3& operator*=(Vec3& a, Vec3 b) { a = a * b; return a; }
+PT_HD Vec3& operator*=(Vec3& a, float s) { a = a * s; return a; }
+PT_HD bool operator==(Vec3 a, Vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+PT_HD bool operator!=(Vec3 a, Vec3 b) { return !(a == b); }
+
+PT_HD float dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+PT_HD Vec3 cross(Vec3 a, Vec3 b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+PT_HD float lengthSquared(Vec3 a) { return dot(a, a); }
+PT_HD float length(Vec3 a) { return sqrtf(dot(a, a)); }
+PT_HD Vec3 normalize(Vec3 a) { return a * (1.0f / length(a)); }
+PT_HD Vec3 vmin(Vec3 a, Vec3 b) { return {fminf(a.x, b.x), fminf(a.y, b.y), fminf(a.z, b.z)}; }
+PT_HD Vec3 vmax(Vec3 a, Vec3 b) { return {fmaxf(a.x, b.x), fmaxf(a.y, b.y), fmaxf(a.z, b.z)}; }
+PT_HD Vec3 vabs(Vec3 a) { return {fabsf(a.x), fabsf(a.y), fabsf(a.z)}; }
+PT_HD float maxComponent(Vec3 a) { return fmaxf(a.x, fmaxf(a.y, a.z)); }
+PT_HD float minComponent(Vec3 a) { return fminf(a.x, fminf(a.y, a.z)); }
+PT_HD int maxDimension(Vec3 a) { return a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2); }
+PT_HD float luminance(Vec3 rgb) { return 0.2126f * rgb.x + 0.7152f * rgb.y + 0.0722f * rgb.z; }
+PT_HD bool isFinite(Vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+PT_HD bool isBlack(Vec3 a) { return a.x == 0.0f && a.y == 0.0f && a.z == 0.0f; }
+PT_HD Vec3 lerp(Vec3 a, Vec3 b, float t) { return a * (1.0f - t) + b * t; }
+PT_HD float clampf(float v, float lo, float hi) { return fminf(fmaxf(v, lo), hi); }
+
+// Reflects `v` (pointing away from the surface) about `n`.
+PT_HD Vec3 reflect(Vec3 v, Vec3 n) { return 2.0f * dot(v, n) * n - v; }
+
+// The bit pattern of a float, and back; used to nudge floats by whole ULPs.
+PT_HD int32_t floatAsInt(float f) {
+#if defined(__CUDA_ARCH__)
+    return __float_as_int(f);
+#else
+    int32_t i;
+    __builtin_memcpy(&i, &f, sizeof(i));
+    return i;
+#endif
+}
+PT_HD float intAsFloat(int32_t i) {
+#if defined(__CUDA_ARCH__)
+    return __int_as_float(i);
+#else
+    float f;
+    __builtin_memcpy(&f, &i, sizeof(f));
+    return f;
+#endif
+}
+
+constexpr float kPi = 3.14159265358979323846f;
+constexpr float kInvPi = 0.31830988618379067154f;
+constexpr float kInf = __builtin_huge_valf();
+
+}  // namespace pt

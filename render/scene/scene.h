@@ -1,0 +1,138 @@
+#pragma once
+// Scene: the editable host form of everything that is rendered (STYLE.md rule 5). It owns
+// names, ids and std containers; compileRenderScene() flattens it for the backends. Nothing
+// here reads files: the assets library fills it.
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "render/materials/material.h"
+#include "render/math/affine.h"
+#include "render/math/vec.h"
+
+namespace pt {
+
+enum class GeometryKind : uint32_t { Triangles = 0, Spheres = 1 };
+
+// One BLAS worth of geometry, in object space. A mesh is shared by every instance that
+// references it. Materials are not stored here: each primitive names a *slot*, and each
+// instance maps slots to scene materials, so one mesh can be instanced with other materials.
+struct Mesh {
+    std::string name;
+    GeometryKind kind = GeometryKind::Triangles;
+    std::vector<Vec3> positions;
+    std::vector<Vec3> normals;          // empty, or one unit normal per position
+    std::vector<Vec2> uvs;              // empty, or one per position (glTF TEXCOORD_0)
+    std::vector<uint32_t> indices;      // three per triangle, each < positions.size()
+    std::vector<Vec4> spheres;          // Spheres: xyz = center, w = radius (> 0)
+    std::vector<uint32_t> primitiveSlots;  // empty (all slot 0), or one per primitive
+    uint32_t slotCount = 1;
+
+    uint32_t primitiveCount() const {
+        return kind == GeometryKind::Spheres ? uint32_t(spheres.size()) : uint32_t(indices.size() / 3);
+    }
+};
+
+struct Instance {
+    std::string name;
+    uint32_t mesh = 0;
+    Affine3 objectToWorld;
+    std::vector<uint32_t> materials;    // one Scene::materials index per mesh slot
+    int32_t object = -1;                // the SceneObject that created it (-1: none)
+    bool visible = true;
+};
+
+struct NamedMaterial {
+    std::string name;
+    Material params;
+    int32_t object = -1;                // -1: defined by the scene JSON; else imported by that object
+};
+
+enum class WrapMode : uint32_t { Repeat = 0, ClampToEdge = 1, MirroredRepeat = 2 };
+enum class TexelFormat : uint32_t { RGBA8 = 0, RGBA32F = 1 };
+
+// An image as decoded from its file. Whether its texels are sRGB-encoded is decided by the
+// slot that samples it (base color and emission are; normal and metallic-roughness are not).
+struct Texture {
+    std::string name;
+    std::string sourcePath;             // file it came from ("" when embedded), for messages
+    uint32_t width = 0, height = 0;
+    TexelFormat format = TexelFormat::RGBA8;
+    std::vector<uint8_t> texels8;       // RGBA8: width * height * 4
+    std::vector<float> texelsF;         // RGBA32F: width * height * 4
+    WrapMode wrapS = WrapMode::Repeat, wrapT = WrapMode::Repeat;
+    bool nearest = false;               // sampler magFilter NEAREST; else bilinear
+    int32_t object = -1;                // as NamedMaterial::object
+};
+
+struct Camera {
+    Vec3 position{0.0f, 0.0f, 5.0f};
+    Vec3 lookAt{0.0f, 0.0f, 0.0f};
+    Vec3 up{0.0f, 1.0f, 0.0f};
+    float verticalFovDegrees = 45.0f;
+    float apertureRadius = 0.0f;        // thin lens radius in world units; 0 is a pinhole
+    float focusDistance = 0.0f;         // world units along the view direction; <= 0: the look-at distance
+};
+
+struct RenderSettings {
+    uint32_t width = 512, height = 512;
+    uint32_t maxDepth = 8;              // path vertices after the camera
+    uint32_t spp = 64;
+    uint32_t seed = 0;
+};
+
+struct Environment {
+    Vec3 color{0.0f, 0.0f, 0.0f};       // constant radiance, used when there is no image
+    std::string imagePath;              // equirectangular HDR (absolute once loaded)
+    int32_t texture = -1;               // Scene::textures index of the decoded image
+    float intensity = 1.0f;
+    float rotationDegrees = 0.0f;       // about +Y
+};
+
+// Object-to-parent transform as written in scene JSON: either TRS (Euler XYZ in degrees,
+// applied scale, then rotate X, Y, Z, then translate) or a full column-major 4x4 matrix.
+struct ObjectTransform {
+    Vec3 translate{0.0f, 0.0f, 0.0f};
+    Vec3 rotateDegrees{0.0f, 0.0f, 0.0f};
+    Vec3 scale{1.0f, 1.0f, 1.0f};
+    bool useMatrix = false;
+    float matrix[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+
+    Affine3 toAffine() const;
+};
+
+enum class ObjectKind : uint32_t { File = 0, Sphere = 1, Box = 2, Quad = 3 };
+
+// A scene JSON "objects" entry, kept so that saving writes what was loaded. Built-in shapes
+// are unit sized: sphere of radius 1 at the origin, box from -1 to 1, quad from -1 to 1 in
+// XZ facing +Y (a rectangular area light when its material emits).
+struct SceneObject {
+    std::string name;
+    ObjectKind kind = ObjectKind::File;
+    std::string path;                   // File: absolute path of the .gltf/.glb/.obj
+    ObjectTransform transform;
+    std::string material;               // shapes: a Scene material name
+    std::map<std::string, std::string> materialOverrides;  // File: file material -> scene material
+};
+
+struct Scene {
+    std::string sourcePath;             // file it was loaded from (absolute), "" if built in code
+    std::vector<SceneObject> objects;
+    std::vector<Mesh> meshes;
+    std::vector<Instance> instances;
+    std::vector<NamedMaterial> materials;
+    std::vector<Texture> textures;
+    Camera camera;
+    bool cameraFromFile = false;        // the camera came from the JSON or a glTF camera
+    RenderSettings render;
+    Environment environment;
+    std::vector<std::string> warnings;  // non-fatal import messages, each naming file and element
+
+    int32_t findMaterial(const std::string& name) const;
+    // Bounds of all visible instances in world space; empty scenes give a unit box.
+    void worldBounds(Vec3& lo, Vec3& hi) const;
+    uint64_t triangleCount() const;     // over instances (what is traced)
+};
+
+}  // namespace pt

@@ -1,0 +1,41 @@
+#include "support/test_paths.h"
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+namespace pt::test {
+
+std::string sharedAssetsDir() {
+    const char* env = std::getenv("PT_SHARED_ASSETS");
+    return env && *env ? env : PT_DEFAULT_SHARED_ASSETS;
+}
+
+bool sharedAssetExists(const std::string& relativePath) {
+    return std::filesystem::exists(sharedAsset(relativePath));
+}
+
+std::string sharedAsset(const std::string& relativePath) {
+    return sharedAssetsDir() + "/" + relativePath;
+}
+
+std::string projectPath(const std::string& relativePath) {
+    return std::string(PT_SOURCE_DIR) + "/" + relativePath;
+}
+
+std::string testDataPath(const std::string& relativePath) {
+    return std::string(PT_TEST_DATA_DIR) + "/" + relativePath;
+}
+
+std::string tempDir() {
+    static const std::string dir = [] {
+        auto base = std::filesystem::temp_directory_path() /
+                    ("pt-tests-" + std::to_string(::getpid()));
+        std::filesystem::create_directories(base);
+        return base.string();
+    }();
+    return dir;
+}
+
+}  // namespace pt::test
