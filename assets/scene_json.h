@@ -12,6 +12,10 @@ namespace pt {
 
 constexpr int kSceneJsonVersion = 1;
 
+// The material a shape gets when its JSON names none; added to the scene's materials once,
+// after the JSON-defined ones, unless the JSON defines a material of this name itself.
+constexpr const char* kDefaultMaterialName = "default";
+
 // Throws InputError naming the file and the JSON path of the bad element, e.g.
 // "scene.json: objects[3].transform.scale: expected 3 numbers".
 Scene readSceneJson(const std::string& path, const ProgressFn& progress = {});

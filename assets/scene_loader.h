@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "assets/model_import.h"
 #include "render/scene/scene.h"
 #include "render/util/progress.h"
 
@@ -29,5 +30,22 @@ void instantiateImportedFile(const ImportedFile& file, int32_t objectIndex, Scen
 
 // A camera looking at the scene's bounds from the front (+Z), for scenes that have none.
 Camera frameBounds(const Scene& scene);
+
+// True for the extensions importModelFile reads (.gltf, .glb, .obj; any case).
+bool isModelFile(const std::string& path);
+
+// A file's camera (in file space) placed in the world under its object's transform; focus
+// distance and aperture scale with the transform along the view direction.
+Camera cameraToWorld(const Camera& camera, const Affine3& objectToWorld);
+
+// A material defined by the scene itself (NamedMaterial::object == -1), by name: the
+// materials scene JSON objects may name. -1 when there is none.
+int32_t findSceneMaterial(const Scene& scene, const std::string& name);
+
+// "sphere", "box", "quad" (the scene JSON names); "" for File.
+const char* shapeKindName(ObjectKind kind);
+
+// The object's name, else its file's stem or its shape's name; instances are named after it.
+std::string objectDisplayName(const SceneObject& object);
 
 }  // namespace pt

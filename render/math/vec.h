@@ -65,7 +65,21 @@ PT_HD float maxComponent(Vec3 a) { return fmaxf(a.x, fmaxf(a.y, a.z)); }
 PT_HD float minComponent(Vec3 a) { return fminf(a.x, fminf(a.y, a.z)); }
 PT_HD int maxDimension(Vec3 a) { return a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2); }
 PT_HD float luminance(Vec3 rgb) { return 0.2126f * rgb.x + 0.7152f * rgb.y + 0.0722f * rgb.z; }
-PT_HD bool isFinite(Vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+PT_HD bool isFinite(float a) {
+#if defined(__CUDA_ARCH__)
+    return isfinite(a);
+#else
+    return std::isfinite(a);
+#endif
+}
+PT_HD bool isInfinite(float a) {
+#if defined(__CUDA_ARCH__)
+    return isinf(a);
+#else
+    return std::isinf(a);
+#endif
+}
+PT_HD bool isFinite(Vec3 a) { return isFinite(a.x) && isFinite(a.y) && isFinite(a.z); }
 PT_HD bool isBlack(Vec3 a) { return a.x == 0.0f && a.y == 0.0f && a.z == 0.0f; }
 PT_HD Vec3 lerp(Vec3 a, Vec3 b, float t) { return a * (1.0f - t) + b * t; }
 PT_HD float clampf(float v, float lo, float hi) { return fminf(fmaxf(v, lo), hi); }

@@ -1,0 +1,58 @@
+// pt-render info: what a scene holds and what it costs to load and build.
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "cli_options.h"
+#include "commands.h"
+#include "render/scene/compile_scene.h"
+#include "scene_input.h"
+
+namespace pt::cli {
+
+namespace {
+
+nlohmann::ordered_json describe(const Scene& scene, const CompiledScene& compiled, double loadSeconds) {
+    Vec3 lo, hi;
+    scene.worldBounds(lo, hi);
+    const CompileStats& s = compiled.stats;
+    nlohmann::ordered_json j;
+    j["scene"] = scene.sourcePath;
+    j["triangles"] = s.instancedTriangles;
+    j["unique_triangles"] = s.meshTriangles;
+    j["spheres"] = s.spheres;
+    j["meshes"] = scene.meshes.size();
+    j["instances"] = s.instanceCount;
+    j["materials"] = scene.materials.size();
+    j["textures"] = scene.textures.size();
+    j["emissive_triangles"] = s.emitterCount;
+    j["environment"] = scene.environment.texture >= 0 ? "image" : "color";
+    j["bounds"] = {{"min", {lo.x, lo.y, lo.z}}, {"max", {hi.x, hi.y, hi.z}}};
+    j["load_seconds"] = loadSeconds;
+    j["blas_build_seconds"] = s.blasSeconds;
+    j["tlas_build_seconds"] = s.tlasSeconds;
+    j["blas_nodes"] = s.blasNodes;
+    j["warnings"] = scene.warnings.size();
+    return j;
+}
+
+}  // namespace
+
+int runInfo(const std::vector<std::string>& args) {
+    const Options o(args, {}, {"--json", "--quiet"});
+    if (o.positional().size() != 1) throw UsageError("expected one SCENE argument");
+    ProgressBar bar(!o.has("--quiet") && !o.has("--json"));
+    const SceneInput input = loadSceneInput(o.positional()[0], bar);
+    const CompiledScene compiled = compileRenderScene(input.scene, {}, bar.callback());
+    bar.finish();
+    const nlohmann::ordered_json j = describe(input.scene, compiled, input.loadSeconds);
+    if (o.has("--json")) {
+        std::printf("%s\n", j.dump(2).c_str());
+        return 0;
+    }
+    for (const auto& [key, value] : j.items()) {
+        std::printf("%-20s %s\n", key.c_str(), value.is_string() ? value.get<std::string>().c_str() : value.dump().c_str());
+    }
+    return 0;
+}
+
+}  // namespace pt::cli

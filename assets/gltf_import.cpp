@@ -1,0 +1,115 @@
+// importGltf: the stages of a glTF import in order. Reading and checking the file lives in
+// gltf_document / gltf_json_check, accessors in gltf_accessors, geometry in gltf_primitive /
+// gltf_mesh, materials and textures in gltf_materials / gltf_textures, the node hierarchy
+// and camera in gltf_nodes.
+#include <cmath>
+#include <set>
+
+#include "assets/gltf_document.h"
+#include "assets/gltf_materials.h"
+#include "assets/gltf_mesh.h"
+#include "assets/gltf_nodes.h"
+#include "assets/model_import.h"
+#include "assets/scene_append_guard.h"
+
+namespace pt {
+namespace {
+
+// Extensions whose data this importer reads (KHR_mesh_quantization: the accessor reader
+// converts every component type).
+const std::set<std::string> kSupportedExtensions = {
+    "KHR_materials_emissive_strength", "KHR_materials_ior",      "KHR_materials_transmission",
+    "KHR_materials_volume",            "KHR_materials_clearcoat", "KHR_materials_specular",
+    "KHR_texture_transform",           "KHR_mesh_quantization",
+};
+
+// One warning per unsupported extension the file declares, and per feature it uses that is
+// ignored; loading goes on, required or not, so the user sees what can be shown.
+void warnAboutUnsupported(const GltfContext& ctx) {
+    const auto& model = ctx.model();
+    std::set<std::string> reported;
+    auto report = [&](const std::string& name, bool required) {
+        if (kSupportedExtensions.count(name) || !reported.insert(name).second) return;
+        std::string what = (required ? "required extension " : "extension ") + name +
+                           " is not supported";
+        if (name == "KHR_lights_punctual") what += "; its lights are not imported";
+        else what += required ? "; loading without it, parts may be missing" : "; ignored";
+        ctx.warn("", what);
+    };
+    for (const std::string& name : model.extensionsRequired) report(name, true);
+    for (const std::string& name : model.extensionsUsed) report(name, false);
+    if (!model.skins.empty() || !model.animations.empty()) {
+        ctx.warn("", "skins and animations are not applied; meshes are shown in their bind pose");
+    }
+    for (const auto& mesh : model.meshes) {
+        for (const auto& primitive : mesh.primitives) {
+            if (!primitive.targets.empty()) {
+                ctx.warn("", "morph targets are not applied; meshes are shown without them");
+                return;
+            }
+        }
+    }
+}
+
+bool isFiniteTransform(const Affine3& m) {
+    for (const Vec4& row : m.rows) {
+        if (!std::isfinite(row.x) || !std::isfinite(row.y) || !std::isfinite(row.z) ||
+            !std::isfinite(row.w)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+// The placement of `visit`'s mesh, or nullopt (with a warning) when it cannot be drawn.
+std::optional<Placement> placeNode(GltfContext& ctx, const GltfNodeVisit& visit,
+                                   const ImportedMesh& mesh) {
+    const auto& node = ctx.model().nodes[size_t(visit.node)];
+    const std::string element = gltfPath("nodes", size_t(visit.node));
+    if (!isFiniteTransform(visit.world)) ctx.fail(element, "world transform is not finite");
+    if (visit.world.determinant() == 0.0f) {
+        // A zero scale hides a node (animations do this); it has no inverse to trace with.
+        ctx.warn(element, "transform has zero scale; not placed");
+        return std::nullopt;
+    }
+    Placement placement;
+    placement.name = node.name.empty() ? element : node.name;
+    placement.mesh = mesh.sceneMesh;
+    placement.fileToNode = visit.world;  // a negative determinant flips winding downstream
+    for (int material : mesh.slotMaterials) {
+        placement.materials.push_back(importGltfMaterial(ctx, material, element + ".mesh"));
+    }
+    return placement;
+}
+
+}  // namespace
+
+ImportedFile importGltf(const std::string& path, int32_t object, Scene& scene,
+                        const ProgressFn& progress) {
+    reportProgress(progress, "load glTF", 0.0);
+    SceneAppendGuard guard(scene);
+    const GltfDocument doc = loadGltfDocument(path);
+    GltfContext ctx{doc, scene, object, {}, {}, {}, {}, {}};
+    warnAboutUnsupported(ctx);
+    const std::vector<GltfNodeVisit> visits = walkGltfScene(ctx);
+
+    ImportedFile file;
+    file.camera = gltfCamera(ctx, visits);
+    size_t meshNodes = 0, done = 0;
+    for (const GltfNodeVisit& visit : visits) meshNodes += doc.model.nodes[size_t(visit.node)].mesh >= 0;
+    for (const GltfNodeVisit& visit : visits) {
+        const int mesh = doc.model.nodes[size_t(visit.node)].mesh;
+        if (mesh < 0) continue;
+        const auto& imported = importGltfMesh(ctx, mesh, gltfPath("nodes", size_t(visit.node)));
+        reportProgress(progress, "load glTF", double(++done) / double(meshNodes));
+        if (!imported) continue;
+        if (auto placement = placeNode(ctx, visit, *imported)) {
+            file.placements.push_back(std::move(*placement));
+        }
+    }
+    reportProgress(progress, "load glTF", 1.0);
+    guard.commit();
+    return file;
+}
+
+}  // namespace pt

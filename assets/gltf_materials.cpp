@@ -1,0 +1,142 @@
+#include "assets/gltf_materials.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "assets/gltf_textures.h"
+#include "assets/gltf_values.h"
+
+namespace pt {
+namespace {
+
+// glTF 2.0's defaults for everything a material may leave out (Material's own defaults are
+// an artist's, see material.h).
+Material gltfDefaultMaterial() {
+    Material m;
+    m.baseColor = Vec3(1.0f);
+    m.alpha = 1.0f;
+    m.metallic = 1.0f;
+    m.roughness = 1.0f;
+    m.emission = Vec3(0.0f);
+    m.emissionStrength = 1.0f;
+    m.ior = 1.5f;
+    m.transmission = 0.0f;
+    m.specular = 1.0f;
+    m.specularColor = Vec3(1.0f);
+    m.clearcoat = 0.0f;
+    m.clearcoatRoughness = 0.0f;
+    m.thickness = 0.0f;
+    m.attenuationColor = Vec3(1.0f);
+    m.attenuationDistance = kInf;
+    m.alphaMode = AlphaMode::Opaque;
+    m.alphaCutoff = 0.5f;
+    m.normalScale = 1.0f;
+    m.doubleSided = 0;
+    return m;
+}
+
+float unit(double v) { return float(std::clamp(v, 0.0, 1.0)); }
+Vec3 unit3(const std::vector<double>& v) { return {unit(v[0]), unit(v[1]), unit(v[2])}; }
+
+const tinygltf::Value* extension(const tinygltf::Material& material, const char* name) {
+    auto it = material.extensions.find(name);
+    return it == material.extensions.end() ? nullptr : &it->second;
+}
+
+void readCore(GltfContext& ctx, const tinygltf::Material& src, const std::string& element,
+              Material& m) {
+    const auto& pbr = src.pbrMetallicRoughness;
+    const std::string pbrElement = element + ".pbrMetallicRoughness";
+    checkGltfNumbers(ctx, pbr.baseColorFactor, 4, pbrElement + ".baseColorFactor");
+    checkGltfNumbers(ctx, {pbr.metallicFactor, pbr.roughnessFactor}, 2, pbrElement);
+    checkGltfNumbers(ctx, src.emissiveFactor, 3, element + ".emissiveFactor");
+    checkGltfNumbers(ctx, {src.alphaCutoff, src.normalTexture.scale}, 2, element);
+    m.baseColor = unit3(pbr.baseColorFactor);
+    m.alpha = unit(pbr.baseColorFactor[3]);
+    m.metallic = unit(pbr.metallicFactor);
+    m.roughness = unit(pbr.roughnessFactor);
+    m.emission = unit3(src.emissiveFactor);
+    m.alphaCutoff = float(std::max(src.alphaCutoff, 0.0));
+    m.normalScale = float(src.normalTexture.scale);
+    m.doubleSided = src.doubleSided ? 1u : 0u;
+    if (src.alphaMode == "OPAQUE" || src.alphaMode.empty()) m.alphaMode = AlphaMode::Opaque;
+    else if (src.alphaMode == "MASK") m.alphaMode = AlphaMode::Mask;
+    else if (src.alphaMode == "BLEND") m.alphaMode = AlphaMode::Blend;
+    else ctx.fail(element + ".alphaMode", "'" + src.alphaMode + "' is not OPAQUE, MASK or BLEND");
+
+    m.baseColorTexture = importGltfTexture(
+        ctx, gltfTextureSlot(pbr.baseColorTexture, pbrElement + ".baseColorTexture"));
+    m.metallicRoughnessTexture = importGltfTexture(
+        ctx, gltfTextureSlot(pbr.metallicRoughnessTexture, pbrElement + ".metallicRoughnessTexture"));
+    m.normalTexture =
+        importGltfTexture(ctx, gltfTextureSlot(src.normalTexture, element + ".normalTexture"));
+    m.emissiveTexture =
+        importGltfTexture(ctx, gltfTextureSlot(src.emissiveTexture, element + ".emissiveTexture"));
+}
+
+void readExtensions(GltfContext& ctx, const tinygltf::Material& src, const std::string& element,
+                    Material& m) {
+    const std::string base = element + ".extensions.";
+    if (const auto* e = extension(src, "KHR_materials_emissive_strength")) {
+        m.emissionStrength = float(std::max(
+            gltfNumber(ctx, *e, "emissiveStrength", 1.0, base + "KHR_materials_emissive_strength"),
+            0.0));
+    }
+    if (const auto* e = extension(src, "KHR_materials_ior")) {
+        // The extension allows ior 0 ("infinite", for metals); a dielectric below 1 is not
+        // physical either, so both become the smallest meaningful value, 1.
+        m.ior = float(std::max(gltfNumber(ctx, *e, "ior", 1.5, base + "KHR_materials_ior"), 1.0));
+    }
+    if (const auto* e = extension(src, "KHR_materials_transmission")) {
+        const std::string where = base + "KHR_materials_transmission";
+        m.transmission = unit(gltfNumber(ctx, *e, "transmissionFactor", 0.0, where));
+        if (e->IsObject() && e->Has("transmissionTexture")) {
+            m.transmissionTexture = importGltfTexture(
+                ctx, gltfTextureSlot(e->Get("transmissionTexture"), where + ".transmissionTexture"));
+        }
+    }
+    if (const auto* e = extension(src, "KHR_materials_volume")) {
+        const std::string where = base + "KHR_materials_volume";
+        m.thickness = float(std::max(gltfNumber(ctx, *e, "thicknessFactor", 0.0, where), 0.0));
+        m.attenuationColor = unit3(gltfNumbers(ctx, *e, "attenuationColor", {1, 1, 1}, where));
+        const double distance = gltfNumber(ctx, *e, "attenuationDistance", kInf, where);
+        m.attenuationDistance = distance > 0.0 ? float(distance) : kInf;
+    }
+    if (const auto* e = extension(src, "KHR_materials_clearcoat")) {
+        const std::string where = base + "KHR_materials_clearcoat";
+        m.clearcoat = unit(gltfNumber(ctx, *e, "clearcoatFactor", 0.0, where));
+        m.clearcoatRoughness = unit(gltfNumber(ctx, *e, "clearcoatRoughnessFactor", 0.0, where));
+    }
+    if (const auto* e = extension(src, "KHR_materials_specular")) {
+        const std::string where = base + "KHR_materials_specular";
+        m.specular = unit(gltfNumber(ctx, *e, "specularFactor", 1.0, where));
+        const auto color = gltfNumbers(ctx, *e, "specularColorFactor", {1, 1, 1}, where);
+        // The extension lets specularColorFactor exceed 1; only negatives are meaningless.
+        m.specularColor = {float(std::max(color[0], 0.0)), float(std::max(color[1], 0.0)),
+                           float(std::max(color[2], 0.0))};
+    }
+}
+
+}  // namespace
+
+uint32_t importGltfMaterial(GltfContext& ctx, int index, const std::string& element) {
+    if (auto it = ctx.materials.find(index); it != ctx.materials.end()) return it->second;
+    NamedMaterial named;
+    named.object = ctx.object;
+    named.params = gltfDefaultMaterial();
+    if (index < 0) {
+        named.name = "glTF default";
+    } else {
+        const auto& src = gltfElement(ctx, ctx.model().materials, index, element, "material");
+        const std::string materialElement = gltfPath("materials", size_t(index));
+        named.name = src.name.empty() ? materialElement : src.name;
+        readCore(ctx, src, materialElement, named.params);
+        readExtensions(ctx, src, materialElement, named.params);
+    }
+    const uint32_t sceneIndex = uint32_t(ctx.scene.materials.size());
+    ctx.scene.materials.push_back(std::move(named));
+    ctx.materials[index] = sceneIndex;
+    return sceneIndex;
+}
+
+}  // namespace pt

@@ -1,0 +1,205 @@
+#include "assets/gltf_primitive.h"
+
+#include <cmath>
+#include <numeric>
+
+#include "assets/gltf_accessors.h"
+#include "assets/mesh_normals.h"
+
+namespace pt {
+namespace {
+
+const char* modeName(int mode) {
+    switch (mode) {
+        case TINYGLTF_MODE_POINTS: return "POINTS";
+        case TINYGLTF_MODE_LINE: return "LINES";
+        case TINYGLTF_MODE_LINE_LOOP: return "LINE_LOOP";
+        case TINYGLTF_MODE_LINE_STRIP: return "LINE_STRIP";
+        case TINYGLTF_MODE_TRIANGLES: return "TRIANGLES";
+        case TINYGLTF_MODE_TRIANGLE_STRIP: return "TRIANGLE_STRIP";
+        case TINYGLTF_MODE_TRIANGLE_FAN: return "TRIANGLE_FAN";
+        default: return nullptr;
+    }
+}
+
+// Triangle list from the primitive's corner sequence (glTF 2.0 section 3.7.2.1):
+// strips p_i = {v_i, v_(i+1+i%2), v_(i+2-i%2)}, fans p_i = {v_(i+1), v_(i+2), v_0}.
+std::vector<uint32_t> toTriangleList(const GltfContext& ctx, std::vector<uint32_t> corners,
+                                     int mode, const std::string& element) {
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+        if (corners.size() % 3 != 0) {
+            ctx.fail(element, "TRIANGLES with " + std::to_string(corners.size()) +
+                                  " indices, not a multiple of 3");
+        }
+        return corners;
+    }
+    std::vector<uint32_t> triangles;
+    for (size_t i = 0; i + 2 < corners.size(); ++i) {
+        if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+            triangles.insert(triangles.end(), {corners[i], corners[i + 1 + i % 2],
+                                               corners[i + 2 - i % 2]});
+        } else {
+            triangles.insert(triangles.end(), {corners[i + 1], corners[i + 2], corners[0]});
+        }
+    }
+    return triangles;
+}
+
+std::vector<float> readFiniteFloats(const GltfContext& ctx, int accessor, int components,
+                                    const std::string& element, const std::string& role) {
+    std::vector<float> values = readGltfFloats(ctx, accessor, components, {element, role});
+    for (size_t i = 0; i < values.size(); ++i) {
+        if (!std::isfinite(values[i])) {
+            ctx.fail(element, role + " accessor " + std::to_string(accessor) + " element " +
+                                  std::to_string(i / size_t(components)) + " is not finite (" +
+                                  std::to_string(values[i]) + ")");
+        }
+    }
+    return values;
+}
+
+int attribute(const tinygltf::Primitive& primitive, const char* name) {
+    auto it = primitive.attributes.find(name);
+    return it == primitive.attributes.end() ? -1 : it->second;
+}
+
+// A per-vertex attribute with exactly one element per position.
+std::vector<float> readVertexAttribute(const GltfContext& ctx, int accessor, int components,
+                                       size_t vertexCount, const std::string& element,
+                                       const std::string& role) {
+    std::vector<float> values = readFiniteFloats(ctx, accessor, components, element, role);
+    if (values.size() != vertexCount * size_t(components)) {
+        ctx.fail(element, role + " accessor " + std::to_string(accessor) + " has " +
+                              std::to_string(values.size() / size_t(components)) +
+                              " elements but POSITION has " + std::to_string(vertexCount));
+    }
+    return values;
+}
+
+std::vector<uint32_t> readCorners(const GltfContext& ctx, const tinygltf::Primitive& primitive,
+                                  size_t vertexCount, const std::string& element) {
+    if (primitive.indices < 0) {
+        std::vector<uint32_t> corners(vertexCount);
+        std::iota(corners.begin(), corners.end(), 0u);
+        return corners;
+    }
+    std::vector<uint32_t> corners =
+        readGltfIndices(ctx, primitive.indices, {element, std::string("indices")});
+    for (size_t i = 0; i < corners.size(); ++i) {
+        if (corners[i] >= vertexCount) {
+            ctx.fail(element, "indices accessor " + std::to_string(primitive.indices) +
+                                  " element " + std::to_string(i) + " is " +
+                                  std::to_string(corners[i]) + ", past the vertex count " +
+                                  std::to_string(vertexCount));
+        }
+    }
+    return corners;
+}
+
+// Flat shading needs a vertex per triangle corner; unshares positions and UVs.
+void unshareVertices(PrimitiveGeometry& g) {
+    std::vector<Vec3> positions(g.indices.size());
+    std::vector<Vec2> uvs(g.uvs.empty() ? 0 : g.indices.size());
+    for (size_t k = 0; k < g.indices.size(); ++k) {
+        positions[k] = g.positions[g.indices[k]];
+        if (!uvs.empty()) uvs[k] = g.uvs[g.indices[k]];
+        g.indices[k] = uint32_t(k);
+    }
+    g.positions = std::move(positions);
+    g.uvs = std::move(uvs);
+}
+
+// Keeps only the vertices the triangles use, in first-use order: several primitives often
+// index one shared vertex accessor, which would otherwise be copied whole into each.
+void compactVertices(PrimitiveGeometry& g) {
+    constexpr uint32_t kUnused = ~0u;
+    std::vector<uint32_t> remap(g.positions.size(), kUnused);
+    PrimitiveGeometry out;
+    for (uint32_t& index : g.indices) {
+        if (remap[index] == kUnused) {
+            remap[index] = uint32_t(out.positions.size());
+            out.positions.push_back(g.positions[index]);
+            out.normals.push_back(g.normals[index]);
+            if (!g.uvs.empty()) out.uvs.push_back(g.uvs[index]);
+        }
+        index = remap[index];
+    }
+    out.indices = std::move(g.indices);
+    g = std::move(out);
+}
+
+// Normalizes the file's normals; regenerates zero ones (with one warning) or, when the file
+// has none, all of them.
+void finishNormals(const GltfContext& ctx, bool fromFile, PrimitiveGeometry& g,
+                   const std::string& element) {
+    std::vector<bool> regenerate(g.positions.size(), !fromFile);
+    if (!fromFile) g.normals.assign(g.positions.size(), Vec3(0.0f, 0.0f, 1.0f));
+    size_t zero = 0;
+    for (size_t v = 0; fromFile && v < g.normals.size(); ++v) {
+        const float len = length(g.normals[v]);
+        regenerate[v] = !(len > 0.0f);
+        if (regenerate[v]) ++zero;
+        else g.normals[v] = g.normals[v] / len;
+    }
+    if (zero > 0) {
+        ctx.warn(element, std::to_string(zero) +
+                              " zero-length NORMAL vectors replaced by the surrounding "
+                              "triangles' normal");
+    }
+    if (!fromFile || zero > 0) {
+        generateAreaWeightedNormals(g.positions, g.indices, regenerate, g.normals);
+    }
+}
+
+}  // namespace
+
+std::optional<PrimitiveGeometry> readGltfPrimitive(const GltfContext& ctx, size_t meshIndex,
+                                                   size_t primitiveIndex) {
+    const auto& primitive = ctx.model().meshes[meshIndex].primitives[primitiveIndex];
+    const std::string element = gltfPath("meshes", meshIndex) + ".primitives[" +
+                                std::to_string(primitiveIndex) + "]";
+    if (!primitive.extensions.empty()) {
+        ctx.warn(element, "uses extension " + primitive.extensions.begin()->first +
+                              ", which is not supported; primitive skipped");
+        return std::nullopt;
+    }
+    const char* mode = modeName(primitive.mode);
+    if (!mode) ctx.fail(element, "mode " + std::to_string(primitive.mode) + " is not a glTF mode");
+    if (primitive.mode < TINYGLTF_MODE_TRIANGLES) {
+        ctx.warn(element, std::string(mode) + " primitives are not rendered; skipped");
+        return std::nullopt;
+    }
+    const int position = attribute(primitive, "POSITION");
+    if (position < 0) {
+        ctx.warn(element, "has no POSITION attribute; skipped");
+        return std::nullopt;
+    }
+    PrimitiveGeometry g;
+    const std::vector<float> p = readFiniteFloats(ctx, position, 3, element, "POSITION");
+    const size_t vertexCount = p.size() / 3;
+    for (size_t v = 0; v < vertexCount; ++v) g.positions.push_back({p[3 * v], p[3 * v + 1], p[3 * v + 2]});
+    g.indices = toTriangleList(ctx, readCorners(ctx, primitive, vertexCount, element),
+                               primitive.mode, element);
+    if (g.indices.empty()) {
+        ctx.warn(element, "has no triangles; skipped");
+        return std::nullopt;
+    }
+    if (const int uv = attribute(primitive, "TEXCOORD_0"); uv >= 0) {
+        const std::vector<float> t =
+            readVertexAttribute(ctx, uv, 2, vertexCount, element, "TEXCOORD_0");
+        for (size_t v = 0; v < vertexCount; ++v) g.uvs.push_back({t[2 * v], t[2 * v + 1]});
+    }
+    const int normal = attribute(primitive, "NORMAL");
+    if (normal >= 0) {
+        const std::vector<float> n =
+            readVertexAttribute(ctx, normal, 3, vertexCount, element, "NORMAL");
+        for (size_t v = 0; v < vertexCount; ++v) g.normals.push_back({n[3 * v], n[3 * v + 1], n[3 * v + 2]});
+        compactVertices(g);
+    } else {
+        unshareVertices(g);
+    }
+    finishNormals(ctx, normal >= 0, g, element);
+    return g;
+}
+
+}  // namespace pt

@@ -1,0 +1,31 @@
+#pragma once
+// One glTF mesh primitive read into a self-contained triangle list: accessors read with
+// bounds checks, every index checked against the vertex count, every position, normal and
+// UV checked finite, strips and fans converted to triangles (winding as the spec's formulas
+// give it), normals generated where the file has none. Points and lines are skipped with a
+// warning. Internal to pt_assets.
+//
+// Missing normals are generated *flat* (each triangle gets its own three vertices and its
+// geometric normal): the glTF 2.0 spec requires flat normals when NORMAL is absent
+// (section 3.7.2.1), and smoothing across the author's hard edges would be wrong for
+// low-poly and CAD models. Normals given as zero vectors are replaced by the area-weighted
+// normal of the triangles that use the vertex, with one warning per primitive.
+#include <optional>
+#include <vector>
+
+#include "assets/gltf_context.h"
+
+namespace pt {
+
+struct PrimitiveGeometry {
+    std::vector<Vec3> positions;
+    std::vector<Vec3> normals;      // one per position
+    std::vector<Vec2> uvs;          // one per position, or empty (no TEXCOORD_0)
+    std::vector<uint32_t> indices;  // triangle list, three per triangle, local to the primitive
+};
+
+// nullopt when the primitive is skipped (a warning says why); InputError when malformed.
+std::optional<PrimitiveGeometry> readGltfPrimitive(const GltfContext& ctx, size_t mesh,
+                                                   size_t primitive);
+
+}  // namespace pt

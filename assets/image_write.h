@@ -1,0 +1,24 @@
+#pragma once
+// Writing renders through OpenImageIO, atomically (temp file, then rename).
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pt {
+
+// Metadata written as string attributes (EXR header / PNG text chunks).
+using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
+
+// Scene-linear RGBA float as a float EXR. Throws InputError naming `path` on failure.
+void writeExr(const std::string& path, uint32_t width, uint32_t height, const std::vector<float>& rgba,
+              const ImageMetadata& metadata = {});
+
+// Display-referred 8-bit RGB (PNG, JPEG or TIFF by extension).
+void writeDisplayImage(const std::string& path, uint32_t width, uint32_t height,
+                       const std::vector<uint8_t>& rgb, const ImageMetadata& metadata = {});
+
+// Reads any image OIIO knows as RGBA float (for tests and references). Throws InputError.
+std::vector<float> readImageRgba(const std::string& path, uint32_t& width, uint32_t& height);
+
+}  // namespace pt

@@ -1,0 +1,179 @@
+// Writing scene JSON (schema: scenes/README.md). Only values that differ from their defaults
+// are written, paths are relative to the output file, keys come in a fixed order and floats
+// in their shortest exact form, so the same scene always gives the same text and reads back
+// bit-identical.
+#include <algorithm>
+#include <filesystem>
+
+#include "assets/atomic_file.h"
+#include "assets/input_error.h"
+#include "assets/json_value.h"
+#include "assets/material_json.h"
+#include "assets/scene_json.h"
+#include "assets/scene_loader.h"
+
+namespace pt {
+namespace fs = std::filesystem;
+
+namespace {
+
+// Lexical, so that the output does not depend on symlinks or on what exists on disk; a
+// path on another root (no relative form) stays absolute.
+std::string relativePath(const std::string& path, const fs::path& folder) {
+    const fs::path absolute = fs::absolute(path).lexically_normal();
+    const fs::path relative = absolute.lexically_relative(folder);
+    return relative.empty() ? absolute.generic_string() : relative.generic_string();
+}
+
+bool sameCamera(const Camera& a, const Camera& b) {
+    return sameBits(a.position, b.position) && sameBits(a.lookAt, b.lookAt) && sameBits(a.up, b.up) &&
+           sameBits(a.verticalFovDegrees, b.verticalFovDegrees) &&
+           sameBits(a.apertureRadius, b.apertureRadius) && sameBits(a.focusDistance, b.focusDistance);
+}
+
+Json cameraToJson(const Camera& camera) {
+    const Camera defaults;
+    Json out = Json::object();  // written even when empty: "camera": {} is the default camera
+    putIfChanged(out, "position", camera.position, defaults.position);
+    putIfChanged(out, "lookAt", camera.lookAt, defaults.lookAt);
+    putIfChanged(out, "up", camera.up, defaults.up);
+    putIfChanged(out, "fov", camera.verticalFovDegrees, defaults.verticalFovDegrees);
+    putIfChanged(out, "aperture", camera.apertureRadius, defaults.apertureRadius);
+    putIfChanged(out, "focusDistance", camera.focusDistance, defaults.focusDistance);
+    return out;
+}
+
+Json renderToJson(const RenderSettings& render) {
+    const RenderSettings defaults;
+    Json out = Json::object();
+    if (render.width != defaults.width || render.height != defaults.height) {
+        out["resolution"] = Json::array({render.width, render.height});
+    }
+    if (render.maxDepth != defaults.maxDepth) out["maxDepth"] = render.maxDepth;
+    if (render.spp != defaults.spp) out["spp"] = render.spp;
+    if (render.seed != defaults.seed) out["seed"] = render.seed;
+    return out;
+}
+
+Json environmentToJson(const Environment& environment, const fs::path& folder) {
+    const Environment defaults;
+    Json out = Json::object();
+    putIfChanged(out, "color", environment.color, defaults.color);
+    if (!environment.imagePath.empty()) out["image"] = relativePath(environment.imagePath, folder);
+    putIfChanged(out, "intensity", environment.intensity, defaults.intensity);
+    putIfChanged(out, "rotation", environment.rotationDegrees, defaults.rotationDegrees);
+    return out;
+}
+
+Json transformToJson(const ObjectTransform& transform) {
+    const ObjectTransform defaults;
+    Json out = Json::object();
+    if (transform.useMatrix) {
+        out["matrix"] = Json::array();
+        for (float element : transform.matrix) out["matrix"].push_back(floatToJson(element));
+        return out;
+    }
+    putIfChanged(out, "translate", transform.translate, defaults.translate);
+    putIfChanged(out, "rotate", transform.rotateDegrees, defaults.rotateDegrees);
+    const Vec3 s = transform.scale;
+    if (!sameBits(s, defaults.scale)) {
+        out["scale"] = sameBits(s.x, s.y) && sameBits(s.x, s.z) ? floatToJson(s.x) : vec3ToJson(s);
+    }
+    return out;
+}
+
+Json objectToJson(const SceneObject& object, const fs::path& folder) {
+    Json out = Json::object();
+    if (!object.name.empty()) out["name"] = object.name;
+    if (object.kind == ObjectKind::File) {
+        out["file"] = relativePath(object.path, folder);
+    } else {
+        out["shape"] = shapeKindName(object.kind);
+    }
+    if (object.kind != ObjectKind::File && !object.material.empty() &&
+        object.material != kDefaultMaterialName) {
+        out["material"] = object.material;
+    }
+    if (object.kind == ObjectKind::File && !object.materialOverrides.empty()) {
+        out["materialOverrides"] = Json::object();
+        for (const auto& [from, to] : object.materialOverrides) out["materialOverrides"][from] = to;
+    }
+    Json transform = transformToJson(object.transform);
+    if (!transform.empty()) out["transform"] = std::move(transform);
+    return out;
+}
+
+// The loader adds the default material itself when a shape names none, right after the
+// JSON's own materials; writing it would be noise. Left out only where the loader puts it
+// back unchanged at the same index: last of the scene's materials, default parameters, and
+// used by a shape that will name no material.
+bool isImplicitDefault(const Scene& scene, size_t index) {
+    const NamedMaterial& material = scene.materials[index];
+    if (material.name != kDefaultMaterialName || material.object != -1) return false;
+    const auto later =
+        std::find_if(scene.materials.begin() + std::ptrdiff_t(index) + 1, scene.materials.end(),
+                     [](const NamedMaterial& m) { return m.object == -1; });
+    if (later != scene.materials.end()) return false;
+    const bool usedByShape =
+        std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) {
+            return o.kind != ObjectKind::File && (o.material.empty() || o.material == kDefaultMaterialName);
+        });
+    return hasDefaultParams(material.params) && usedByShape;
+}
+
+Json materialsToJson(const Scene& scene, const fs::path& folder, const std::string& outputName) {
+    Json out = Json::array();
+    for (size_t i = 0; i < scene.materials.size(); ++i) {
+        const NamedMaterial& material = scene.materials[i];
+        if (material.object != -1 || isImplicitDefault(scene, i)) continue;
+        const std::string where = outputName + ": materials[" + std::to_string(out.size()) + "].";
+        auto texturePath = [&](int32_t texture, const std::string& slot) {
+            const Texture& image = scene.textures.at(size_t(texture));
+            if (image.sourcePath.empty()) {
+                throw InputError(where + slot + ": texture \"" + image.name +
+                                 "\" is embedded in a model file; scene JSON can only name image files");
+            }
+            return relativePath(image.sourcePath, folder);
+        };
+        Json entry = Json::object();
+        entry["name"] = material.name;
+        writeMaterialParams(material.params, texturePath, entry);
+        out.push_back(std::move(entry));
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string sceneToJson(const Scene& scene, const std::string& outputPath) {
+    const fs::path folder = fs::absolute(outputPath).lexically_normal().parent_path();
+    Json root = Json::object();
+    root["version"] = kSceneJsonVersion;
+    // A camera the loader would compute again (framing the bounds) is left out; any other,
+    // including one taken from a model file, is written.
+    if (scene.cameraFromFile || !sameCamera(scene.camera, frameBounds(scene))) {
+        root["camera"] = cameraToJson(scene.camera);
+    }
+    const std::pair<const char*, Json> sections[] = {
+        {"render", renderToJson(scene.render)},
+        {"environment", environmentToJson(scene.environment, folder)},
+        {"materials", materialsToJson(scene, folder, fs::path(outputPath).filename().string())},
+    };
+    for (const auto& [key, value] : sections) {
+        if (!value.empty()) root[key] = value;
+    }
+    Json objects = Json::array();
+    for (const SceneObject& object : scene.objects) objects.push_back(objectToJson(object, folder));
+    if (!objects.empty()) root["objects"] = std::move(objects);
+    try {
+        return prettyJson(root);
+    } catch (const Json::exception& e) {  // e.g. a name that is not valid UTF-8
+        throw InputError(fs::path(outputPath).filename().string() + ": " + e.what());
+    }
+}
+
+void writeSceneJson(const Scene& scene, const std::string& path) {
+    writeTextAtomically(path, sceneToJson(scene, path));
+}
+
+}  // namespace pt

@@ -1,0 +1,125 @@
+#include "render/backend/cpu/cpu_backend.h"
+
+#include <tbb/blocked_range2d.h>
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+
+#include "render/integrator/camera.h"
+#include "render/integrator/path_tracer.h"
+
+namespace pt {
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+constexpr SceneChangeMask kNeedsCompile = SceneChanges::Transforms | SceneChanges::Geometry |
+                                          SceneChanges::Topology | SceneChanges::Textures |
+                                          SceneChanges::Materials;
+
+}  // namespace
+
+SyncReport CpuBackend::sync(const Scene& scene, SceneChangeMask changes, const ProgressFn& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    SyncReport report;
+    const bool resized = scene.render.width != width_ || scene.render.height != height_;
+    if (!compiled_ || (changes & kNeedsCompile)) {
+        // Material edits can change which triangles emit, so they rebuild the light table too;
+        // a full compile is the simple, correct answer on the CPU.
+        CompileOptions options;
+        options.bruteForce = toggles_.bruteForce;
+        auto compiled = std::make_unique<CompiledScene>(compileRenderScene(scene, options, progress));
+        compiled_ = std::move(compiled);
+        report.action = "compile scene";
+        report.bvhSeconds = compiled_->stats.blasSeconds + compiled_->stats.tlasSeconds;
+    } else {
+        if (changes & SceneChanges::Environment) compiled_->environment = compileEnvironment(scene.environment);
+        report.action = changes == SceneChanges::Display ? "nothing" : "reset";
+    }
+    compiled_->camera = makeRenderCamera(scene.camera, scene.render.width, scene.render.height);
+    compiled_->settings = compileSettings(scene.render);
+    view_ = compiled_->view();
+    applyToggles();
+    width_ = scene.render.width;
+    height_ = scene.render.height;
+    if (resized || changes != SceneChanges::Display) resetAccumulation();
+    stats_.triangles = compiled_->stats.instancedTriangles;
+    stats_.instances = compiled_->stats.instanceCount;
+    report.seconds = secondsSince(start);
+    return report;
+}
+
+void CpuBackend::setToggles(const IntegratorToggles& toggles) {
+    const bool bvhChanged = toggles.bruteForce != toggles_.bruteForce;
+    toggles_ = toggles;
+    if (bvhChanged) compiled_.reset();  // the next sync recompiles (and checks the budget)
+    if (compiled_) {
+        applyToggles();
+        resetAccumulation();
+    }
+}
+
+void CpuBackend::applyToggles() {
+    view_.settings.nextEventEstimation = toggles_.nextEventEstimation ? 1u : 0u;
+    view_.settings.multipleImportance = toggles_.multipleImportance ? 1u : 0u;
+    view_.settings.russianRoulette = toggles_.russianRoulette ? 1u : 0u;
+}
+
+void CpuBackend::resetAccumulation() {
+    sum_.assign(size_t(width_) * height_ * 3, 0.0);
+    stats_.samplesPerPixel = 0;
+    stats_.renderSeconds = 0.0;
+    stats_.rays = 0;
+    stats_.nonfiniteSamples = 0;
+}
+
+void CpuBackend::render(uint32_t passes) {
+    if (!compiled_ || passes == 0) return;
+    const auto start = std::chrono::steady_clock::now();
+    const uint32_t firstSample = stats_.samplesPerPixel;
+    const RenderScene& scene = view_;
+    tbb::combinable<PathCounters> counters;
+    constexpr size_t kTile = 16;
+    tbb::parallel_for(
+        tbb::blocked_range2d<uint32_t>(0, height_, kTile, 0, width_, kTile),
+        [&](const tbb::blocked_range2d<uint32_t>& tile) {
+            PathCounters& local = counters.local();
+            for (uint32_t y = tile.rows().begin(); y < tile.rows().end(); ++y) {
+                for (uint32_t x = tile.cols().begin(); x < tile.cols().end(); ++x) {
+                    double* pixel = &sum_[(size_t(y) * width_ + x) * 3];
+                    for (uint32_t s = 0; s < passes; ++s) {
+                        const Vec3 L = tracePath(scene, x, y, firstSample + s, local);
+                        pixel[0] += L.x;
+                        pixel[1] += L.y;
+                        pixel[2] += L.z;
+                    }
+                }
+            }
+        });
+    counters.combine_each([&](const PathCounters& c) {
+        stats_.rays += c.rays;
+        stats_.nonfiniteSamples += c.nonfiniteSamples;
+    });
+    stats_.samplesPerPixel += passes;
+    stats_.renderSeconds += secondsSince(start);
+}
+
+void CpuBackend::readBeauty(std::vector<float>& rgba) const {
+    const size_t pixels = size_t(width_) * height_;
+    rgba.assign(pixels * 4, 0.0f);
+    const double scale = stats_.samplesPerPixel ? 1.0 / stats_.samplesPerPixel : 0.0;
+    for (size_t i = 0; i < pixels; ++i) {
+        rgba[i * 4 + 0] = float(sum_[i * 3 + 0] * scale);
+        rgba[i * 4 + 1] = float(sum_[i * 3 + 1] * scale);
+        rgba[i * 4 + 2] = float(sum_[i * 3 + 2] * scale);
+        rgba[i * 4 + 3] = 1.0f;
+    }
+}
+
+BackendStats CpuBackend::stats() const { return stats_; }
+
+}  // namespace pt

@@ -1,0 +1,34 @@
+#pragma once
+// CpuBackend: the shared per-ray code on all cores (TBB), progressive over 16x16 tiles.
+// Accumulates in double so a million samples of a constant average to that constant.
+#include <memory>
+
+#include "render/backend/backend.h"
+#include "render/scene/compile_scene.h"
+
+namespace pt {
+
+class CpuBackend final : public Backend {
+public:
+    std::string name() const override { return "cpu"; }
+    SyncReport sync(const Scene& scene, SceneChangeMask changes, const ProgressFn& progress) override;
+    void setToggles(const IntegratorToggles& toggles) override;
+    void render(uint32_t passes) override;
+    void resetAccumulation() override;
+    uint32_t width() const override { return width_; }
+    uint32_t height() const override { return height_; }
+    void readBeauty(std::vector<float>& rgba) const override;
+    BackendStats stats() const override;
+
+private:
+    void applyToggles();
+
+    std::unique_ptr<CompiledScene> compiled_;
+    RenderScene view_{};
+    IntegratorToggles toggles_;
+    uint32_t width_ = 0, height_ = 0;
+    std::vector<double> sum_;  // RGB per pixel
+    BackendStats stats_;
+};
+
+}  // namespace pt

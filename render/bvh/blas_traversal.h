@@ -1,0 +1,71 @@
+#pragma once
+// Bottom level: one mesh's BVH in object space. The primitive test is shared with brute force
+// so that both paths compute bit-identical hits for the same prepared ray.
+#include "render/bvh/bvh_walk.h"
+#include "render/bvh/hit.h"
+#include "render/bvh/sphere_intersect.h"
+#include "render/bvh/triangle_intersect.h"
+#include "render/scene/render_scene.h"
+
+namespace pt {
+
+// Tests mesh-local primitive `local` of `blas` against (0, tMax); on a hit fills t, u, v and
+// primitive of `hit` (spheres set u = v = 0).
+PT_HD bool intersectBlasPrimitive(const RenderScene& scene, const BlasRef& blas, uint32_t local,
+                                  const TraversalRay& ray, float tMax, Hit& hit) {
+    const uint32_t global = blas.primitiveOffset + local;
+    float t, u = 0.0f, v = 0.0f;
+    if (blas.kind == GeometryKind::Spheres) {
+        if (!intersectSphere(ray.watertight.origin, ray.direction, tMax, scene.spheres[global], t)) {
+            return false;
+        }
+    } else {
+        const TriangleIndices tri = scene.triangles[global];
+        if (!intersectTriangle(ray.watertight, tMax, scene.positions[tri.v0], scene.positions[tri.v1],
+                               scene.positions[tri.v2], t, u, v)) {
+            return false;
+        }
+    }
+    hit.t = t;
+    hit.u = u;
+    hit.v = v;
+    hit.primitive = local;
+    return true;
+}
+
+// Leaf functor of walkBvh for one BLAS.
+struct BlasLeaf {
+    const RenderScene& scene;
+    const BlasRef& blas;
+    const uint32_t* primIndices;  // this BLAS's slice of RenderScene::blasPrimIndices
+    const TraversalRay& ray;
+    Hit& hit;
+    TraversalStats* stats;
+    bool anyHit;
+
+    PT_HD bool operator()(uint32_t first, uint32_t count, float& tMax) {
+        bool found = false;
+        for (uint32_t i = first; i < first + count; ++i) {
+            if (stats) ++stats->primitivesTested;
+            if (intersectBlasPrimitive(scene, blas, primIndices[i], ray, tMax, hit)) {
+                tMax = hit.t;
+                found = true;
+                if (anyHit) return true;
+            }
+        }
+        return found;
+    }
+};
+
+// Closest (or, with kAnyHit, any) hit of `ray` (already in the BLAS's object space) with
+// t < tMax. On a hit, lowers tMax to it and fills hit.t/u/v/primitive; hit.instance is the
+// caller's business.
+template <bool kAnyHit>
+PT_HD bool traverseBlas(const RenderScene& scene, const BlasRef& blas, const TraversalRay& ray,
+                        float& tMax, Hit& hit, TraversalStats* stats) {
+    if (blas.primitiveCount == 0 || blas.nodeCount == 0) return false;
+    BlasLeaf leaf{scene, blas, scene.blasPrimIndices.data + blas.primIndexOffset, ray, hit, stats, kAnyHit};
+    return walkBvh<kAnyHit>(scene.blasNodes.data + blas.nodeOffset, ray, tMax, leaf, stats);
+}
+
+}  // namespace pt

@@ -1,0 +1,31 @@
+#pragma once
+// Brute force: every primitive of every instance, no BVH. The validation path
+// (RenderScene::bruteForce) and the reference the BVH tests compare against. It uses the same
+// object-space ray preparation and primitive test as the BVH path, so hits agree bit for bit;
+// only the order of exact ties in t can differ.
+#include "render/bvh/tlas_traversal.h"
+
+namespace pt {
+
+template <bool kAnyHit>
+PT_HD bool bruteForceIntersect(const RenderScene& scene, const Ray& worldRay, float& tMax, Hit& hit,
+                               TraversalStats* stats) {
+    bool found = false;
+    for (uint32_t index = 0; index < scene.instances.size(); ++index) {
+        const RenderInstance& inst = scene.instances[index];
+        const BlasRef& blas = scene.blases[inst.blas];
+        const TraversalRay ray = objectSpaceRay(inst, worldRay);
+        for (uint32_t local = 0; local < blas.primitiveCount; ++local) {
+            if (stats) ++stats->primitivesTested;
+            if (intersectBlasPrimitive(scene, blas, local, ray, tMax, hit)) {
+                tMax = hit.t;
+                hit.instance = index;
+                found = true;
+                if (kAnyHit) return true;
+            }
+        }
+    }
+    return found;
+}
+
+}  // namespace pt

@@ -1,0 +1,141 @@
+#pragma once
+// The stack walk shared by BLAS and TLAS traversal: a ray prepared once per space
+// (TraversalRay), the robust slab test, and a non-recursive, near-child-first loop over the
+// canonical BvhNode layout that hands leaves to a caller-supplied functor.
+#include <cassert>
+#include <cstdint>
+
+#include "render/bvh/bvh_node.h"
+#include "render/bvh/triangle_intersect.h"
+
+namespace pt {
+
+// Entries of the fixed traversal stack. Builders guarantee that no leaf lies deeper than
+// this (root at depth 0), so the stack never overflows.
+constexpr uint32_t kBvhStackSize = 64;
+
+// Work counters for the BVH-cost AOV and benchmarks; optional everywhere (nullptr: off).
+struct TraversalStats {
+    uint32_t nodesVisited = 0;      // nodes whose contents were examined (interior or leaf)
+    uint32_t primitivesTested = 0;  // primitive intersection tests
+};
+
+// min/max written as comparisons: one minss/maxss each on x86, where fminf's NaN rules cost
+// extra instructions; inputs here are never NaN, so the two agree.
+PT_HD float minFast(float a, float b) { return a < b ? a : b; }
+PT_HD float maxFast(float a, float b) { return a > b ? a : b; }
+
+// A ray in one space (world for the TLAS, object space of one instance for a BLAS), with what
+// the slab and triangle tests precompute. Direction components below kMinDirection in
+// magnitude are "zero axes": 1/d would be infinite and (plane - o) * inf is NaN for an origin
+// on a box face, so those axes get an inclusive interval test (lo <= o <= hi) instead of a
+// slab. Primitive tests use the unmodified direction, so box tests stay conservative for the
+// very ray the primitives see, in world and object space alike.
+struct TraversalRay {
+    WatertightRay watertight;  // origin and shear of the triangle test
+    Vec3 direction;
+    Vec3 invDirection;         // finite; 0 on zero axes
+    uint32_t zeroAxes;         // bit a set: |direction[a]| < kMinDirection
+};
+
+constexpr float kMinDirection = 1e-30f;
+
+PT_HD TraversalRay makeTraversalRay(Vec3 origin, Vec3 direction) {
+    TraversalRay r;
+    r.watertight = makeWatertightRay(origin, direction);
+    r.direction = direction;
+    r.zeroAxes = 0;
+    for (int a = 0; a < 3; ++a) {
+        const bool zero = !(fabsf(direction[a]) >= kMinDirection);
+        r.invDirection[a] = zero ? 0.0f : 1.0f / direction[a];
+        r.zeroAxes |= zero ? (1u << a) : 0u;
+    }
+    return r;
+}
+
+// 1 + 2 gamma(3), gamma(n) = n u / (1 - n u), u = 2^-24: the factor by which the exit
+// distance is enlarged so that rounding in the slab test never culls a box the ray enters
+// (Ize, "Robust BVH Ray Traversal", JCGT 2(2), 2013; pbrt-v3 section 3.9.2).
+constexpr float kSlabExitScale = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
+
+// The slab test for rays with zero axes (rare: axis-aligned rays); see TraversalRay.
+PT_HD bool intersectBoxWithZeroAxes(const TraversalRay& ray, Vec3 lo, Vec3 hi, float tMax, float& tEntry) {
+    float tNear = 0.0f, tFar = kInf;
+    for (int a = 0; a < 3; ++a) {
+        const float o = ray.watertight.origin[a];
+        if (ray.zeroAxes & (1u << a)) {
+            if (!(lo[a] <= o && o <= hi[a])) return false;
+            continue;
+        }
+        const float t0 = (lo[a] - o) * ray.invDirection[a], t1 = (hi[a] - o) * ray.invDirection[a];
+        tNear = maxFast(tNear, minFast(t0, t1));
+        tFar = minFast(tFar, maxFast(t0, t1));
+    }
+    tEntry = tNear;
+    return tNear <= minFast(tFar * kSlabExitScale, tMax);
+}
+
+// Slab test against [0, tMax]; on a hit, tEntry is where the ray enters the box (>= 0). Never
+// produces NaN (finite inverse direction); an empty box (lo > hi, e.g. the root of an empty
+// BVH) always misses.
+PT_HD bool intersectBox(const TraversalRay& ray, Vec3 lo, Vec3 hi, float tMax, float& tEntry) {
+    if (ray.zeroAxes != 0) return intersectBoxWithZeroAxes(ray, lo, hi, tMax, tEntry);
+    const Vec3 o = ray.watertight.origin, inv = ray.invDirection;
+    const float x0 = (lo.x - o.x) * inv.x, x1 = (hi.x - o.x) * inv.x;
+    const float y0 = (lo.y - o.y) * inv.y, y1 = (hi.y - o.y) * inv.y;
+    const float z0 = (lo.z - o.z) * inv.z, z1 = (hi.z - o.z) * inv.z;
+    const float tNear = maxFast(maxFast(minFast(x0, x1), minFast(y0, y1)), maxFast(minFast(z0, z1), 0.0f));
+    const float tFar = minFast(maxFast(x0, x1), minFast(maxFast(y0, y1), maxFast(z0, z1))) * kSlabExitScale;
+    tEntry = tNear;
+    return tNear <= minFast(tFar, tMax);
+}
+
+// Walks the BVH `nodes` (root at index 0), nearest child first. `leaf(first, count, tMax)`
+// tests a leaf's primitives, lowers tMax on a closer hit and returns whether it hit; with
+// kAnyHit the walk stops at the first hit. Subtrees whose entry distance is beyond the current
+// tMax when popped are skipped.
+template <bool kAnyHit, class LeafFn>
+PT_HD bool walkBvh(const BvhNode* nodes, const TraversalRay& ray, float& tMax, LeafFn& leaf,
+                   TraversalStats* stats) {
+    uint32_t stackNode[kBvhStackSize];
+    float stackEntry[kBvhStackSize];
+    uint32_t size = 0;
+    float entry = 0.0f;
+    if (!intersectBox(ray, nodes[0].lo, nodes[0].hi, tMax, entry)) return false;
+    bool found = false;
+    uint32_t current = 0;
+    for (;;) {
+        const BvhNode& node = nodes[current];
+        if (stats) ++stats->nodesVisited;
+        if (node.isLeaf()) {
+            if (leaf(node.leftOrFirst, node.count, tMax)) {
+                found = true;
+                if (kAnyHit) return true;
+            }
+        } else {
+            const uint32_t left = node.leftOrFirst;
+            float tLeft = 0.0f, tRight = 0.0f;
+            const bool hitLeft = intersectBox(ray, nodes[left].lo, nodes[left].hi, tMax, tLeft);
+            const bool hitRight = intersectBox(ray, nodes[left + 1].lo, nodes[left + 1].hi, tMax, tRight);
+            if (hitLeft && hitRight) {
+                assert(size < kBvhStackSize && "BVH deeper than the traversal stack");
+                const bool leftFirst = tLeft <= tRight;
+                stackNode[size] = leftFirst ? left + 1 : left;
+                stackEntry[size++] = leftFirst ? tRight : tLeft;
+                current = leftFirst ? left : left + 1;
+                continue;
+            }
+            if (hitLeft || hitRight) {
+                current = hitLeft ? left : left + 1;
+                continue;
+            }
+        }
+        do {
+            if (size == 0) return found;
+            --size;
+        } while (stackEntry[size] > tMax);
+        current = stackNode[size];
+    }
+}
+
+}  // namespace pt

@@ -1,0 +1,52 @@
+#pragma once
+// Top level: the BVH over instances in world space. At an instance leaf the world ray is taken
+// into the instance's object space with worldToObject; the direction is NOT normalised, so a
+// ray parameter t means the same point in both spaces and hits compare across instances.
+#include "render/bvh/blas_traversal.h"
+
+namespace pt {
+
+// The world ray as instance `inst` sees it.
+PT_HD TraversalRay objectSpaceRay(const RenderInstance& inst, const Ray& worldRay) {
+    return makeTraversalRay(inst.worldToObject.transformPoint(worldRay.origin),
+                            inst.worldToObject.transformVector(worldRay.direction));
+}
+
+// Leaf functor of walkBvh for the TLAS: each entry of a leaf is an instance.
+struct TlasLeaf {
+    const RenderScene& scene;
+    const Ray& worldRay;
+    Hit& hit;
+    TraversalStats* stats;
+    bool anyHit;
+
+    PT_HD bool operator()(uint32_t first, uint32_t count, float& tMax) {
+        bool found = false;
+        for (uint32_t i = first; i < first + count; ++i) {
+            const uint32_t index = scene.tlasInstanceIndices[i];
+            const RenderInstance& inst = scene.instances[index];
+            const TraversalRay ray = objectSpaceRay(inst, worldRay);
+            const BlasRef& blas = scene.blases[inst.blas];
+            const bool hitHere = anyHit ? traverseBlas<true>(scene, blas, ray, tMax, hit, stats)
+                                        : traverseBlas<false>(scene, blas, ray, tMax, hit, stats);
+            if (hitHere) {
+                hit.instance = index;
+                found = true;
+                if (anyHit) return true;
+            }
+        }
+        return found;
+    }
+};
+
+// Closest (or any) hit over all instances with t < tMax; lowers tMax and fills `hit`.
+template <bool kAnyHit>
+PT_HD bool traverseTlas(const RenderScene& scene, const Ray& worldRay, float& tMax, Hit& hit,
+                        TraversalStats* stats) {
+    if (scene.tlasNodes.empty() || scene.instances.empty()) return false;
+    const TraversalRay ray = makeTraversalRay(worldRay.origin, worldRay.direction);
+    TlasLeaf leaf{scene, worldRay, hit, stats, kAnyHit};
+    return walkBvh<kAnyHit>(scene.tlasNodes.data, ray, tMax, leaf, stats);
+}
+
+}  // namespace pt

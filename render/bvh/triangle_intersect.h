@@ -1,0 +1,89 @@
+#pragma once
+// Watertight ray/triangle intersection: Woop, Benthin and Wald, "Watertight Ray/Triangle
+// Intersection", JCGT 2(1), 2013. The triangle is translated to the ray origin and sheared so
+// that the ray runs along +z; the 2D edge functions of two triangles sharing an edge are then
+// computed from the same operands in the same order, so their signs agree exactly and no ray
+// slips between them. The edge functions' signs are exact (computed in double; see
+// edgeFunction). Two-sided.
+#include "render/math/ray.h"
+
+namespace pt {
+
+// Per-ray constants of the test: kz is the dimension where |direction| is largest, kx and ky
+// the other two (swapped when direction[kz] < 0 to keep the winding), s the shear.
+struct WatertightRay {
+    Vec3 origin;
+    int kx, ky, kz;
+    float sx, sy, sz;
+};
+
+PT_HD WatertightRay makeWatertightRay(Vec3 origin, Vec3 direction) {
+    const int kz = maxDimension(vabs(direction));
+    int kx = kz == 2 ? 0 : kz + 1;
+    int ky = kx == 2 ? 0 : kx + 1;
+    if (direction[kz] < 0.0f) {
+        const int swap = kx;
+        kx = ky;
+        ky = swap;
+    }
+    const float sz = 1.0f / direction[kz];
+    return {origin, kx, ky, kz, direction[kx] * sz, direction[ky] * sz, sz};
+}
+
+// The 2D edge function a*b - c*d, computed so that edge(a, b, c, d) == -edge(c, d, a, b) bit for
+// bit, which is what makes the test watertight, whatever the compiler's FMA contraction does:
+//  - host: in double, where float products are exact, so the only rounding is the final one
+//    and its sign is exact (this is the paper's fallback, taken always: double is as fast as
+//    float on CPUs, and g++ contracts a*b - c*d into an FMA even in ISO mode when FMA exists);
+//  - CUDA: separately rounded products (__fmul_rn is never contracted), falling back to double
+//    for zeros in the caller as the paper does, since double is slow on many GPUs.
+PT_HD float edgeFunction(float a, float b, float c, float d) {
+#if defined(__CUDA_ARCH__)
+    return __fsub_rn(__fmul_rn(a, b), __fmul_rn(c, d));
+#else
+    return float(double(a) * double(b) - double(c) * double(d));
+#endif
+}
+
+// Closest-hit test against (0, tMax). On a hit, t is the ray parameter and u, v are the
+// barycentric weights of p1 and p2 (p0 weighs 1 - u - v).
+PT_HD bool intersectTriangle(const WatertightRay& ray, float tMax, Vec3 p0, Vec3 p1, Vec3 p2,
+                             float& t, float& u, float& v) {
+    const Vec3 a = p0 - ray.origin, b = p1 - ray.origin, c = p2 - ray.origin;
+    const float ax = a[ray.kx] - ray.sx * a[ray.kz], ay = a[ray.ky] - ray.sy * a[ray.kz];
+    const float bx = b[ray.kx] - ray.sx * b[ray.kz], by = b[ray.ky] - ray.sy * b[ray.kz];
+    const float cx = c[ray.kx] - ray.sx * c[ray.kz], cy = c[ray.ky] - ray.sy * c[ray.kz];
+    float e0 = edgeFunction(cx, by, cy, bx);  // weight of p0
+    float e1 = edgeFunction(ax, cy, ay, cx);  // weight of p1
+    float e2 = edgeFunction(bx, ay, by, ax);  // weight of p2
+#if defined(__CUDA_ARCH__)
+    if (e0 == 0.0f || e1 == 0.0f || e2 == 0.0f) {
+        // Products of floats are exact in double: the sign of each edge is now exact.
+        e0 = float(double(cx) * double(by) - double(cy) * double(bx));
+        e1 = float(double(ax) * double(cy) - double(ay) * double(cx));
+        e2 = float(double(bx) * double(ay) - double(by) * double(ax));
+    }
+#endif
+    if ((e0 < 0.0f || e1 < 0.0f || e2 < 0.0f) && (e0 > 0.0f || e1 > 0.0f || e2 > 0.0f)) return false;
+    const float det = e0 + e1 + e2;
+    if (det == 0.0f) return false;  // the ray lies in the triangle's plane
+    const float az = ray.sz * a[ray.kz], bz = ray.sz * b[ray.kz], cz = ray.sz * c[ray.kz];
+    const float scaledT = e0 * az + e1 * bz + e2 * cz;
+    // Range test on t * |det| first (no division for misses); written so that NaN fails.
+    const float signedT = det < 0.0f ? -scaledT : scaledT;
+    if (!(signedT > 0.0f && signedT < tMax * fabsf(det))) return false;
+    const float invDet = 1.0f / det;
+    const float tHit = scaledT * invDet;
+    if (!(tHit > 0.0f && tHit < tMax)) return false;  // rounding of the division
+    t = tHit;
+    u = e1 * invDet;
+    v = e2 * invDet;
+    return true;
+}
+
+// Convenience form for a single ray; traversal precomputes the WatertightRay once per ray.
+PT_HD bool intersectTriangle(const Ray& ray, Vec3 p0, Vec3 p1, Vec3 p2, float& t, float& u, float& v) {
+    return intersectTriangle(makeWatertightRay(ray.origin, ray.direction), ray.tMax, p0, p1, p2, t, u, v);
+}
+
+}  // namespace pt

@@ -1,0 +1,28 @@
+#pragma once
+// Radiance from the environment for rays that leave the scene: a constant color, or an
+// equirectangular image (+Y up; u = 0.5 looks down -Z, u grows towards +X; v = 0 is up),
+// rotated about +Y and scaled by its intensity.
+#include "render/materials/texture_sample.h"
+#include "render/scene/render_scene.h"
+
+namespace pt {
+
+PT_HD Vec2 directionToEquirect(Vec3 d, float rotationRadians) {
+    const float phi = atan2f(d.x, -d.z) - rotationRadians;
+    float u = phi * (0.5f * kInvPi) + 0.5f;
+    u -= floorf(u);
+    const float v = acosf(clampf(d.y, -1.0f, 1.0f)) * kInvPi;
+    return {u, v};
+}
+
+PT_HD Vec3 environmentRadiance(const RenderScene& scene, Vec3 direction) {
+    const RenderEnvironment& env = scene.environment;
+    if (env.texture < 0) return env.color;
+    TextureRef ref;
+    ref.texture = env.texture;
+    const Vec3 d = normalize(direction);
+    return sampleTexture(scene, ref, directionToEquirect(d, env.rotationRadians), false).xyz() *
+           env.intensity;
+}
+
+}  // namespace pt

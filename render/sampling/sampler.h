@@ -1,0 +1,115 @@
+#pragma once
+// Sample values as a pure function of (pixel, sample index, dimension, seed), so every
+// backend draws the same numbers and images can be compared pixel by pixel.
+//
+// The sequence is Owen-scrambled Sobol with hash-based nested uniform scrambling, shuffled
+// per pixel and padded in 4-dimensional groups (Burley, "Practical Hash-based Owen
+// Scrambling", JCGT 2020). Each group of 4 dimensions uses the first four Sobol dimensions
+// with an independent shuffle and scramble, so any 2D pair within a group is well
+// stratified, and groups stay uncorrelated.
+#include <cstdint>
+
+#include "render/math/vec.h"
+#include "render/sampling/hash.h"
+
+namespace pt {
+
+namespace sobol_detail {
+
+// Direction numbers of Sobol dimensions 0-3 (Joe and Kuo), most significant bit first.
+inline constexpr uint32_t kSobolDirections[4][32] = {
+    // clang-format off
+    {0x80000000u, 0x40000000u, 0x20000000u, 0x10000000u, 0x08000000u, 0x04000000u, 0x02000000u, 0x01000000u, 0x00800000u, 0x00400000u, 0x00200000u, 0x00100000u, 0x00080000u, 0x00040000u, 0x00020000u, 0x00010000u, 0x00008000u, 0x00004000u, 0x00002000u, 0x00001000u, 0x00000800u, 0x00000400u, 0x00000200u, 0x00000100u, 0x00000080u, 0x00000040u, 0x00000020u, 0x00000010u, 0x00000008u, 0x00000004u, 0x00000002u, 0x00000001u},
+    {0x80000000u, 0xc0000000u, 0xa0000000u, 0xf0000000u, 0x88000000u, 0xcc000000u, 0xaa000000u, 0xff000000u, 0x80800000u, 0xc0c00000u, 0xa0a00000u, 0xf0f00000u, 0x88880000u, 0xcccc0000u, 0xaaaa0000u, 0xffff0000u, 0x80008000u, 0xc000c000u, 0xa000a000u, 0xf000f000u, 0x88008800u, 0xcc00cc00u, 0xaa00aa00u, 0xff00ff00u, 0x80808080u, 0xc0c0c0c0u, 0xa0a0a0a0u, 0xf0f0f0f0u, 0x88888888u, 0xccccccccu, 0xaaaaaaaau, 0xffffffffu},
+    {0x80000000u, 0xc0000000u, 0x60000000u, 0x90000000u, 0xe8000000u, 0x5c000000u, 0x8e000000u, 0xc5000000u, 0x68800000u, 0x9cc00000u, 0xee600000u, 0x55900000u, 0x80680000u, 0xc09c0000u, 0x60ee0000u, 0x90550000u, 0xe8808000u, 0x5cc0c000u, 0x8e606000u, 0xc5909000u, 0x6868e800u, 0x9c9c5c00u, 0xeeee8e00u, 0x5555c500u, 0x8000e880u, 0xc0005cc0u, 0x60008e60u, 0x9000c590u, 0xe8006868u, 0x5c009c9cu, 0x8e00eeeeu, 0xc5005555u},
+    {0x80000000u, 0xc0000000u, 0x20000000u, 0x50000000u, 0xf8000000u, 0x74000000u, 0xa2000000u, 0x93000000u, 0xd8800000u, 0x25400000u, 0x59e00000u, 0xe6d00000u, 0x78080000u, 0xb40c0000u, 0x82020000u, 0xc3050000u, 0x208f8000u, 0x51474000u, 0xfbea2000u, 0x75d93000u, 0xa0858800u, 0x914e5400u, 0xdbe79e00u, 0x25db6d00u, 0x58800080u, 0xe54000c0u, 0x79e00020u, 0xb6d00050u, 0x800800f8u, 0xc00c0074u, 0x200200a2u, 0x50050093u},
+    // clang-format on
+};
+
+// The Sobol generator matrices applied one index byte at a time: 4 lookups instead of a
+// 32-step loop (an Owen-shuffled index has all 32 bits set at random). 16 KiB.
+struct SobolByteTables {
+    uint32_t entries[4][4][256];  // [dimension][byte of the index][byte value]
+};
+
+constexpr SobolByteTables makeSobolByteTables() {
+    SobolByteTables tables{};
+    for (uint32_t dim = 0; dim < 4; ++dim) {
+        for (uint32_t byte = 0; byte < 4; ++byte) {
+            for (uint32_t value = 0; value < 256; ++value) {
+                uint32_t x = 0;
+                for (uint32_t bit = 0; bit < 8; ++bit) {
+                    if ((value >> bit) & 1u) x ^= kSobolDirections[dim][byte * 8 + bit];
+                }
+                tables.entries[dim][byte][value] = x;
+            }
+        }
+    }
+    return tables;
+}
+
+#if defined(__CUDACC__)
+__device__ const SobolByteTables kSobolByteTables = makeSobolByteTables();
+#else
+inline constexpr SobolByteTables kSobolByteTables = makeSobolByteTables();
+#endif
+
+PT_HD uint32_t sobol(uint32_t index, uint32_t dim) {
+    const auto& t = kSobolByteTables.entries[dim];
+    return t[0][index & 0xffu] ^ t[1][(index >> 8) & 0xffu] ^ t[2][(index >> 16) & 0xffu] ^ t[3][index >> 24];
+}
+
+// Laine-Karras style permutation, as refined by Burley (2020), listing 2.
+PT_HD uint32_t laineKarrasPermutation(uint32_t x, uint32_t seed) {
+    x += seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return x;
+}
+
+PT_HD uint32_t nestedUniformScramble(uint32_t x, uint32_t seed) {
+    return reverseBits(laineKarrasPermutation(reverseBits(x), seed));
+}
+
+}  // namespace sobol_detail
+
+// Dimension layout of one path, so every stage draws from its own dimensions. 2D needs sit
+// on the first two dimensions of a 4D group: Sobol's dimensions 0 and 1 form a (0,2)-sequence,
+// so those pairs are stratified in every elementary interval; dimensions 2 and 3 are not.
+struct SampleDims {
+    static constexpr uint32_t kPixel = 0;       // 2: pixel filter jitter
+    static constexpr uint32_t kLens = 2;        // 2: thin-lens aperture
+    static constexpr uint32_t kFirstBounce = 4;
+    static constexpr uint32_t kPerBounce = 8;   // per bounce, relative to the bounce's base:
+    static constexpr uint32_t kLightPoint = 0;  //   2: where on the emitter
+    static constexpr uint32_t kLightPick = 2;   //   1: which emitter
+    static constexpr uint32_t kBsdfLobe = 3;    //   1: which lobe / reflect or refract
+    static constexpr uint32_t kBsdfDir = 4;     //   2: BSDF direction
+    static constexpr uint32_t kRoulette = 6;    //   1: Russian roulette
+    PT_HD static uint32_t bounce(uint32_t depth) { return kFirstBounce + depth * kPerBounce; }
+};
+
+// The sample value in [0, 1) for one pixel, sample and dimension.
+PT_HD float sampleDimension(uint32_t pixel, uint32_t sampleIndex, uint32_t dimension, uint32_t seed) {
+    using namespace sobol_detail;
+    const uint32_t group = dimension >> 2;
+    const uint32_t groupSeed = hashCombine(hashCombine(hashU32(seed), pixel), group);
+    const uint32_t shuffled = nestedUniformScramble(sampleIndex, groupSeed);
+    const uint32_t dim = dimension & 3u;
+    const uint32_t x = nestedUniformScramble(sobol(shuffled, dim), hashCombine(groupSeed, dim + 1));
+    return uintToUnitFloat(x);
+}
+
+// A per-path view that remembers pixel, sample and seed.
+struct PathSampler {
+    uint32_t pixel, sampleIndex, seed;
+
+    PT_HD float get(uint32_t dimension) const {
+        return sampleDimension(pixel, sampleIndex, dimension, seed);
+    }
+    PT_HD Vec2 get2(uint32_t dimension) const { return {get(dimension), get(dimension + 1)}; }
+};
+
+}  // namespace pt

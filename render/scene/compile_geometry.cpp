@@ -1,0 +1,128 @@
+#include "render/scene/compile_geometry.h"
+
+#include <tbb/parallel_for.h>
+
+#include <atomic>
+#include <stdexcept>
+
+#include "render/bvh/binned_sah_builder.h"
+
+namespace pt {
+
+namespace {
+
+std::string meshLabel(const Mesh& mesh, size_t index) {
+    return "mesh " + std::to_string(index) + (mesh.name.empty() ? "" : " \"" + mesh.name + "\"");
+}
+
+void appendSlots(const Mesh& mesh, size_t index, std::vector<uint32_t>& slots) {
+    const uint32_t count = mesh.primitiveCount();
+    if (!mesh.primitiveSlots.empty() && mesh.primitiveSlots.size() != count) {
+        throw std::invalid_argument(meshLabel(mesh, index) + ": " + std::to_string(mesh.primitiveSlots.size()) +
+                                    " material slots for " + std::to_string(count) + " primitives");
+    }
+    for (uint32_t p = 0; p < count; ++p) {
+        const uint32_t slot = mesh.primitiveSlots.empty() ? 0u : mesh.primitiveSlots[p];
+        if (slot >= mesh.slotCount) {
+            throw std::invalid_argument(meshLabel(mesh, index) + ": primitive " + std::to_string(p) +
+                                        " uses slot " + std::to_string(slot) + " of " +
+                                        std::to_string(mesh.slotCount));
+        }
+        slots.push_back(slot);
+    }
+}
+
+void appendTriangles(const Mesh& mesh, size_t index, CompiledScene& out) {
+    const uint32_t base = uint32_t(out.positions.size());
+    const uint32_t vertexCount = uint32_t(mesh.positions.size());
+    out.positions.insert(out.positions.end(), mesh.positions.begin(), mesh.positions.end());
+    // Normals and UVs stay parallel to positions; meshes without them leave zeros, and their
+    // BlasRef says so.
+    const bool hasNormals = mesh.normals.size() == vertexCount;
+    const bool hasUvs = mesh.uvs.size() == vertexCount;
+    if (hasNormals) out.normals.insert(out.normals.end(), mesh.normals.begin(), mesh.normals.end());
+    else out.normals.resize(out.positions.size());
+    if (hasUvs) out.uvs.insert(out.uvs.end(), mesh.uvs.begin(), mesh.uvs.end());
+    else out.uvs.resize(out.positions.size());
+    for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+        const uint32_t a = mesh.indices[i], b = mesh.indices[i + 1], c = mesh.indices[i + 2];
+        if (a >= vertexCount || b >= vertexCount || c >= vertexCount) {
+            throw std::invalid_argument(meshLabel(mesh, index) + ": triangle " + std::to_string(i / 3) +
+                                        " indexes past its " + std::to_string(vertexCount) + " vertices");
+        }
+        out.triangles.push_back({base + a, base + b, base + c});
+    }
+    BlasRef& blas = out.blases.back();
+    blas.hasNormals = hasNormals ? 1u : 0u;
+    blas.hasUvs = hasUvs ? 1u : 0u;
+    appendSlots(mesh, index, out.triangleSlots);
+}
+
+Aabb primitiveBounds(const CompiledScene& out, const BlasRef& blas, uint32_t p) {
+    Aabb box;
+    if (blas.kind == GeometryKind::Spheres) {
+        const Vec4 s = out.spheres[blas.primitiveOffset + p];
+        box.grow(s.xyz() - Vec3(s.w));
+        box.grow(s.xyz() + Vec3(s.w));
+        return box;
+    }
+    const TriangleIndices t = out.triangles[blas.primitiveOffset + p];
+    box.grow(out.positions[t.v0]);
+    box.grow(out.positions[t.v1]);
+    box.grow(out.positions[t.v2]);
+    return box;
+}
+
+}  // namespace
+
+void flattenGeometry(const Scene& scene, CompiledScene& out) {
+    for (size_t i = 0; i < scene.meshes.size(); ++i) {
+        const Mesh& mesh = scene.meshes[i];
+        BlasRef blas{};
+        blas.kind = mesh.kind;
+        blas.primitiveCount = mesh.primitiveCount();
+        if (mesh.kind == GeometryKind::Spheres) {
+            blas.primitiveOffset = uint32_t(out.spheres.size());
+            out.blases.push_back(blas);
+            out.spheres.insert(out.spheres.end(), mesh.spheres.begin(), mesh.spheres.end());
+            appendSlots(mesh, i, out.sphereSlots);
+            out.stats.spheres += mesh.spheres.size();
+        } else {
+            blas.primitiveOffset = uint32_t(out.triangles.size());
+            out.blases.push_back(blas);
+            appendTriangles(mesh, i, out);
+            out.stats.meshTriangles += blas.primitiveCount;
+        }
+    }
+    out.stats.blasCount = uint32_t(out.blases.size());
+}
+
+void buildBlases(const Scene& scene, CompiledScene& out, const ProgressFn& progress) {
+    const size_t meshCount = scene.meshes.size();
+    std::vector<Bvh> bvhs(meshCount);
+    std::atomic<uint64_t> primitivesDone{0};
+    const double totalPrimitives = double(out.stats.meshTriangles + out.stats.spheres) + 1.0;
+    reportProgress(progress, "build BVH", 0.0);
+    // Large meshes parallelise inside the builder; many small meshes parallelise here.
+    tbb::parallel_for(size_t(0), meshCount, [&](size_t i) {
+        const BlasRef& blas = out.blases[i];
+        std::vector<Aabb> bounds(blas.primitiveCount);
+        for (uint32_t p = 0; p < blas.primitiveCount; ++p) bounds[p] = primitiveBounds(out, blas, p);
+        bvhs[i] = buildBinnedSahBvh(bounds.data(), blas.primitiveCount);
+        primitivesDone += blas.primitiveCount;
+    });
+    reportProgress(progress, "build BVH", double(primitivesDone) / totalPrimitives);
+    for (size_t i = 0; i < meshCount; ++i) {
+        BlasRef& blas = out.blases[i];
+        blas.nodeOffset = uint32_t(out.blasNodes.size());
+        blas.nodeCount = uint32_t(bvhs[i].nodes.size());
+        blas.primIndexOffset = uint32_t(out.blasPrimIndices.size());
+        out.blasNodes.insert(out.blasNodes.end(), bvhs[i].nodes.begin(), bvhs[i].nodes.end());
+        out.blasPrimIndices.insert(out.blasPrimIndices.end(), bvhs[i].primIndices.begin(),
+                                   bvhs[i].primIndices.end());
+    }
+    out.stats.blasNodes = out.blasNodes.size();
+    reportProgress(progress, "build BVH", 1.0);
+}
+
+}  // namespace pt

@@ -1,0 +1,15 @@
+#pragma once
+// The geometry half of compileRenderScene: concatenating meshes into global arrays and
+// building one BLAS per mesh. BLAS i belongs to Scene::meshes[i].
+#include "render/scene/compile_scene.h"
+
+namespace pt {
+
+// Fills positions/normals/uvs/triangles/spheres/slots and one BlasRef per mesh (BVH fields
+// left for buildBlases). Throws std::invalid_argument on an index past its mesh's vertices.
+void flattenGeometry(const Scene& scene, CompiledScene& out);
+
+// Builds the BLASes (binned SAH, meshes in parallel) and fills the BlasRef BVH fields.
+void buildBlases(const Scene& scene, CompiledScene& out, const ProgressFn& progress);
+
+}  // namespace pt

@@ -1,0 +1,197 @@
+#include "render/scene/compile_scene.h"
+
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <stdexcept>
+
+#include "render/bvh/binned_sah_builder.h"
+#include "render/integrator/camera.h"
+#include "render/scene/compile_geometry.h"
+
+namespace pt {
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+template <class T>
+Span<const T> spanOf(const std::vector<T>& v) {
+    return {v.data(), uint32_t(v.size())};
+}
+
+void compileTextures(const Scene& scene, CompiledScene& out) {
+    for (const Texture& t : scene.textures) {
+        TextureView view{};
+        view.width = t.width;
+        view.height = t.height;
+        view.format = t.format;
+        view.wrapS = t.wrapS;
+        view.wrapT = t.wrapT;
+        view.nearest = t.nearest ? 1u : 0u;
+        if (t.format == TexelFormat::RGBA8) {
+            view.texelOffset = uint32_t(out.texels8.size() / 4);
+            out.texels8.insert(out.texels8.end(), t.texels8.begin(), t.texels8.end());
+        } else {
+            view.texelOffset = uint32_t(out.texelsF.size() / 4);
+            out.texelsF.insert(out.texelsF.end(), t.texelsF.begin(), t.texelsF.end());
+        }
+        out.textures.push_back(view);
+    }
+}
+
+// World bounds of an instance: its BLAS root box through the transform (8 corners).
+Aabb instanceBounds(const CompiledScene& out, const RenderInstance& inst) {
+    const BlasRef& blas = out.blases[inst.blas];
+    const BvhNode& root = out.blasNodes[blas.nodeOffset];
+    Aabb box;
+    for (int c = 0; c < 8; ++c) {
+        const Vec3 corner{c & 1 ? root.hi.x : root.lo.x, c & 2 ? root.hi.y : root.lo.y,
+                          c & 4 ? root.hi.z : root.lo.z};
+        box.grow(inst.objectToWorld.transformPoint(corner));
+    }
+    return box;
+}
+
+void compileInstances(const Scene& scene, const std::vector<Material>& materials, CompiledScene& out) {
+    for (size_t i = 0; i < scene.instances.size(); ++i) {
+        const Instance& src = scene.instances[i];
+        if (!src.visible) continue;
+        if (src.mesh >= scene.meshes.size()) {
+            throw std::invalid_argument("instance \"" + src.name + "\" names mesh " +
+                                        std::to_string(src.mesh) + ", which does not exist");
+        }
+        const Mesh& mesh = scene.meshes[src.mesh];
+        if (mesh.primitiveCount() == 0) continue;
+        RenderInstance inst{};
+        inst.objectToWorld = src.objectToWorld;
+        inst.worldToObject = inverse(src.objectToWorld);
+        inst.blas = src.mesh;
+        inst.flipsWinding = src.objectToWorld.determinant() < 0.0f ? 1u : 0u;
+        inst.materialOffset = uint32_t(out.instanceMaterials.size());
+        // The last material is the fallback for slots an instance leaves unmapped.
+        const uint32_t fallback = uint32_t(materials.size() - 1);
+        for (uint32_t slot = 0; slot < mesh.slotCount; ++slot) {
+            const uint32_t m = slot < src.materials.size() ? src.materials[slot] : fallback;
+            if (m >= materials.size()) {
+                throw std::invalid_argument("instance \"" + src.name + "\" names material " +
+                                            std::to_string(m) + ", which does not exist");
+            }
+            out.instanceMaterials.push_back(m);
+        }
+        out.instances.push_back(inst);
+    }
+}
+
+void buildTlas(CompiledScene& out) {
+    std::vector<Aabb> bounds(out.instances.size());
+    for (size_t i = 0; i < out.instances.size(); ++i) bounds[i] = instanceBounds(out, out.instances[i]);
+    Bvh tlas = buildBinnedSahBvh(bounds.data(), uint32_t(bounds.size()));
+    out.tlasNodes = std::move(tlas.nodes);
+    out.tlasInstanceIndices = std::move(tlas.primIndices);
+}
+
+}  // namespace
+
+std::vector<Material> compileMaterials(const Scene& scene) {
+    std::vector<Material> materials;
+    materials.reserve(scene.materials.size() + 1);
+    for (const NamedMaterial& m : scene.materials) materials.push_back(m.params);
+    materials.push_back(Material{});  // fallback for unmapped slots
+    return materials;
+}
+
+IntegratorSettings compileSettings(const RenderSettings& settings) {
+    IntegratorSettings s{};
+    s.width = settings.width;
+    s.height = settings.height;
+    s.maxDepth = settings.maxDepth;
+    s.seed = settings.seed;
+    return s;
+}
+
+RenderEnvironment compileEnvironment(const Environment& environment) {
+    RenderEnvironment env{};
+    env.color = environment.color * environment.intensity;
+    env.texture = environment.texture;
+    env.intensity = environment.intensity;
+    env.rotationRadians = environment.rotationDegrees * kPi / 180.0f;
+    return env;
+}
+
+CompiledScene compileRenderScene(const Scene& scene, const CompileOptions& options,
+                                 const ProgressFn& progress) {
+    CompiledScene out;
+    auto start = std::chrono::steady_clock::now();
+    out.materials = compileMaterials(scene);
+    flattenGeometry(scene, out);
+    compileTextures(scene, out);
+    compileInstances(scene, out.materials, out);
+    out.stats.flattenSeconds = secondsSince(start);
+
+    out.stats.instanceCount = uint32_t(out.instances.size());
+    for (const RenderInstance& inst : out.instances) {
+        if (out.blases[inst.blas].kind == GeometryKind::Triangles) {
+            out.stats.instancedTriangles += out.blases[inst.blas].primitiveCount;
+        }
+    }
+    if (options.bruteForce && out.stats.instancedTriangles > options.bruteForceBudget) {
+        throw std::invalid_argument(
+            "BVH off (brute force) refused: the scene traces " +
+            std::to_string(out.stats.instancedTriangles) + " triangles, over the budget of " +
+            std::to_string(options.bruteForceBudget));
+    }
+    out.bruteForce = options.bruteForce;
+
+    start = std::chrono::steady_clock::now();
+    buildBlases(scene, out, progress);
+    out.stats.blasSeconds = secondsSince(start);
+
+    start = std::chrono::steady_clock::now();
+    buildTlas(out);
+    out.stats.tlasSeconds = secondsSince(start);
+
+    start = std::chrono::steady_clock::now();
+    out.emitters = buildEmitterTable(out.view());
+    out.stats.lightSeconds = secondsSince(start);
+    out.stats.emitterCount = uint32_t(out.emitters.emitters.size());
+
+    out.environment = compileEnvironment(scene.environment);
+    out.camera = makeRenderCamera(scene.camera, scene.render.width, scene.render.height);
+    out.settings = compileSettings(scene.render);
+    return out;
+}
+
+RenderScene CompiledScene::view() const {
+    RenderScene s;
+    s.positions = spanOf(positions);
+    s.normals = spanOf(normals);
+    s.uvs = spanOf(uvs);
+    s.triangles = spanOf(triangles);
+    s.spheres = spanOf(spheres);
+    s.triangleSlots = spanOf(triangleSlots);
+    s.sphereSlots = spanOf(sphereSlots);
+    s.blases = spanOf(blases);
+    s.blasNodes = spanOf(blasNodes);
+    s.blasPrimIndices = spanOf(blasPrimIndices);
+    s.instances = spanOf(instances);
+    s.tlasNodes = spanOf(tlasNodes);
+    s.tlasInstanceIndices = spanOf(tlasInstanceIndices);
+    s.instanceMaterials = spanOf(instanceMaterials);
+    s.materials = spanOf(materials);
+    s.textures = spanOf(textures);
+    s.texels8 = spanOf(texels8);
+    s.texelsF = spanOf(texelsF);
+    s.emitters = spanOf(emitters.emitters);
+    s.emitterAlias = spanOf(emitters.alias);
+    s.emitterTotalWeight = emitters.totalWeight;
+    s.environment = environment;
+    s.camera = camera;
+    s.settings = settings;
+    s.bruteForce = bruteForce ? 1u : 0u;
+    return s;
+}
+
+}  // namespace pt

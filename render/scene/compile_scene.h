@@ -1,0 +1,68 @@
+#pragma once
+// compileRenderScene: the one place that knows both scene forms (STYLE.md rule 5). It flattens
+// a Scene into arrays, builds a BLAS per mesh (binned SAH) and the TLAS over visible
+// instances, gathers the emitters, and hands out a RenderScene view of it all.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "render/lights/emitter_table.h"
+#include "render/scene/render_scene.h"
+#include "render/scene/scene.h"
+#include "render/util/progress.h"
+
+namespace pt {
+
+struct CompileOptions {
+    bool bruteForce = false;               // no BVH: validation only
+    uint64_t bruteForceBudget = 100000;    // triangles x instances above which bruteForce is refused
+};
+
+struct CompileStats {
+    double flattenSeconds = 0, blasSeconds = 0, tlasSeconds = 0, lightSeconds = 0;
+    uint64_t meshTriangles = 0;            // unique triangles over meshes (what BLASes hold)
+    uint64_t instancedTriangles = 0;       // over visible instances (what is traced)
+    uint64_t spheres = 0;
+    uint32_t blasCount = 0, instanceCount = 0, emitterCount = 0;
+    uint64_t blasNodes = 0;
+};
+
+struct CompiledScene {
+    std::vector<Vec3> positions, normals;
+    std::vector<Vec2> uvs;
+    std::vector<TriangleIndices> triangles;
+    std::vector<Vec4> spheres;
+    std::vector<uint32_t> triangleSlots, sphereSlots;
+    std::vector<BlasRef> blases;
+    std::vector<BvhNode> blasNodes;
+    std::vector<uint32_t> blasPrimIndices;
+    std::vector<RenderInstance> instances;
+    std::vector<BvhNode> tlasNodes;
+    std::vector<uint32_t> tlasInstanceIndices;
+    std::vector<uint32_t> instanceMaterials;
+    std::vector<Material> materials;
+    std::vector<TextureView> textures;
+    std::vector<uint8_t> texels8;
+    std::vector<float> texelsF;
+    EmitterTable emitters;
+    RenderEnvironment environment{};
+    RenderCamera camera{};
+    IntegratorSettings settings{};
+    bool bruteForce = false;
+    CompileStats stats;
+
+    // The view stays valid while this object lives and its vectors are not resized.
+    RenderScene view() const;
+};
+
+// Throws std::invalid_argument with a clear message when a request cannot be honoured
+// (brute force over its budget, an instance naming a missing mesh or material).
+CompiledScene compileRenderScene(const Scene& scene, const CompileOptions& options = {},
+                                 const ProgressFn& progress = {});
+
+// The parts that edits recompile on their own.
+std::vector<Material> compileMaterials(const Scene& scene);
+IntegratorSettings compileSettings(const RenderSettings& settings);
+RenderEnvironment compileEnvironment(const Environment& environment);
+
+}  // namespace pt

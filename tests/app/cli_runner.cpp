@@ -1,0 +1,38 @@
+#include "cli_runner.h"
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "support/test_paths.h"
+
+namespace pt::test {
+
+namespace {
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+}  // namespace
+
+CliResult runCli(const std::string& args) {
+    static int counter = 0;
+    const std::string base = tempDir() + "/cli" + std::to_string(counter++);
+    const std::string command = std::string("'") + PT_RENDER_CLI + "' " + args + " >'" + base +
+                                ".out' 2>'" + base + ".err'";
+    const int status = std::system(command.c_str());
+    CliResult r;
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = slurp(base + ".out");
+    r.err = slurp(base + ".err");
+    return r;
+}
+
+}  // namespace pt::test

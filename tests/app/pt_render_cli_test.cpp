@@ -1,0 +1,117 @@
+// End-to-end tests of the pt-render command line: real process, real files.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "assets/image_write.h"
+#include "assets/scene_loader.h"
+#include "cli_runner.h"
+#include "support/test_paths.h"
+
+namespace pt {
+namespace {
+
+namespace fs = std::filesystem;
+using test::runCli;
+
+std::string cornell() { return "'" + test::projectPath("scenes/cornell.json") + "'"; }
+
+TEST(PtRenderCli, RendersExrPngAndStatsAndPrintsThePaths) {
+    const std::string dir = test::tempDir();
+    const std::string exr = dir + "/c.exr", png = dir + "/c.png", stats = dir + "/c.json";
+    const auto r = runCli("render " + cornell() + " -o " + exr + " --png " + png + " --spp 4 --size 48x32 --stats " +
+                          stats + " --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.out, exr + "\n" + png + "\n");
+    uint32_t w = 0, h = 0;
+    const std::vector<float> rgba = readImageRgba(exr, w, h);
+    EXPECT_EQ(w, 48u);
+    EXPECT_EQ(h, 32u);
+    double sum = 0;
+    for (float v : rgba) sum += v;
+    EXPECT_GT(sum, 48 * 32);  // lit, not black (alpha alone would give exactly 48 * 32)
+    EXPECT_TRUE(fs::exists(png));
+    std::ifstream in(stats);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    for (const char* key : {"spp", "seconds", "width", "height", "backend", "triangles", "instances", "rays",
+                            "mrays_per_s", "nonfinite_samples"}) {
+        EXPECT_TRUE(j.contains(key)) << key;
+    }
+    EXPECT_EQ(j["spp"], 4);
+    EXPECT_EQ(j["width"], 48);
+    EXPECT_EQ(j["backend"], "cpu");
+    EXPECT_EQ(j["nonfinite_samples"], 0);
+    EXPECT_GT(j["rays"].get<uint64_t>(), 48u * 32u * 4u);
+}
+
+TEST(PtRenderCli, ErrorsExitNonZeroWithOneClearLine) {
+    const std::string out = " -o " + test::tempDir() + "/x.exr";
+    struct Case {
+        std::string args;
+        int code;
+        std::string needle;
+    };
+    const Case cases[] = {
+        {"render /nonexistent/scene.json" + out, 1, "/nonexistent/scene.json"},
+        {"render " + cornell() + out + " --backend cuda", 1, "cuda"},
+        {"render " + cornell() + out + " --backend vulkan", 1, "unknown backend"},
+        {"render " + cornell() + out + " --spp 0", 2, "--spp"},
+        {"render " + cornell() + out + " --size 12", 2, "WIDTHxHEIGHT"},
+        {"render " + cornell() + out + " --spp 2 --time 1", 2, "exclude"},
+        {"render " + cornell(), 2, "output"},
+        {"render " + cornell() + out + " --frobnicate", 2, "--frobnicate"},
+        {"render " + cornell() + " -o /nonexistent-dir/x.exr --spp 1 --size 8x8 --quiet", 1, "/nonexistent-dir"},
+        {"transmogrify", 2, "unknown command"},
+    };
+    for (const Case& c : cases) {
+        const auto r = runCli(c.args);
+        EXPECT_EQ(r.exitCode, c.code) << c.args << "\n" << r.err;
+        EXPECT_NE(r.err.find(c.needle), std::string::npos) << c.args << "\nstderr: " << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.args << "\nstderr: " << r.err;
+    }
+}
+
+TEST(PtRenderCli, BvhOffIsRefusedAboveItsBudget) {
+    // The instanced scene traces 64 x 12,288 triangles, far over the brute-force budget.
+    const auto r = runCli("render '" + test::projectPath("scenes/instances.json") + "' -o " + test::tempDir() +
+                          "/i.exr --spp 1 --size 8x8 --bvh-off --quiet");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.err.find("brute force"), std::string::npos) << r.err;
+}
+
+TEST(PtRenderCli, InfoReportsCountsAsJson) {
+    const auto r = runCli("info " + cornell() + " --json");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["triangles"], 6 * 2 + 12);  // six quads and one box
+    EXPECT_EQ(j["spheres"], 1);
+    EXPECT_EQ(j["instances"], 8);
+    EXPECT_EQ(j["materials"], 6);
+    EXPECT_EQ(j["emissive_triangles"], 2);
+    for (const char* key : {"meshes", "textures", "bounds", "load_seconds", "blas_build_seconds", "tlas_build_seconds"}) {
+        EXPECT_TRUE(j.contains(key)) << key;
+    }
+}
+
+TEST(PtRenderCli, ExportWritesSceneJsonThatLoadsAgain) {
+    const std::string out = test::tempDir() + "/exported.json";
+    const auto r = runCli("export " + cornell() + " -o " + out + " --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const LoadResult reloaded = loadScene(out);
+    ASSERT_TRUE(reloaded.ok()) << reloaded.error;
+    EXPECT_EQ(reloaded.scene->instances.size(), 8u);
+}
+
+TEST(PtRenderCli, ExportsAGltfModelAsSceneJson) {
+    const std::string out = test::tempDir() + "/knot.json";
+    const auto r = runCli("export '" + test::projectPath("scenes/models/torus_knot.gltf") + "' -o " + out + " --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const LoadResult reloaded = loadScene(out);
+    ASSERT_TRUE(reloaded.ok()) << reloaded.error;
+    EXPECT_EQ(reloaded.scene->triangleCount(), 12288u);
+}
+
+}  // namespace
+}  // namespace pt
