@@ -4,8 +4,11 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 
 #include "assets/input_error.h"
@@ -85,8 +88,8 @@ bool startsWith(const std::vector<uint8_t>& bytes, const char* magic, size_t n, 
 }
 
 // OIIO picks its reader by file extension; memory has none, so the bytes say what they are.
-std::string formatExtension(const std::vector<uint8_t>& bytes, const std::string& mimeType,
-                            const std::string& name) {
+// "" when they do not (formats without a signature, such as TGA).
+std::string sniffExtension(const std::vector<uint8_t>& bytes, const std::string& name) {
     if (startsWith(bytes, "\x89PNG\r\n\x1a\n", 8)) return "png";
     if (startsWith(bytes, "\xff\xd8\xff", 3)) return "jpg";
     if (startsWith(bytes, "#?RADIANCE", 10) || startsWith(bytes, "#?RGBE", 6)) return "hdr";
@@ -98,46 +101,106 @@ std::string formatExtension(const std::vector<uint8_t>& bytes, const std::string
     if (startsWith(bytes, "\xabKTX 20\xbb", 8)) {
         throw InputError(name + ": KTX2 (GPU-compressed) images are not supported");
     }
-    throw InputError(name + ": not an image format we can decode" +
-                     (mimeType.empty() ? std::string() : " (mimeType '" + mimeType + "')"));
+    return "";
+}
+
+uint32_t bigEndian32(const uint8_t* p) {
+    return uint32_t(p[0]) << 24 | uint32_t(p[1]) << 16 | uint32_t(p[2]) << 8 | uint32_t(p[3]);
+}
+
+// A PNG's chunks must all lie inside the bytes, up to IEND. Checked here because when libpng
+// runs out of input inside OIIO 2.4's read callback, OIIO leaks its error string.
+void checkPngChunks(const std::vector<uint8_t>& bytes, const std::string& name) {
+    size_t at = 8;
+    while (at + 12 <= bytes.size()) {
+        const uint64_t length = bigEndian32(&bytes[at]);
+        if (at + 12 + length > bytes.size()) break;
+        if (std::memcmp(&bytes[at + 4], "IEND", 4) == 0) return;
+        at += 12 + size_t(length);
+    }
+    throw InputError(name + ": PNG data is truncated");
+}
+
+// Reads through an in-memory proxy; nullptr when OIIO's reader for `extension` cannot.
+// (ImageInput::open(name, config, proxy) looks for the file on disk in OIIO 2.4; creating
+// the reader and handing it the proxy first reads from memory.)
+std::unique_ptr<OIIO::ImageInput> openInMemory(const std::string& extension,
+                                               OIIO::Filesystem::IOMemReader& memory,
+                                               const OIIO::ImageSpec& config,
+                                               const std::string& name) {
+    const std::string fakeName = "memory." + extension;
+    auto in = OIIO::ImageInput::create(fakeName, false, &config, &memory);
+    if (!in) throw InputError(name + ": cannot decode: " + OIIO::geterror());
+    if (!in->supports("ioproxy")) return nullptr;
+    in->set_ioproxy(&memory);
+    OIIO::ImageSpec spec;
+    if (!in->open(fakeName, spec, config)) {
+        throw InputError(name + ": cannot decode: " + in->geterror());
+    }
+    return in;
+}
+
+// `filePath` (may be ""): where the bytes came from, for formats OIIO reads only from files.
+Texture decodeBytes(const std::vector<uint8_t>& bytes, std::string extension,
+                    const std::string& name, const std::string& filePath) {
+    if (bytes.empty()) throw InputError(name + ": image is empty");
+    const std::string sniffed = sniffExtension(bytes, name);
+    if (!sniffed.empty()) extension = sniffed;
+    if (extension.empty()) throw InputError(name + ": not an image format we can decode");
+    if (sniffed == "png") checkPngChunks(bytes, name);
+    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+    const OIIO::ImageSpec config = readConfig();
+    std::unique_ptr<OIIO::ImageInput> in = openInMemory(extension, memory, config, name);
+    if (!in && !filePath.empty()) {
+        in = OIIO::ImageInput::open(filePath, &config);
+        if (!in) throw InputError(name + ": cannot decode: " + OIIO::geterror());
+    }
+    if (!in) throw InputError(name + ": " + extension + " images cannot be read from memory");
+    return decodeOpened(*in, name);
+}
+
+// decodeBytes, with anything a library throws (bad_alloc on a lying header) as bad input.
+Texture decodeGuarded(const std::vector<uint8_t>& bytes, const std::string& extension,
+                      const std::string& name, const std::string& filePath) {
+    try {
+        return decodeBytes(bytes, extension, name, filePath);
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw InputError(name + ": cannot decode: " + e.what());
+    }
+}
+
+std::string mimeExtension(const std::string& mimeType) {
+    if (mimeType == "image/png") return "png";
+    if (mimeType == "image/jpeg") return "jpg";
+    return "";
 }
 
 }  // namespace
 
 Texture readTextureFile(const std::string& path) {
-    const std::string name = std::filesystem::path(path).filename().string();
     std::error_code error;
     if (!std::filesystem::is_regular_file(path, error)) {
         throw InputError(path + ": image file not found");
     }
-    const OIIO::ImageSpec config = readConfig();
-    auto in = OIIO::ImageInput::open(path, &config);
-    if (!in) throw InputError(path + ": cannot open image: " + OIIO::geterror());
-    Texture texture = decodeOpened(*in, path);
-    texture.name = name;
+    std::ifstream in(path, std::ios::binary);
+    const std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in),
+                                     std::istreambuf_iterator<char>()};
+    if (!in && !in.eof()) throw InputError(path + ": cannot read image file");
+    std::string extension = std::filesystem::path(path).extension().string();
+    if (!extension.empty()) extension.erase(0, 1);
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    Texture texture = decodeGuarded(bytes, extension, path, path);
+    texture.name = std::filesystem::path(path).filename().string();
     texture.sourcePath = path;
     return texture;
 }
 
 Texture decodeTextureFromMemory(const std::vector<uint8_t>& bytes, const std::string& name,
                                 const std::string& mimeType) {
-    if (bytes.empty()) throw InputError(name + ": image is empty");
-    const std::string fakeName = "memory." + formatExtension(bytes, mimeType, name);
-    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
-    const OIIO::ImageSpec config = readConfig();
-    // ImageInput::open(name, config, proxy) looks for the file on disk in OIIO 2.4; creating
-    // the reader and handing it the proxy first reads from memory.
-    auto in = OIIO::ImageInput::create(fakeName, false, &config, &memory);
-    if (!in) throw InputError(name + ": cannot decode: " + OIIO::geterror());
-    if (!in->supports("ioproxy")) {
-        throw InputError(name + ": " + in->format_name() + " images cannot be read from memory");
-    }
-    in->set_ioproxy(&memory);
-    OIIO::ImageSpec spec;
-    if (!in->open(fakeName, spec, config)) {
-        throw InputError(name + ": cannot decode: " + in->geterror());
-    }
-    return decodeOpened(*in, name);
+    return decodeGuarded(bytes, mimeExtension(mimeType), name, "");
 }
 
 }  // namespace pt

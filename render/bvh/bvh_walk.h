@@ -19,6 +19,7 @@ struct TraversalStats {
     uint32_t nodesVisited = 0;      // nodes whose contents were examined (interior or leaf)
     uint32_t primitivesTested = 0;  // primitive intersection tests
 };
+static_assert(sizeof(TraversalStats) == 8, "TraversalStats: 8 bytes (an AOV buffer element)");
 
 // min/max written as comparisons: one minss/maxss each on x86, where fminf's NaN rules cost
 // extra instructions; inputs here are never NaN, so the two agree.
@@ -37,6 +38,7 @@ struct TraversalRay {
     Vec3 invDirection;         // finite; 0 on zero axes
     uint32_t zeroAxes;         // bit a set: |direction[a]| < kMinDirection
 };
+static_assert(sizeof(TraversalRay) == 64, "TraversalRay: 64 bytes of registers per level");
 
 constexpr float kMinDirection = 1e-30f;
 
@@ -72,7 +74,7 @@ PT_HD bool intersectBoxWithZeroAxes(const TraversalRay& ray, Vec3 lo, Vec3 hi, f
         tFar = minFast(tFar, maxFast(t0, t1));
     }
     tEntry = tNear;
-    return tNear <= minFast(tFar * kSlabExitScale, tMax);
+    return tNear <= minFast(tFar * kSlabExitScale, tMax * kSlabExitScale);
 }
 
 // Slab test against [0, tMax]; on a hit, tEntry is where the ray enters the box (>= 0). Never
@@ -87,7 +89,10 @@ PT_HD bool intersectBox(const TraversalRay& ray, Vec3 lo, Vec3 hi, float tMax, f
     const float tNear = maxFast(maxFast(minFast(x0, x1), minFast(y0, y1)), maxFast(minFast(z0, z1), 0.0f));
     const float tFar = minFast(maxFast(x0, x1), minFast(maxFast(y0, y1), maxFast(z0, z1))) * kSlabExitScale;
     tEntry = tNear;
-    return tNear <= minFast(tFar, tMax);
+    // tMax gets the same slack as the exit: a hit an ulp nearer than the current closest one
+    // must not be culled by the rounding of tNear, or the closest hit would depend on the
+    // order subtrees are visited in.
+    return tNear <= minFast(tFar, tMax * kSlabExitScale);
 }
 
 // Walks the BVH `nodes` (root at index 0), nearest child first. `leaf(first, count, tMax)`
@@ -133,7 +138,7 @@ PT_HD bool walkBvh(const BvhNode* nodes, const TraversalRay& ray, float& tMax, L
         do {
             if (size == 0) return found;
             --size;
-        } while (stackEntry[size] > tMax);
+        } while (stackEntry[size] > tMax * kSlabExitScale);
         current = stackNode[size];
     }
 }

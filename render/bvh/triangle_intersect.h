@@ -69,9 +69,12 @@ PT_HD bool intersectTriangle(const WatertightRay& ray, float tMax, Vec3 p0, Vec3
     if (det == 0.0f) return false;  // the ray lies in the triangle's plane
     const float az = ray.sz * a[ray.kz], bz = ray.sz * b[ray.kz], cz = ray.sz * c[ray.kz];
     const float scaledT = e0 * az + e1 * bz + e2 * cz;
-    // Range test on t * |det| first (no division for misses); written so that NaN fails.
+    // Range test on t * |det| first (no division for misses); written so that NaN fails. It is
+    // conservative (a relative slack of 2^-20) because tMax * |det| rounds: an exact test here
+    // could reject a hit an ulp nearer than tMax, making the closest hit depend on the order
+    // primitives are visited in. The exact test on tHit below decides.
     const float signedT = det < 0.0f ? -scaledT : scaledT;
-    if (!(signedT > 0.0f && signedT < tMax * fabsf(det))) return false;
+    if (!(signedT > 0.0f && signedT <= tMax * fabsf(det) * (1.0f + 0x1p-20f))) return false;
     const float invDet = 1.0f / det;
     const float tHit = scaledT * invDet;
     if (!(tHit > 0.0f && tHit < tMax)) return false;  // rounding of the division

@@ -10,14 +10,14 @@ namespace pt {
 
 struct Vec2 {
     float x = 0, y = 0;
-    PT_HD constexpr Vec2() = default;
+    constexpr Vec2() = default;
     PT_HD constexpr Vec2(float x_, float y_) : x(x_), y(y_) {}
     PT_HD float operator[](int i) const { return i == 0 ? x : y; }
 };
 
 struct Vec3 {
     float x = 0, y = 0, z = 0;
-    PT_HD constexpr Vec3() = default;
+    constexpr Vec3() = default;
     PT_HD constexpr explicit Vec3(float s) : x(s), y(s), z(s) {}
     PT_HD constexpr Vec3(float x_, float y_, float z_) : x(x_), y(y_), z(z_) {}
     PT_HD float operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
@@ -26,7 +26,7 @@ struct Vec3 {
 
 struct Vec4 {
     float x = 0, y = 0, z = 0, w = 0;
-    PT_HD constexpr Vec4() = default;
+    constexpr Vec4() = default;
     PT_HD constexpr Vec4(float x_, float y_, float z_, float w_) : x(x_), y(y_), z(z_), w(w_) {}
     PT_HD Vec3 xyz() const { return {x, y, z}; }
 };

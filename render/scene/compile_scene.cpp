@@ -52,6 +52,11 @@ Aabb instanceBounds(const CompiledScene& out, const RenderInstance& inst) {
                           c & 4 ? root.hi.z : root.lo.z};
         box.grow(inst.objectToWorld.transformPoint(corner));
     }
+    // The corners are rounded once more by the transform; pad by a few ulps of the largest
+    // coordinate so the box never ends up inside the geometry it bounds.
+    const float pad = 4.0f * 1.2e-7f * fmaxf(maxComponent(vabs(box.lo)), maxComponent(vabs(box.hi)));
+    box.lo -= Vec3(pad);
+    box.hi += Vec3(pad);
     return box;
 }
 

@@ -50,6 +50,28 @@ TEST(PathTracer, ConvexDiffuseSphereUnderUniformSkyIsExact) {
     EXPECT_GT(onSphere, 100u);
 }
 
+// The same exact answer 1e5 units from the origin and at a scale of 1e-4: ray origins are
+// offset in proportion to the coordinates' magnitude, so there is no self-intersection
+// (acne) far out and no light leak when small.
+TEST(PathTracer, ConvexSphereStaysExactFarFromTheOriginAndAtTinyScale) {
+    const Vec3 sky{0.8f, 0.6f, 0.4f};
+    for (const auto& [offset, scale] : {std::pair<float, float>{1e5f, 1.0f}, {0.0f, 1e-4f}, {-3e4f, 50.0f}}) {
+        Scene scene = sphereInConstantSky(diffuse({0.5f, 0.5f, 0.5f}), sky);
+        scene.instances[0].objectToWorld = trs(Vec3(offset), {0, 0, 0}, Vec3(scale)).toAffine();
+        scene.camera.position = Vec3(offset) + Vec3{0, 0, 4 * scale};
+        scene.camera.lookAt = Vec3(offset);
+        const std::vector<float> image = test::renderCpu(scene, 4);
+        size_t onSphere = 0;
+        for (size_t i = 0; i < image.size() / 4; ++i) {
+            const float fraction = (sky.x - image[i * 4]) / (0.5f * sky.x);
+            ASSERT_NEAR(fraction * 4.0f, std::round(fraction * 4.0f), 1e-3f)
+                << "offset " << offset << " scale " << scale << " pixel " << i << " = " << image[i * 4];
+            onSphere += std::fabs(fraction - 1.0f) < 1e-4f;
+        }
+        EXPECT_GT(onSphere, 100u) << "offset " << offset << " scale " << scale;
+    }
+}
+
 // IOR 1 glass is no interface at all: the sphere must vanish against the sky.
 TEST(PathTracer, IndexMatchedGlassSphereVanishes) {
     Material glass;
