@@ -86,8 +86,27 @@ Scene sceneFromModelFile(const std::string& path, const ProgressFn& progress) {
     instantiateImportedFile(file, 0, scene);
     scene.cameraFromFile = file.camera.has_value();
     scene.camera = file.camera ? *file.camera : frameBounds(scene);
+    lightUnlitModel(scene);
     reportProgress(progress, "load scene", 1.0);
     return scene;
+}
+
+bool sceneHasEmitters(const Scene& scene) {
+    for (const Instance& instance : scene.instances) {
+        for (uint32_t m : instance.materials) {
+            if (m < scene.materials.size() && scene.materials[m].params.isEmissive()) return true;
+        }
+    }
+    return false;
+}
+
+void lightUnlitModel(Scene& scene) {
+    if (sceneHasEmitters(scene) || !isBlack(scene.environment.color) || scene.environment.texture >= 0) return;
+    // A model file brings no environment; one without emitters would render black, where a
+    // viewer shows it lit. Say so, since the light is not in the file.
+    scene.environment.color = Vec3(1.0f);
+    scene.warnings.push_back(fs::path(scene.sourcePath).filename().string() +
+                             ": no lights in the file: lit by a uniform white environment of radiance 1");
 }
 
 void instantiateImportedFile(const ImportedFile& file, int32_t objectIndex, Scene& scene) {

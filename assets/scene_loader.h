@@ -28,6 +28,13 @@ Scene sceneFromModelFile(const std::string& path, const ProgressFn& progress = {
 // overrides by name applied. Throws InputError for an override naming an unknown material.
 void instantiateImportedFile(const ImportedFile& file, int32_t objectIndex, Scene& scene);
 
+// Whether any instanced material emits light.
+bool sceneHasEmitters(const Scene& scene);
+
+// Gives a scene with no light at all (no emitters, black environment) a uniform white
+// environment, with a warning; used for model files opened on their own.
+void lightUnlitModel(Scene& scene);
+
 // A camera looking at the scene's bounds from the front (+Z), for scenes that have none.
 Camera frameBounds(const Scene& scene);
 

@@ -55,6 +55,7 @@ public:
         NodeTask left, right;
         if (!split(task, left, right)) {
             nodes_[task.slot] = {task.bounds, task.begin, task.end - task.begin};
+            if (options_.onLeaf) options_.onLeaf(task.end - task.begin);
             return;
         }
         nodes_[task.slot] = {task.bounds, task.childBase, 0};

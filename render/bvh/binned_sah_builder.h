@@ -6,6 +6,7 @@
 // runs as TBB tasks over disjoint primitive ranges. Used for every BLAS (object-space primitive
 // boxes) and for the TLAS (world-space instance boxes).
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "render/bvh/aabb.h"
@@ -18,6 +19,9 @@ struct BvhBuildOptions {
     uint32_t maxLeafSize = 4;       // every leaf holds 1..maxLeafSize primitives
     float traversalCost = 1.0f;     // SAH cost of visiting an interior node
     float intersectionCost = 1.0f;  // SAH cost of one primitive test
+    // Called with a leaf's primitive count as each leaf is made, from any builder thread:
+    // the hook for progress reports on big builds. May be empty.
+    std::function<void(uint32_t)> onLeaf;
 };
 
 // Canonical layout (bvh_node.h). nodes[0] is the root; child indices are into `nodes`, leaf

@@ -2,7 +2,9 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <atomic>
+#include <mutex>
 #include <stdexcept>
 
 #include "render/bvh/binned_sah_builder.h"
@@ -100,18 +102,27 @@ void flattenGeometry(const Scene& scene, CompiledScene& out) {
 void buildBlases(const Scene& scene, CompiledScene& out, const ProgressFn& progress) {
     const size_t meshCount = scene.meshes.size();
     std::vector<Bvh> bvhs(meshCount);
-    std::atomic<uint64_t> primitivesDone{0};
-    const double totalPrimitives = double(out.stats.meshTriangles + out.stats.spheres) + 1.0;
+    // Leaves are made on every builder thread; reports go out at most every 1% of the
+    // primitives, one at a time (ProgressFn need not be thread-safe).
+    const uint64_t total = out.stats.meshTriangles + out.stats.spheres;
+    const uint64_t step = std::max<uint64_t>(total / 100, 1);
+    std::atomic<uint64_t> placed{0};
+    std::mutex reportMutex;
+    BvhBuildOptions options;
+    options.onLeaf = [&](uint32_t count) {
+        const uint64_t before = placed.fetch_add(count, std::memory_order_relaxed);
+        if ((before + count) / step == before / step || !progress) return;
+        std::unique_lock<std::mutex> lock(reportMutex, std::try_to_lock);
+        if (lock) progress("build BVH", double(before + count) / double(total));
+    };
     reportProgress(progress, "build BVH", 0.0);
     // Large meshes parallelise inside the builder; many small meshes parallelise here.
     tbb::parallel_for(size_t(0), meshCount, [&](size_t i) {
         const BlasRef& blas = out.blases[i];
         std::vector<Aabb> bounds(blas.primitiveCount);
         for (uint32_t p = 0; p < blas.primitiveCount; ++p) bounds[p] = primitiveBounds(out, blas, p);
-        bvhs[i] = buildBinnedSahBvh(bounds.data(), blas.primitiveCount);
-        primitivesDone += blas.primitiveCount;
+        bvhs[i] = buildBinnedSahBvh(bounds.data(), blas.primitiveCount, options);
     });
-    reportProgress(progress, "build BVH", double(primitivesDone) / totalPrimitives);
     for (size_t i = 0; i < meshCount; ++i) {
         BlasRef& blas = out.blases[i];
         blas.nodeOffset = uint32_t(out.blasNodes.size());

@@ -61,6 +61,22 @@ TEST(SceneLoader, ModelFileBecomesOneObjectFramedByTheCamera) {
     EXPECT_EQ(scene.render.spp, RenderSettings{}.spp);
 }
 
+TEST(SceneLoader, UnlitModelFileGetsAWhiteEnvironmentAndSaysSo) {
+    const Scene scene = mustLoad(testDataPath("json/models/panel.obj"));
+    ASSERT_FALSE(sceneHasEmitters(scene));
+    EXPECT_EQ(scene.environment.color, Vec3(1.0f));
+    ASSERT_FALSE(scene.warnings.empty());
+    EXPECT_NE(scene.warnings.back().find("panel.obj: no lights in the file"), std::string::npos);
+
+    Scene lit = scene;  // a scene with its own light keeps its (black) environment
+    lit.environment.color = Vec3(0.0f);
+    lit.warnings.clear();
+    lit.materials[lit.instances[0].materials[0]].params.emission = {1, 1, 1};
+    lightUnlitModel(lit);
+    EXPECT_EQ(lit.environment.color, Vec3(0.0f));
+    EXPECT_TRUE(lit.warnings.empty());
+}
+
 TEST(SceneLoader, ModelFileCameraIsUsed) {
     const Scene scene = mustLoad(testDataPath("json/models/eye.gltf"));
     EXPECT_TRUE(scene.cameraFromFile);

@@ -1,0 +1,118 @@
+#include "render/scene/compile_scene.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "support/scene_builder.h"
+
+namespace pt {
+namespace {
+
+using test::addMaterial;
+using test::addShape;
+using test::diffuse;
+using test::trs;
+
+// A flat grid of 2 * n * n triangles in the XZ plane.
+Mesh gridMesh(uint32_t n) {
+    Mesh mesh;
+    mesh.name = "grid";
+    for (uint32_t z = 0; z <= n; ++z) {
+        for (uint32_t x = 0; x <= n; ++x) mesh.positions.push_back({float(x), 0.0f, float(z)});
+    }
+    for (uint32_t z = 0; z < n; ++z) {
+        for (uint32_t x = 0; x < n; ++x) {
+            const uint32_t a = z * (n + 1) + x, b = a + 1, c = a + n + 1, d = c + 1;
+            for (uint32_t index : {a, c, b, b, c, d}) mesh.indices.push_back(index);
+        }
+    }
+    return mesh;
+}
+
+Scene sceneWithGrid(uint32_t n, uint32_t instances) {
+    Scene scene;
+    scene.meshes.push_back(gridMesh(n));
+    const uint32_t m = addMaterial(scene, "m", diffuse({0.5f, 0.5f, 0.5f}));
+    for (uint32_t i = 0; i < instances; ++i) {
+        Instance inst;
+        inst.mesh = 0;
+        inst.objectToWorld = translationTransform({0.0f, float(i), 0.0f});
+        inst.materials.push_back(m);
+        scene.instances.push_back(inst);
+    }
+    return scene;
+}
+
+TEST(CompileScene, BvhBuildReportsMonotoneProgressFromZeroToOne) {
+    const Scene scene = sceneWithGrid(300, 1);  // 180,000 triangles
+    std::vector<double> reports;
+    compileRenderScene(scene, {}, [&](const std::string& stage, double fraction) {
+        if (stage == "build BVH") reports.push_back(fraction);
+    });
+    ASSERT_GE(reports.size(), 10u);
+    EXPECT_EQ(reports.front(), 0.0);
+    EXPECT_EQ(reports.back(), 1.0);
+    for (size_t i = 1; i < reports.size(); ++i) EXPECT_LE(reports[i - 1], reports[i]);
+}
+
+TEST(CompileScene, OneMeshInstancedManyTimesIsOneBlas) {
+    const CompiledScene compiled = compileRenderScene(sceneWithGrid(10, 25));
+    EXPECT_EQ(compiled.stats.blasCount, 1u);
+    EXPECT_EQ(compiled.stats.instanceCount, 25u);
+    EXPECT_EQ(compiled.stats.meshTriangles, 200u);
+    EXPECT_EQ(compiled.stats.instancedTriangles, 25u * 200u);
+    EXPECT_EQ(compiled.triangles.size(), 200u);
+}
+
+TEST(CompileScene, BruteForceIsRefusedAboveItsBudgetWithAClearMessage) {
+    CompileOptions options;
+    options.bruteForce = true;
+    options.bruteForceBudget = 1000;
+    EXPECT_NO_THROW(compileRenderScene(sceneWithGrid(10, 5), options));  // exactly 1000
+    try {
+        compileRenderScene(sceneWithGrid(10, 6), options);
+        FAIL() << "expected a refusal";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_STREQ(e.what(), "BVH off (brute force) refused: the scene traces 1200 triangles, over the budget of 1000");
+    }
+}
+
+TEST(CompileScene, BadReferencesAreErrorsNotCrashes) {
+    Scene badMesh = sceneWithGrid(2, 1);
+    badMesh.instances[0].mesh = 7;
+    EXPECT_THROW(compileRenderScene(badMesh), std::invalid_argument);
+    Scene badIndex = sceneWithGrid(2, 1);
+    badIndex.meshes[0].indices[4] = 999;
+    EXPECT_THROW(compileRenderScene(badIndex), std::invalid_argument);
+    Scene badMaterial = sceneWithGrid(2, 1);
+    badMaterial.instances[0].materials = {42};
+    EXPECT_THROW(compileRenderScene(badMaterial), std::invalid_argument);
+}
+
+TEST(CompileScene, EmittersAreWeightedByWorldAreaTimesLuminance) {
+    Scene scene;
+    Material bright = diffuse({0, 0, 0});
+    bright.emission = {1, 1, 1};
+    bright.emissionStrength = 4.0f;
+    const uint32_t light = addMaterial(scene, "light", bright);
+    addShape(scene, ObjectKind::Quad, trs({0, 0, 0}), light);                       // area 4
+    addShape(scene, ObjectKind::Quad, trs({0, 5, 0}, {0, 0, 0}, {2, 1, 3}), light);  // area 24
+    addShape(scene, ObjectKind::Sphere, trs({0, -5, 0}), light);                     // not sampled by NEE
+    const CompiledScene compiled = compileRenderScene(scene);
+    ASSERT_EQ(compiled.emitters.emitters.size(), 4u);
+    EXPECT_NEAR(compiled.emitters.totalWeight, (4.0f + 24.0f) * 4.0f, 1e-3f);
+    EXPECT_NEAR(compiled.emitters.emitters[2].weight, 12.0f * 4.0f, 1e-4f);
+}
+
+TEST(CompileScene, HiddenInstancesAndUnmappedSlotsAreHandled) {
+    Scene scene = sceneWithGrid(2, 3);
+    scene.instances[1].visible = false;
+    scene.instances[2].materials.clear();  // falls back to the default material
+    const CompiledScene compiled = compileRenderScene(scene);
+    EXPECT_EQ(compiled.stats.instanceCount, 2u);
+    EXPECT_EQ(compiled.instanceMaterials[compiled.instances[1].materialOffset], compiled.materials.size() - 1);
+}
+
+}  // namespace
+}  // namespace pt
