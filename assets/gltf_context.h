@@ -39,7 +39,9 @@ struct GltfContext {
 
     std::map<int, std::optional<ImportedMesh>> meshes;  // nullopt: no triangles, not placed
     std::map<int, uint32_t> materials;                   // -1 is the default material
-    std::map<int, std::optional<Texture>> images;        // nullopt: could not be decoded
+    // glTF image -> the Scene texture first made from it (-1: it could not be decoded); a
+    // second sampler on the same image copies those texels instead of decoding again.
+    std::map<int, int32_t> images;
     std::map<std::tuple<int, WrapMode, WrapMode, bool>, int32_t> textures;
     std::set<int> textureWarnings;                       // textures already warned about
 

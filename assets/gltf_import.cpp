@@ -1,11 +1,12 @@
 // importGltf: the stages of a glTF import in order. Reading and checking the file lives in
 // gltf_document / gltf_json_check, accessors in gltf_accessors, geometry in gltf_primitive /
 // gltf_mesh, materials and textures in gltf_materials / gltf_textures, the node hierarchy
-// and camera in gltf_nodes.
+// and camera in gltf_nodes, punctual lights in gltf_lights.
 #include <cmath>
 #include <set>
 
 #include "assets/gltf_document.h"
+#include "assets/gltf_lights.h"
 #include "assets/gltf_materials.h"
 #include "assets/gltf_mesh.h"
 #include "assets/gltf_nodes.h"
@@ -20,7 +21,7 @@ namespace {
 const std::set<std::string> kSupportedExtensions = {
     "KHR_materials_emissive_strength", "KHR_materials_ior",      "KHR_materials_transmission",
     "KHR_materials_volume",            "KHR_materials_clearcoat", "KHR_materials_specular",
-    "KHR_texture_transform",           "KHR_mesh_quantization",
+    "KHR_texture_transform",           "KHR_mesh_quantization",   "KHR_lights_punctual",
 };
 
 // One warning per unsupported extension the file declares, and per feature it uses that is
@@ -32,8 +33,7 @@ void warnAboutUnsupported(const GltfContext& ctx) {
         if (kSupportedExtensions.count(name) || !reported.insert(name).second) return;
         std::string what = (required ? "required extension " : "extension ") + name +
                            " is not supported";
-        if (name == "KHR_lights_punctual") what += "; its lights are not imported";
-        else what += required ? "; loading without it, parts may be missing" : "; ignored";
+        what += required ? "; loading without it, parts may be missing" : "; ignored";
         ctx.warn("", what);
     };
     for (const std::string& name : model.extensionsRequired) report(name, true);
@@ -95,6 +95,7 @@ ImportedFile importGltf(const std::string& path, int32_t object, Scene& scene,
 
     ImportedFile file;
     file.camera = gltfCamera(ctx, visits);
+    file.lights = gltfLights(ctx, visits);
     size_t meshNodes = 0, done = 0;
     for (const GltfNodeVisit& visit : visits) meshNodes += doc.model.nodes[size_t(visit.node)].mesh >= 0;
     for (const GltfNodeVisit& visit : visits) {

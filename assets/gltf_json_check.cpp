@@ -220,13 +220,20 @@ void checkAccessorFields(const json& accessor, const std::string& path,
     auto sparse = accessor.find("sparse");
     if (sparse == accessor.end()) return;
     if (!sparse->is_object()) fail(source, path + ".sparse", "expected a JSON object");
-    wholeNumber(*sparse, "count", path + ".sparse", 1, std::nullopt, source);
+    // tinygltf keeps these as int; larger values would wrap there.
+    auto intSized = [&](const json& object, const char* key, const std::string& where,
+                        uint64_t min, std::optional<uint64_t> fallback) {
+        if (wholeNumber(object, key, where, min, fallback, source) > uint64_t(INT32_MAX)) {
+            fail(source, where + "." + key, "too large");
+        }
+    };
+    intSized(*sparse, "count", path + ".sparse", 1, std::nullopt);
     for (const char* part : {"indices", "values"}) {
         auto it = sparse->find(part);
         const std::string where = path + ".sparse." + part;
         if (it == sparse->end() || !it->is_object()) fail(source, where, "missing");
         wholeNumber(*it, "bufferView", where, 0, std::nullopt, source);
-        wholeNumber(*it, "byteOffset", where, 0, 0, source);
+        intSized(*it, "byteOffset", where, 0, 0);
     }
     const uint64_t indexType =
         wholeNumber(sparse->at("indices"), "componentType", path + ".sparse.indices", 0,

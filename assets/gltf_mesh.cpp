@@ -20,6 +20,10 @@ void appendPrimitive(const GltfContext& ctx, PrimitiveGeometry& g, uint32_t slot
         mesh.uvs.resize(base);  // earlier primitives without TEXCOORD_0 get (0, 0)
         mesh.uvs.insert(mesh.uvs.end(), g.uvs.begin(), g.uvs.end());
     }
+    if (!g.tangents.empty()) {
+        mesh.tangents.resize(base);  // zero: "derive from the UVs" for primitives without TANGENT
+        mesh.tangents.insert(mesh.tangents.end(), g.tangents.begin(), g.tangents.end());
+    }
     for (uint32_t index : g.indices) mesh.indices.push_back(uint32_t(base) + index);
     slots.insert(slots.end(), g.indices.size() / 3, slot);
 }
@@ -51,6 +55,7 @@ const std::optional<ImportedMesh>& importGltfMesh(GltfContext& ctx, int meshInde
         return ctx.meshes[meshIndex] = std::nullopt;
     }
     if (!mesh.uvs.empty()) mesh.uvs.resize(mesh.positions.size());
+    if (!mesh.tangents.empty()) mesh.tangents.resize(mesh.positions.size());
     mesh.slotCount = uint32_t(imported.slotMaterials.size());
     if (mesh.slotCount > 1) mesh.primitiveSlots = std::move(slots);
     imported.sceneMesh = uint32_t(ctx.scene.meshes.size());

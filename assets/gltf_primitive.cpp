@@ -96,6 +96,22 @@ std::vector<uint32_t> readCorners(const GltfContext& ctx, const tinygltf::Primit
     return corners;
 }
 
+// TANGENT: xyz normalised, w reduced to its sign; zero tangents (some exporters write them
+// for vertices without UVs) stay zero, which tells the renderer to derive a frame.
+std::vector<Vec4> readTangents(const GltfContext& ctx, int accessor, size_t vertexCount,
+                               const std::string& element) {
+    const std::vector<float> t = readVertexAttribute(ctx, accessor, 4, vertexCount, element, "TANGENT");
+    std::vector<Vec4> tangents(vertexCount);
+    for (size_t v = 0; v < vertexCount; ++v) {
+        const Vec3 xyz{t[4 * v], t[4 * v + 1], t[4 * v + 2]};
+        const float len = length(xyz);
+        if (!(len > 0.0f)) continue;
+        const Vec3 unitXyz = xyz / len;
+        tangents[v] = {unitXyz.x, unitXyz.y, unitXyz.z, t[4 * v + 3] < 0.0f ? -1.0f : 1.0f};
+    }
+    return tangents;
+}
+
 // Flat shading needs a vertex per triangle corner; unshares positions and UVs.
 void unshareVertices(PrimitiveGeometry& g) {
     std::vector<Vec3> positions(g.indices.size());
@@ -121,6 +137,7 @@ void compactVertices(PrimitiveGeometry& g) {
             out.positions.push_back(g.positions[index]);
             out.normals.push_back(g.normals[index]);
             if (!g.uvs.empty()) out.uvs.push_back(g.uvs[index]);
+            if (!g.tangents.empty()) out.tangents.push_back(g.tangents[index]);
         }
         index = remap[index];
     }
@@ -194,6 +211,9 @@ std::optional<PrimitiveGeometry> readGltfPrimitive(const GltfContext& ctx, size_
         const std::vector<float> n =
             readVertexAttribute(ctx, normal, 3, vertexCount, element, "NORMAL");
         for (size_t v = 0; v < vertexCount; ++v) g.normals.push_back({n[3 * v], n[3 * v + 1], n[3 * v + 2]});
+        if (const int tangent = attribute(primitive, "TANGENT"); tangent >= 0) {
+            g.tangents = readTangents(ctx, tangent, vertexCount, element);
+        }
         compactVertices(g);
     } else {
         unshareVertices(g);

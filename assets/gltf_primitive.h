@@ -21,6 +21,9 @@ struct PrimitiveGeometry {
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;      // one per position
     std::vector<Vec2> uvs;          // one per position, or empty (no TEXCOORD_0)
+    // One per position, or empty: glTF TANGENT (xyz unit, w = +-1 handedness); a zero vector
+    // where the file's tangent is zero. Ignored (empty) without NORMAL, as the spec requires.
+    std::vector<Vec4> tangents;
     std::vector<uint32_t> indices;  // triangle list, three per triangle, local to the primitive
 };
 

@@ -1,5 +1,6 @@
 #include "assets/gltf_textures.h"
 
+#include <cmath>
 #include <filesystem>
 
 #include "assets/gltf_accessors.h"
@@ -43,10 +44,8 @@ std::vector<uint8_t> encodedImage(const GltfContext& ctx, const tinygltf::Image&
     throw InputError(ctx.doc.label + ": " + label + ": has neither bytes nor a file");
 }
 
-// The decoded image, or nullopt after ONE warning naming it.
-const std::optional<Texture>& decodedImage(GltfContext& ctx, int index,
-                                           const std::string& element) {
-    if (auto it = ctx.images.find(index); it != ctx.images.end()) return it->second;
+// The decoded image, or nullopt after ONE warning naming it (callers ask once per image).
+std::optional<Texture> decodeImage(const GltfContext& ctx, int index, const std::string& element) {
     const auto& image = gltfElement(ctx, ctx.model().images, index, element, "image");
     const std::string label = imageLabel(image, size_t(index));
     try {
@@ -57,12 +56,37 @@ const std::optional<Texture>& decodedImage(GltfContext& ctx, int index,
             texture.sourcePath =
                 (std::filesystem::path(ctx.doc.baseDir) / decodeGltfUri(image.uri)).string();
         }
-        return ctx.images[index] = std::move(texture);
+        return texture;
     } catch (const InputError& e) {
         ctx.scene.warnings.push_back(std::string(e.what()) +
                                      "; materials using it fall back to their factors");
-        return ctx.images[index] = std::nullopt;
+        return std::nullopt;
     }
+}
+
+// Scene texture of image `source` under one sampler: decoded on the image's first use,
+// copied from that first texture for another sampler; -1 when undecodable.
+int32_t sceneTexture(GltfContext& ctx, int source, WrapMode wrapS, WrapMode wrapT, bool nearest,
+                     const std::string& element) {
+    const auto key = std::make_tuple(source, wrapS, wrapT, nearest);
+    if (auto it = ctx.textures.find(key); it != ctx.textures.end()) return it->second;
+    std::optional<Texture> texture;
+    if (auto first = ctx.images.find(source); first == ctx.images.end()) {
+        texture = decodeImage(ctx, source, element);
+    } else if (first->second >= 0) {
+        texture = ctx.scene.textures[size_t(first->second)];
+    }
+    int32_t index = -1;
+    if (texture) {
+        texture->wrapS = wrapS;
+        texture->wrapT = wrapT;
+        texture->nearest = nearest;
+        texture->object = ctx.object;
+        index = int32_t(ctx.scene.textures.size());
+        ctx.scene.textures.push_back(std::move(*texture));
+    }
+    ctx.images.emplace(source, index);
+    return ctx.textures[key] = index;
 }
 
 // KHR_texture_transform: offset, rotation (radians), scale, and a texCoord override.
@@ -75,7 +99,11 @@ void applyTransform(const GltfContext& ctx, const GltfTextureSlot& slot, Texture
     ref.offset = {float(offset[0]), float(offset[1])};
     ref.scale = {float(scale[0]), float(scale[1])};
     ref.rotation = float(gltfNumber(ctx, *slot.transform, "rotation", 0.0, element));
-    texCoord = int(gltfNumber(ctx, *slot.transform, "texCoord", texCoord, element));
+    const double set = gltfNumber(ctx, *slot.transform, "texCoord", texCoord, element);
+    if (set < 0.0 || set > 255.0 || set != std::floor(set)) {
+        ctx.fail(element + ".texCoord", "expected a texture coordinate set index");
+    }
+    texCoord = int(set);
 }
 
 }  // namespace
@@ -141,21 +169,8 @@ TextureRef importGltfTexture(GltfContext& ctx, const GltfTextureSlot& slot) {
         }
         nearest = sampler.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
     }
-    const auto key = std::make_tuple(texture.source, wrapS, wrapT, nearest);
-    if (auto it = ctx.textures.find(key); it != ctx.textures.end()) {
-        ref.texture = it->second;
-        return ref;
-    }
-    const std::optional<Texture>& image = decodedImage(ctx, texture.source, textureElement + ".source");
-    if (!image) return ref;
-    Texture sceneTexture = *image;
-    sceneTexture.wrapS = wrapS;
-    sceneTexture.wrapT = wrapT;
-    sceneTexture.nearest = nearest;
-    sceneTexture.object = ctx.object;
-    ref.texture = int32_t(ctx.scene.textures.size());
-    ctx.scene.textures.push_back(std::move(sceneTexture));
-    ctx.textures[key] = ref.texture;
+    ref.texture = sceneTexture(ctx, texture.source, wrapS, wrapT, nearest,
+                               textureElement + ".source");
     return ref;
 }
 

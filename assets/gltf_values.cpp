@@ -1,14 +1,21 @@
 #include "assets/gltf_values.h"
 
+#include <cfloat>
 #include <cmath>
 
 namespace pt {
+namespace {
+
+// Every number lands in a float; beyond FLT_MAX the conversion is undefined, not infinite.
+bool fitsFloat(double v) { return std::isfinite(v) && std::abs(v) <= double(FLT_MAX); }
+
+}  // namespace
 
 double gltfNumber(const GltfContext& ctx, const tinygltf::Value& object, const char* key,
                   double fallback, const std::string& element) {
     if (!object.IsObject() || !object.Has(key)) return fallback;
     const tinygltf::Value& value = object.Get(key);
-    if (!value.IsNumber() || !std::isfinite(value.GetNumberAsDouble())) {
+    if (!value.IsNumber() || !fitsFloat(value.GetNumberAsDouble())) {
         ctx.fail(element + "." + key, "expected a finite number");
     }
     return value.GetNumberAsDouble();
@@ -25,7 +32,7 @@ std::vector<double> gltfNumbers(const GltfContext& ctx, const tinygltf::Value& o
     }
     for (size_t i = 0; i < fallback.size(); ++i) {
         const tinygltf::Value& item = value.Get(int(i));
-        if (!item.IsNumber() || !std::isfinite(item.GetNumberAsDouble())) {
+        if (!item.IsNumber() || !fitsFloat(item.GetNumberAsDouble())) {
             ctx.fail(where, "expected " + std::to_string(fallback.size()) + " finite numbers");
         }
         fallback[i] = item.GetNumberAsDouble();
@@ -40,7 +47,7 @@ void checkGltfNumbers(const GltfContext& ctx, const std::vector<double>& values,
                               std::to_string(values.size()));
     }
     for (double v : values) {
-        if (!std::isfinite(v)) ctx.fail(element, "expected finite numbers");
+        if (!fitsFloat(v)) ctx.fail(element, "expected finite numbers");
     }
 }
 

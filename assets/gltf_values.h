@@ -1,7 +1,7 @@
 #pragma once
 // Numbers from tinygltf::Value objects (extension blocks such as KHR_materials_volume or
-// KHR_texture_transform), each checked: when present it must be a finite number, or an
-// array of exactly `count` finite numbers; InputErrors name "<element>.<key>".
+// KHR_texture_transform), each checked: when present it must be a number a float can hold,
+// or an array of exactly `count` such numbers; InputErrors name "<element>.<key>".
 // Internal to pt_assets.
 #include <string>
 #include <vector>

@@ -22,6 +22,7 @@ struct Placement {
 struct ImportedFile {
     std::vector<Placement> placements;
     std::optional<Camera> camera;     // the file's first camera, in file space
+    std::vector<Light> lights;        // punctual lights (glTF KHR_lights_punctual), in file space
 };
 
 // Throws InputError naming the file and the element for malformed or unsupported-fatal input;

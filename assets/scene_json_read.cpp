@@ -11,6 +11,7 @@
 #include "assets/image_read.h"
 #include "assets/input_error.h"
 #include "assets/json_value.h"
+#include "assets/light_json.h"
 #include "assets/material_json.h"
 #include "assets/model_import.h"
 #include "assets/scene_json.h"
@@ -88,12 +89,14 @@ public:
         const std::optional<JsonValue> render = reader.get("render");
         const std::optional<JsonValue> environment = reader.get("environment");
         const std::optional<JsonValue> materials = reader.get("materials");
+        const std::optional<JsonValue> lights = reader.get("lights");
         const std::optional<JsonValue> objects = reader.get("objects");
         reader.finish();
         if (render) readRender(*render);
         if (camera) readCamera(*camera);
         if (environment) readEnvironment(*environment);
         if (materials) readMaterials(*materials);
+        if (lights) readLights(*lights);  // before the lights of model files, as the writer expects
         if (objects) readObjects(*objects);
         if (!camera) chooseCamera();
         reportProgress(progress_, "load scene", 1.0);
@@ -182,6 +185,10 @@ private:
             reader.finish();
             scene_.materials.push_back(NamedMaterial{name, params, -1});
         }
+    }
+
+    void readLights(const JsonValue& value) {
+        for (const JsonValue& element : value.asArray()) scene_.lights.push_back(readLightJson(element));
     }
 
     void readObjects(const JsonValue& value) {

@@ -8,6 +8,7 @@
 #include "assets/atomic_file.h"
 #include "assets/input_error.h"
 #include "assets/json_value.h"
+#include "assets/light_json.h"
 #include "assets/material_json.h"
 #include "assets/scene_json.h"
 #include "assets/scene_loader.h"
@@ -143,6 +144,15 @@ Json materialsToJson(const Scene& scene, const fs::path& folder, const std::stri
     return out;
 }
 
+// The lights the JSON defines; those of model files come back with their files.
+Json lightsToJson(const Scene& scene) {
+    Json out = Json::array();
+    for (const Light& light : scene.lights) {
+        if (light.object == -1) out.push_back(lightToJson(light));
+    }
+    return out;
+}
+
 }  // namespace
 
 std::string sceneToJson(const Scene& scene, const std::string& outputPath) {
@@ -158,6 +168,7 @@ std::string sceneToJson(const Scene& scene, const std::string& outputPath) {
         {"render", renderToJson(scene.render)},
         {"environment", environmentToJson(scene.environment, folder)},
         {"materials", materialsToJson(scene, folder, fs::path(outputPath).filename().string())},
+        {"lights", lightsToJson(scene)},
     };
     for (const auto& [key, value] : sections) {
         if (!value.empty()) root[key] = value;

@@ -101,7 +101,10 @@ bool sceneHasEmitters(const Scene& scene) {
 }
 
 void lightUnlitModel(Scene& scene) {
-    if (sceneHasEmitters(scene) || !isBlack(scene.environment.color) || scene.environment.texture >= 0) return;
+    if (sceneHasEmitters(scene) || !scene.lights.empty() || !isBlack(scene.environment.color) ||
+        scene.environment.texture >= 0) {
+        return;
+    }
     // A model file brings no environment; one without emitters would render black, where a
     // viewer shows it lit. Say so, since the light is not in the file.
     scene.environment.color = Vec3(1.0f);
@@ -126,6 +129,13 @@ void instantiateImportedFile(const ImportedFile& file, int32_t objectIndex, Scen
             instance.materials.push_back(replaced == remap.end() ? material : replaced->second);
         }
         scene.instances.push_back(std::move(instance));
+    }
+    for (const Light& fileLight : file.lights) {
+        Light light = fileLight;
+        light.position = objectToWorld.transformPoint(fileLight.position);
+        light.direction = objectToWorld.transformVector(fileLight.direction);
+        light.object = objectIndex;
+        scene.lights.push_back(std::move(light));
     }
 }
 

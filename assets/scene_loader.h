@@ -25,13 +25,14 @@ LoadResult loadScene(const std::string& path, const ProgressFn& progress = {});
 Scene sceneFromModelFile(const std::string& path, const ProgressFn& progress = {});
 
 // Places an object's imported file into the scene: instances under its transform, material
-// overrides by name applied. Throws InputError for an override naming an unknown material.
+// overrides by name applied, and the file's punctual lights placed under the same transform.
+// Throws InputError for an override naming an unknown material.
 void instantiateImportedFile(const ImportedFile& file, int32_t objectIndex, Scene& scene);
 
 // Whether any instanced material emits light.
 bool sceneHasEmitters(const Scene& scene);
 
-// Gives a scene with no light at all (no emitters, black environment) a uniform white
+// Gives a scene with no light at all (no emitters, no punctual lights, black environment) a uniform white
 // environment, with a warning; used for model files opened on their own.
 void lightUnlitModel(Scene& scene);
 

@@ -25,6 +25,8 @@ nlohmann::ordered_json describe(const Scene& scene, const CompiledScene& compile
     j["materials"] = scene.materials.size();
     j["textures"] = scene.textures.size();
     j["emissive_triangles"] = s.emitterCount;
+    j["sphere_lights"] = s.sphereLightCount;
+    j["punctual_lights"] = s.punctualLightCount;
     j["environment"] = scene.environment.texture >= 0 ? "image" : "color";
     j["bounds"] = {{"min", {lo.x, lo.y, lo.z}}, {"max", {hi.x, hi.y, hi.z}}};
     j["load_seconds"] = loadSeconds;

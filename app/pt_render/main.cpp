@@ -14,7 +14,7 @@ constexpr const char* kUsage = R"(usage: pt-render <command> [options]
 commands:
   render SCENE -o OUT.exr [--png OUT.png] [--spp N | --time SECONDS] [--size WxH]
                 [--seed N] [--threads N] [--backend cpu|cuda] [--stats STATS.json] [--quiet]
-                [--max-depth N] [--no-nee] [--no-mis] [--no-rr] [--bvh-off]
+                [--max-depth N] [--no-nee] [--no-mis] [--no-rr] [--clamp X] [--bvh-off]
       Render SCENE (.json, .gltf, .glb or .obj) progressively; write a linear EXR and/or a
       display-referred PNG. Prints the paths it wrote.
   export SCENE -o OUT.json

@@ -32,7 +32,7 @@ struct RenderRequest {
 
 RenderRequest parseRequest(const std::vector<std::string>& args) {
     const Options o(args, {"-o", "--png", "--spp", "--time", "--size", "--seed", "--threads", "--backend",
-                           "--stats", "--max-depth"},
+                           "--stats", "--max-depth", "--clamp"},
                     {"--quiet", "--no-nee", "--no-mis", "--no-rr", "--bvh-off"});
     if (o.positional().size() != 1) throw UsageError("expected one SCENE argument");
     RenderRequest r;
@@ -54,6 +54,7 @@ RenderRequest parseRequest(const std::vector<std::string>& args) {
     r.toggles.multipleImportance = !o.has("--no-mis");
     r.toggles.russianRoulette = !o.has("--no-rr");
     r.toggles.bruteForce = o.has("--bvh-off");
+    r.toggles.clampRadiance = float(o.positiveNumber("--clamp").value_or(0.0));
     return r;
 }
 

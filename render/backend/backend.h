@@ -18,6 +18,7 @@ struct IntegratorToggles {
     bool multipleImportance = true;
     bool russianRoulette = true;
     bool bruteForce = false;  // BVH off: validation only, refused above a triangle budget
+    float clampRadiance = 0.0f;  // firefly clamp on indirect luminance per sample; 0 = off
 };
 
 struct SyncReport {

@@ -6,15 +6,41 @@
 
 namespace pt {
 
+// The volumes (KHR_materials_volume) a path is inside, innermost last: a small stack of
+// material indices, pushed when the path refracts into a volumetric material's front face
+// and popped when it refracts out through a back face, so glass inside water attenuates by
+// each in turn. Deeper nesting than kMaxNestedMedia keeps counting but stores no more; the
+// innermost stored medium then stands in for the deeper ones.
+constexpr uint32_t kMaxNestedMedia = 4;
+struct MediumStack {
+    uint32_t materials[kMaxNestedMedia];
+    uint32_t depth;  // volumes entered and not left
+
+    PT_HD bool empty() const { return depth == 0; }
+    PT_HD uint32_t innermost() const {
+        return materials[(depth < kMaxNestedMedia ? depth : kMaxNestedMedia) - 1];
+    }
+    PT_HD void enter(uint32_t material) {
+        if (depth < kMaxNestedMedia) materials[depth] = material;
+        ++depth;
+    }
+    PT_HD void leave() {
+        if (depth > 0) --depth;
+    }
+};
+
 struct PathState {
-    Ray ray;                 // next segment; direction unit length in world space
-    Vec3 throughput;         // product of BSDF weights so far
-    Vec3 radiance;           // gathered so far
+    Ray ray;                   // next segment; direction unit length in world space
+    Vec3 throughput;           // product of BSDF weights (and volume transmittances) so far
+    Vec3 radiance;             // gathered so far
+    Vec3 lastVertex;           // where `ray` was scattered (MIS densities of lights it hits)
     PathSampler sampler;
-    uint32_t depth;          // surface interactions so far
-    float etaScale;          // product of eta^2 over refractions: undoes their 1/eta^2 for roulette
-    float lastBsdfPdf;       // solid-angle pdf of the sample that made `ray`
-    bool lastWasDelta;       // `ray` came from a specular lobe (or the camera)
+    uint32_t depth;            // surface interactions so far
+    uint32_t transparentHits;  // alpha-transparent surfaces this segment has passed through
+    MediumStack media;
+    float etaScale;            // product of eta^2 over refractions: undoes their 1/eta^2 for roulette
+    float lastBsdfPdf;         // solid-angle pdf of the sample that made `ray`
+    bool lastWasDelta;         // `ray` came from a specular lobe (or the camera)
     bool alive;
 };
 

@@ -1,16 +1,22 @@
 #pragma once
 // The integrator as stage functions over a PathState (generate, shade surface, shade miss,
 // accumulate), and tracePath(), the megakernel loop that schedules them for one sample.
-// Unidirectional path tracing with next-event estimation on emissive triangles, combined
-// with BSDF sampling by multiple importance sampling (power heuristic; Veach 1997), and
-// Russian roulette. NEE, MIS and roulette are switches in IntegratorSettings.
+// Unidirectional path tracing with next-event estimation on every light (emissive triangles
+// and spheres, punctual lights, the environment), combined with BSDF sampling by multiple
+// importance sampling (power heuristic; Veach 1997) wherever both strategies reach a light,
+// and Russian roulette. NEE, MIS, roulette and the firefly clamp are IntegratorSettings.
+// Alpha-transparent surfaces are passed through (alpha.h); paths inside volumetric
+// materials are attenuated by Beer-Lambert (medium.h).
 #include "render/bvh/traversal.h"
 #include "render/integrator/camera.h"
+#include "render/integrator/medium.h"
 #include "render/integrator/path_state.h"
 #include "render/integrator/surface_hit.h"
-#include "render/lights/emitter_sample.h"
+#include "render/integrator/transparency.h"
 #include "render/lights/environment.h"
+#include "render/lights/light_sample.h"
 #include "render/materials/bsdf.h"
+#include "render/materials/material_eval.h"  // bsdfParamsAt
 #include "render/materials/texture_sample.h"
 
 namespace pt {
@@ -23,72 +29,96 @@ PT_HD PathState generatePath(const RenderScene& scene, uint32_t x, uint32_t y, u
                                   state.sampler.get2(SampleDims::kPixel),
                                   state.sampler.get2(SampleDims::kLens));
     state.throughput = Vec3(1.0f);
+    state.lastVertex = state.ray.origin;
     state.etaScale = 1.0f;
     state.lastWasDelta = true;
     state.alive = true;
     return state;
 }
 
-PT_HD void shadeMiss(const RenderScene& scene, PathState& state) {
-    // The environment is not light-sampled yet, so BSDF sampling carries it at full weight.
-    state.radiance += state.throughput * environmentRadiance(scene, state.ray.direction);
-    state.alive = false;
-}
-
 PT_HD bool neeEnabled(const RenderScene& scene) {
     return scene.settings.nextEventEstimation && scene.emitterAlias.count > 0;
 }
 
-PT_HD BsdfParams bsdfParamsAt(const RenderScene& scene, const Material& m, Vec2 uv) {
-    BsdfParams p{m.baseColor, m.metallic, m.transmission, m.ior};
-    if (m.baseColorTexture.present()) p.baseColor *= sampleTexture(scene, m.baseColorTexture, uv, true).xyz();
-    return p;
+// The firefly clamp: an indirect contribution (light that reached the first hit through
+// another surface) keeps at most clampRadiance of luminance; direct light is never clamped.
+PT_HD Vec3 clampIndirect(const RenderScene& scene, Vec3 contribution, bool indirect) {
+    const float limit = scene.settings.clampRadiance;
+    if (!indirect || !(limit > 0.0f)) return contribution;
+    const float y = luminance(contribution);
+    return y > limit ? contribution * (limit / y) : contribution;
+}
+
+// MIS weight of light that the path's last BSDF sample found, against NEE's density
+// `lightPdf` for the same direction (0 where NEE cannot pick it). 0 when NEE alone counts it.
+PT_HD float bsdfSampledLightWeight(const RenderScene& scene, const PathState& state, float lightPdf) {
+    if (state.lastWasDelta || !neeEnabled(scene) || !(lightPdf > 0.0f)) return 1.0f;
+    if (!scene.settings.multipleImportance) return 0.0f;
+    return powerHeuristic(state.lastBsdfPdf, lightPdf);
+}
+
+// A ray that left the scene: the environment, weighted against NEE's environment sampling.
+PT_HD void shadeMiss(const RenderScene& scene, PathState& state) {
+    state.alive = false;
+    state.throughput *= mediumTransmittance(scene, state.media, kInf);  // an unclosed volume
+    if (isBlack(state.throughput)) return;
+    const Vec3 direction = state.ray.direction;
+    const float lightPdf = state.lastWasDelta ? 0.0f : environmentLightPdf(scene, direction);
+    const float weight = bsdfSampledLightWeight(scene, state, lightPdf);
+    if (weight > 0.0f) {
+        const Vec3 light = state.throughput * environmentRadiance(scene, direction) * weight;
+        state.radiance += clampIndirect(scene, light, state.depth >= 2);
+    }
 }
 
 // Emission seen by the path's last segment, weighted against NEE where NEE could have found it.
-PT_HD void addSurfaceEmission(const RenderScene& scene, PathState& state, const SurfaceHit& surface,
-                              float hitDistance) {
+PT_HD void addSurfaceEmission(const RenderScene& scene, PathState& state, const SurfaceHit& surface) {
     const Material& m = scene.materials[surface.material];
     if (!m.isEmissive() || !surface.frontFace) return;
-    const Vec3 emitted = emittedRadiance(scene, m, surface.uv);
-    float weight = 1.0f;
-    if (surface.isEmitterTriangle && neeEnabled(scene) && !state.lastWasDelta) {
-        if (!scene.settings.multipleImportance) return;  // NEE alone accounts for this light
-        const float cosLight = fabsf(dot(surface.geometricNormal, state.ray.direction));
-        const float lightPdf = emitterPickProbability(scene, surface.triangleArea, m) /
-                               surface.triangleArea * hitDistance * hitDistance / cosLight;
-        weight = powerHeuristic(state.lastBsdfPdf, lightPdf);
+    float lightPdf = 0.0f;
+    if (!state.lastWasDelta && neeEnabled(scene)) {
+        lightPdf = surface.kind == GeometryKind::Triangles
+                       ? triangleLightPdf(scene, surface.instance, surface.primitive, state.lastVertex,
+                                          surface.position, surface.geometricNormal)
+                       : sphereLightPdf(scene, surface.instance, surface.primitive, state.lastVertex);
     }
-    state.radiance += state.throughput * emitted * weight;
+    const float weight = bsdfSampledLightWeight(scene, state, lightPdf);
+    if (weight > 0.0f) {
+        const Vec3 light = state.throughput * emittedRadiance(scene, m, surface.uv) * weight;
+        state.radiance += clampIndirect(scene, light, state.depth >= 2);
+    }
 }
 
+// Next-event estimation: one light sample, MIS-weighted against the BSDF for area lights and
+// the environment, at full weight for delta (punctual) lights. The shadow ray is traced by
+// the scheduler; `contribution` counts if it is unoccluded.
 PT_HD ShadowRay sampleDirectLight(const RenderScene& scene, const PathState& state,
                                   const SurfaceHit& surface, const BsdfParams& bsdf,
                                   const Frame& frame, Vec3 wo, uint32_t dims) {
     ShadowRay shadow{};
-    EmitterSample light;
-    if (!sampleEmitter(scene, state.sampler.get(dims + SampleDims::kLightPick),
-                       state.sampler.get2(dims + SampleDims::kLightPoint), light)) {
+    LightSample light;
+    if (!sampleLight(scene, surface.position, state.sampler.get(dims + SampleDims::kLightPick),
+                     state.sampler.get2(dims + SampleDims::kLightPoint), light)) {
         return shadow;
     }
-    const Vec3 toLight = light.point - surface.position;
-    const float distance2 = lengthSquared(toLight);
-    if (!(distance2 > 0.0f)) return shadow;
-    const Vec3 wi = toLight / sqrtf(distance2);
-    const float cosLight = -dot(light.normal, wi);
-    if (cosLight <= 0.0f) return shadow;  // the light's back faces us
-    const Vec3 f = evalBsdf(bsdf, frame, wo, wi);
-    if (isBlack(f)) return shadow;
-    const float lightPdf = light.pdfArea * distance2 / cosLight;
-    const float weight = scene.settings.multipleImportance
-                             ? powerHeuristic(lightPdf, pdfBsdf(bsdf, frame, wo, wi))
+    const Vec3 f = evalBsdf(bsdf, frame, wo, light.wi);
+    if (isBlack(f) || isBlack(light.radiance)) return shadow;
+    const float weight = !light.delta && scene.settings.multipleImportance
+                             ? powerHeuristic(light.pdf, pdfBsdf(bsdf, frame, wo, light.wi))
                              : 1.0f;
     const Vec3 origin = offsetRayOrigin(surface.position, surface.geometricNormal,
-                                        dot(wi, surface.geometricNormal) > 0.0f);
-    const Vec3 target = offsetRayOrigin(light.point, light.normal, true);
-    shadow.ray = {origin, target - origin, 1.0f};
-    shadow.contribution = state.throughput * f * light.radiance * (weight / lightPdf);
-    shadow.valid = true;
+                                        dot(light.wi, surface.geometricNormal) > 0.0f);
+    if (isInfinite(light.distance)) {
+        shadow.ray = {origin, light.wi, kInf};
+    } else {
+        // Stop short of the light's surface, on the side facing us (punctual lights have none).
+        const Vec3 target = light.delta ? light.point : offsetRayOrigin(light.point, light.normal, true);
+        shadow.ray = {origin, target - origin, 1.0f};
+    }
+    const Vec3 contribution = state.throughput * f * light.radiance * (weight / light.pdf) *
+                              mediumTransmittance(scene, state.media, light.distance);
+    shadow.contribution = clampIndirect(scene, contribution, state.depth >= 1);
+    shadow.valid = !isBlack(shadow.contribution);
     return shadow;
 }
 
@@ -102,11 +132,16 @@ PT_HD bool surviveRoulette(const RenderScene& scene, PathState& state, uint32_t 
 }
 
 // Adds emission, queues a shadow ray, and turns `state.ray` into the next segment (or ends the
-// path). `hit` is the closest hit of `state.ray`.
+// path). `hit` is the closest hit of `state.ray`. A surface that is alpha-transparent there
+// only moves the ray past it (transparency.h).
 PT_HD ShadowRay shadeSurface(const RenderScene& scene, PathState& state, const Hit& hit) {
     ShadowRay shadow{};
-    const SurfaceHit surface = surfaceAt(scene, state.ray, hit);
-    addSurfaceEmission(scene, state, surface, hit.t);
+    state.throughput *= mediumTransmittance(scene, state.media, hit.t);  // the ray is unit length
+    SurfaceHit surface = surfaceAt(scene, state.ray, hit);
+    if (passTransparentSurface(scene, state, surface, hit)) return shadow;
+    state.transparentHits = 0;
+    applyNormalMap(scene, hit, surface);
+    addSurfaceEmission(scene, state, surface);
     if (state.depth >= scene.settings.maxDepth) {
         state.alive = false;
         return shadow;
@@ -114,7 +149,7 @@ PT_HD ShadowRay shadeSurface(const RenderScene& scene, PathState& state, const H
     const Material& m = scene.materials[surface.material];
     const BsdfParams bsdf = bsdfParamsAt(scene, m, surface.uv);
     // Shade the side the ray arrived on, except for glass, which needs to know in from out.
-    const bool twoSidedFlip = !surface.frontFace && lobeWeights(bsdf).glass == 0.0f;
+    const bool twoSidedFlip = !surface.frontFace && !isTransmissive(bsdf);
     const Vec3 ns = twoSidedFlip ? -surface.shadingNormal : surface.shadingNormal;
     const Vec3 ng = twoSidedFlip ? -surface.geometricNormal : surface.geometricNormal;
     SurfaceHit oriented = surface;
@@ -140,7 +175,9 @@ PT_HD ShadowRay shadeSurface(const RenderScene& scene, PathState& state, const H
     if (s.transmitted) {
         const float eta = surface.frontFace ? bsdf.ior : 1.0f / bsdf.ior;
         state.etaScale *= eta * eta;
+        crossVolumeBoundary(scene, state.media, surface.material, surface.frontFace);
     }
+    state.lastVertex = surface.position;
     state.lastBsdfPdf = s.pdf;
     state.lastWasDelta = s.delta;
     state.ray.origin = offsetRayOrigin(surface.position, arrivalNormal, sameSide);
@@ -163,9 +200,8 @@ PT_HD Vec3 tracePath(const RenderScene& scene, uint32_t x, uint32_t y, uint32_t 
             break;
         }
         const ShadowRay shadow = shadeSurface(scene, state, hit);
-        if (shadow.valid) {
-            ++counters.rays;
-            if (!intersectAny(scene, shadow.ray)) state.radiance += shadow.contribution;
+        if (shadow.valid && shadowRayUnoccluded(scene, shadow.ray, state.sampler, state.depth, counters)) {
+            state.radiance += shadow.contribution;
         }
     }
     if (!isFinite(state.radiance)) {

@@ -2,8 +2,13 @@
 // From a Hit to what shading needs: world position, geometric and shading normals, UV and
 // material. Positions are interpolated from the primitive, not taken as origin + t * dir,
 // so they lie on the surface to float precision however far the ray travelled.
+//
+// The front face is the counter-clockwise side in object space (outside, for spheres). A
+// mirroring instance transform keeps it the front face (glTF: a negative determinant makes
+// the clockwise side the front in world space), so normals go through the inverse transpose
+// and are never flipped for mirroring; the emitter code agrees (emitter_sample.h).
 #include "render/bvh/hit.h"
-#include "render/lights/emitter_sample.h"
+#include "render/lights/sphere_light.h"
 #include "render/math/ray.h"
 #include "render/scene/render_scene.h"
 
@@ -11,25 +16,25 @@ namespace pt {
 
 struct SurfaceHit {
     Vec3 position;
-    Vec3 geometricNormal;  // unit, on the front side (winding, after the instance transform)
+    Vec3 geometricNormal;  // unit, on the front side
     Vec3 shadingNormal;    // unit, same hemisphere as geometricNormal
     Vec2 uv;
-    bool frontFace;        // the ray arrived from the front side
-    uint32_t material;     // RenderScene::materials index
-    float triangleArea;    // world space; 0 for spheres
-    bool isEmitterTriangle;  // part of the NEE emitter table (triangle, emissive)
+    bool frontFace;      // the ray arrived from the front side
+    uint32_t material;   // RenderScene::materials index
+    uint32_t instance;   // RenderScene::instances index
+    uint32_t primitive;  // mesh-local triangle or sphere index
+    GeometryKind kind;
 };
 
-PT_HD SurfaceHit triangleSurface(const RenderScene& scene, const RenderInstance& inst,
-                                 const BlasRef& blas, const Hit& hit) {
+PT_HD SurfaceHit triangleSurface(const RenderScene& scene, const RenderInstance& inst, const BlasRef& blas,
+                                 const Hit& hit) {
     SurfaceHit s{};
     const TriangleIndices t = scene.triangles[blas.primitiveOffset + hit.primitive];
     const float b0 = 1.0f - hit.u - hit.v;
     const Vec3 p0 = scene.positions[t.v0], p1 = scene.positions[t.v1], p2 = scene.positions[t.v2];
     s.position = inst.objectToWorld.transformPoint(p0 * b0 + p1 * hit.u + p2 * hit.v);
     const Vec3 nObject = cross(p1 - p0, p2 - p0);
-    Vec3 ng = normalize(inst.worldToObject.transformNormalByInverse(nObject));
-    if (inst.flipsWinding) ng = -ng;
+    const Vec3 ng = normalize(inst.worldToObject.transformNormalByInverse(nObject));
     s.geometricNormal = ng;
     s.shadingNormal = ng;
     if (blas.hasNormals) {
@@ -42,16 +47,14 @@ PT_HD SurfaceHit triangleSurface(const RenderScene& scene, const RenderInstance&
         }
     }
     if (blas.hasUvs) s.uv = scene.uvs[t.v0] * b0 + scene.uvs[t.v1] * hit.u + scene.uvs[t.v2] * hit.v;
-    s.material = scene.instanceMaterials[inst.materialOffset + scene.triangleSlots[blas.primitiveOffset + hit.primitive]];
-    const Vec3 w0 = inst.objectToWorld.transformPoint(p0);
-    s.triangleArea = 0.5f * length(cross(inst.objectToWorld.transformPoint(p1) - w0,
-                                          inst.objectToWorld.transformPoint(p2) - w0));
-    s.isEmitterTriangle = scene.materials[s.material].isEmissive();
+    s.material = scene.instanceMaterials[inst.materialOffset +
+                                         scene.triangleSlots[blas.primitiveOffset + hit.primitive]];
+    s.kind = GeometryKind::Triangles;
     return s;
 }
 
-PT_HD SurfaceHit sphereSurface(const RenderScene& scene, const RenderInstance& inst,
-                               const BlasRef& blas, const Ray& worldRay, const Hit& hit) {
+PT_HD SurfaceHit sphereSurface(const RenderScene& scene, const RenderInstance& inst, const BlasRef& blas,
+                               const Ray& worldRay, const Hit& hit) {
     SurfaceHit s{};
     const Vec4 sphere = scene.spheres[blas.primitiveOffset + hit.primitive];
     const Vec3 o = inst.worldToObject.transformPoint(worldRay.origin);
@@ -60,11 +63,12 @@ PT_HD SurfaceHit sphereSurface(const RenderScene& scene, const RenderInstance& i
     const Vec3 radial = normalize(o + d * hit.t - sphere.xyz());
     s.position = inst.objectToWorld.transformPoint(sphere.xyz() + radial * sphere.w);
     s.geometricNormal = normalize(inst.worldToObject.transformNormalByInverse(radial));
-    if (inst.flipsWinding) s.geometricNormal = -s.geometricNormal;
     s.shadingNormal = s.geometricNormal;
-    // Equirectangular UV about the object's +Y axis.
-    s.uv = {0.5f + atan2f(radial.x, radial.z) * (0.5f * kInvPi), acosf(clampf(radial.y, -1.0f, 1.0f)) * kInvPi};
-    s.material = scene.instanceMaterials[inst.materialOffset + scene.sphereSlots[blas.primitiveOffset + hit.primitive]];
+    s.uv = sphereUv(radial);
+    s.material =
+        scene
+            .instanceMaterials[inst.materialOffset + scene.sphereSlots[blas.primitiveOffset + hit.primitive]];
+    s.kind = GeometryKind::Spheres;
     return s;
 }
 
@@ -74,7 +78,72 @@ PT_HD SurfaceHit surfaceAt(const RenderScene& scene, const Ray& worldRay, const 
     SurfaceHit s = blas.kind == GeometryKind::Spheres ? sphereSurface(scene, inst, blas, worldRay, hit)
                                                       : triangleSurface(scene, inst, blas, hit);
     s.frontFace = dot(worldRay.direction, s.geometricNormal) < 0.0f;
+    s.instance = hit.instance;
+    s.primitive = hit.primitive;
     return s;
+}
+
+// Object-space tangent along increasing U and the handedness w (bitangent = cross(n, t) w
+// points to decreasing V, "up" in the image, as glTF's normal textures expect). From the
+// file's TANGENT where the mesh has one, else from the triangle's UV derivatives; spheres
+// use the direction of increasing longitude. False when there is no frame (no UVs, a
+// degenerate UV mapping, or a sphere's pole).
+PT_HD bool objectTangent(const RenderScene& scene, const SurfaceHit& s, const Hit& hit, Vec3& tangent,
+                         float& w) {
+    const RenderInstance& inst = scene.instances[s.instance];
+    const BlasRef& blas = scene.blases[inst.blas];
+    if (blas.kind == GeometryKind::Spheres) {
+        const Vec4 sphere = scene.spheres[blas.primitiveOffset + s.primitive];
+        const Vec3 radial = inst.worldToObject.transformPoint(s.position) - sphere.xyz();
+        tangent = {radial.z, 0.0f, -radial.x};
+        w = 1.0f;
+        return lengthSquared(tangent) > 0.0f;
+    }
+    if (!blas.hasUvs) return false;
+    const TriangleIndices t = scene.triangles[blas.primitiveOffset + s.primitive];
+    if (scene.tangents.count > 0) {
+        const Vec4 t0 = scene.tangents[t.v0], t1 = scene.tangents[t.v1], t2 = scene.tangents[t.v2];
+        if (t0.w != 0.0f && t1.w != 0.0f && t2.w != 0.0f) {
+            const float b0 = 1.0f - hit.u - hit.v;
+            tangent = t0.xyz() * b0 + t1.xyz() * hit.u + t2.xyz() * hit.v;
+            w = t0.w * b0 + t1.w * hit.u + t2.w * hit.v < 0.0f ? -1.0f : 1.0f;
+            return lengthSquared(tangent) > 0.0f;
+        }
+    }
+    const Vec3 p0 = scene.positions[t.v0];
+    const Vec3 dp1 = scene.positions[t.v1] - p0, dp2 = scene.positions[t.v2] - p0;
+    const Vec2 uv0 = scene.uvs[t.v0];
+    const Vec2 duv1 = scene.uvs[t.v1] - uv0, duv2 = scene.uvs[t.v2] - uv0;
+    const float det = duv1.x * duv2.y - duv2.x * duv1.y;
+    if (!(fabsf(det) > 0.0f)) return false;
+    const float inv = 1.0f / det;
+    tangent = (dp1 * duv2.y - dp2 * duv1.y) * inv;
+    const Vec3 dpdv = (dp2 * duv1.x - dp1 * duv2.x) * inv;
+    w = dot(cross(cross(dp1, dp2), tangent), dpdv) < 0.0f ? 1.0f : -1.0f;
+    return isFinite(tangent) && lengthSquared(tangent) > 0.0f;
+}
+
+// Tangent-space normal mapping (glTF normalTexture, scaled in X and Y by normalScale). The
+// result stays on the front side of the geometry, like interpolated vertex normals.
+PT_HD void applyNormalMap(const RenderScene& scene, const Hit& hit, SurfaceHit& s) {
+    const Material& m = scene.materials[s.material];
+    if (!m.normalTexture.present()) return;
+    Vec3 tangentObject;
+    float w;
+    if (!objectTangent(scene, s, hit, tangentObject, w)) return;
+    const RenderInstance& inst = scene.instances[s.instance];
+    const Vec3 n = s.shadingNormal;
+    Vec3 t = inst.objectToWorld.transformVector(tangentObject);
+    t = t - n * dot(n, t);
+    if (!(lengthSquared(t) > 0.0f)) return;
+    t = normalize(t);
+    // cross(n, t) of the world vectors reverses under a mirroring transform.
+    const Vec3 b = cross(n, t) * (inst.flipsWinding ? -w : w);
+    const Vec3 texel = sampleTexture(scene, m.normalTexture, s.uv, false).xyz() * 2.0f - Vec3(1.0f);
+    const Vec3 mapped = t * (texel.x * m.normalScale) + b * (texel.y * m.normalScale) + n * texel.z;
+    if (!(lengthSquared(mapped) > 0.0f) || !isFinite(mapped)) return;
+    const Vec3 ns = normalize(mapped);
+    s.shadingNormal = dot(ns, s.geometricNormal) > 0.0f ? ns : s.geometricNormal;
 }
 
 }  // namespace pt

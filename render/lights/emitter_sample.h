@@ -1,7 +1,10 @@
 #pragma once
-// Next-event estimation on emissive triangles: pick one in proportion to power, then a
-// uniform point on it. Emission leaves the front face only (counter-clockwise winding, after
-// the instance transform), as pbrt's one-sided area lights do.
+// Emissive triangles as lights: world-space geometry, weight in the light table (area x
+// luminance of the emitted radiance: power / pi of a one-sided Lambertian emitter), and a
+// uniform point on one. Emission leaves the front face only (counter-clockwise winding in
+// object space; a mirroring instance transform keeps the front face, as glTF specifies), as
+// pbrt's one-sided area lights do.
+#include "render/materials/alpha.h"
 #include "render/materials/texture_sample.h"
 #include "render/sampling/alias_table.h"
 #include "render/sampling/warp.h"
@@ -20,6 +23,17 @@ PT_HD const Material& instanceMaterial(const RenderScene& scene, const RenderIns
     return scene.materials[scene.instanceMaterials[instance.materialOffset + slot]];
 }
 
+// The material of primitive `primitive` of instance `instanceIndex`.
+PT_HD const Material& emitterMaterial(const RenderScene& scene, uint32_t instanceIndex, uint32_t primitive,
+                                      GeometryKind kind) {
+    const RenderInstance& inst = scene.instances[instanceIndex];
+    const BlasRef& blas = scene.blases[inst.blas];
+    const uint32_t slot = kind == GeometryKind::Spheres
+                              ? scene.sphereSlots[blas.primitiveOffset + primitive]
+                              : scene.triangleSlots[blas.primitiveOffset + primitive];
+    return instanceMaterial(scene, inst, slot);
+}
+
 PT_HD WorldTriangle worldTriangle(const RenderScene& scene, uint32_t instanceIndex, uint32_t primitive) {
     const RenderInstance& inst = scene.instances[instanceIndex];
     const BlasRef& blas = scene.blases[inst.blas];
@@ -32,24 +46,15 @@ PT_HD WorldTriangle worldTriangle(const RenderScene& scene, uint32_t instanceInd
     const float len = length(c);
     w.area = 0.5f * len;
     w.frontNormal = len > 0.0f ? c / len : Vec3{0.0f, 0.0f, 1.0f};
+    // A mirroring transform reverses the world-space winding of the front face.
     if (inst.flipsWinding) w.frontNormal = -w.frontNormal;
     return w;
 }
 
-// Probability that NEE picks this emitter: the weight it was given at build time over the
-// total, recomputed from the same inputs so that BSDF-sampled hits get the same number.
-PT_HD float emitterPickProbability(const RenderScene& scene, float worldArea, const Material& m) {
-    if (scene.emitterTotalWeight <= 0.0f) return 0.0f;
-    return worldArea * luminance(m.emittedRadiance()) / scene.emitterTotalWeight;
+// Light-table weight of an emissive triangle; the integrator recomputes it on BSDF hits.
+PT_HD float triangleLightWeight(const WorldTriangle& tri, const Material& m) {
+    return tri.area * luminance(m.emittedRadiance());
 }
-
-struct EmitterSample {
-    Vec3 point;
-    Vec3 normal;     // front normal of the emitter
-    Vec3 radiance;   // leaving the front face
-    uint32_t uvValid;
-    float pdfArea;   // pick probability / area
-};
 
 PT_HD Vec3 emittedRadiance(const RenderScene& scene, const Material& m, Vec2 uv) {
     Vec3 e = m.emittedRadiance();
@@ -57,25 +62,34 @@ PT_HD Vec3 emittedRadiance(const RenderScene& scene, const Material& m, Vec2 uv)
     return e;
 }
 
-PT_HD bool sampleEmitter(const RenderScene& scene, float uPick, Vec2 uPoint, EmitterSample& out) {
-    if (scene.emitterAlias.count == 0) return false;
-    const Emitter& e = scene.emitters[sampleAliasTable(scene.emitterAlias, uPick)];
-    const WorldTriangle tri = worldTriangle(scene, e.instance, e.primitive);
-    if (tri.area <= 0.0f) return false;
+struct EmitterSample {
+    Vec3 point;
+    Vec3 normal;    // front normal of the emitter
+    Vec3 radiance;  // leaving the front face, times the surface's alpha coverage there
+    float area;     // world space
+};
+
+// A uniform point on triangle `primitive` of instance `instanceIndex`.
+PT_HD bool sampleEmitterTriangle(const RenderScene& scene, uint32_t instanceIndex, uint32_t primitive,
+                                 Vec2 uPoint, EmitterSample& out) {
+    const WorldTriangle tri = worldTriangle(scene, instanceIndex, primitive);
+    if (!(tri.area > 0.0f)) return false;
     const Vec2 b = squareToTriangle(uPoint);
     out.point = tri.p0 * (1.0f - b.x - b.y) + tri.p1 * b.x + tri.p2 * b.y;
     out.normal = tri.frontNormal;
-    const RenderInstance& inst = scene.instances[e.instance];
+    out.area = tri.area;
+    const RenderInstance& inst = scene.instances[instanceIndex];
     const BlasRef& blas = scene.blases[inst.blas];
-    const Material& m = instanceMaterial(scene, inst, scene.triangleSlots[blas.primitiveOffset + e.primitive]);
+    const Material& m = emitterMaterial(scene, instanceIndex, primitive, GeometryKind::Triangles);
     Vec2 uv{0.0f, 0.0f};
     if (blas.hasUvs) {
-        const TriangleIndices t = scene.triangles[blas.primitiveOffset + e.primitive];
+        const TriangleIndices t = scene.triangles[blas.primitiveOffset + primitive];
         uv = scene.uvs[t.v0] * (1.0f - b.x - b.y) + scene.uvs[t.v1] * b.x + scene.uvs[t.v2] * b.y;
     }
-    out.radiance = emittedRadiance(scene, m, uv);
-    out.pdfArea = emitterPickProbability(scene, tri.area, m) / tri.area;
-    return out.pdfArea > 0.0f;
+    // Where the emitter is alpha-transparent, rays that hit it pass through (transparency.h);
+    // NEE sees it with the same expected coverage.
+    out.radiance = emittedRadiance(scene, m, uv) * surfaceCoverage(scene, m, uv);
+    return true;
 }
 
 }  // namespace pt

@@ -1,26 +1,77 @@
 #include "render/lights/emitter_table.h"
 
-#include "render/lights/emitter_sample.h"
+#include <algorithm>
+#include <cmath>
+
+#include "render/lights/light_sample.h"
 
 namespace pt {
 
-EmitterTable buildEmitterTable(const RenderScene& scene) {
-    EmitterTable table;
-    std::vector<float> weights;
+namespace {
+
+// Adds `e` unless its weight is zero or not finite; returns whether it did.
+bool addEmitter(EmitterTable& table, std::vector<float>& weights, Emitter e) {
+    if (!(e.weight > 0.0f) || !std::isfinite(e.weight)) return false;
+    table.emitters.push_back(e);
+    weights.push_back(e.weight);
+    return true;
+}
+
+void addGeometryLights(const RenderScene& scene, EmitterTable& table, std::vector<float>& weights) {
     for (uint32_t i = 0; i < scene.instances.count; ++i) {
         const RenderInstance& inst = scene.instances[i];
         const BlasRef& blas = scene.blases[inst.blas];
-        if (blas.kind != GeometryKind::Triangles) continue;  // emissive spheres: hit by BSDF rays only
         for (uint32_t prim = 0; prim < blas.primitiveCount; ++prim) {
-            const Material& m = instanceMaterial(scene, inst, scene.triangleSlots[blas.primitiveOffset + prim]);
+            const Material& m = emitterMaterial(scene, i, prim, blas.kind);
             if (!m.isEmissive()) continue;
-            const float weight = worldTriangle(scene, i, prim).area * luminance(m.emittedRadiance());
-            if (!(weight > 0.0f) || !std::isfinite(weight)) continue;
-            table.emitters.push_back({i, prim, weight});
-            weights.push_back(weight);
+            if (blas.kind == GeometryKind::Triangles) {
+                const float weight = triangleLightWeight(worldTriangle(scene, i, prim), m);
+                table.triangles += addEmitter(table, weights, {i, prim, weight, LightKind::Triangle});
+                continue;
+            }
+            WorldSphere sphere;
+            if (!worldSphere(scene, i, prim, sphere)) continue;  // an ellipsoid: BSDF sampling only
+            table.spheres +=
+                addEmitter(table, weights, {i, prim, sphereLightWeight(sphere, m), LightKind::Sphere});
         }
     }
-    // Sum in the order the device recomputes nothing from: only the total is shared.
+}
+
+}  // namespace
+
+float sceneBoundingRadius(const RenderScene& scene) {
+    if (scene.tlasNodes.count == 0 || scene.instances.count == 0) return 1.0f;
+    const BvhNode& root = scene.tlasNodes[0];
+    const float r = 0.5f * length(root.hi - root.lo);
+    return std::isfinite(r) && r > 0.0f ? r : 1.0f;
+}
+
+EmitterTable buildEmitterTable(const RenderScene& scene, double environmentAverageLuminance) {
+    EmitterTable table;
+    std::vector<float> weights;
+    addGeometryLights(scene, table, weights);
+    const float radius = sceneBoundingRadius(scene);
+    for (uint32_t i = 0; i < scene.punctualLights.count; ++i) {
+        const float weight = punctualLightWeight(scene.punctualLights[i], radius);
+        table.punctual += addEmitter(table, weights, {i, 0, weight, LightKind::Punctual});
+    }
+    const RenderEnvironment& env = scene.environment;
+    const double envLuminance =
+        env.texture >= 0 ? environmentAverageLuminance * env.intensity : double(luminance(env.color));
+    const bool sampleable = env.texture < 0 || env.distWidth > 0;
+    if (sampleable && envLuminance > 0.0) {
+        double local = 0.0;
+        for (float w : weights) local += w;
+        double weight = 4.0 * kPi * double(radius) * radius * envLuminance;
+        if (local > 0.0) {
+            // Its share of the flux, kept within [1/4, 3/4] beside local lights (see header).
+            const double share = std::clamp(weight / (weight + local), 0.25, 0.75);
+            weight = share / (1.0 - share) * local;
+        }
+        if (addEmitter(table, weights, {0, 0, float(weight), LightKind::Environment})) {
+            table.environmentWeight = float(weight);
+        }
+    }
     double total = 0.0;
     for (float w : weights) total += w;
     table.totalWeight = float(total);

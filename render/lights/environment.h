@@ -15,6 +15,14 @@ PT_HD Vec2 directionToEquirect(Vec3 d, float rotationRadians) {
     return {u, v};
 }
 
+// The inverse of directionToEquirect: the unit direction at (u, v) of the equirect square.
+PT_HD Vec3 equirectToDirection(Vec2 uv, float rotationRadians) {
+    const float phi = (uv.x - 0.5f) * (2.0f * kPi) + rotationRadians;
+    const float theta = uv.y * kPi;
+    const float sinTheta = sinf(theta);
+    return {sinTheta * sinf(phi), cosf(theta), -sinTheta * cosf(phi)};
+}
+
 PT_HD Vec3 environmentRadiance(const RenderScene& scene, Vec3 direction) {
     const RenderEnvironment& env = scene.environment;
     if (env.texture < 0) return env.color;

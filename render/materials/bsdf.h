@@ -1,23 +1,41 @@
 #pragma once
-// The surface BSDF of a Material at one shading point, in the shading frame (local z is
-// the shading normal, pointing to the front side). It is a mixture of lobes chosen by the
-// glTF parameters:
-//   diffuse    (1 - metallic)(1 - transmission)   Lambertian, baseColor
-//   mirror     metallic                           perfect specular conductor, Schlick F0 = baseColor
-//   glass      (1 - metallic) transmission        smooth dielectric, exact Fresnel, IOR
-// Roughness and the dielectric specular layer of glTF's model arrive with the GGX lobes
-// (materials issue); until then rough metals render as mirrors.
-#include "render/materials/fresnel.h"
+// The surface BSDF of a Material at one shading point: the glTF 2.0 metallic-roughness model
+// (Appendix B) with KHR_materials_ior, _specular, _transmission and _clearcoat, in the shading
+// frame (local z is the shading normal, pointing to the front side). A mixture of lobes:
+//
+//   coat      w = clearcoat Fresnel(N.V)            white GGX, clearcoat.h (front only)
+//   and, scaled by 1 - w:
+//   specular  metallic + (1-m)(1-t) layer           GGX reflection, Schlick F0/F90,
+//                                                   microfacet_reflection.h (front only)
+//   diffuse   (1-m)(1-t)                            Lambert under the specular layer,
+//                                                   layered_diffuse.h (front only)
+//   glass     (1-m) t                               rough dielectric BSDF, rough_dielectric.h
+//
+// Metal and the dielectric specular layer share one GGX lobe: Schlick's F is linear in F0 and
+// F90, so their mix is one Schlick term. Lobes below kGgxSmoothAlpha are delta lobes. sampleBsdf
+// picks a lobe with probability proportional to its estimated albedo at wo; for a non-delta
+// direction it returns the weight and pdf of the whole non-delta mixture (one-sample MIS over
+// the lobes), so pdfBsdf() is exactly the density of the directions it produces.
+#include "render/materials/clearcoat.h"
+#include "render/materials/layered_diffuse.h"
+#include "render/materials/rough_dielectric.h"
 #include "render/math/frame.h"
 #include "render/sampling/warp.h"
 
 namespace pt {
 
+// Resolved glTF parameters of one shading point (material_eval.h fills it from a Material).
+// The first four members keep their historical order for aggregate initialisation.
 struct BsdfParams {
     Vec3 baseColor;
     float metallic;
     float transmission;
-    float ior;
+    float ior;                         // interior / exterior, >= 1
+    float roughness = 0.5f;            // GGX alpha = roughness^2
+    float specular = 1.0f;             // KHR_materials_specular factor
+    Vec3 specularColor{1.0f, 1.0f, 1.0f};
+    float clearcoat = 0.0f;
+    float clearcoatRoughness = 0.0f;
 };
 
 struct BsdfSample {
@@ -28,79 +46,220 @@ struct BsdfSample {
     bool transmitted;
 };
 
-struct LobeWeights {
-    float diffuse, mirror, glass;
+// Whether the BSDF can refract: the integrator keeps the geometric sidedness of such surfaces
+// (inside versus outside) instead of shading both sides as fronts.
+PT_HD bool isTransmissive(const BsdfParams& p) {
+    return (1.0f - clampf(p.metallic, 0.0f, 1.0f)) * clampf(p.transmission, 0.0f, 1.0f) > 0.0f;
+}
+
+namespace bsdf_detail {
+
+enum Lobe : int { kCoat = 0, kSpecular = 1, kDiffuse = 2, kGlass = 3, kLobeCount = 4 };
+
+// Everything that depends on the parameters and wo only, in the shading frame.
+struct Lobes {
+    float coat;             // mix weight of the coat (0 from the back)
+    float coatAlpha;
+    Vec3 specF0, specF90;   // the shared GGX reflection lobe, mix weights folded in
+    float alpha;
+    DiffuseLayer layer;     // the dielectric specular layer over the diffuse base
+    Vec3 diffuse;           // baseColor * mix weight * (1 - E(mu_o)) / (1 - E_avg)
+    float glass;            // mix weight of the dielectric interface
+    DielectricInterface interface;
+    float probability[kLobeCount];
 };
 
-PT_HD LobeWeights lobeWeights(const BsdfParams& p) {
-    const float m = clampf(p.metallic, 0.0f, 1.0f), t = clampf(p.transmission, 0.0f, 1.0f);
-    return {(1.0f - m) * (1.0f - t), m, (1.0f - m) * t};
+PT_HD bool isZero(Vec3 v) { return !(maxComponent(v) > 0.0f); }
+
+PT_HD bool isDeltaLobe(const Lobes& l, int lobe) {
+    switch (lobe) {
+        case kCoat: return ggxIsSmooth(l.coatAlpha);
+        case kSpecular: return ggxIsSmooth(l.alpha);
+        case kGlass: return dielectricIsSmooth(l.interface);
+        default: return false;
+    }
 }
+
+PT_HD Lobes resolveLobes(const BsdfParams& p, Vec3 wo) {
+    Lobes l{};
+    const bool front = wo.z > 0.0f;
+    const float muO = front ? wo.z : 0.0f;
+    const float metallic = clampf(p.metallic, 0.0f, 1.0f);
+    const float transmission = clampf(p.transmission, 0.0f, 1.0f);
+    const float specular = clampf(p.specular, 0.0f, 1.0f);
+    const float ior = p.ior > 0.0f ? p.ior : 1.0f;
+    const float opaque = (1.0f - metallic) * (1.0f - transmission);
+    l.alpha = ggxAlpha(p.roughness);
+    l.coatAlpha = ggxAlpha(p.clearcoatRoughness);
+    l.coat = clearcoatWeight(p.clearcoat, muO);
+    const float base = 1.0f - l.coat;
+
+    // KHR_materials_specular: F0 = min(F0(ior) specularColor, 1) specular, F90 = specular.
+    l.layer.layerF0 = vmin(Vec3(dielectricF0(ior)) * vmax(p.specularColor, Vec3(0.0f)), Vec3(1.0f)) * specular;
+    l.layer.layerF90 = Vec3(specular);
+    l.layer.layerAlpha = l.alpha;
+
+    // Lobe selection in proportion to estimated albedos at wo.
+    float a[kLobeCount] = {0.0f, 0.0f, 0.0f, 0.0f};
+    if (front) {
+        const Vec3 metalF0 = vmin(vmax(p.baseColor, Vec3(0.0f)), Vec3(1.0f));
+        l.specF0 = (metalF0 * metallic + l.layer.layerF0 * opaque) * base;
+        l.specF90 = (Vec3(metallic) + l.layer.layerF90 * opaque) * base;
+        const SpecularAlbedo albedoO = ggxSpecularAlbedo(muO, l.alpha);
+        a[kSpecular] = maxComponent(schlickAlbedo(albedoO, l.specF0, l.specF90));
+        if (opaque > 0.0f) {
+            const Vec3 transmittanceO = layerTransmittance(l.layer, albedoO);
+            l.diffuse = p.baseColor * (base * opaque) * diffuseLayerScale(l.layer, transmittanceO);
+            a[kDiffuse] = base * opaque * maxComponent(p.baseColor * transmittanceO);
+        }
+        if (l.coat > 0.0f) {
+            const SpecularAlbedo coatAlbedo = ggxSpecularAlbedo(muO, l.coatAlpha);
+            a[kCoat] = l.coat * (coatAlbedo.f0Part + coatAlbedo.f90Part);
+        }
+    }
+    l.glass = (1.0f - metallic) * transmission * base;
+    l.interface = {l.alpha, ior, vmin(p.specularColor * specular, Vec3(1.0f)), p.baseColor};
+    if (l.glass > 0.0f) {
+        const float f = fresnelDielectric(fabsf(wo.z), relativeEta(l.interface, wo));
+        const float transmit = maxComponent(l.interface.transmitTint);
+        // Not below a tenth of the refracted share: rough microfacets refract where the
+        // macro surface totally reflects.
+        a[kGlass] = l.glass * fmaxf(f * maxComponent(l.interface.reflectTint) + (1.0f - f) * transmit,
+                                    0.1f * transmit);
+    }
+    float sum = 0.0f;
+    for (int i = 0; i < kLobeCount; ++i) sum += a[i] > 0.0f ? a[i] : 0.0f;
+    for (int i = 0; i < kLobeCount; ++i) l.probability[i] = sum > 0.0f && a[i] > 0.0f ? a[i] / sum : 0.0f;
+    return l;
+}
+
+// f * |cos(wi)| and the mixture pdf over the non-delta lobes, in the shading frame.
+PT_HD Vec3 evalLobes(const Lobes& l, Vec3 wo, Vec3 wi) {
+    Vec3 f(0.0f);
+    if (wo.z > 0.0f && wi.z > 0.0f) {
+        if (l.coat > 0.0f && !isDeltaLobe(l, kCoat)) f += evalClearcoat(wo, wi, l.coatAlpha) * l.coat;
+        if (!isZero(l.specF90 + l.specF0) && !isDeltaLobe(l, kSpecular)) {
+            f += evalGgxReflection(wo, wi, l.alpha, l.specF0, l.specF90);
+        }
+        if (!isZero(l.diffuse)) f += evalLayeredDiffuse(l.layer, l.diffuse, wi);
+    }
+    if (l.glass > 0.0f && !isDeltaLobe(l, kGlass)) f += evalRoughDielectric(l.interface, wo, wi) * l.glass;
+    return f;
+}
+
+PT_HD float pdfLobes(const Lobes& l, Vec3 wo, Vec3 wi) {
+    float pdf = 0.0f;
+    if (wo.z > 0.0f && wi.z > 0.0f) {
+        if (l.probability[kCoat] > 0.0f && !isDeltaLobe(l, kCoat)) {
+            pdf += l.probability[kCoat] * pdfGgxReflection(wo, wi, l.coatAlpha);
+        }
+        if (l.probability[kSpecular] > 0.0f && !isDeltaLobe(l, kSpecular)) {
+            pdf += l.probability[kSpecular] * pdfGgxReflection(wo, wi, l.alpha);
+        }
+        pdf += l.probability[kDiffuse] * cosineHemispherePdf(wi.z);
+    }
+    if (l.probability[kGlass] > 0.0f && !isDeltaLobe(l, kGlass)) {
+        pdf += l.probability[kGlass] * pdfRoughDielectric(l.interface, wo, wi);
+    }
+    return pdf;
+}
+
+// Samples the chosen lobe alone; the weight includes the lobe's mix weight.
+PT_HD LobeSample sampleLobe(const Lobes& l, int lobe, Vec3 wo, float uChoice, Vec2 uDir) {
+    LobeSample s{};
+    switch (lobe) {
+        case kCoat:
+            s = isDeltaLobe(l, kCoat) ? sampleSmoothReflection(wo, Vec3(1.0f), Vec3(1.0f))
+                                      : sampleGgxReflection(wo, l.coatAlpha, Vec3(1.0f), Vec3(1.0f), uDir);
+            s.weight *= l.coat;
+            return s;
+        case kSpecular:
+            if (!isDeltaLobe(l, kSpecular)) return sampleGgxReflection(wo, l.alpha, l.specF0, l.specF90, uDir);
+            return sampleSmoothReflection(wo, l.specF0, l.specF90);
+        case kDiffuse:
+            s.wi = squareToCosineHemisphere(uDir);
+            s.valid = wo.z > 0.0f && s.wi.z > 0.0f;
+            s.pdf = cosineHemispherePdf(s.wi.z);
+            s.weight = l.diffuse * layerTransmittance(l.layer, s.wi.z);  // the cos / pi cancel
+            return s;
+        default:
+            s = isDeltaLobe(l, kGlass) ? sampleSmoothDielectric(l.interface, wo, uChoice)
+                                       : sampleRoughDielectric(l.interface, wo, uChoice, uDir);
+            s.weight *= l.glass;
+            return s;
+    }
+}
+
+// How many non-delta lobes can be picked.
+PT_HD int nonDeltaLobeCount(const Lobes& l) {
+    int n = 0;
+    for (int i = 0; i < kLobeCount; ++i) n += l.probability[i] > 0.0f && !isDeltaLobe(l, i) ? 1 : 0;
+    return n;
+}
+
+}  // namespace bsdf_detail
 
 // f(wo, wi) |cos(wi)| for the non-delta lobes. wo, wi in world space.
 PT_HD Vec3 evalBsdf(const BsdfParams& p, const Frame& frame, Vec3 woWorld, Vec3 wiWorld) {
-    const Vec3 wo = frame.toLocal(woWorld), wi = frame.toLocal(wiWorld);
-    if (wo.z <= 0.0f || wi.z <= 0.0f) return Vec3(0.0f);  // diffuse reflects on the front only
-    return p.baseColor * (lobeWeights(p).diffuse * kInvPi * wi.z);
+    const Vec3 wo = frame.toLocal(woWorld);
+    return bsdf_detail::evalLobes(bsdf_detail::resolveLobes(p, wo), wo, frame.toLocal(wiWorld));
 }
 
 // Solid-angle density with which sampleBsdf() picks wi through its non-delta lobes.
 PT_HD float pdfBsdf(const BsdfParams& p, const Frame& frame, Vec3 woWorld, Vec3 wiWorld) {
-    const Vec3 wo = frame.toLocal(woWorld), wi = frame.toLocal(wiWorld);
-    if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
-    return lobeWeights(p).diffuse * cosineHemispherePdf(wi.z);
-}
-
-PT_HD bool hasNonDeltaLobes(const BsdfParams& p) { return lobeWeights(p).diffuse > 0.0f; }
-
-PT_HD BsdfSample sampleGlass(const BsdfParams& p, const Frame& frame, Vec3 wo, float uChoice) {
-    const bool entering = wo.z > 0.0f;
-    const float eta = entering ? p.ior : 1.0f / p.ior;  // eta_t / eta_i
-    const float cosO = fabsf(wo.z);
-    const float fresnel = fresnelDielectric(cosO, eta);
-    BsdfSample s{};
-    s.delta = true;
-    s.pdf = 0.0f;
-    if (uChoice < fresnel) {
-        s.wi = frame.toWorld({-wo.x, -wo.y, wo.z});
-        s.weight = Vec3(1.0f);
-        return s;
-    }
-    Vec3 wt;
-    const Vec3 n{0.0f, 0.0f, entering ? 1.0f : -1.0f};
-    if (!refractDirection(wo, n, eta, wt)) {  // unreachable when fresnel == 1, kept for safety
-        s.wi = frame.toWorld({-wo.x, -wo.y, wo.z});
-        s.weight = Vec3(1.0f);
-        return s;
-    }
-    s.wi = frame.toWorld(normalize(wt));
-    // Radiance is compressed by 1/eta^2 crossing into the denser side (Veach 1997, 5.2).
-    s.weight = p.baseColor * (1.0f / (eta * eta));
-    s.transmitted = true;
-    return s;
-}
-
-// Picks a lobe with `uLobe`, then a direction with `uDir`. A zero weight means no sample.
-PT_HD BsdfSample sampleBsdf(const BsdfParams& p, const Frame& frame, Vec3 woWorld, float uLobe,
-                            Vec2 uDir) {
     const Vec3 wo = frame.toLocal(woWorld);
-    const LobeWeights w = lobeWeights(p);
+    return bsdf_detail::pdfLobes(bsdf_detail::resolveLobes(p, wo), wo, frame.toLocal(wiWorld));
+}
+
+// Whether evalBsdf() can be non-zero for some pair of directions (light sampling pays off).
+PT_HD bool hasNonDeltaLobes(const BsdfParams& p) {
+    const float metallic = clampf(p.metallic, 0.0f, 1.0f), transmission = clampf(p.transmission, 0.0f, 1.0f);
+    const float opaque = (1.0f - metallic) * (1.0f - transmission);
+    const float alpha = ggxAlpha(p.roughness);
+    if (opaque > 0.0f && maxComponent(p.baseColor) > 0.0f) return true;
+    if (p.clearcoat > 0.0f && !ggxIsSmooth(ggxAlpha(p.clearcoatRoughness))) return true;
+    if (ggxIsSmooth(alpha)) return false;
+    const float ior = p.ior > 0.0f ? p.ior : 1.0f;
+    return metallic > 0.0f || (opaque > 0.0f && p.specular > 0.0f) ||
+           (transmission > 0.0f && !dielectricIsSmooth({alpha, ior, Vec3(1.0f), Vec3(1.0f)}));
+}
+
+// Picks a lobe with `uLobe` (the remainder of which chooses reflection or refraction in the
+// glass lobe), then a direction with `uDir`. A zero weight means no sample.
+PT_HD BsdfSample sampleBsdf(const BsdfParams& p, const Frame& frame, Vec3 woWorld, float uLobe, Vec2 uDir) {
+    using namespace bsdf_detail;
+    const Vec3 wo = frame.toLocal(woWorld);
+    const Lobes l = resolveLobes(p, wo);
     BsdfSample s{};
-    if (uLobe < w.glass) {
-        return sampleGlass(p, frame, wo, uDir.x);
+    int lobe = -1;
+    float start = 0.0f, next = 0.0f;
+    for (int i = 0; i < kLobeCount; ++i) {
+        if (l.probability[i] <= 0.0f) continue;
+        lobe = i;  // the last lobe with a probability catches rounding past the sum
+        start = next;
+        next = start + l.probability[i];
+        if (uLobe < next) break;
     }
-    if (wo.z <= 0.0f) return s;  // opaque lobes see only the front
-    if (uLobe < w.glass + w.mirror) {
-        s.wi = frame.toWorld({-wo.x, -wo.y, wo.z});
-        s.weight = fresnelSchlick(p.baseColor, wo.z);
+    if (lobe < 0) return s;
+    const float uChoice = clampf((uLobe - start) / l.probability[lobe], 0.0f, 0.99999994f);
+    const LobeSample ls = sampleLobe(l, lobe, wo, uChoice, uDir);
+    if (!ls.valid) return s;
+    s.wi = frame.toWorld(ls.wi);
+    s.transmitted = ls.transmitted;
+    if (ls.delta) {
         s.delta = true;
+        s.weight = ls.weight * (1.0f / l.probability[lobe]);
         return s;
     }
-    const Vec3 wi = squareToCosineHemisphere(uDir);
-    if (wi.z <= 0.0f) return s;
-    s.wi = frame.toWorld(wi);
-    s.pdf = w.diffuse * cosineHemispherePdf(wi.z);
-    s.weight = p.baseColor;  // (w.diffuse * albedo / pi * cos) / (w.diffuse * cos / pi)
+    if (nonDeltaLobeCount(l) == 1) {  // no other lobe's density to combine with
+        s.pdf = l.probability[lobe] * ls.pdf;
+        s.weight = ls.weight * (1.0f / l.probability[lobe]);
+        return s;
+    }
+    const float pdf = pdfLobes(l, wo, ls.wi);
+    if (!(pdf > 0.0f)) return s;
+    s.pdf = pdf;
+    s.weight = evalLobes(l, wo, ls.wi) / pdf;
     return s;
 }
 

@@ -16,11 +16,25 @@ PT_HD float fresnelDielectric(float cosThetaI, float eta) {
     return 0.5f * (rParallel * rParallel + rPerpendicular * rPerpendicular);
 }
 
-// Schlick's approximation for conductors, with the reflectance at normal incidence `f0`.
-PT_HD Vec3 fresnelSchlick(Vec3 f0, float cosTheta) {
+// (1 - cos)^5, the angular factor of Schlick's approximation.
+PT_HD float schlickWeight(float cosTheta) {
     const float m = clampf(1.0f - cosTheta, 0.0f, 1.0f);
-    const float m5 = (m * m) * (m * m) * m;
-    return f0 + (Vec3(1.0f) - f0) * m5;
+    return (m * m) * (m * m) * m;
+}
+
+// Schlick's approximation with the reflectance `f0` at normal incidence and `f90` at grazing
+// (glTF Appendix B; KHR_materials_specular lowers f90 of dielectrics).
+PT_HD Vec3 fresnelSchlick(Vec3 f0, Vec3 f90, float cosTheta) {
+    return f0 + (f90 - f0) * schlickWeight(cosTheta);
+}
+
+// Schlick's approximation for conductors, with the reflectance at normal incidence `f0`.
+PT_HD Vec3 fresnelSchlick(Vec3 f0, float cosTheta) { return fresnelSchlick(f0, Vec3(1.0f), cosTheta); }
+
+// Reflectance at normal incidence of an interface between indices 1 and `ior`.
+PT_HD float dielectricF0(float ior) {
+    const float r = (ior - 1.0f) / (ior + 1.0f);
+    return r * r;
 }
 
 // Refracts `wi` (pointing away from the surface, on the side `n` points to) through an

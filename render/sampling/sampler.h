@@ -89,6 +89,17 @@ struct SampleDims {
     static constexpr uint32_t kBsdfDir = 4;     //   2: BSDF direction
     static constexpr uint32_t kRoulette = 6;    //   1: Russian roulette
     PT_HD static uint32_t bounce(uint32_t depth) { return kFirstBounce + depth * kPerBounce; }
+    // Stochastic transparency (alpha blend) draws one number per surface a segment passes, up
+    // to kAlphaLayers per segment; these dimensions lie beyond any path's own, so they are
+    // hashed rather than stratified, which is all a coin flip needs.
+    static constexpr uint32_t kAlphaLayers = 64;
+    static constexpr uint32_t kAlphaBase = 1u << 24;
+    PT_HD static uint32_t alpha(uint32_t depth, uint32_t layer) {
+        return kAlphaBase + depth * 2 * kAlphaLayers + layer;
+    }
+    PT_HD static uint32_t shadowAlpha(uint32_t depth, uint32_t layer) {
+        return kAlphaBase + depth * 2 * kAlphaLayers + kAlphaLayers + layer;
+    }
 };
 
 // The sample value in [0, 1) for one pixel, sample and dimension.

@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <algorithm>
 #include <atomic>
 #include <mutex>
 #include <stdexcept>
@@ -46,6 +47,13 @@ void appendTriangles(const Mesh& mesh, size_t index, CompiledScene& out) {
     else out.normals.resize(out.positions.size());
     if (hasUvs) out.uvs.insert(out.uvs.end(), mesh.uvs.begin(), mesh.uvs.end());
     else out.uvs.resize(out.positions.size());
+    // Zero tangents (w = 0) mean "derive from the UVs"; flattenGeometry drops the array when
+    // no mesh has any.
+    if (mesh.tangents.size() == vertexCount) {
+        out.tangents.insert(out.tangents.end(), mesh.tangents.begin(), mesh.tangents.end());
+    } else {
+        out.tangents.resize(out.positions.size());
+    }
     for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
         const uint32_t a = mesh.indices[i], b = mesh.indices[i + 1], c = mesh.indices[i + 2];
         if (a >= vertexCount || b >= vertexCount || c >= vertexCount) {
@@ -96,6 +104,11 @@ void flattenGeometry(const Scene& scene, CompiledScene& out) {
             out.stats.meshTriangles += blas.primitiveCount;
         }
     }
+    const bool anyTangents = std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) {
+        return m.kind == GeometryKind::Triangles && !m.tangents.empty() &&
+               m.tangents.size() == m.positions.size();
+    });
+    if (!anyTangents) out.tangents.clear();
     out.stats.blasCount = uint32_t(out.blases.size());
 }
 

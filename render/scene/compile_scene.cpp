@@ -2,10 +2,13 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 
 #include "render/bvh/binned_sah_builder.h"
+#include "render/materials/alpha.h"
 #include "render/integrator/camera.h"
 #include "render/scene/compile_geometry.h"
 
@@ -126,6 +129,46 @@ RenderEnvironment compileEnvironment(const Environment& environment) {
     return env;
 }
 
+PunctualLight compilePunctualLight(const Light& light) {
+    PunctualLight p{};
+    p.type = light.type;
+    p.position = light.position;
+    const float len = length(light.direction);
+    p.direction = len > 0.0f && std::isfinite(len) ? light.direction / len : Vec3(0.0f, 0.0f, -1.0f);
+    p.intensity = light.color * light.intensity;
+    const float toRadians = kPi / 180.0f;
+    const float outer = std::clamp(light.outerConeDegrees, 0.0f, 90.0f) * toRadians;
+    const float inner = std::clamp(light.innerConeDegrees, 0.0f, 90.0f) * toRadians;
+    p.cosOuter = std::cos(outer);
+    p.cosInner = std::cos(std::min(inner, outer));
+    return p;
+}
+
+void compileLights(const Scene& scene, CompiledScene& out) {
+    out.punctualLights.clear();
+    for (const Light& light : scene.lights) out.punctualLights.push_back(compilePunctualLight(light));
+    out.environment = compileEnvironment(scene.environment);
+    out.environmentDistribution = {};
+    if (out.environment.texture >= 0) {
+        if (size_t(out.environment.texture) >= scene.textures.size()) {
+            throw std::invalid_argument("the environment names texture " +
+                                        std::to_string(out.environment.texture) + ", which does not exist");
+        }
+        if (out.environment.intensity > 0.0f) {
+            const Texture& image = scene.textures[size_t(out.environment.texture)];
+            out.environmentDistribution = buildEnvironmentDistribution(image);
+        }
+        out.environment.distWidth = out.environmentDistribution.width;
+        out.environment.distHeight = out.environmentDistribution.height;
+    }
+    out.emitters = buildEmitterTable(out.view(), out.environmentDistribution.averageLuminance);
+    out.environment.lightWeight = out.emitters.environmentWeight;
+    out.stats.emitterCount = out.emitters.triangles;
+    out.stats.sphereLightCount = out.emitters.spheres;
+    out.stats.punctualLightCount = out.emitters.punctual;
+    out.stats.environmentSampled = out.emitters.environmentWeight > 0.0f;
+}
+
 CompiledScene compileRenderScene(const Scene& scene, const CompileOptions& options,
                                  const ProgressFn& progress) {
     CompiledScene out;
@@ -158,12 +201,13 @@ CompiledScene compileRenderScene(const Scene& scene, const CompileOptions& optio
     buildTlas(out);
     out.stats.tlasSeconds = secondsSince(start);
 
-    start = std::chrono::steady_clock::now();
-    out.emitters = buildEmitterTable(out.view());
-    out.stats.lightSeconds = secondsSince(start);
-    out.stats.emitterCount = uint32_t(out.emitters.emitters.size());
+    out.transparentMaterials = false;
+    for (const Material& m : out.materials) out.transparentMaterials |= materialMayBeTransparent(m);
 
-    out.environment = compileEnvironment(scene.environment);
+    start = std::chrono::steady_clock::now();
+    compileLights(scene, out);
+    out.stats.lightSeconds = secondsSince(start);
+
     out.camera = makeRenderCamera(scene.camera, scene.render.width, scene.render.height);
     out.settings = compileSettings(scene.render);
     return out;
@@ -174,6 +218,7 @@ RenderScene CompiledScene::view() const {
     s.positions = spanOf(positions);
     s.normals = spanOf(normals);
     s.uvs = spanOf(uvs);
+    s.tangents = spanOf(tangents);
     s.triangles = spanOf(triangles);
     s.spheres = spanOf(spheres);
     s.triangleSlots = spanOf(triangleSlots);
@@ -192,7 +237,12 @@ RenderScene CompiledScene::view() const {
     s.emitters = spanOf(emitters.emitters);
     s.emitterAlias = spanOf(emitters.alias);
     s.emitterTotalWeight = emitters.totalWeight;
+    s.punctualLights = spanOf(punctualLights);
     s.environment = environment;
+    s.envPdf = spanOf(environmentDistribution.pdf);
+    s.envMarginalCdf = spanOf(environmentDistribution.marginalCdf);
+    s.envConditionalCdf = spanOf(environmentDistribution.conditionalCdf);
+    s.transparentMaterials = transparentMaterials ? 1u : 0u;
     s.camera = camera;
     s.settings = settings;
     s.bruteForce = bruteForce ? 1u : 0u;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "render/lights/emitter_table.h"
+#include "render/lights/environment_distribution.h"
 #include "render/scene/render_scene.h"
 #include "render/scene/scene.h"
 #include "render/util/progress.h"
@@ -23,13 +24,17 @@ struct CompileStats {
     uint64_t meshTriangles = 0;            // unique triangles over meshes (what BLASes hold)
     uint64_t instancedTriangles = 0;       // over visible instances (what is traced)
     uint64_t spheres = 0;
-    uint32_t blasCount = 0, instanceCount = 0, emitterCount = 0;
+    uint32_t blasCount = 0, instanceCount = 0;
+    uint32_t emitterCount = 0;             // emissive triangles NEE samples
+    uint32_t sphereLightCount = 0, punctualLightCount = 0;
+    bool environmentSampled = false;       // the environment is in the light table
     uint64_t blasNodes = 0;
 };
 
 struct CompiledScene {
     std::vector<Vec3> positions, normals;
     std::vector<Vec2> uvs;
+    std::vector<Vec4> tangents;            // parallel to positions, or empty when no mesh has any
     std::vector<TriangleIndices> triangles;
     std::vector<Vec4> spheres;
     std::vector<uint32_t> triangleSlots, sphereSlots;
@@ -44,7 +49,10 @@ struct CompiledScene {
     std::vector<TextureView> textures;
     std::vector<uint8_t> texels8;
     std::vector<float> texelsF;
+    bool transparentMaterials = false;
     EmitterTable emitters;
+    std::vector<PunctualLight> punctualLights;
+    EnvironmentDistribution environmentDistribution;
     RenderEnvironment environment{};
     RenderCamera camera{};
     IntegratorSettings settings{};
@@ -64,5 +72,11 @@ CompiledScene compileRenderScene(const Scene& scene, const CompileOptions& optio
 std::vector<Material> compileMaterials(const Scene& scene);
 IntegratorSettings compileSettings(const RenderSettings& settings);
 RenderEnvironment compileEnvironment(const Environment& environment);
+// Punctual lights, the environment's sampling distribution and the light table, for a
+// CompiledScene whose geometry, materials and TLAS are already compiled (after an edit of
+// the environment or the lights). Throws std::invalid_argument for an environment naming a
+// missing texture.
+void compileLights(const Scene& scene, CompiledScene& out);
+PunctualLight compilePunctualLight(const Light& light);
 
 }  // namespace pt

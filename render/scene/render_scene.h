@@ -51,13 +51,36 @@ struct TextureView {
 };
 static_assert(sizeof(TextureView) == 32, "TextureView: 32 bytes");
 
-// An emissive triangle that next-event estimation can pick, with probability weight / total.
-struct Emitter {
-    uint32_t instance;
-    uint32_t primitive;        // mesh-local triangle index
-    float weight;              // world-space area x luminance of emitted radiance
-    uint32_t pad = 0;
+// What next-event estimation can pick from its one alias table (render/lights/emitter_table.h).
+enum class LightKind : uint32_t {
+    Triangle = 0,     // an emissive triangle of an instance
+    Sphere = 1,       // an emissive analytic sphere of a uniformly scaled instance
+    Punctual = 2,     // RenderScene::punctualLights[instance]
+    Environment = 3,  // the environment (constant colour or importance-sampled image)
 };
+
+// One light NEE can pick, with probability weight / RenderScene::emitterTotalWeight. The
+// weight estimates power / pi (emitter_table.h says how per kind); the integrator recomputes it
+// from the same inputs when a BSDF-sampled ray hits the light, so both strategies agree on its
+// probability for MIS.
+struct Emitter {
+    uint32_t instance;         // Triangle, Sphere: RenderScene::instances index; Punctual: light index
+    uint32_t primitive;        // Triangle, Sphere: mesh-local primitive index
+    float weight;
+    LightKind kind;
+};
+static_assert(sizeof(Emitter) == 16, "Emitter: 16 bytes");
+
+// A punctual light in world space (Scene's Light, compiled). 48 bytes.
+struct PunctualLight {
+    Vec3 position;             // point, spot
+    LightType type;
+    Vec3 direction;            // spot, directional: unit, where the light shines
+    float cosInner;            // spot: cos of the inner cone angle
+    Vec3 intensity;            // color x intensity: candela (point, spot) or lux (directional)
+    float cosOuter;            // spot: cos of the outer cone angle
+};
+static_assert(sizeof(PunctualLight) == 48, "PunctualLight: 48 bytes");
 
 // Walker alias table entry: pick i uniformly, keep it with probability `keep`, else `alias`.
 struct AliasEntry {
@@ -79,7 +102,14 @@ struct RenderEnvironment {
     int32_t texture;           // equirectangular RGBA32F
     float intensity;
     float rotationRadians;     // about +Y
+    // Importance sampling of the image (render/lights/environment_sampling.h): a piecewise-
+    // constant density over a distWidth x distHeight grid on the equirect square; 0 x 0 when
+    // the environment is a constant colour (sampled uniformly) or black.
+    uint32_t distWidth = 0, distHeight = 0;
+    float lightWeight = 0.0f;  // its Emitter weight; 0: not in the light table
+    uint32_t pad = 0;
 };
+static_assert(sizeof(RenderEnvironment) == 40, "RenderEnvironment: 40 bytes");
 
 // Integrator switches; each can be flipped at run time so its effect can be measured.
 struct IntegratorSettings {
@@ -90,6 +120,9 @@ struct IntegratorSettings {
     uint32_t multipleImportance = 1;
     uint32_t russianRoulette = 1;
     uint32_t russianRouletteDepth = 3;  // first bounce at which paths may be terminated
+    // Firefly clamp: the luminance of each indirect contribution of a sample (light reaching
+    // the first hit through another surface) is limited to this; 0 = off. Biased (darkens).
+    float clampRadiance = 0.0f;
 };
 
 struct RenderScene {
@@ -97,6 +130,7 @@ struct RenderScene {
     Span<const Vec3> positions;
     Span<const Vec3> normals;              // parallel to positions where a mesh has them
     Span<const Vec2> uvs;                  // parallel to positions where a mesh has them
+    Span<const Vec4> tangents;             // parallel to positions, or empty when no mesh has any
     Span<const TriangleIndices> triangles;
     Span<const Vec4> spheres;              // xyz center, w radius (object space)
     Span<const uint32_t> triangleSlots;    // parallel to triangles: the mesh slot of each
@@ -117,11 +151,17 @@ struct RenderScene {
     Span<const uint8_t> texels8;
     Span<const float> texelsF;
 
-    // Lights.
+    uint32_t transparentMaterials = 0;     // some material may be alpha-transparent (mask, blend)
+
+    // Lights: one alias table over every light NEE samples.
     Span<const Emitter> emitters;
     Span<const AliasEntry> emitterAlias;
     float emitterTotalWeight = 0.0f;
+    Span<const PunctualLight> punctualLights;
     RenderEnvironment environment;
+    Span<const float> envPdf;              // distHeight x distWidth, density on the unit square
+    Span<const float> envMarginalCdf;      // distHeight + 1, over rows
+    Span<const float> envConditionalCdf;   // distHeight x (distWidth + 1), within each row
 
     RenderCamera camera;
     IntegratorSettings settings;

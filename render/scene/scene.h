@@ -24,6 +24,10 @@ struct Mesh {
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;          // empty, or one unit normal per position
     std::vector<Vec2> uvs;              // empty, or one per position (glTF TEXCOORD_0)
+    // Empty, or one per position (glTF TANGENT): xyz a unit tangent along increasing U, w = +-1
+    // the handedness (bitangent = cross(normal, xyz) * w). A zero vector (w = 0) marks a
+    // vertex without one; the renderer then derives the frame from the triangle's UVs.
+    std::vector<Vec4> tangents;
     std::vector<uint32_t> indices;      // three per triangle, each < positions.size()
     std::vector<Vec4> spheres;          // Spheres: xyz = center, w = radius (> 0)
     std::vector<uint32_t> primitiveSlots;  // empty (all slot 0), or one per primitive
@@ -116,6 +120,28 @@ struct SceneObject {
     std::map<std::string, std::string> materialOverrides;  // File: file material -> scene material
 };
 
+enum class LightType : uint32_t { Point = 0, Spot = 1, Directional = 2 };
+
+// A punctual light (KHR_lights_punctual), in world space. Photometric units as in glTF, taken
+// as the renderer's radiometric units without a 683 lm/W factor, the same convention as
+// emission strength (so emission in nits, lights in candela and lux agree):
+//   point, spot: `intensity` is luminous intensity in candela (radiant intensity = color x
+//   intensity, falling off as 1/d^2); directional: illuminance in lux on a surface facing it.
+// glTF's `range` is kept but not rendered: the falloff is the physical 1/d^2 at any distance,
+// as the extension allows ("range ... MAY" cut off); a range only exists to help rasterisers.
+struct Light {
+    std::string name;
+    LightType type = LightType::Point;
+    Vec3 color{1.0f, 1.0f, 1.0f};       // linear Rec.709
+    float intensity = 1.0f;             // candela (point, spot) or lux (directional)
+    Vec3 position{0.0f, 0.0f, 0.0f};    // point, spot
+    Vec3 direction{0.0f, 0.0f, -1.0f};  // spot, directional: where the light shines (need not be unit)
+    float innerConeDegrees = 0.0f;      // spot: full intensity inside this angle from `direction`
+    float outerConeDegrees = 45.0f;     // spot: dark outside; smooth falloff in between (glTF)
+    float range = 0.0f;                 // glTF range, 0 = infinite; not rendered (see above)
+    int32_t object = -1;                // -1: defined by the scene JSON; else imported by that object
+};
+
 struct Scene {
     std::string sourcePath;             // file it was loaded from (absolute), "" if built in code
     std::vector<SceneObject> objects;
@@ -123,6 +149,7 @@ struct Scene {
     std::vector<Instance> instances;
     std::vector<NamedMaterial> materials;
     std::vector<Texture> textures;
+    std::vector<Light> lights;          // punctual lights (emissive surfaces are materials)
     Camera camera;
     bool cameraFromFile = false;        // the camera came from the JSON or a glTF camera
     RenderSettings render;

@@ -19,6 +19,7 @@ enum : SceneChangeMask {
     Environment = 1u << 6,  // environment color, image, rotation
     Textures = 1u << 7,     // texture images added or replaced
     Display = 1u << 8,      // exposure, view transform, AOV: no reset
+    Lights = 1u << 9,       // punctual lights added, removed or edited: rebuild the light table
     All = 0xffffffffu,
 };
 }  // namespace SceneChanges

@@ -60,6 +60,7 @@ TEST(PtRenderCli, ErrorsExitNonZeroWithOneClearLine) {
         {"render " + cornell() + out + " --spp 0", 2, "--spp"},
         {"render " + cornell() + out + " --size 12", 2, "WIDTHxHEIGHT"},
         {"render " + cornell() + out + " --spp 2 --time 1", 2, "exclude"},
+        {"render " + cornell() + out + " --clamp -3", 2, "--clamp"},
         {"render " + cornell(), 2, "output"},
         {"render " + cornell() + out + " --frobnicate", 2, "--frobnicate"},
         {"render " + cornell() + " -o /nonexistent-dir/x.exr --spp 1 --size 8x8 --quiet", 1, "/nonexistent-dir"},
@@ -71,6 +72,22 @@ TEST(PtRenderCli, ErrorsExitNonZeroWithOneClearLine) {
         EXPECT_NE(r.err.find(c.needle), std::string::npos) << c.args << "\nstderr: " << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.args << "\nstderr: " << r.err;
     }
+}
+
+// --clamp limits indirect light only: a clamped Cornell box is darker, and still lit.
+TEST(PtRenderCli, ClampDarkensIndirectLight) {
+    const std::string dir = test::tempDir();
+    double sums[2] = {0, 0};
+    const char* extra[2] = {"", " --clamp 0.01"};
+    for (int i = 0; i < 2; ++i) {
+        const std::string exr = dir + "/clamp" + std::to_string(i) + ".exr";
+        const auto r = runCli("render " + cornell() + " -o " + exr + " --spp 8 --size 32x32 --quiet" + extra[i]);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        uint32_t w = 0, h = 0;
+        for (float v : readImageRgba(exr, w, h)) sums[i] += v;
+    }
+    EXPECT_LT(sums[1], 0.97 * sums[0]);
+    EXPECT_GT(sums[1], 32 * 32 * 1.05);  // alpha alone would give exactly 32 * 32
 }
 
 TEST(PtRenderCli, BvhOffIsRefusedAboveItsBudget) {
@@ -90,6 +107,8 @@ TEST(PtRenderCli, InfoReportsCountsAsJson) {
     EXPECT_EQ(j["instances"], 8);
     EXPECT_EQ(j["materials"], 6);
     EXPECT_EQ(j["emissive_triangles"], 2);
+    EXPECT_EQ(j["sphere_lights"], 0);
+    EXPECT_EQ(j["punctual_lights"], 0);
     for (const char* key : {"meshes", "textures", "bounds", "load_seconds", "blas_build_seconds", "tlas_build_seconds"}) {
         EXPECT_TRUE(j.contains(key)) << key;
     }

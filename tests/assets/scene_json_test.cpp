@@ -87,6 +87,58 @@ TEST(SceneJson, EveryKeyIsRead) {
     }
 }
 
+TEST(SceneJson, LightsAreRead) {
+    const Scene scene = mustLoad(testDataPath("json/every_key.json"));
+    ASSERT_EQ(scene.lights.size(), 3u);
+    const Light& bulb = scene.lights[0];
+    EXPECT_EQ(bulb.name, "bulb");
+    EXPECT_EQ(bulb.type, LightType::Point);
+    EXPECT_EQ(bulb.color, Vec3(1.0f, 0.8f, 0.6f));
+    EXPECT_EQ(bulb.intensity, 25.0f);
+    EXPECT_EQ(bulb.position, Vec3(1, 3, 2));
+    EXPECT_EQ(bulb.object, -1);
+    const Light& key = scene.lights[1];
+    EXPECT_EQ(key.type, LightType::Spot);
+    EXPECT_EQ(key.direction, Vec3(0.0f, -1.0f, 0.2f)) << "kept as written; normalised when compiled";
+    EXPECT_EQ(key.innerConeDegrees, 15.0f);
+    EXPECT_EQ(key.outerConeDegrees, 35.0f);
+    const Light& sun = scene.lights[2];
+    EXPECT_EQ(sun.name, "");
+    EXPECT_EQ(sun.type, LightType::Directional);
+    EXPECT_EQ(sun.intensity, 3.5f);
+    EXPECT_EQ(sun.direction, Vec3(-1, -2, -1));
+
+    // Written with only what differs from the defaults and applies to the type.
+    const std::string folder = testFolder();
+    const std::string text = sceneToJson(scene, folder + "/out.json");
+    EXPECT_NE(text.find(R"({
+      "type": "directional",
+      "color": [1.0, 0.95, 0.9],
+      "intensity": 3.5,
+      "direction": [-1.0, -2.0, -1.0]
+    })"),
+              std::string::npos)
+        << text;
+    saveAndReload(scene, folder + "/out.json");
+}
+
+// Lights that come from a model file are placed with its object, are not written to the
+// JSON (the file brings them back), and make the loader leave the environment alone.
+TEST(SceneJson, ModelFileLightsMoveWithTheirObjectAndAreNotWritten) {
+    const std::string folder = testFolder();
+    const std::string model = testDataPath("gltf/lights.gltf");
+    const Scene scene = mustLoad(writeFile(folder, "scene.json", R"({"version": 1, "lights": [{"type": "point"}],
+        "objects": [{"file": ")" + model + R"(", "transform": {"translate": [10, 0, 0]}}]})"));
+    ASSERT_EQ(scene.lights.size(), 4u);
+    EXPECT_EQ(scene.lights[0].object, -1);
+    EXPECT_EQ(scene.lights[1].name, "bulb");
+    EXPECT_EQ(scene.lights[1].object, 0);
+    EXPECT_EQ(scene.lights[1].position, Vec3(11, 2, 3));
+    const std::string text = sceneToJson(scene, folder + "/out.json");
+    EXPECT_EQ(text.find("bulb"), std::string::npos) << text;
+    saveAndReload(scene, folder + "/out.json");
+}
+
 TEST(SceneJson, PresetsSetDefaultsAndKeysOverrideThem) {
     const std::string folder = testFolder();
     const Scene scene = mustLoad(writeFile(folder, "presets.json", R"({"version": 1, "materials": [
@@ -328,6 +380,32 @@ const ErrorCase kErrorCases[] = {
     {"DuplicateKey", "scene.json",
      R"({"version": 1, "materials": [{"name": "a", "roughness": 0.1, "roughness": 0.2}]})",
      R"(scene.json: materials[0]: duplicate key "roughness")"},
+    {"UnknownLightKey", "scene.json", R"({"version": 1, "lights": [{"type": "point", "intensty": 3}]})",
+     R"(scene.json: lights[0]: unknown key "intensty" (did you mean "intensity"?))"},
+    {"MissingLightType", "scene.json", R"({"version": 1, "lights": [{"intensity": 3}]})",
+     R"(scene.json: lights[0]: missing key "type")"},
+    {"UnknownLightType", "scene.json", R"({"version": 1, "lights": [{"type": "area"}]})",
+     R"(scene.json: lights[0].type: unknown light type "area" (expected "point", "spot" or "directional"))"},
+    {"PositionOfADirectionalLight", "scene.json",
+     R"({"version": 1, "lights": [{"type": "directional", "position": [0, 1, 0]}]})",
+     "scene.json: lights[0].position: a directional light has no position (it is infinitely far away)"},
+    {"DirectionOfAPointLight", "scene.json",
+     R"({"version": 1, "lights": [{"type": "point"}, {"type": "point", "direction": [0, -1, 0]}]})",
+     "scene.json: lights[1].direction: a point light shines in every direction; it takes no direction"},
+    {"ConeOfADirectionalLight", "scene.json",
+     R"({"version": 1, "lights": [{"type": "directional", "outerConeAngle": 30}]})",
+     "scene.json: lights[0].outerConeAngle: a directional light has no cone"},
+    {"InnerConeNotInsideOuter", "scene.json",
+     R"({"version": 1, "lights": [{"type": "spot", "innerConeAngle": 40, "outerConeAngle": 30}]})",
+     "scene.json: lights[0].innerConeAngle: expected degrees in [0, outerConeAngle), got 40"},
+    {"OuterConeBeyondHemisphere", "scene.json",
+     R"({"version": 1, "lights": [{"type": "spot", "outerConeAngle": 95}]})",
+     "scene.json: lights[0].outerConeAngle: expected degrees in (0, 90], got 95"},
+    {"ZeroLightDirection", "scene.json",
+     R"({"version": 1, "lights": [{"type": "spot", "direction": [0, 0, 0]}]})",
+     "scene.json: lights[0].direction: the direction is zero"},
+    {"NegativeLightIntensity", "scene.json", R"({"version": 1, "lights": [{"type": "point", "intensity": -1}]})",
+     "scene.json: lights[0].intensity: expected a number >= 0, got -1"},
     {"SyntaxErrorNamesLineAndColumn", "scene.json", "{\n  \"version\": 1,\n  \"objects\": [\n}",
      "scene.json: line 4, column 1: syntax error while parsing value - unexpected '}'; expected '[', '{', or "
      "a literal"},

@@ -137,6 +137,7 @@ inline void compareGeometry(Differences& d, const Scene& a, const Scene& b) {
         d.check(at + ".positions", x.positions, y.positions);
         d.check(at + ".normals", x.normals, y.normals);
         d.check(at + ".uvs", x.uvs, y.uvs);
+        d.check(at + ".tangents", x.tangents, y.tangents);
         d.check(at + ".indices", x.indices, y.indices);
         d.check(at + ".spheres", x.spheres, y.spheres);
         d.check(at + ".primitiveSlots", x.primitiveSlots, y.primitiveSlots);
@@ -196,6 +197,24 @@ inline void compareSettings(Differences& d, const Scene& a, const Scene& b) {
     d.check("environment.rotation", a.environment.rotationDegrees, b.environment.rotationDegrees);
 }
 
+inline void compareLights(Differences& d, const Scene& a, const Scene& b) {
+    d.check("lights.size", a.lights.size(), b.lights.size());
+    for (size_t i = 0; i < std::min(a.lights.size(), b.lights.size()); ++i) {
+        const Light &x = a.lights[i], &y = b.lights[i];
+        const std::string at = "lights[" + std::to_string(i) + "]";
+        d.check(at + ".name", x.name, y.name);
+        d.check(at + ".type", x.type, y.type);
+        d.check(at + ".color", x.color, y.color);
+        d.check(at + ".intensity", x.intensity, y.intensity);
+        d.check(at + ".position", x.position, y.position);
+        d.check(at + ".direction", x.direction, y.direction);
+        d.check(at + ".innerCone", x.innerConeDegrees, y.innerConeDegrees);
+        d.check(at + ".outerCone", x.outerConeDegrees, y.outerConeDegrees);
+        d.check(at + ".range", x.range, y.range);
+        d.check(at + ".object", x.object, y.object);
+    }
+}
+
 inline void compareObjects(Differences& d, const Scene& a, const Scene& b) {
     d.check("objects.size", a.objects.size(), b.objects.size());
     for (size_t i = 0; i < std::min(a.objects.size(), b.objects.size()); ++i) {
@@ -216,6 +235,7 @@ inline ::testing::AssertionResult scenesEqual(const Scene& a, const Scene& b) {
     compareGeometry(d, a, b);
     compareMaterialsAndTextures(d, a, b);
     compareSettings(d, a, b);
+    compareLights(d, a, b);
     compareObjects(d, a, b);
     return d.result();
 }

@@ -19,4 +19,11 @@ inline std::vector<float> renderCpu(const Scene& scene, uint32_t spp, const Inte
     return rgba;
 }
 
+// The mean of channel `channel` (0 = R) over all pixels.
+inline double meanChannel(const std::vector<float>& rgba, int channel) {
+    double sum = 0.0;
+    for (size_t i = 0; i < rgba.size() / 4; ++i) sum += rgba[i * 4 + size_t(channel)];
+    return sum / double(rgba.size() / 4);
+}
+
 }  // namespace pt::test

@@ -46,4 +46,63 @@ inline ObjectTransform trs(Vec3 translate, Vec3 rotateDegrees = {0, 0, 0}, Vec3 
     return t;
 }
 
+inline Material emitter(Vec3 radiance) {
+    Material m = diffuse({0, 0, 0});
+    m.emission = radiance;
+    return m;
+}
+
+inline uint32_t addLight(Scene& scene, LightType type, Vec3 color, float intensity, Vec3 position,
+                         Vec3 direction = {0, 0, -1}) {
+    Light light;
+    light.type = type;
+    light.color = color;
+    light.intensity = intensity;
+    light.position = position;
+    light.direction = direction;
+    scene.lights.push_back(light);
+    return uint32_t(scene.lights.size() - 1);
+}
+
+// A float RGBA image of width x height texels, filled by `texel(x, y)`.
+template <class TexelFn>
+inline int32_t addFloatTexture(Scene& scene, uint32_t width, uint32_t height, TexelFn texel,
+                               const std::string& name = "test image") {
+    Texture t;
+    t.name = name;
+    t.width = width;
+    t.height = height;
+    t.format = TexelFormat::RGBA32F;
+    t.texelsF.resize(size_t(width) * height * 4);
+    for (uint32_t y = 0; y < height; ++y) {
+        for (uint32_t x = 0; x < width; ++x) {
+            const Vec4 c = texel(x, y);
+            float* out = &t.texelsF[(size_t(y) * width + x) * 4];
+            out[0] = c.x;
+            out[1] = c.y;
+            out[2] = c.z;
+            out[3] = c.w;
+        }
+    }
+    scene.textures.push_back(std::move(t));
+    return int32_t(scene.textures.size() - 1);
+}
+
+// A scene whose every pixel sees (nearly) the same point: the origin of a large diffuse floor
+// facing +Y, seen from straight above through a tiny field of view. Its radiance is
+// albedo / pi x irradiance, so lighting tests can compare pixels with analytic irradiance.
+inline Scene floorPointScene(float albedo, uint32_t maxDepth = 1) {
+    Scene scene;
+    scene.render = {8, 8, maxDepth, 0, 0};
+    scene.camera.position = {0, 0.5f, 0};
+    scene.camera.lookAt = {0, 0, 0};
+    scene.camera.up = {0, 0, -1};
+    scene.camera.verticalFovDegrees = 0.01f;
+    Material floor = diffuse({albedo, albedo, albedo});
+    const uint32_t material = addMaterial(scene, "floor", floor);
+    addShape(scene, ObjectKind::Quad, trs({0, 0, 0}, {0, 0, 0}, {100, 1, 100}), material, "floor");
+    return scene;
+}
+
+
 }  // namespace pt::test

@@ -37,7 +37,8 @@ SyncReport CpuBackend::sync(const Scene& scene, SceneChangeMask changes, const P
         report.action = "compile scene";
         report.bvhSeconds = compiled_->stats.blasSeconds + compiled_->stats.tlasSeconds;
     } else {
-        if (changes & SceneChanges::Environment) compiled_->environment = compileEnvironment(scene.environment);
+        // The environment's distribution and the punctual lights feed the light table.
+        if (changes & (SceneChanges::Environment | SceneChanges::Lights)) compileLights(scene, *compiled_);
         report.action = changes == SceneChanges::Display ? "nothing" : "reset";
     }
     compiled_->camera = makeRenderCamera(scene.camera, scene.render.width, scene.render.height);
@@ -67,6 +68,7 @@ void CpuBackend::applyToggles() {
     view_.settings.nextEventEstimation = toggles_.nextEventEstimation ? 1u : 0u;
     view_.settings.multipleImportance = toggles_.multipleImportance ? 1u : 0u;
     view_.settings.russianRoulette = toggles_.russianRoulette ? 1u : 0u;
+    view_.settings.clampRadiance = toggles_.clampRadiance;
 }
 
 void CpuBackend::resetAccumulation() {

@@ -339,6 +339,33 @@ def unsupported_extensions():
     doc.save_gltf("unsupported_extensions.gltf")
 
 
+def lights_fixture():
+    """KHR_lights_punctual: a point light on a moved node, a spot under a parent turned to
+    shine down (-90 degrees about X), a directional light turned 90 degrees about Y (shining
+    along -X); and a quad with TANGENT (one non-unit tangent, one zero). bad_light_index.gltf
+    names light 3 of 3."""
+    s = math.sqrt(0.5)
+    for name, light_index in (("lights.gltf", 1), ("bad_light_index.gltf", 3)):
+        doc = Doc()
+        doc.json["extensionsUsed"] = ["KHR_lights_punctual"]
+        doc.json["extensions"] = {"KHR_lights_punctual": {"lights": [
+            {"name": "bulb", "type": "point", "color": [1, 0.5, 0.25], "intensity": 40, "range": 10},
+            {"type": "spot", "intensity": 100, "spot": {"innerConeAngle": 0.2, "outerConeAngle": 0.6}},
+            {"name": "sun", "type": "directional", "intensity": 3}]}}
+        primitive = doc.quad_primitive()
+        primitive["attributes"]["TANGENT"] = doc.accessor(
+            [(2, 0, 0, -1), (1, 0, 0, -1), (0, 0, 0, 1), (1, 0, 0, -1)], FLOAT, "VEC4")
+        doc.mesh([primitive])
+        light = lambda index: {"KHR_lights_punctual": {"light": index}}
+        quad = doc.node(mesh=0, name="Quad")
+        bulb = doc.node(name="Bulb node", translation=[1, 2, 3], extensions=light(0))
+        spot = doc.node(extensions=light(light_index))
+        parent = doc.node(name="Spot parent", translation=[0, 5, 0], rotation=[-s, 0, 0, s], children=[spot])
+        sun = doc.node(name="Sun node", rotation=[0, s, 0, s], extensions=light(2))
+        doc.scene([quad, bulb, parent, sun])
+        doc.save_gltf(name)
+
+
 def no_scenes():
     """No scenes: every root node is shown (node 0 with child 1, and node 2)."""
     doc = Doc()
@@ -457,5 +484,6 @@ if __name__ == "__main__":
     sparse_positions()
     missing_image()
     unsupported_extensions()
+    lights_fixture()
     no_scenes()
     malformed()

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 
 #include "support/scene_builder.h"
@@ -98,11 +99,48 @@ TEST(CompileScene, EmittersAreWeightedByWorldAreaTimesLuminance) {
     const uint32_t light = addMaterial(scene, "light", bright);
     addShape(scene, ObjectKind::Quad, trs({0, 0, 0}), light);                       // area 4
     addShape(scene, ObjectKind::Quad, trs({0, 5, 0}, {0, 0, 0}, {2, 1, 3}), light);  // area 24
-    addShape(scene, ObjectKind::Sphere, trs({0, -5, 0}), light);                     // not sampled by NEE
+    addShape(scene, ObjectKind::Sphere, trs({0, -5, 0}), light);                     // area 4 pi
+    addShape(scene, ObjectKind::Sphere, trs({0, -9, 0}, {0, 0, 0}, {1, 2, 1}), light);  // ellipsoid: no NEE
     const CompiledScene compiled = compileRenderScene(scene);
-    ASSERT_EQ(compiled.emitters.emitters.size(), 4u);
-    EXPECT_NEAR(compiled.emitters.totalWeight, (4.0f + 24.0f) * 4.0f, 1e-3f);
+    ASSERT_EQ(compiled.emitters.emitters.size(), 5u);
+    EXPECT_EQ(compiled.stats.emitterCount, 4u);
+    EXPECT_EQ(compiled.stats.sphereLightCount, 1u);
+    EXPECT_NEAR(compiled.emitters.totalWeight, (4.0f + 24.0f + 4.0f * kPi) * 4.0f, 1e-3f);
     EXPECT_NEAR(compiled.emitters.emitters[2].weight, 12.0f * 4.0f, 1e-4f);
+    EXPECT_EQ(compiled.emitters.emitters[4].kind, LightKind::Sphere);
+}
+
+// Punctual lights by their power / pi, the environment by its flux through the scene's
+// bounding sphere (emitter_table.h), all in one table; beside local lights the environment's
+// share stays within [1/4, 3/4].
+TEST(CompileScene, PunctualLightsAndTheEnvironmentShareTheLightTable) {
+    Scene scene;
+    addShape(scene, ObjectKind::Box, trs({0, 0, 0}), addMaterial(scene, "grey", diffuse(Vec3(0.5f))));
+    scene.lights.push_back({});  // point light, intensity 1
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.intensity = 2.0f;
+    spot.innerConeDegrees = 30.0f;
+    spot.outerConeDegrees = 30.0f;
+    scene.lights.push_back(spot);
+    scene.environment.color = Vec3(0.5f);
+    const CompiledScene compiled = compileRenderScene(scene);
+    ASSERT_EQ(compiled.emitters.emitters.size(), 3u);
+    EXPECT_EQ(compiled.stats.punctualLightCount, 2u);
+    EXPECT_TRUE(compiled.stats.environmentSampled);
+    EXPECT_NEAR(compiled.emitters.emitters[0].weight, 4.0f, 1e-5f);
+    EXPECT_NEAR(compiled.emitters.emitters[1].weight, 2.0f * 2.0f * (1.0f - std::cos(kPi / 6)), 1e-5f);
+    // Its flux share, 4 pi R^2 x 0.5 against the lights' 4.54, is 0.81: kept at 3/4.
+    const float local = compiled.emitters.emitters[0].weight + compiled.emitters.emitters[1].weight;
+    EXPECT_NEAR(compiled.emitters.emitters[2].weight, 3.0f * local, 1e-4f);
+    EXPECT_EQ(compiled.environment.lightWeight, compiled.emitters.emitters[2].weight);
+    EXPECT_NEAR(compiled.punctualLights[0].direction.z, -1.0f, 1e-6f);
+
+    scene.lights.clear();
+    const CompiledScene skyOnly = compileRenderScene(scene);
+    ASSERT_EQ(skyOnly.emitters.emitters.size(), 1u);
+    const float radius = std::sqrt(3.0f);  // the unit box's bounding sphere
+    EXPECT_NEAR(skyOnly.emitters.emitters[0].weight, 4 * kPi * radius * radius * 0.5f, 1e-3f);
 }
 
 TEST(CompileScene, HiddenInstancesAndUnmappedSlotsAreHandled) {

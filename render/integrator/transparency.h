@@ -1,0 +1,65 @@
+#pragma once
+// Alpha-transparent surfaces (glTF alphaMode MASK and BLEND; coverage in
+// render/materials/alpha.h) for closest-hit and shadow rays.
+//
+// The simplest correct approach: a surface that is transparent at the point a ray meets it
+// is not there for that ray. MASK surfaces are transparent where alpha < alphaCutoff; BLEND
+// surfaces stop a ray with probability alpha (stochastic transparency: the expected image is
+// the alpha blend, with no sorting). A camera or bounce ray continues through such a
+// surface from its far side, in the same direction, without counting a bounce (the path
+// state's transparentHits counts instead); a shadow ray does the same until it reaches the
+// light or an opaque surface. At most SampleDims::kAlphaLayers surfaces are passed per
+// segment and the next is treated as opaque, so every path terminates. Lights sampled by
+// NEE are weighted by their own coverage (light_sample.h), so both strategies agree.
+#include "render/bvh/traversal.h"
+#include "render/integrator/path_state.h"
+#include "render/integrator/surface_hit.h"
+#include "render/materials/alpha.h"
+#include "render/sampling/sampler.h"
+
+namespace pt {
+
+// The ray that continues past `surface` (met by `ray` at `hitT`) in the same direction.
+// Finite rays keep their end point: the parameter range left is what lay beyond the hit.
+PT_HD Ray continuePast(const Ray& ray, const SurfaceHit& surface, float hitT) {
+    Ray next = ray;
+    next.origin = offsetRayOrigin(surface.position, surface.geometricNormal,
+                                  dot(ray.direction, surface.geometricNormal) > 0.0f);
+    if (isFinite(ray.tMax)) next.tMax = ray.tMax - hitT;
+    return next;
+}
+
+// Whether nothing opaque lies on `ray` (0 < t < tMax). `depth` names the bounce the ray
+// leaves from, for the stochastic-transparency numbers.
+PT_HD bool shadowRayUnoccluded(const RenderScene& scene, Ray ray, const PathSampler& sampler, uint32_t depth,
+                               PathCounters& counters) {
+    ++counters.rays;
+    if (!intersectAny(scene, ray)) return true;
+    if (!scene.transparentMaterials) return false;
+    for (uint32_t layer = 0; layer < SampleDims::kAlphaLayers; ++layer) {
+        Hit hit;
+        ++counters.rays;
+        if (!intersectClosest(scene, ray, hit)) return true;
+        const SurfaceHit surface = surfaceAt(scene, ray, hit);
+        const Material& m = scene.materials[surface.material];
+        if (!passesThrough(scene, m, surface.uv, sampler.get(SampleDims::shadowAlpha(depth, layer))))
+            return false;
+        ray = continuePast(ray, surface, hit.t);
+        if (!(ray.tMax > 0.0f)) return true;
+    }
+    return false;
+}
+
+// If the surface `state.ray` hit is transparent there, moves the ray past it and returns true.
+PT_HD bool passTransparentSurface(const RenderScene& scene, PathState& state, const SurfaceHit& surface,
+                                  const Hit& hit) {
+    if (!scene.transparentMaterials || state.transparentHits >= SampleDims::kAlphaLayers) return false;
+    const Material& m = scene.materials[surface.material];
+    const float u = state.sampler.get(SampleDims::alpha(state.depth, state.transparentHits));
+    if (!passesThrough(scene, m, surface.uv, u)) return false;
+    ++state.transparentHits;
+    state.ray = continuePast(state.ray, surface, hit.t);
+    return true;
+}
+
+}  // namespace pt

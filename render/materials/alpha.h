@@ -1,0 +1,44 @@
+#pragma once
+// glTF alpha coverage of a material at a surface point (alphaMode MASK and BLEND): what
+// fraction of light the surface stops. Rays use it in render/integrator/transparency.h.
+#include "render/materials/texture_sample.h"
+
+namespace pt {
+
+// Whether `m` can be transparent anywhere (decides if rays need the alpha test at all).
+PT_HD bool materialMayBeTransparent(const Material& m) {
+    switch (m.alphaMode) {
+        case AlphaMode::Mask:
+            return m.baseColorTexture.present() || m.alpha < m.alphaCutoff;
+        case AlphaMode::Blend:
+            return m.baseColorTexture.present() || m.alpha < 1.0f;
+        case AlphaMode::Opaque:
+        default:
+            return false;
+    }
+}
+
+// baseColor alpha x the base colour texture's alpha at `uv`.
+PT_HD float surfaceAlpha(const RenderScene& scene, const Material& m, Vec2 uv) {
+    float alpha = m.alpha;
+    if (m.baseColorTexture.present()) alpha *= sampleTexture(scene, m.baseColorTexture, uv, true).w;
+    return alpha;
+}
+
+// The expected fraction of rays the surface stops at `uv`: 0 or 1 for MASK, alpha for BLEND.
+PT_HD float surfaceCoverage(const RenderScene& scene, const Material& m, Vec2 uv) {
+    if (!materialMayBeTransparent(m)) return 1.0f;
+    const float alpha = surfaceAlpha(scene, m, uv);
+    if (m.alphaMode == AlphaMode::Mask) return alpha < m.alphaCutoff ? 0.0f : 1.0f;
+    return clampf(alpha, 0.0f, 1.0f);
+}
+
+// Whether one ray passes through `m` at `uv`; `u` in [0, 1) is the coin for blending
+// (stochastic transparency: the surface stops a ray with probability alpha).
+PT_HD bool passesThrough(const RenderScene& scene, const Material& m, Vec2 uv, float u) {
+    if (!materialMayBeTransparent(m)) return false;
+    const float alpha = surfaceAlpha(scene, m, uv);
+    return m.alphaMode == AlphaMode::Mask ? alpha < m.alphaCutoff : u >= alpha;
+}
+
+}  // namespace pt

@@ -1,0 +1,39 @@
+#pragma once
+// Resolves a Material at a surface point into BsdfParams: glTF factors times their textures
+// (with KHR_texture_transform), clamped to the ranges the BSDF assumes. Normal maps, emission
+// and alpha coverage (alpha.h) are resolved elsewhere.
+#include "render/materials/bsdf.h"
+#include "render/materials/texture_sample.h"
+
+namespace pt {
+
+PT_HD BsdfParams bsdfParamsAt(const RenderScene& scene, const Material& m, Vec2 uv) {
+    BsdfParams p{m.baseColor, m.metallic, m.transmission, m.ior};
+    p.roughness = m.roughness;
+    p.specular = m.specular;
+    p.specularColor = m.specularColor;
+    p.clearcoat = m.clearcoat;
+    p.clearcoatRoughness = m.clearcoatRoughness;
+    if (m.baseColorTexture.present()) {
+        p.baseColor *= sampleTexture(scene, m.baseColorTexture, uv, true).xyz();  // sRGB
+    }
+    if (m.metallicRoughnessTexture.present()) {
+        const Vec4 mr = sampleTexture(scene, m.metallicRoughnessTexture, uv, false);
+        p.roughness *= mr.y;
+        p.metallic *= mr.z;
+    }
+    if (m.transmissionTexture.present()) {
+        p.transmission *= sampleTexture(scene, m.transmissionTexture, uv, false).x;
+    }
+    p.baseColor = vmax(p.baseColor, Vec3(0.0f));
+    p.metallic = clampf(p.metallic, 0.0f, 1.0f);
+    p.roughness = clampf(p.roughness, 0.0f, 1.0f);
+    p.transmission = clampf(p.transmission, 0.0f, 1.0f);
+    p.ior = p.ior >= 1.0f ? p.ior : 1.0f;  // also maps NaN to index-matched
+    p.specular = clampf(p.specular, 0.0f, 1.0f);
+    p.clearcoat = clampf(p.clearcoat, 0.0f, 1.0f);
+    p.clearcoatRoughness = clampf(p.clearcoatRoughness, 0.0f, 1.0f);
+    return p;
+}
+
+}  // namespace pt

@@ -1,0 +1,197 @@
+// Integrator features beyond plain BSDFs: alpha coverage (MASK, BLEND) for camera, bounce and
+// shadow rays; tangent-space normal maps (file tangents and UV-derived ones); Beer-Lambert
+// absorption inside volumes; and the firefly clamp.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "render/integrator/path_tracer.h"
+#include "support/render_cpu.h"
+#include "support/scene_builder.h"
+
+namespace pt {
+namespace {
+
+using test::addFloatTexture;
+using test::addLight;
+using test::addMaterial;
+using test::addShape;
+using test::diffuse;
+using test::floorPointScene;
+using test::meanChannel;
+using test::trs;
+
+const IntegratorToggles kNeeMis{true, true, true, false};
+constexpr float kAlbedo = 0.7f;
+
+// A camera that sees only a quad facing it, with a constant sky behind.
+Scene quadInFrontOfSky(const Material& quad, Vec3 sky) {
+    Scene scene;
+    scene.render = {16, 16, 4, 0, 0};
+    scene.environment.color = sky;
+    scene.camera.position = {0, 0, 3};
+    scene.camera.lookAt = {0, 0, 0};
+    scene.camera.verticalFovDegrees = 10;
+    addShape(scene, ObjectKind::Quad, trs({0, 0, 0}, {90, 0, 0}), addMaterial(scene, "quad", quad));
+    return scene;
+}
+
+Material blackWithAlpha(AlphaMode mode, float alpha) {
+    Material m = diffuse(Vec3(0.0f));
+    m.alphaMode = mode;
+    m.alpha = alpha;
+    return m;
+}
+
+TEST(Alpha, BlendIsStochasticCoverageForCameraRays) {
+    const std::vector<float> image =
+        test::renderCpu(quadInFrontOfSky(blackWithAlpha(AlphaMode::Blend, 0.3f), Vec3(1.0f)), 256);
+    EXPECT_NEAR(meanChannel(image, 0), 0.7, 0.01);
+}
+
+TEST(Alpha, MaskCutsAtTheCutoff) {
+    const Vec3 sky{0.2f, 0.4f, 0.6f};
+    const std::vector<float> hidden =
+        test::renderCpu(quadInFrontOfSky(blackWithAlpha(AlphaMode::Mask, 0.3f), sky), 2);
+    for (size_t i = 0; i < hidden.size() / 4; ++i) ASSERT_FLOAT_EQ(hidden[i * 4 + 2], sky.z) << "pixel " << i;
+    const std::vector<float> shown =
+        test::renderCpu(quadInFrontOfSky(blackWithAlpha(AlphaMode::Mask, 0.7f), sky), 2);
+    for (size_t i = 0; i < shown.size() / 4; ++i) ASSERT_EQ(shown[i * 4 + 2], 0.0f) << "pixel " << i;
+    // The texture's alpha multiplies the factor: left half transparent, right half opaque.
+    Scene textured = quadInFrontOfSky(blackWithAlpha(AlphaMode::Mask, 1.0f), sky);
+    textured.materials[0].params.baseColorTexture.texture =
+        addFloatTexture(textured, 2, 1, [](uint32_t x, uint32_t) {
+            return Vec4{1, 1, 1, x == 0 ? 0.0f : 1.0f};
+        });
+    textured.textures.back().nearest = true;
+    const std::vector<float> half = test::renderCpu(textured, 2);
+    EXPECT_FLOAT_EQ(half[(8 * 16 + 2) * 4 + 2], sky.z);
+    EXPECT_EQ(half[(8 * 16 + 13) * 4 + 2], 0.0f);
+}
+
+// A directional light straight down through a transparent sheet above the floor point.
+Scene shadowThroughSheet(const Material& sheet) {
+    Scene scene = floorPointScene(kAlbedo);
+    addLight(scene, LightType::Directional, Vec3(1.0f), 3.0f, {}, {0, -1, 0});
+    addShape(scene, ObjectKind::Quad, trs({0, 1, 0}, {0, 0, 0}, {2, 1, 2}),
+             addMaterial(scene, "sheet", sheet));
+    return scene;
+}
+
+TEST(Alpha, ShadowRaysPassTransparentSurfaces) {
+    const double lit = kAlbedo / kPi * 3.0;
+    EXPECT_NEAR(
+        meanChannel(
+            test::renderCpu(shadowThroughSheet(blackWithAlpha(AlphaMode::Blend, 0.4f)), 1024, kNeeMis), 0) /
+            lit,
+        0.6, 0.01);
+    EXPECT_NEAR(
+        meanChannel(test::renderCpu(shadowThroughSheet(blackWithAlpha(AlphaMode::Mask, 0.4f)), 4, kNeeMis),
+                    0) /
+            lit,
+        1.0, 1e-3);
+    EXPECT_EQ(meanChannel(
+                  test::renderCpu(shadowThroughSheet(blackWithAlpha(AlphaMode::Mask, 0.6f)), 4, kNeeMis), 0),
+              0.0);
+    // Many transparent layers in a row end the search (as opaque) instead of looping forever.
+    Scene stack = shadowThroughSheet(blackWithAlpha(AlphaMode::Mask, 0.0f));
+    for (int i = 0; i < 80; ++i) addShape(stack, ObjectKind::Quad, trs({0, 1.0f + 0.01f * i, 0}), 1);
+    EXPECT_EQ(meanChannel(test::renderCpu(stack, 1, kNeeMis), 0), 0.0);
+}
+
+// Encodes a tangent-space normal as a normal texture texel.
+Vec4 normalTexel(Vec3 n) { return {0.5f * n.x + 0.5f, 0.5f * n.y + 0.5f, 0.5f * n.z + 0.5f, 1.0f}; }
+
+// The floor point lit by a directional light coming from `toLight`, its normal texture
+// holding the constant tangent-space normal `mapped`.
+Scene normalMappedFloor(Vec3 mapped, Vec3 toLight) {
+    Scene scene = floorPointScene(kAlbedo);
+    Material& floor = scene.materials[0].params;
+    floor.normalTexture.texture =
+        addFloatTexture(scene, 2, 2, [&](uint32_t, uint32_t) { return normalTexel(mapped); });
+    addLight(scene, LightType::Directional, Vec3(1.0f), 2.0f, {}, -toLight);
+    return scene;
+}
+
+TEST(NormalMap, TiltsTheShadingNormalInTheTangentFrame) {
+    const float a = 30.0f * kPi / 180.0f;
+    const double flat = kAlbedo / kPi * 2.0;
+    // The built-in quad's U runs along +X and its V along -Z, so the tangent is +X and the
+    // bitangent ("up" in the image, decreasing V) is +Z.
+    const Vec3 alongX{std::sin(a), std::cos(a), 0}, alongZ{0, std::cos(a), std::sin(a)};
+    const Vec3 tiltedX{std::sin(a), 0, std::cos(a)}, tiltedY{0, std::sin(a), std::cos(a)};
+    EXPECT_NEAR(meanChannel(test::renderCpu(normalMappedFloor(tiltedX, alongX), 4, kNeeMis), 0) / flat, 1.0,
+                1e-3);
+    EXPECT_NEAR(meanChannel(test::renderCpu(normalMappedFloor(tiltedY, alongZ), 4, kNeeMis), 0) / flat, 1.0,
+                1e-3);
+    EXPECT_NEAR(meanChannel(test::renderCpu(normalMappedFloor(tiltedY, alongX), 4, kNeeMis), 0) / flat,
+                std::cos(a) * std::cos(a), 1e-3)
+        << "tilted across the light: n = (0, cos a, sin a), wi = (sin a, cos a, 0)";
+    // normalScale scales the tangent-plane part.
+    Scene unscaled = normalMappedFloor(tiltedX, alongX);
+    unscaled.materials[0].params.normalScale = 0.0f;
+    EXPECT_NEAR(meanChannel(test::renderCpu(unscaled, 4, kNeeMis), 0) / flat, std::cos(a), 1e-3);
+}
+
+// A floor quad (facing +Y, UVs as the built-in quad) whose file tangents point along +Z.
+TEST(NormalMap, UsesTheFileTangentsAndTheirHandedness) {
+    const float a = 30.0f * kPi / 180.0f;
+    for (const float w : {1.0f, -1.0f}) {
+        Scene scene = normalMappedFloor({0, std::sin(a), std::cos(a)}, {w * std::sin(a), std::cos(a), 0});
+        Mesh& quad = scene.meshes[scene.instances[0].mesh];
+        quad.tangents.assign(quad.positions.size(),
+                             Vec4{0, 0, 1, w});  // bitangent = cross(+Y, +Z) w = w * +X
+        EXPECT_NEAR(meanChannel(test::renderCpu(scene, 4, kNeeMis), 0) / (kAlbedo / kPi * 2.0), 1.0, 1e-3)
+            << "w " << w;
+    }
+}
+
+// Looking through the centre of an index-matched sphere of radius 1 (no refraction, no
+// reflection): the sky is attenuated by attenuationColor^(2 / attenuationDistance).
+TEST(Volume, BeerLambertAttenuatesAlongThePathInside) {
+    Material glass;
+    glass.baseColor = Vec3(1.0f);
+    glass.transmission = 1.0f;
+    glass.roughness = 0.0f;
+    glass.ior = 1.0f;
+    glass.thickness = 1.0f;
+    glass.attenuationColor = {0.5f, 0.8f, 1.0f};
+    glass.attenuationDistance = 4.0f;
+    Scene scene;
+    scene.render = {4, 4, 8, 0, 0};
+    scene.environment.color = Vec3(1.0f);
+    scene.camera.position = {0, 0, 5};
+    scene.camera.verticalFovDegrees = 0.01f;
+    addShape(scene, ObjectKind::Sphere, trs({0, 0, 0}), addMaterial(scene, "glass", glass));
+    std::vector<float> image = test::renderCpu(scene, 4);
+    EXPECT_NEAR(meanChannel(image, 0), std::pow(0.5, 0.5), 1e-4);
+    EXPECT_NEAR(meanChannel(image, 1), std::pow(0.8, 0.5), 1e-4);
+    EXPECT_NEAR(meanChannel(image, 2), 1.0, 1e-4);
+    // Thin-walled (thickness 0): no volume, no absorption.
+    scene.materials[0].params.thickness = 0.0f;
+    image = test::renderCpu(scene, 4);
+    EXPECT_NEAR(meanChannel(image, 0), 1.0, 1e-4);
+}
+
+// The clamp limits indirect contributions only: with a tiny limit, a scene renders as its
+// direct lighting plus at most that limit per bounce.
+TEST(FireflyClamp, LimitsIndirectLightOnly) {
+    Scene scene = floorPointScene(kAlbedo, 6);
+    scene.camera.position = {0, 0.5f, 0.3f};
+    addShape(scene, ObjectKind::Quad, trs({0, 1.5f, 0}, {180, 0, 0}, {0.3f, 1, 0.3f}),
+             addMaterial(scene, "lamp", test::emitter(Vec3(20.0f))));
+    addShape(scene, ObjectKind::Box, trs({0.6f, 0.5f, 0}, {0, 0, 0}, Vec3(0.3f)),
+             addMaterial(scene, "box", diffuse(Vec3(0.9f))));
+    IntegratorToggles clamped = kNeeMis;
+    clamped.clampRadiance = 1e-3f;
+    const double full = meanChannel(test::renderCpu(scene, 64, kNeeMis), 0);
+    const double limited = meanChannel(test::renderCpu(scene, 64, clamped), 0);
+    scene.render.maxDepth = 1;
+    const double direct = meanChannel(test::renderCpu(scene, 64, kNeeMis), 0);
+    EXPECT_GT(full, direct * 1.05) << "the scene has indirect light";
+    EXPECT_GE(limited, direct);
+    EXPECT_LE(limited, direct + 2 * 6 * 1e-3);
+}
+
+}  // namespace
+}  // namespace pt
