@@ -51,22 +51,12 @@ void warnAboutUnsupported(const GltfContext& ctx) {
     }
 }
 
-bool isFiniteTransform(const Affine3& m) {
-    for (const Vec4& row : m.rows) {
-        if (!std::isfinite(row.x) || !std::isfinite(row.y) || !std::isfinite(row.z) ||
-            !std::isfinite(row.w)) {
-            return false;
-        }
-    }
-    return true;
-}
-
 // The placement of `visit`'s mesh, or nullopt (with a warning) when it cannot be drawn.
 std::optional<Placement> placeNode(GltfContext& ctx, const GltfNodeVisit& visit,
                                    const ImportedMesh& mesh) {
     const auto& node = ctx.model().nodes[size_t(visit.node)];
     const std::string element = gltfPath("nodes", size_t(visit.node));
-    if (!isFiniteTransform(visit.world)) ctx.fail(element, "world transform is not finite");
+    if (!isFinite(visit.world)) ctx.fail(element, "world transform is not finite");
     if (visit.world.determinant() == 0.0f) {
         // A zero scale hides a node (animations do this); it has no inverse to trace with.
         ctx.warn(element, "transform has zero scale; not placed");

@@ -26,21 +26,11 @@ namespace {
 constexpr uint32_t kMaxResolution = 32768;  // beyond this a typo, not an image: refuse it
 constexpr uint32_t kMaxDepth = 4096;
 
-bool isFiniteTransform(const Affine3& m) {
-    for (const Vec4& row : m.rows) {
-        if (!std::isfinite(row.x) || !std::isfinite(row.y) || !std::isfinite(row.z) ||
-            !std::isfinite(row.w)) {
-            return false;
-        }
-    }
-    return true;
-}
-
 // The world transforms of instances and their inverses must be finite: a zero scale or an
 // overflowing product would turn into NaN on every ray that meets the instance.
 bool invertible(const Affine3& m) {
     const float det = m.determinant();
-    return std::isfinite(det) && det != 0.0f && isFiniteTransform(m) && isFiniteTransform(inverse(m));
+    return std::isfinite(det) && det != 0.0f && isFinite(m) && isFinite(inverse(m));
 }
 
 ObjectTransform readTransform(const JsonValue& value) {

@@ -39,6 +39,13 @@ struct Affine3 {
     }
 };
 
+PT_HD bool isFinite(const Affine3& m) {
+    for (const Vec4& row : m.rows) {
+        if (!isFinite(row.x) || !isFinite(row.y) || !isFinite(row.z) || !isFinite(row.w)) return false;
+    }
+    return true;
+}
+
 PT_HD Affine3 operator*(const Affine3& a, const Affine3& b) {
     Affine3 r;
     for (int i = 0; i < 3; ++i) {
