@@ -1,6 +1,7 @@
 #pragma once
 // Alpha-transparent surfaces (glTF alphaMode MASK and BLEND; coverage in
-// render/materials/alpha.h) for closest-hit and shadow rays.
+// render/materials/alpha.h) and culled back faces (glTF doubleSided = false) for closest-hit
+// and shadow rays.
 //
 // The simplest correct approach: a surface that is transparent at the point a ray meets it
 // is not there for that ray. MASK surfaces are transparent where alpha < alphaCutoff; BLEND
@@ -42,7 +43,7 @@ PT_HD bool shadowRayUnoccluded(const RenderScene& scene, Ray ray, const PathSamp
         if (!intersectClosest(scene, ray, hit)) return true;
         const SurfaceHit surface = surfaceAt(scene, ray, hit);
         const Material& m = scene.materials[surface.material];
-        if (!passesThrough(scene, m, surface.uv, sampler.get(SampleDims::shadowAlpha(depth, layer))))
+        if (!passesThrough(scene, m, surface.uv, surface.frontFace, sampler.get(SampleDims::shadowAlpha(depth, layer))))
             return false;
         ray = continuePast(ray, surface, hit.t);
         if (!(ray.tMax > 0.0f)) return true;
@@ -56,7 +57,7 @@ PT_HD bool passTransparentSurface(const RenderScene& scene, PathState& state, co
     if (!scene.transparentMaterials || state.transparentHits >= SampleDims::kAlphaLayers) return false;
     const Material& m = scene.materials[surface.material];
     const float u = state.sampler.get(SampleDims::alpha(state.depth, state.transparentHits));
-    if (!passesThrough(scene, m, surface.uv, u)) return false;
+    if (!passesThrough(scene, m, surface.uv, surface.frontFace, u)) return false;
     ++state.transparentHits;
     state.ray = continuePast(state.ray, surface, hit.t);
     return true;

@@ -5,6 +5,10 @@
 
 namespace pt {
 
+// glTF doubleSided = false means back-face culling: rays pass through the back of such a
+// surface. Transmissive materials are exempt: glass must be met from inside to refract out.
+PT_HD bool cullsBackFaces(const Material& m) { return !m.doubleSided && m.transmission <= 0.0f; }
+
 // Whether `m` can be transparent anywhere (decides if rays need the alpha test at all).
 PT_HD bool materialMayBeTransparent(const Material& m) {
     switch (m.alphaMode) {
@@ -33,9 +37,14 @@ PT_HD float surfaceCoverage(const RenderScene& scene, const Material& m, Vec2 uv
     return clampf(alpha, 0.0f, 1.0f);
 }
 
-// Whether one ray passes through `m` at `uv`; `u` in [0, 1) is the coin for blending
-// (stochastic transparency: the surface stops a ray with probability alpha).
-PT_HD bool passesThrough(const RenderScene& scene, const Material& m, Vec2 uv, float u) {
+// Whether rays may pass through some surfaces of `m` (alpha, or culled back faces).
+PT_HD bool materialMayLetRaysThrough(const Material& m) { return materialMayBeTransparent(m) || cullsBackFaces(m); }
+
+// Whether one ray passes through `m` at `uv`, meeting its front face or not; `u` in [0, 1)
+// is the coin for blending (stochastic transparency: the surface stops a ray with
+// probability alpha).
+PT_HD bool passesThrough(const RenderScene& scene, const Material& m, Vec2 uv, bool frontFace, float u) {
+    if (!frontFace && cullsBackFaces(m)) return true;
     if (!materialMayBeTransparent(m)) return false;
     const float alpha = surfaceAlpha(scene, m, uv);
     return m.alphaMode == AlphaMode::Mask ? alpha < m.alphaCutoff : u >= alpha;

@@ -202,7 +202,7 @@ CompiledScene compileRenderScene(const Scene& scene, const CompileOptions& optio
     out.stats.tlasSeconds = secondsSince(start);
 
     out.transparentMaterials = false;
-    for (const Material& m : out.materials) out.transparentMaterials |= materialMayBeTransparent(m);
+    for (const Material& m : out.materials) out.transparentMaterials |= materialMayLetRaysThrough(m);
 
     start = std::chrono::steady_clock::now();
     compileLights(scene, out);

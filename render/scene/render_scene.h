@@ -151,7 +151,7 @@ struct RenderScene {
     Span<const uint8_t> texels8;
     Span<const float> texelsF;
 
-    uint32_t transparentMaterials = 0;     // some material may be alpha-transparent (mask, blend)
+    uint32_t transparentMaterials = 0;     // some material may let rays through (alpha mask/blend, culled back faces)
 
     // Lights: one alias table over every light NEE samples.
     Span<const Emitter> emitters;

@@ -43,6 +43,32 @@ Material blackWithAlpha(AlphaMode mode, float alpha) {
     return m;
 }
 
+// glTF doubleSided = false culls back faces: a single-sided quad seen from behind is not
+// there, for camera rays and for shadow rays; seen from the front, or double-sided, it is.
+TEST(BackFaceCulling, SingleSidedSurfacesAreInvisibleFromBehind) {
+    const Vec3 sky{0.2f, 0.4f, 0.6f};
+    Material single = diffuse(Vec3(0.0f));
+    single.doubleSided = 0;
+    Scene scene = quadInFrontOfSky(single, sky);  // rotated +90 about X, the quad faces the camera
+    const std::vector<float> front = test::renderCpu(scene, 2);
+    for (size_t i = 0; i < front.size() / 4; ++i) ASSERT_EQ(front[i * 4 + 2], 0.0f) << "pixel " << i;
+
+    scene.instances[0].objectToWorld = trs({0, 0, 0}, {-90, 0, 0}).toAffine();  // now facing away
+    const std::vector<float> hidden = test::renderCpu(scene, 2);
+    for (size_t i = 0; i < hidden.size() / 4; ++i) ASSERT_FLOAT_EQ(hidden[i * 4 + 2], sky.z) << "pixel " << i;
+
+    single.doubleSided = 1;
+    scene.materials[0].params = single;
+    const std::vector<float> twoSided = test::renderCpu(scene, 2);
+    for (size_t i = 0; i < twoSided.size() / 4; ++i) ASSERT_EQ(twoSided[i * 4 + 2], 0.0f) << "pixel " << i;
+
+    // Glass is never culled: it must be met from inside to refract out.
+    Material glass = single;
+    glass.doubleSided = 0;
+    glass.transmission = 1.0f;
+    EXPECT_FALSE(cullsBackFaces(glass));
+}
+
 TEST(Alpha, BlendIsStochasticCoverageForCameraRays) {
     const std::vector<float> image =
         test::renderCpu(quadInFrontOfSky(blackWithAlpha(AlphaMode::Blend, 0.3f), Vec3(1.0f)), 256);
