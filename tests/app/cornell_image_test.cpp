@@ -14,11 +14,11 @@ namespace {
 
 constexpr uint32_t kSize = 128;
 // The reference: `pt-render render scenes/cornell.json --size 128x128 --spp 16384 --seed 1`.
-// Measured on 2026-11-21 with 16x16 blocks: 256 spp of the unchanged renderer 0.0086; cut to
-// two bounces 0.235; 5% darker 0.039. The bound sits between with a margin of 2 either way.
+// Measured on 2026-11-21 with 16x16 blocks: 256 spp of the unchanged renderer 0.0045; cut to
+// two bounces 0.218; 5% darker 0.039. The bound sits between with a margin of 2.5 or more.
 constexpr uint32_t kSpp = 256;
 constexpr uint32_t kBlock = 16;
-constexpr double kErrorBound = 0.02;
+constexpr double kErrorBound = 0.015;
 
 TEST(CornellImage, MatchesTheReferenceWithinANoiseBound) {
     Scene scene = test::loadSceneOrFail(test::projectPath("scenes/cornell.json"));
@@ -36,10 +36,14 @@ TEST(CornellImage, MatchesTheReferenceWithinANoiseBound) {
     // everywhere, fails it.
     Scene shallow = scene;
     shallow.render.maxDepth = 2;
-    EXPECT_GT(test::blockRelativeError(test::renderCpu(shallow, kSpp), reference, kSize, kSize, kBlock), kErrorBound);
+    const double shallowError = test::blockRelativeError(test::renderCpu(shallow, kSpp), reference, kSize, kSize, kBlock);
+    RecordProperty("shallowBlockRelativeError", std::to_string(shallowError));
+    EXPECT_GT(shallowError, kErrorBound);
     std::vector<float> darker = image;
     for (float& v : darker) v *= 0.95f;
-    EXPECT_GT(test::blockRelativeError(darker, reference, kSize, kSize, kBlock), kErrorBound);
+    const double darkerError = test::blockRelativeError(darker, reference, kSize, kSize, kBlock);
+    RecordProperty("darkerBlockRelativeError", std::to_string(darkerError));
+    EXPECT_GT(darkerError, kErrorBound);
 }
 
 TEST(CornellImage, LoadSaveLoadRendersBitIdentically) {
