@@ -101,11 +101,11 @@ PT_HD ShadowRay sampleDirectLight(const RenderScene& scene, const PathState& sta
                      state.sampler.get2(dims + SampleDims::kLightPoint), light)) {
         return shadow;
     }
-    const Vec3 f = evalBsdf(bsdf, frame, wo, light.wi);
+    const BsdfEval eval = evalBsdfWithPdf(bsdf, frame, wo, light.wi);
+    const Vec3 f = eval.value;
     if (isBlack(f) || isBlack(light.radiance)) return shadow;
-    const float weight = !light.delta && scene.settings.multipleImportance
-                             ? powerHeuristic(light.pdf, pdfBsdf(bsdf, frame, wo, light.wi))
-                             : 1.0f;
+    const float weight =
+        !light.delta && scene.settings.multipleImportance ? powerHeuristic(light.pdf, eval.pdf) : 1.0f;
     const Vec3 origin = offsetRayOrigin(surface.position, surface.geometricNormal,
                                         dot(light.wi, surface.geometricNormal) > 0.0f);
     if (isInfinite(light.distance)) {

@@ -211,6 +211,17 @@ PT_HD float pdfBsdf(const BsdfParams& p, const Frame& frame, Vec3 woWorld, Vec3 
     return bsdf_detail::pdfLobes(bsdf_detail::resolveLobes(p, wo), wo, frame.toLocal(wiWorld));
 }
 
+// evalBsdf() and pdfBsdf() together, resolving the lobes once: what light sampling needs.
+struct BsdfEval {
+    Vec3 value;  // f(wo, wi) |cos(wi)|
+    float pdf;   // as pdfBsdf()
+};
+PT_HD BsdfEval evalBsdfWithPdf(const BsdfParams& p, const Frame& frame, Vec3 woWorld, Vec3 wiWorld) {
+    const Vec3 wo = frame.toLocal(woWorld), wi = frame.toLocal(wiWorld);
+    const bsdf_detail::Lobes lobes = bsdf_detail::resolveLobes(p, wo);
+    return {bsdf_detail::evalLobes(lobes, wo, wi), bsdf_detail::pdfLobes(lobes, wo, wi)};
+}
+
 // Whether evalBsdf() can be non-zero for some pair of directions (light sampling pays off).
 PT_HD bool hasNonDeltaLobes(const BsdfParams& p) {
     const float metallic = clampf(p.metallic, 0.0f, 1.0f), transmission = clampf(p.transmission, 0.0f, 1.0f);

@@ -432,3 +432,26 @@ TEST(BsdfStiff, ExactlyGrazingAndDegenerateInputsGiveNoSample) {
 
 }  // namespace
 }  // namespace pt
+
+namespace pt {
+namespace {
+
+// The combined call light sampling uses must equal the two separate ones bit for bit.
+TEST(Bsdf, EvalWithPdfEqualsEvalAndPdf) {
+    BsdfParams p{{0.7f, 0.5f, 0.3f}, 0.3f, 0.2f, 1.45f};
+    p.roughness = 0.35f;
+    p.clearcoat = 0.5f;
+    const Frame frame = Frame::fromNormal(normalize(Vec3{0.1f, 0.2f, 0.95f}));
+    for (int i = 0; i < 64; ++i) {
+        const float a = 0.1f * float(i);
+        const Vec3 wo = normalize(Vec3{cosf(a), sinf(a), 0.8f});
+        const Vec3 wi = normalize(Vec3{sinf(2 * a), 0.3f, cosf(a)});
+        const BsdfEval both = evalBsdfWithPdf(p, frame, wo, wi);
+        const Vec3 f = evalBsdf(p, frame, wo, wi);
+        EXPECT_EQ(both.value, f);
+        EXPECT_EQ(both.pdf, pdfBsdf(p, frame, wo, wi));
+    }
+}
+
+}  // namespace
+}  // namespace pt
