@@ -2,7 +2,6 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -15,6 +14,7 @@
 #include "progress_bar.h"
 #include "render/backend/backend.h"
 #include "render/display/display_transform.h"
+#include "render/util/stopwatch.h"
 #include "scene_input.h"
 
 namespace pt::cli {
@@ -58,26 +58,25 @@ RenderRequest parseRequest(const std::vector<std::string>& args) {
     return r;
 }
 
-// Renders until the sample or time budget is met, in batches sized for ~0.25 s so the
-// progress bar moves and --time is honoured closely.
+// Renders until the sample or time budget is met, in batches of about a quarter second so
+// the progress bar moves; with --time no batch is planned past the budget.
 void accumulate(Backend& backend, const RenderRequest& r, uint32_t targetSpp, ProgressBar& bar) {
-    const auto start = std::chrono::steady_clock::now();
-    uint32_t batch = 1;
+    const auto start = Clock::now();
+    double secondsPerPass = 0.0;  // unknown until the first batch
     for (;;) {
-        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double elapsed = secondsSince(start);
         const uint32_t done = backend.stats().samplesPerPixel;
         if (r.seconds ? elapsed >= *r.seconds : done >= targetSpp) break;
         bar.update("render", r.seconds ? elapsed / *r.seconds : double(done) / targetSpp);
-        uint32_t passes = batch;
+        uint32_t passes = 1;
+        if (secondsPerPass > 0.0) {
+            passes = uint32_t(std::clamp(0.25 / secondsPerPass, 1.0, 1024.0));
+            if (r.seconds) passes = std::min(passes, uint32_t((*r.seconds - elapsed) / secondsPerPass) + 1);
+        }
         if (!r.seconds) passes = std::min(passes, targetSpp - done);
-        const auto batchStart = std::chrono::steady_clock::now();
+        const auto batchStart = Clock::now();
         backend.render(passes);
-        const double batchSeconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - batchStart).count();
-        const double perPass = batchSeconds / passes;
-        uint32_t next = uint32_t(std::clamp(0.25 / std::max(perPass, 1e-6), 1.0, 1024.0));
-        if (r.seconds) next = std::max(1u, std::min(next, uint32_t((*r.seconds - elapsed - batchSeconds) / std::max(perPass, 1e-6)) + 1));
-        batch = next;
+        secondsPerPass = std::max(secondsSince(batchStart) / passes, 1e-6);
     }
     bar.finish();
 }

@@ -150,16 +150,12 @@ PT_HD ShadowRay shadeSurface(const RenderScene& scene, PathState& state, const H
     const BsdfParams bsdf = bsdfParamsAt(scene, m, surface.uv);
     // Shade the side the ray arrived on, except for glass, which needs to know in from out.
     const bool twoSidedFlip = !surface.frontFace && !isTransmissive(bsdf);
-    const Vec3 ns = twoSidedFlip ? -surface.shadingNormal : surface.shadingNormal;
-    const Vec3 ng = twoSidedFlip ? -surface.geometricNormal : surface.geometricNormal;
-    SurfaceHit oriented = surface;
-    oriented.geometricNormal = ng;
-    const Frame frame = Frame::fromNormal(ns);
+    const Frame frame = Frame::fromNormal(twoSidedFlip ? -surface.shadingNormal : surface.shadingNormal);
     const Vec3 wo = -state.ray.direction;
     const uint32_t dims = SampleDims::bounce(state.depth);
 
     if (neeEnabled(scene) && hasNonDeltaLobes(bsdf)) {
-        shadow = sampleDirectLight(scene, state, oriented, bsdf, frame, wo, dims);
+        shadow = sampleDirectLight(scene, state, surface, bsdf, frame, wo, dims);
     }
     const BsdfSample s = sampleBsdf(bsdf, frame, wo, state.sampler.get(dims + SampleDims::kBsdfLobe),
                                     state.sampler.get2(dims + SampleDims::kBsdfDir));

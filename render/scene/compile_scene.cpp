@@ -1,9 +1,6 @@
 #include "render/scene/compile_scene.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -11,14 +8,11 @@
 #include "render/materials/alpha.h"
 #include "render/integrator/camera.h"
 #include "render/scene/compile_geometry.h"
+#include "render/util/stopwatch.h"
 
 namespace pt {
 
 namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 template <class T>
 Span<const T> spanOf(const std::vector<T>& v) {
@@ -172,7 +166,7 @@ void compileLights(const Scene& scene, CompiledScene& out) {
 CompiledScene compileRenderScene(const Scene& scene, const CompileOptions& options,
                                  const ProgressFn& progress) {
     CompiledScene out;
-    auto start = std::chrono::steady_clock::now();
+    auto start = Clock::now();
     out.materials = compileMaterials(scene);
     flattenGeometry(scene, out);
     compileTextures(scene, out);
@@ -193,18 +187,18 @@ CompiledScene compileRenderScene(const Scene& scene, const CompileOptions& optio
     }
     out.bruteForce = options.bruteForce;
 
-    start = std::chrono::steady_clock::now();
+    start = Clock::now();
     buildBlases(scene, out, progress);
     out.stats.blasSeconds = secondsSince(start);
 
-    start = std::chrono::steady_clock::now();
+    start = Clock::now();
     buildTlas(out);
     out.stats.tlasSeconds = secondsSince(start);
 
     out.transparentMaterials = false;
     for (const Material& m : out.materials) out.transparentMaterials |= materialMayLetRaysThrough(m);
 
-    start = std::chrono::steady_clock::now();
+    start = Clock::now();
     compileLights(scene, out);
     out.stats.lightSeconds = secondsSince(start);
 

@@ -1,21 +1,8 @@
 #include "render_test_support.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 
-#include "assets/scene_loader.h"
-
 namespace pt::test {
-
-Scene loadSceneOrFail(const std::string& path) {
-    LoadResult result = loadScene(path);
-    if (!result.ok()) {
-        ADD_FAILURE() << result.error;
-        return Scene{};
-    }
-    return std::move(*result.scene);
-}
 
 double blockRelativeError(const std::vector<float>& image, const std::vector<float>& reference,
                           uint32_t width, uint32_t height, uint32_t block) {

@@ -1,14 +1,13 @@
 #pragma once
-// Loading scenes and comparing images for image tests.
+// Comparing images for image tests (and the helpers they load and render with).
 #include <string>
 #include <vector>
 
 #include "render/scene/scene.h"
+#include "support/load_scene.h"
 #include "support/render_cpu.h"
 
 namespace pt::test {
-
-Scene loadSceneOrFail(const std::string& path);
 
 // Relative error of block means: the images (width x height, RGBA) are averaged over
 // block x block pixel tiles, and the mean over tiles and channels of |x - r| / (r + 0.01) is

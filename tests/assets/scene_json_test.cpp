@@ -12,6 +12,7 @@
 #include "assets/input_error.h"
 #include "assets/scene_loader.h"
 #include "scene_test_helpers.h"
+#include "support/load_scene.h"
 
 namespace pt {
 namespace {
@@ -23,22 +24,16 @@ using test::testDataPath;
 using test::testFolder;
 using test::writeFile;
 
-Scene mustLoad(const std::string& path) {
-    LoadResult result = loadScene(path);
-    if (!result.ok()) ADD_FAILURE() << result.error;
-    return result.ok() ? std::move(*result.scene) : Scene{};
-}
-
 // Saves `scene` to `path`, loads it back and checks that nothing changed.
 Scene saveAndReload(const Scene& scene, const std::string& path) {
     writeSceneJson(scene, path);
-    Scene again = mustLoad(path);
+    Scene again = test::loadSceneOrFail(path);
     EXPECT_TRUE(scenesEqual(scene, again)) << "saved as:\n" << readFile(path);
     return again;
 }
 
 TEST(SceneJson, EveryKeyIsRead) {
-    const Scene scene = mustLoad(testDataPath("json/every_key.json"));
+    const Scene scene = test::loadSceneOrFail(testDataPath("json/every_key.json"));
     EXPECT_EQ(scene.camera.position, Vec3(1.5f, 2.25f, 7.0f));
     EXPECT_EQ(scene.camera.up, Vec3(0.0f, 1.0f, 0.1f));
     EXPECT_EQ(scene.camera.verticalFovDegrees, 33.3f);
@@ -88,7 +83,7 @@ TEST(SceneJson, EveryKeyIsRead) {
 }
 
 TEST(SceneJson, LightsAreRead) {
-    const Scene scene = mustLoad(testDataPath("json/every_key.json"));
+    const Scene scene = test::loadSceneOrFail(testDataPath("json/every_key.json"));
     ASSERT_EQ(scene.lights.size(), 3u);
     const Light& bulb = scene.lights[0];
     EXPECT_EQ(bulb.name, "bulb");
@@ -127,7 +122,7 @@ TEST(SceneJson, LightsAreRead) {
 TEST(SceneJson, ModelFileLightsMoveWithTheirObjectAndAreNotWritten) {
     const std::string folder = testFolder();
     const std::string model = testDataPath("gltf/lights.gltf");
-    const Scene scene = mustLoad(writeFile(folder, "scene.json", R"({"version": 1, "lights": [{"type": "point"}],
+    const Scene scene = test::loadSceneOrFail(writeFile(folder, "scene.json", R"({"version": 1, "lights": [{"type": "point"}],
         "objects": [{"file": ")" + model + R"(", "transform": {"translate": [10, 0, 0]}}]})"));
     ASSERT_EQ(scene.lights.size(), 4u);
     EXPECT_EQ(scene.lights[0].object, -1);
@@ -141,7 +136,7 @@ TEST(SceneJson, ModelFileLightsMoveWithTheirObjectAndAreNotWritten) {
 
 TEST(SceneJson, PresetsSetDefaultsAndKeysOverrideThem) {
     const std::string folder = testFolder();
-    const Scene scene = mustLoad(writeFile(folder, "presets.json", R"({"version": 1, "materials": [
+    const Scene scene = test::loadSceneOrFail(writeFile(folder, "presets.json", R"({"version": 1, "materials": [
         {"name": "d", "type": "diffuse"}, {"name": "m", "type": "mirror"}, {"name": "g", "type": "glass"},
         {"name": "tinted", "type": "mirror", "baseColor": [0.9, 0.5, 0.2], "roughness": 0.1},
         {"name": "frosted", "type": "glass", "roughness": 0.25, "ior": 1.33}]})"));
@@ -187,7 +182,7 @@ TEST(SceneJson, PresetsSetDefaultsAndKeysOverrideThem) {
 TEST(SceneJson, MinimalSceneSavesMinimalFile) {
     const std::string folder = testFolder();
     const Scene scene =
-        mustLoad(writeFile(folder, "in.json", R"({"version": 1, "objects": [{"shape": "sphere"}]})"));
+        test::loadSceneOrFail(writeFile(folder, "in.json", R"({"version": 1, "objects": [{"shape": "sphere"}]})"));
     ASSERT_EQ(scene.materials.size(), 1u);
     EXPECT_EQ(scene.materials[0].name, kDefaultMaterialName);
     EXPECT_FALSE(scene.cameraFromFile);
@@ -209,7 +204,7 @@ TEST(SceneJson, MinimalSceneSavesMinimalFile) {
 TEST(SceneJson, EveryKeyRoundTripsAndOutputIsStable) {
     const std::string folder = testFolder();
     fs::create_directories(folder + "/elsewhere");
-    const Scene first = mustLoad(testDataPath("json/every_key.json"));
+    const Scene first = test::loadSceneOrFail(testDataPath("json/every_key.json"));
     const Scene second = saveAndReload(first, folder + "/elsewhere/every_key.json");
     const std::string text = readFile(folder + "/elsewhere/every_key.json");
     EXPECT_EQ(sceneToJson(second, folder + "/elsewhere/every_key.json"), text) << "same scene, same text";
@@ -266,7 +261,7 @@ TEST(SceneJson, FloatsRoundTripExactly) {
     json +=
         R"(, {"shape": "quad", "transform": {"translate": [-0.0, 0, 0], "scale": [-1e-3, 1e-20, 1e20]}}]})";
     const std::string folder = testFolder();
-    const Scene scene = mustLoad(writeFile(folder, "random.json", json));
+    const Scene scene = test::loadSceneOrFail(writeFile(folder, "random.json", json));
     const Scene again = saveAndReload(scene, folder + "/saved.json");
     EXPECT_EQ(sceneToJson(again, folder + "/saved.json"), readFile(folder + "/saved.json"));
 }
@@ -278,7 +273,7 @@ TEST(SceneJson, ShippedScenesRoundTrip) {
     for (const auto& entry : fs::directory_iterator(test::projectPath("scenes"))) {
         if (entry.path().extension() != ".json") continue;
         SCOPED_TRACE(entry.path().filename().string());
-        const Scene scene = mustLoad(entry.path().string());
+        const Scene scene = test::loadSceneOrFail(entry.path().string());
         saveAndReload(scene, folder + "/" + entry.path().filename().string());
         ++count;
     }

@@ -9,6 +9,7 @@
 #include "assets/input_error.h"
 #include "assets/scene_json.h"
 #include "scene_test_helpers.h"
+#include "support/load_scene.h"
 
 namespace pt {
 namespace {
@@ -19,12 +20,6 @@ using test::scenesEqual;
 using test::testDataPath;
 using test::testFolder;
 using test::writeFile;
-
-Scene mustLoad(const std::string& path, const ProgressFn& progress = {}) {
-    LoadResult result = loadScene(path, progress);
-    if (!result.ok()) ADD_FAILURE() << result.error;
-    return result.ok() ? std::move(*result.scene) : Scene{};
-}
 
 std::string normalized(const std::string& path) { return fs::path(path).lexically_normal().string(); }
 
@@ -49,7 +44,7 @@ TEST(SceneLoader, UnknownExtensionIsRefused) {
 
 TEST(SceneLoader, ModelFileBecomesOneObjectFramedByTheCamera) {
     const std::string path = testDataPath("json/models/panel.obj");
-    const Scene scene = mustLoad(path);
+    const Scene scene = test::loadSceneOrFail(path);
     ASSERT_EQ(scene.objects.size(), 1u);
     EXPECT_EQ(scene.objects[0].kind, ObjectKind::File);
     EXPECT_EQ(scene.objects[0].path, normalized(path));
@@ -62,7 +57,7 @@ TEST(SceneLoader, ModelFileBecomesOneObjectFramedByTheCamera) {
 }
 
 TEST(SceneLoader, UnlitModelFileGetsAWhiteEnvironmentAndSaysSo) {
-    const Scene scene = mustLoad(testDataPath("json/models/panel.obj"));
+    const Scene scene = test::loadSceneOrFail(testDataPath("json/models/panel.obj"));
     ASSERT_FALSE(sceneHasEmitters(scene));
     EXPECT_EQ(scene.environment.color, Vec3(1.0f));
     ASSERT_FALSE(scene.warnings.empty());
@@ -78,15 +73,15 @@ TEST(SceneLoader, UnlitModelFileGetsAWhiteEnvironmentAndSaysSo) {
 }
 
 TEST(SceneLoader, ModelFileCameraIsUsed) {
-    const Scene scene = mustLoad(testDataPath("json/models/eye.gltf"));
+    const Scene scene = test::loadSceneOrFail(testDataPath("json/models/eye.gltf"));
     EXPECT_TRUE(scene.cameraFromFile);
     expectNear(scene.camera.position, {0.0f, 0.0f, 4.0f}, 1e-6f);
 }
 
 TEST(SceneLoader, SameFileThreeTimesIsImportedOnce) {
-    const Scene single = mustLoad(testDataPath("json/models/panel.obj"));
+    const Scene single = test::loadSceneOrFail(testDataPath("json/models/panel.obj"));
     const std::string model = testDataPath("json/models/panel.obj");
-    const Scene scene = mustLoad(writeFile(testFolder(), "three.json", R"({"version": 1, "objects": [
+    const Scene scene = test::loadSceneOrFail(writeFile(testFolder(), "three.json", R"({"version": 1, "objects": [
         {"file": ")" + model + R"("},
         {"file": ")" + model + R"(", "transform": {"translate": [3, 0, 0]}},
         {"file": ")" + model + R"(", "transform": {"rotate": [0, 90, 0], "scale": 2}}]})"));
@@ -106,7 +101,7 @@ TEST(SceneLoader, SameFileThreeTimesIsImportedOnce) {
 }
 
 TEST(SceneLoader, ShapesShareOneMeshPerKind) {
-    const Scene scene = mustLoad(writeFile(testFolder(), "shapes.json", R"({"version": 1, "objects": [
+    const Scene scene = test::loadSceneOrFail(writeFile(testFolder(), "shapes.json", R"({"version": 1, "objects": [
         {"shape": "sphere"}, {"shape": "box"}, {"shape": "sphere", "transform": {"translate": [2, 0, 0]}},
         {"shape": "quad"}, {"shape": "box", "name": "crate"}, {"shape": "sphere"}]})"));
     EXPECT_EQ(scene.meshes.size(), 3u);
@@ -124,10 +119,10 @@ TEST(SceneLoader, CameraComesFromTheFirstFileThatHasOne) {
     const std::string objects = R"("objects": [{"file": ")" + testDataPath("json/models/panel.obj") +
                                 R"("}, {"file": ")" + testDataPath("json/models/eye.gltf") +
                                 R"(", "transform": {"translate": [10, 0, 0]}}])";
-    const Scene fromFile = mustLoad(writeFile(folder, "a.json", R"({"version": 1, )" + objects + "}"));
+    const Scene fromFile = test::loadSceneOrFail(writeFile(folder, "a.json", R"({"version": 1, )" + objects + "}"));
     EXPECT_TRUE(fromFile.cameraFromFile);
     expectNear(fromFile.camera.position, {10.0f, 0.0f, 4.0f}, 1e-5f);
-    const Scene fromJson = mustLoad(
+    const Scene fromJson = test::loadSceneOrFail(
         writeFile(folder, "b.json", R"({"version": 1, "camera": {"position": [0, 1, 9]}, )" + objects + "}"));
     EXPECT_EQ(fromJson.camera.position, Vec3(0.0f, 1.0f, 9.0f)) << "the JSON camera wins";
 }
@@ -136,7 +131,7 @@ TEST(SceneLoader, FrameBoundsFitsTheBoundingSphere) {
     const std::string folder = testFolder();
     const std::string objects =
         R"("objects": [{"shape": "sphere", "transform": {"translate": [1, 2, 3], "scale": 2}}])";
-    const Scene square = mustLoad(writeFile(folder, "square.json", R"({"version": 1, )" + objects + "}"));
+    const Scene square = test::loadSceneOrFail(writeFile(folder, "square.json", R"({"version": 1, )" + objects + "}"));
     EXPECT_FALSE(square.cameraFromFile);
     const float radius = 2.0f * std::sqrt(3.0f);  // half the diagonal of the bounds
     const float halfFov = 22.5f * kPi / 180.0f;
@@ -144,7 +139,7 @@ TEST(SceneLoader, FrameBoundsFitsTheBoundingSphere) {
     expectNear(square.camera.position, {1.0f, 2.0f, 3.0f + radius / std::sin(halfFov)}, 1e-4f);
     EXPECT_EQ(square.camera.verticalFovDegrees, 45.0f);
     // A portrait image is narrower than it is tall: the horizontal field of view decides.
-    const Scene portrait = mustLoad(writeFile(
+    const Scene portrait = test::loadSceneOrFail(writeFile(
         folder, "portrait.json", R"({"version": 1, "render": {"resolution": [200, 400]}, )" + objects + "}"));
     const float halfHorizontal = std::atan(std::tan(halfFov) * 0.5f);
     EXPECT_NEAR(portrait.camera.position.z, 3.0f + radius / std::sin(halfHorizontal), 1e-4f);
@@ -183,7 +178,7 @@ TEST(SceneLoader, InstantiateNamesInstancesAndAppliesOverrides) {
 }
 
 TEST(SceneLoader, RelativePathsFollowTheSavedFile) {
-    const Scene scene = mustLoad(testDataPath("json/scenes/relative.json"));
+    const Scene scene = test::loadSceneOrFail(testDataPath("json/scenes/relative.json"));
     const std::string model = normalized(testDataPath("json/models/panel.obj"));
     ASSERT_EQ(scene.objects.size(), 2u);
     EXPECT_EQ(scene.objects[0].path, model);
@@ -197,12 +192,12 @@ TEST(SceneLoader, RelativePathsFollowTheSavedFile) {
     const std::string relative = fs::path(model).lexically_relative(folder).generic_string();
     EXPECT_NE(readFile(folder + "/moved.json").find("\"file\": \"" + relative + "\""), std::string::npos)
         << readFile(folder + "/moved.json");
-    EXPECT_TRUE(scenesEqual(scene, mustLoad(folder + "/moved.json")));
+    EXPECT_TRUE(scenesEqual(scene, test::loadSceneOrFail(folder + "/moved.json")));
 }
 
 TEST(SceneLoader, ReportsLoadSceneProgress) {
     std::vector<double> fractions;
-    (void)mustLoad(testDataPath("json/scenes/relative.json"), [&](const std::string& stage, double fraction) {
+    (void)test::loadSceneOrFail(testDataPath("json/scenes/relative.json"), [&](const std::string& stage, double fraction) {
         if (stage == "load scene") fractions.push_back(fraction);
     });
     ASSERT_FALSE(fractions.empty());

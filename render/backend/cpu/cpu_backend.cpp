@@ -4,18 +4,14 @@
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
 
-#include <chrono>
 
 #include "render/integrator/camera.h"
 #include "render/integrator/path_tracer.h"
+#include "render/util/stopwatch.h"
 
 namespace pt {
 
 namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 constexpr SceneChangeMask kNeedsCompile = SceneChanges::Transforms | SceneChanges::Geometry |
                                           SceneChanges::Topology | SceneChanges::Textures |
@@ -24,7 +20,7 @@ constexpr SceneChangeMask kNeedsCompile = SceneChanges::Transforms | SceneChange
 }  // namespace
 
 SyncReport CpuBackend::sync(const Scene& scene, SceneChangeMask changes, const ProgressFn& progress) {
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = Clock::now();
     SyncReport report;
     const bool resized = scene.render.width != width_ || scene.render.height != height_;
     if (!compiled_ || (changes & kNeedsCompile)) {
@@ -81,7 +77,7 @@ void CpuBackend::resetAccumulation() {
 
 void CpuBackend::render(uint32_t passes) {
     if (!compiled_ || passes == 0) return;
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = Clock::now();
     const uint32_t firstSample = stats_.samplesPerPixel;
     const RenderScene& scene = view_;
     tbb::combinable<PathCounters> counters;
