@@ -1,8 +1,10 @@
 #pragma once
-// Decoding images into Textures through OpenImageIO: 8-bit formats (PNG, JPEG) as RGBA8,
-// HDR formats (.hdr, .exr) as RGBA32F. Texel data stays as stored in the file (no sRGB
-// decode here: the sampling slot decides). Throws InputError naming the image when it cannot
-// be decoded; callers that can fall back (glTF textures) catch it and warn.
+// Decoding images into Textures: 8-bit formats (PNG, JPEG) as RGBA8, HDR formats (.hdr, .exr)
+// as RGBA32F, top row first. Texel data stays as stored in the file (no sRGB decode here: the
+// sampling slot decides). Through OpenImageIO, or with PT_OIIO=OFF through stb_image, which
+// reads PNG, JPEG, BMP, TGA and Radiance HDR, and throws for EXR and the rest. Throws
+// InputError naming the image when it cannot be decoded; callers that can fall back (glTF
+// textures) catch it and warn.
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -1,59 +1,93 @@
 #include "assets/image_write.h"
 
-#include <OpenImageIO/imageio.h>
+#include <fstream>
 
 #include "assets/atomic_file.h"
+#include "assets/image_read_format.h"
 #include "assets/input_error.h"
+#if PT_HAVE_OIIO
+#include "assets/image_write_oiio.h"
+#else
+#include "assets/image_read.h"
+#include "assets/image_write_stb.h"
+#endif
 
 namespace pt {
-
 namespace {
 
-void writeWithOiio(const std::string& path, OIIO::ImageSpec spec, OIIO::TypeDesc pixelType,
-                   const void* pixels, const ImageMetadata& metadata) {
-    for (const auto& [key, value] : metadata) spec.attribute(key, value);
+// The writers read width x height x channels values; fewer would be read past their end.
+template <class T>
+void checkPixelCount(const std::string& path, uint32_t width, uint32_t height, size_t channels,
+                     const std::vector<T>& pixels) {
+    if (pixels.size() != size_t(width) * height * channels) {
+        throw InputError(path + ": " + std::to_string(pixels.size()) + " pixel values for a " +
+                         std::to_string(width) + "x" + std::to_string(height) + "x" +
+                         std::to_string(channels) + " image");
+    }
+}
+
+#if !PT_HAVE_OIIO
+void writeBytesAtomically(const std::string& path, const std::vector<uint8_t>& bytes) {
     writeFileAtomically(path, [&](const std::string& temp) {
-        auto out = OIIO::ImageOutput::create(temp);
-        if (!out) throw InputError(path + ": no image writer for this extension: " + OIIO::geterror());
-        if (!out->open(temp, spec) || !out->write_image(pixelType, pixels) || !out->close()) {
-            throw InputError(path + ": cannot write image: " + out->geterror());
-        }
+        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+        out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+        out.close();
+        if (!out) throw InputError(path + ": cannot write image");
     });
 }
+#endif
 
 }  // namespace
 
 void writeExr(const std::string& path, uint32_t width, uint32_t height, const std::vector<float>& rgba,
               const ImageMetadata& metadata) {
-    OIIO::ImageSpec spec(int(width), int(height), 4, OIIO::TypeDesc::FLOAT);
-    spec.attribute("compression", "zip");
-    writeWithOiio(path, spec, OIIO::TypeDesc::FLOAT, rgba.data(), metadata);
+    checkPixelCount(path, width, height, 4, rgba);
+#if PT_HAVE_OIIO
+    writeFileAtomically(path, [&](const std::string& temp) {
+        writeExrWithOiio(temp, path, width, height, rgba.data(), metadata);
+    });
+#else
+    (void)metadata;
+    throw InputError(needsOpenImageIoMessage(path, "exr"));
+#endif
 }
 
 void writeDisplayImage(const std::string& path, uint32_t width, uint32_t height,
                        const std::vector<uint8_t>& rgb, const ImageMetadata& metadata) {
-    OIIO::ImageSpec spec(int(width), int(height), 3, OIIO::TypeDesc::UINT8);
-    spec.attribute("oiio:ColorSpace", "sRGB");
-    writeWithOiio(path, spec, OIIO::TypeDesc::UINT8, rgb.data(), metadata);
+    checkPixelCount(path, width, height, 3, rgb);
+#if PT_HAVE_OIIO
+    writeFileAtomically(path, [&](const std::string& temp) {
+        writeDisplayImageWithOiio(temp, path, width, height, rgb.data(), metadata);
+    });
+#else
+    const std::string extension = lowercaseExtension(path);
+    if (extension == "png") {
+        writeBytesAtomically(path, encodePngWithStb(path, width, height, rgb, metadata));
+    } else if (extension == "jpg" || extension == "jpeg") {
+        writeBytesAtomically(path, encodeJpegWithStb(path, width, height, rgb));
+    } else if (extension == "tif" || extension == "tiff" || extension == "exr") {
+        throw InputError(needsOpenImageIoMessage(path, extension));
+    } else {
+        throw InputError(path + ": no image writer for this extension (this build, without "
+                                "OpenImageIO, writes .png and .jpg)");
+    }
+#endif
 }
 
 std::vector<float> readImageRgba(const std::string& path, uint32_t& width, uint32_t& height) {
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) throw InputError(path + ": cannot read image: " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    width = uint32_t(spec.width);
-    height = uint32_t(spec.height);
-    const int channels = spec.nchannels;
-    std::vector<float> pixels(size_t(width) * height * size_t(channels));
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data())) {
-        throw InputError(path + ": cannot decode image: " + in->geterror());
-    }
-    std::vector<float> rgba(size_t(width) * height * 4, 1.0f);
-    for (size_t i = 0; i < size_t(width) * height; ++i) {
-        for (int c = 0; c < 4 && c < channels; ++c) rgba[i * 4 + size_t(c)] = pixels[i * size_t(channels) + size_t(c)];
-        if (channels < 3) rgba[i * 4 + 1] = rgba[i * 4 + 2] = rgba[i * 4];
-    }
+#if PT_HAVE_OIIO
+    return readImageRgbaWithOiio(path, width, height);
+#else
+    // Through the texture reader: alpha stays straight (OIIO premultiplies it here) and 16-bit
+    // PNGs come back rounded to 8 bits.
+    const Texture texture = readTextureFile(path);
+    width = texture.width;
+    height = texture.height;
+    if (texture.format == TexelFormat::RGBA32F) return texture.texelsF;
+    std::vector<float> rgba(texture.texels8.size());
+    for (size_t i = 0; i < rgba.size(); ++i) rgba[i] = float(texture.texels8[i]) * (1.0f / 255.0f);
     return rgba;
+#endif
 }
 
 }  // namespace pt

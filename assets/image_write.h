@@ -1,5 +1,6 @@
 #pragma once
-// Writing renders through OpenImageIO, atomically (temp file, then rename).
+// Writing renders, atomically (temp file, then rename), through OpenImageIO; with PT_OIIO=OFF
+// through stb_image_write, which writes PNG and JPEG, and EXR and TIFF throw InputError.
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -7,7 +8,8 @@
 
 namespace pt {
 
-// Metadata written as string attributes (EXR header / PNG text chunks).
+// Metadata written as string attributes (EXR header / PNG text chunks; JPEG drops it in the
+// PT_OIIO=OFF build).
 using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
 
 // Scene-linear RGBA float as a float EXR. Throws InputError naming `path` on failure.
@@ -18,7 +20,8 @@ void writeExr(const std::string& path, uint32_t width, uint32_t height, const st
 void writeDisplayImage(const std::string& path, uint32_t width, uint32_t height,
                        const std::vector<uint8_t>& rgb, const ImageMetadata& metadata = {});
 
-// Reads any image OIIO knows as RGBA float (for tests and references). Throws InputError.
+// Reads any image OIIO knows as RGBA float (for tests and references); with PT_OIIO=OFF,
+// what readTextureFile reads. Throws InputError.
 std::vector<float> readImageRgba(const std::string& path, uint32_t& width, uint32_t& height);
 
 }  // namespace pt

@@ -9,5 +9,7 @@ namespace pt::cli {
 int runRender(const std::vector<std::string>& args);
 int runExport(const std::vector<std::string>& args);
 int runInfo(const std::vector<std::string>& args);
+int runGen(const std::vector<std::string>& args);
+int runBench(const std::vector<std::string>& args);
 
 }  // namespace pt::cli

@@ -16,6 +16,7 @@
 #include "render/display/display_transform.h"
 #include "render/util/stopwatch.h"
 #include "scene_input.h"
+#include "toggle_options.h"
 
 namespace pt::cli {
 
@@ -31,9 +32,11 @@ struct RenderRequest {
 };
 
 RenderRequest parseRequest(const std::vector<std::string>& args) {
-    const Options o(args, {"-o", "--png", "--spp", "--time", "--size", "--seed", "--threads", "--backend",
-                           "--stats", "--max-depth", "--clamp"},
-                    {"--quiet", "--no-nee", "--no-mis", "--no-rr", "--bvh-off"});
+    const Options o(args,
+                    joined({"-o", "--png", "--spp", "--time", "--size", "--seed", "--threads", "--backend", "--stats",
+                            "--max-depth"},
+                           toggleValuedFlags()),
+                    joined({"--quiet"}, toggleSwitches()));
     if (o.positional().size() != 1) throw UsageError("expected one SCENE argument");
     RenderRequest r;
     r.scenePath = o.positional()[0];
@@ -50,11 +53,7 @@ RenderRequest parseRequest(const std::vector<std::string>& args) {
     r.maxDepth = o.nonNegativeInt("--max-depth");
     r.size = o.size("--size");
     r.quiet = o.has("--quiet");
-    r.toggles.nextEventEstimation = !o.has("--no-nee");
-    r.toggles.multipleImportance = !o.has("--no-mis");
-    r.toggles.russianRoulette = !o.has("--no-rr");
-    r.toggles.bruteForce = o.has("--bvh-off");
-    r.toggles.clampRadiance = float(o.positiveNumber("--clamp").value_or(0.0));
+    r.toggles = parseToggles(o);
     return r;
 }
 
@@ -97,6 +96,8 @@ void writeStats(const RenderRequest& r, const Backend& backend, double loadSecon
     j["load_seconds"] = loadSeconds;
     j["bvh_seconds"] = sync.bvhSeconds;
     j["sync_seconds"] = sync.seconds;
+    j["device_memory_bytes"] = backend.deviceMemoryBytes();
+    j["toggles"] = toggleStatesJson(backend.toggleStates());
     j["scene"] = r.scenePath;
     writeTextAtomically(r.statsPath, j.dump(2) + "\n");
 }

@@ -7,24 +7,57 @@
 #include <string>
 #include <vector>
 
+#include "render/bvh/hit.h"
+#include "render/math/ray.h"
 #include "render/scene/scene.h"
 #include "render/scene/scene_changes.h"
 #include "render/util/progress.h"
 
 namespace pt {
 
+// Renderer switches a user can flip to see what each costs or buys. The integrator ones change
+// the estimator; the scheduling ones (GPU) change only speed, never the converged image.
 struct IntegratorToggles {
     bool nextEventEstimation = true;
     bool multipleImportance = true;
     bool russianRoulette = true;
     bool bruteForce = false;  // BVH off: validation only, refused above a triangle budget
     float clampRadiance = 0.0f;  // firefly clamp on indirect luminance per sample; 0 = off
+    // Jitter primary rays inside the pixel (antialiasing). Off: every sample of a pixel starts
+    // with the same ray through its centre, which lets the first hit be cached.
+    bool pixelJitter = true;
+    // CUDA scheduling (the CPU backend runs one path per thread and has none of these).
+    // One thread runs a whole path; else the wavefront stages. The default, as measured on an
+    // H200 at 1920x1080 (README, "GPU figures"): faster on four of the five benchmark scenes.
+    bool megakernel = true;
+    bool streamCompaction = true;   // wavefront: dead paths leave the queues between bounces
+    bool materialSort = false;      // wavefront: paths sorted by material before shading
+    bool firstHitCache = true;      // reuse camera-ray hits across passes where the camera allows
+    // A refitted BLAS is rebuilt once its SAH cost exceeds this times its cost when last built.
+    float rebuildSahRatio = 1.25f;
+};
+
+// One toggle as the active backend applies it: `active` is false where it is on but cannot
+// apply here (e.g. the first-hit cache under pixel jitter), and `note` says why.
+struct ToggleState {
+    std::string name;
+    bool requested = false;
+    bool active = false;
+    std::string note;
+};
+
+struct SyncStep {
+    std::string name;          // e.g. "upload", "refit BLAS", "rebuild BLAS", "build TLAS"
+    double seconds = 0.0;
 };
 
 struct SyncReport {
-    std::string action;        // what sync did, e.g. "compile scene", "materials", "reset"
+    // What sync did, the most expensive first: "full build", "rebuild", "refit", "TLAS",
+    // "materials", "lights", "reset" or "nothing".
+    std::string action;
     double seconds = 0.0;
     double bvhSeconds = 0.0;   // BLAS + TLAS build time within `seconds`
+    std::vector<SyncStep> steps;  // what each part cost
 };
 
 struct BackendStats {
@@ -54,9 +87,19 @@ public:
     // Mean linear radiance, RGBA float (A = 1), row-major, top row first.
     virtual void readBeauty(std::vector<float>& rgba) const = 0;
     virtual BackendStats stats() const = 0;
+    virtual std::vector<ToggleState> toggleStates() const = 0;
+
+    // Traversal alone, for benchmarks and picking: the closest hit (or, with anyHit, whether
+    // anything is hit: Hit::instance 0 or kNoHit) of each world-space ray, traced `runs`
+    // times over rays already in the backend's memory. Returns each run's seconds; `hits`
+    // (may be null) receives the last run's results.
+    virtual std::vector<double> traceRays(const std::vector<Ray>& rays, bool anyHit, uint32_t runs,
+                                          std::vector<Hit>* hits) = 0;
+    virtual uint64_t deviceMemoryBytes() const { return 0; }  // GPU backends: buffers allocated
 };
 
-// "cpu", or "cuda" where built. Throws std::invalid_argument naming the backends available.
+// "cpu", or "cuda" where built. Throws std::invalid_argument naming the backends available,
+// or, for "cuda" on a machine without a usable GPU, saying why.
 std::unique_ptr<Backend> createBackend(const std::string& name);
 
 }  // namespace pt

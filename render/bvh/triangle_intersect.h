@@ -3,8 +3,7 @@
 // Intersection", JCGT 2(1), 2013. The triangle is translated to the ray origin and sheared so
 // that the ray runs along +z; the 2D edge functions of two triangles sharing an edge are then
 // computed from the same operands in the same order, so their signs agree exactly and no ray
-// slips between them. The edge functions' signs are exact (computed in double; see
-// edgeFunction). Two-sided.
+// slips between them (see edgeFunction). Two-sided.
 #include "render/math/ray.h"
 
 namespace pt {
@@ -30,18 +29,17 @@ PT_HD WatertightRay makeWatertightRay(Vec3 origin, Vec3 direction) {
     return {origin, kx, ky, kz, direction[kx] * sz, direction[ky] * sz, sz};
 }
 
-// The 2D edge function a*b - c*d, computed so that edge(a, b, c, d) == -edge(c, d, a, b) bit for
-// bit, which is what makes the test watertight, whatever the compiler's FMA contraction does:
-//  - host: in double, where float products are exact, so the only rounding is the final one
-//    and its sign is exact (this is the paper's fallback, taken always: double is as fast as
-//    float on CPUs, and g++ contracts a*b - c*d into an FMA even in ISO mode when FMA exists);
-//  - CUDA: separately rounded products (__fmul_rn is never contracted), falling back to double
-//    for zeros in the caller as the paper does, since double is slow on many GPUs.
+// The 2D edge function a*b - c*d with each product rounded to float on its own, so that
+// edge(a, b, c, d) == -edge(c, d, a, b) bit for bit, which is what makes the test watertight.
+// Both backends compute it alike (no FMA: -ffp-contract=off on the host, __fmul_rn on the
+// device), so CPU and GPU hits agree to the last bit; exact zeros are redone in double by
+// the caller, as the paper does.
 PT_HD float edgeFunction(float a, float b, float c, float d) {
 #if defined(__CUDA_ARCH__)
     return __fsub_rn(__fmul_rn(a, b), __fmul_rn(c, d));
 #else
-    return float(double(a) * double(b) - double(c) * double(d));
+    const float ab = a * b, cd = c * d;
+    return ab - cd;
 #endif
 }
 
@@ -56,14 +54,12 @@ PT_HD bool intersectTriangle(const WatertightRay& ray, float tMax, Vec3 p0, Vec3
     float e0 = edgeFunction(cx, by, cy, bx);  // weight of p0
     float e1 = edgeFunction(ax, cy, ay, cx);  // weight of p1
     float e2 = edgeFunction(bx, ay, by, ax);  // weight of p2
-#if defined(__CUDA_ARCH__)
     if (e0 == 0.0f || e1 == 0.0f || e2 == 0.0f) {
         // Products of floats are exact in double: the sign of each edge is now exact.
         e0 = float(double(cx) * double(by) - double(cy) * double(bx));
         e1 = float(double(ax) * double(cy) - double(ay) * double(cx));
         e2 = float(double(bx) * double(ay) - double(by) * double(ax));
     }
-#endif
     if ((e0 < 0.0f || e1 < 0.0f || e2 < 0.0f) && (e0 > 0.0f || e1 > 0.0f || e2 > 0.0f)) return false;
     const float det = e0 + e1 + e2;
     if (det == 0.0f) return false;  // the ray lies in the triangle's plane

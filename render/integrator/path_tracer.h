@@ -26,7 +26,7 @@ PT_HD PathState generatePath(const RenderScene& scene, uint32_t x, uint32_t y, u
     PathState state{};
     state.sampler = {y * s.width + x, sampleIndex, s.seed};
     state.ray = generateCameraRay(scene.camera, s.width, s.height, x, y,
-                                  state.sampler.get2(SampleDims::kPixel),
+                                  s.pixelJitter ? state.sampler.get2(SampleDims::kPixel) : Vec2(0.5f, 0.5f),
                                   state.sampler.get2(SampleDims::kLens));
     state.throughput = Vec3(1.0f);
     state.lastVertex = state.ray.origin;

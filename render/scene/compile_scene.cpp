@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "render/bvh/binned_sah_builder.h"
+#include "render/bvh/instance_bounds.h"
 #include "render/materials/alpha.h"
 #include "render/integrator/camera.h"
 #include "render/scene/compile_geometry.h"
@@ -39,25 +40,12 @@ void compileTextures(const Scene& scene, CompiledScene& out) {
     }
 }
 
-// World bounds of an instance: its BLAS root box through the transform (8 corners).
-Aabb instanceBounds(const CompiledScene& out, const RenderInstance& inst) {
-    const BlasRef& blas = out.blases[inst.blas];
-    const BvhNode& root = out.blasNodes[blas.nodeOffset];
-    Aabb box;
-    for (int c = 0; c < 8; ++c) {
-        const Vec3 corner{c & 1 ? root.hi.x : root.lo.x, c & 2 ? root.hi.y : root.lo.y,
-                          c & 4 ? root.hi.z : root.lo.z};
-        box.grow(inst.objectToWorld.transformPoint(corner));
-    }
-    // The corners are rounded once more by the transform; pad by a few ulps of the largest
-    // coordinate so the box never ends up inside the geometry it bounds.
-    const float pad = 4.0f * 1.2e-7f * fmaxf(maxComponent(vabs(box.lo)), maxComponent(vabs(box.hi)));
-    box.lo -= Vec3(pad);
-    box.hi += Vec3(pad);
-    return box;
-}
+}  // namespace
 
-void compileInstances(const Scene& scene, const std::vector<Material>& materials, CompiledScene& out) {
+void compileInstances(const Scene& scene, CompiledScene& out) {
+    const std::vector<Material>& materials = out.materials;
+    out.instances.clear();
+    out.instanceMaterials.clear();
     for (size_t i = 0; i < scene.instances.size(); ++i) {
         const Instance& src = scene.instances[i];
         if (!src.visible) continue;
@@ -85,17 +73,25 @@ void compileInstances(const Scene& scene, const std::vector<Material>& materials
         }
         out.instances.push_back(inst);
     }
+    out.stats.instanceCount = uint32_t(out.instances.size());
+    out.stats.instancedTriangles = 0;
+    for (const RenderInstance& inst : out.instances) {
+        if (out.blases[inst.blas].kind == GeometryKind::Triangles) {
+            out.stats.instancedTriangles += out.blases[inst.blas].primitiveCount;
+        }
+    }
 }
 
 void buildTlas(CompiledScene& out) {
     std::vector<Aabb> bounds(out.instances.size());
-    for (size_t i = 0; i < out.instances.size(); ++i) bounds[i] = instanceBounds(out, out.instances[i]);
+    for (size_t i = 0; i < out.instances.size(); ++i) {
+        const RenderInstance& inst = out.instances[i];
+        bounds[i] = instanceBounds(out.blasNodes[out.blases[inst.blas].nodeOffset], inst.objectToWorld);
+    }
     Bvh tlas = buildBinnedSahBvh(bounds.data(), uint32_t(bounds.size()));
     out.tlasNodes = std::move(tlas.nodes);
     out.tlasInstanceIndices = std::move(tlas.primIndices);
 }
-
-}  // namespace
 
 std::vector<Material> compileMaterials(const Scene& scene) {
     std::vector<Material> materials;
@@ -121,6 +117,11 @@ RenderEnvironment compileEnvironment(const Environment& environment) {
     env.intensity = environment.intensity;
     env.rotationRadians = environment.rotationDegrees * kPi / 180.0f;
     return env;
+}
+
+void updateTransparency(CompiledScene& out) {
+    out.transparentMaterials = false;
+    for (const Material& m : out.materials) out.transparentMaterials |= materialMayLetRaysThrough(m);
 }
 
 PunctualLight compilePunctualLight(const Light& light) {
@@ -170,15 +171,9 @@ CompiledScene compileRenderScene(const Scene& scene, const CompileOptions& optio
     out.materials = compileMaterials(scene);
     flattenGeometry(scene, out);
     compileTextures(scene, out);
-    compileInstances(scene, out.materials, out);
+    compileInstances(scene, out);
     out.stats.flattenSeconds = secondsSince(start);
 
-    out.stats.instanceCount = uint32_t(out.instances.size());
-    for (const RenderInstance& inst : out.instances) {
-        if (out.blases[inst.blas].kind == GeometryKind::Triangles) {
-            out.stats.instancedTriangles += out.blases[inst.blas].primitiveCount;
-        }
-    }
     if (options.bruteForce && out.stats.instancedTriangles > options.bruteForceBudget) {
         throw std::invalid_argument(
             "BVH off (brute force) refused: the scene traces " +
@@ -195,8 +190,7 @@ CompiledScene compileRenderScene(const Scene& scene, const CompileOptions& optio
     buildTlas(out);
     out.stats.tlasSeconds = secondsSince(start);
 
-    out.transparentMaterials = false;
-    for (const Material& m : out.materials) out.transparentMaterials |= materialMayLetRaysThrough(m);
+    updateTransparency(out);
 
     start = Clock::now();
     compileLights(scene, out);

@@ -78,5 +78,13 @@ RenderEnvironment compileEnvironment(const Environment& environment);
 // missing texture.
 void compileLights(const Scene& scene, CompiledScene& out);
 PunctualLight compilePunctualLight(const Light& light);
+// The visible instances with their material slots, and the instance statistics, for a
+// CompiledScene whose geometry and materials are compiled (after a transform or visibility
+// edit). Throws std::invalid_argument for an instance naming a missing mesh or material.
+void compileInstances(const Scene& scene, CompiledScene& out);
+// The TLAS (binned SAH over instance world boxes) for compiled instances and BLASes.
+void buildTlas(CompiledScene& out);
+// CompiledScene::transparentMaterials from its materials (after a material edit).
+void updateTransparency(CompiledScene& out);
 
 }  // namespace pt

@@ -123,6 +123,7 @@ struct IntegratorSettings {
     // Firefly clamp: the luminance of each indirect contribution of a sample (light reaching
     // the first hit through another surface) is limited to this; 0 = off. Biased (darkens).
     float clampRadiance = 0.0f;
+    uint32_t pixelJitter = 1;           // 0: primary rays through pixel centres (no antialiasing)
 };
 
 struct RenderScene {

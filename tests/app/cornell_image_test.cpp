@@ -21,6 +21,7 @@ constexpr uint32_t kBlock = 16;
 constexpr double kErrorBound = 0.015;
 
 TEST(CornellImage, MatchesTheReferenceWithinANoiseBound) {
+    PT_REQUIRE_OIIO();  // the reference is an EXR
     Scene scene = test::loadSceneOrFail(test::projectPath("scenes/cornell.json"));
     scene.render.width = scene.render.height = kSize;
     uint32_t w = 0, h = 0;

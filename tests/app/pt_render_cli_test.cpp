@@ -19,6 +19,7 @@ using test::runCli;
 std::string cornell() { return "'" + test::projectPath("scenes/cornell.json") + "'"; }
 
 TEST(PtRenderCli, RendersExrPngAndStatsAndPrintsThePaths) {
+    PT_REQUIRE_OIIO();  // renders to EXR
     const std::string dir = test::tempDir();
     const std::string exr = dir + "/c.exr", png = dir + "/c.png", stats = dir + "/c.json";
     const auto r = runCli("render " + cornell() + " -o " + exr + " --png " + png + " --spp 4 --size 48x32 --stats " +
@@ -76,6 +77,7 @@ TEST(PtRenderCli, ErrorsExitNonZeroWithOneClearLine) {
 
 // --clamp limits indirect light only: a clamped Cornell box is darker, and still lit.
 TEST(PtRenderCli, ClampDarkensIndirectLight) {
+    PT_REQUIRE_OIIO();  // renders to EXR
     const std::string dir = test::tempDir();
     double sums[2] = {0, 0};
     const char* extra[2] = {"", " --clamp 0.01"};

@@ -20,11 +20,16 @@ std::string sharedAsset(const std::string& relativePath) {
     return sharedAssetsDir() + "/" + relativePath;
 }
 
+// $PT_SOURCE_DIR overrides the configured source tree: test binaries built on one machine
+// and run on another (the GPU machine) find the project's files where it was copied.
 std::string projectPath(const std::string& relativePath) {
-    return std::string(PT_SOURCE_DIR) + "/" + relativePath;
+    const char* env = std::getenv("PT_SOURCE_DIR");
+    return (env && *env ? std::string(env) : std::string(PT_SOURCE_DIR)) + "/" + relativePath;
 }
 
 std::string testDataPath(const std::string& relativePath) {
+    const char* env = std::getenv("PT_SOURCE_DIR");
+    if (env && *env) return std::string(env) + "/tests/data/" + relativePath;
     return std::string(PT_TEST_DATA_DIR) + "/" + relativePath;
 }
 

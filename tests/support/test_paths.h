@@ -22,3 +22,11 @@ std::string tempDir();                                      // fresh, per test p
             GTEST_SKIP() << "shared asset " << (rel) << " not found under "                 \
                          << ::pt::test::sharedAssetsDir() << " (set PT_SHARED_ASSETS)";     \
     } while (0)
+
+// Skips the current test in a build without OpenImageIO (configured with PT_OIIO=OFF), where
+// EXR images can be neither read nor written.
+#define PT_REQUIRE_OIIO()                                                                   \
+    do {                                                                                    \
+        if (!PT_TEST_HAVE_OIIO)                                                             \
+            GTEST_SKIP() << "this build has no OpenImageIO (PT_OIIO=OFF)";                  \
+    } while (0)

@@ -1,10 +1,12 @@
 #include "render/backend/cpu/cpu_backend.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/blocked_range2d.h>
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
 
-
+#include "render/backend/mean_image.h"
+#include "render/backend/toggle_states.h"
 #include "render/integrator/camera.h"
 #include "render/integrator/path_tracer.h"
 #include "render/util/stopwatch.h"
@@ -65,6 +67,18 @@ void CpuBackend::applyToggles() {
     view_.settings.multipleImportance = toggles_.multipleImportance ? 1u : 0u;
     view_.settings.russianRoulette = toggles_.russianRoulette ? 1u : 0u;
     view_.settings.clampRadiance = toggles_.clampRadiance;
+    view_.settings.pixelJitter = toggles_.pixelJitter ? 1u : 0u;
+}
+
+std::vector<ToggleState> CpuBackend::toggleStates() const {
+    std::vector<ToggleState> states = integratorToggleStates(toggles_);
+    for (ToggleState& s : states) {
+        if (isGpuSchedulingToggle(s.name)) {
+            s.active = false;
+            s.note = "CUDA only: the CPU backend runs one path per thread";
+        }
+    }
+    return states;
 }
 
 void CpuBackend::resetAccumulation() {
@@ -107,17 +121,33 @@ void CpuBackend::render(uint32_t passes) {
 }
 
 void CpuBackend::readBeauty(std::vector<float>& rgba) const {
-    const size_t pixels = size_t(width_) * height_;
-    rgba.assign(pixels * 4, 0.0f);
-    const double scale = stats_.samplesPerPixel ? 1.0 / stats_.samplesPerPixel : 0.0;
-    for (size_t i = 0; i < pixels; ++i) {
-        rgba[i * 4 + 0] = float(sum_[i * 3 + 0] * scale);
-        rgba[i * 4 + 1] = float(sum_[i * 3 + 1] * scale);
-        rgba[i * 4 + 2] = float(sum_[i * 3 + 2] * scale);
-        rgba[i * 4 + 3] = 1.0f;
-    }
+    meanImageFromSums(sum_.data(), size_t(width_) * height_, stats_.samplesPerPixel, rgba);
 }
 
 BackendStats CpuBackend::stats() const { return stats_; }
+
+std::vector<double> CpuBackend::traceRays(const std::vector<Ray>& rays, bool anyHit, uint32_t runs,
+                                          std::vector<Hit>* hits) {
+    std::vector<double> seconds;
+    if (!compiled_) return seconds;
+    std::vector<Hit> results(rays.size());
+    const RenderScene& scene = view_;
+    for (uint32_t run = 0; run < runs; ++run) {
+        const auto start = Clock::now();
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 1024), [&](const tbb::blocked_range<size_t>& r) {
+            for (size_t i = r.begin(); i < r.end(); ++i) {
+                if (anyHit) {
+                    results[i] = Hit{};
+                    results[i].instance = intersectAny(scene, rays[i]) ? 0u : Hit::kNoHit;
+                } else {
+                    intersectClosest(scene, rays[i], results[i]);
+                }
+            }
+        });
+        seconds.push_back(secondsSince(start));
+    }
+    if (hits) *hits = std::move(results);
+    return seconds;
+}
 
 }  // namespace pt

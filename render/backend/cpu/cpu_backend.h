@@ -19,6 +19,9 @@ public:
     uint32_t height() const override { return height_; }
     void readBeauty(std::vector<float>& rgba) const override;
     BackendStats stats() const override;
+    std::vector<ToggleState> toggleStates() const override;
+    std::vector<double> traceRays(const std::vector<Ray>& rays, bool anyHit, uint32_t runs,
+                                  std::vector<Hit>* hits) override;
 
 private:
     void applyToggles();

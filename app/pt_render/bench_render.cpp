@@ -1,0 +1,180 @@
+#include "bench_render.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include "render/backend/toggle_states.h"
+#include "render/util/stopwatch.h"
+
+namespace pt::cli {
+
+namespace {
+
+struct Variant {
+    std::string name;
+    IntegratorToggles toggles;
+};
+
+// The base toggles, then each toggle the backend has flipped on its own.
+std::vector<Variant> variantsOf(const Backend& backend, const IntegratorToggles& base) {
+    std::vector<Variant> v{{"default", base}};
+    const auto flip = [&](const char* name, const std::function<void(IntegratorToggles&)>& change) {
+        IntegratorToggles t = base;
+        change(t);
+        v.push_back({name, t});
+    };
+    const bool gpu = backend.name() != "cpu";
+    if (gpu) {
+        flip(base.megakernel ? "wavefront" : "megakernel", [](IntegratorToggles& t) { t.megakernel = !t.megakernel; });
+        flip(base.streamCompaction ? "compaction off" : "compaction on",
+             [](IntegratorToggles& t) { t.streamCompaction = !t.streamCompaction; });
+        flip(base.materialSort ? "material sort off" : "material sort on",
+             [](IntegratorToggles& t) { t.materialSort = !t.materialSort; });
+        // The first-hit cache needs fixed camera rays: compare both without jitter.
+        flip("no jitter, first-hit cache off", [](IntegratorToggles& t) {
+            t.pixelJitter = false;
+            t.firstHitCache = false;
+        });
+        flip("no jitter, first-hit cache on", [](IntegratorToggles& t) {
+            t.pixelJitter = false;
+            t.firstHitCache = true;
+        });
+    }
+    flip(base.russianRoulette ? "roulette off" : "roulette on",
+         [](IntegratorToggles& t) { t.russianRoulette = !t.russianRoulette; });
+    flip(base.nextEventEstimation ? "NEE off" : "NEE on",
+         [](IntegratorToggles& t) { t.nextEventEstimation = !t.nextEventEstimation; });
+    flip("BVH off", [](IntegratorToggles& t) { t.bruteForce = true; });
+    return v;
+}
+
+}  // namespace
+
+void benchPathTracing(Backend& backend, const Scene& scene, const BenchSettings& settings, BenchReport& report) {
+    const double pixels = double(scene.render.width) * scene.render.height;
+    for (const Variant& v : variantsOf(backend, settings.toggles)) {
+        backend.setToggles(v.toggles);
+        try {
+            backend.sync(scene, SceneChanges::Settings, {});
+        } catch (const std::invalid_argument& e) {
+            report.add({"path tracing", "samples per pixel per second", v.name, 0.0, "spp/s", e.what()});
+            continue;
+        }
+        backend.render(1);  // warm-up: caches filled, buffers allocated
+        std::vector<double> seconds, rayRates;
+        for (uint32_t r = 0; r < settings.runs; ++r) {
+            backend.resetAccumulation();
+            if (v.toggles.firstHitCache) backend.render(1);  // the cache is made by the first pass
+            const BackendStats before = backend.stats();
+            const auto start = Clock::now();
+            backend.render(settings.spp);
+            const double s = secondsSince(start);
+            seconds.push_back(s);
+            rayRates.push_back(double(backend.stats().rays - before.rays) / s / 1e6);
+        }
+        const double t = median(seconds);
+        std::string note;
+        for (const ToggleState& state : backend.toggleStates()) {
+            // The CPU backend has no scheduling toggles to speak of.
+            if (state.requested && !state.active && !(backend.name() == "cpu" && isGpuSchedulingToggle(state.name))) {
+                note += state.name + " inactive: " + state.note + "; ";
+            }
+        }
+        report.add({"path tracing", "samples per pixel per second", v.name, settings.spp / t, "spp/s", note});
+        report.add({"path tracing", "paths", v.name, pixels * settings.spp / t / 1e6, "Mpaths/s", ""});
+        report.add({"path tracing", "rays", v.name, median(rayRates), "Mrays/s", ""});
+    }
+    backend.setToggles(settings.toggles);
+    backend.sync(scene, SceneChanges::Settings, {});
+}
+
+void benchEdits(Backend& backend, Scene scene, const BenchSettings& settings, BenchReport& report) {
+    backend.setToggles(settings.toggles);
+    backend.sync(scene, SceneChanges::All, {});
+    backend.render(1);
+    struct Edit {
+        const char* name;
+        SceneChangeMask changes;
+        std::function<void(uint32_t)> apply;  // run index, so edits alternate and do not drift
+    };
+    int32_t mesh = -1;
+    for (size_t i = 0; i < scene.meshes.size(); ++i) {
+        if (scene.meshes[i].kind == GeometryKind::Triangles &&
+            (mesh < 0 || scene.meshes[i].positions.size() > scene.meshes[size_t(mesh)].positions.size())) {
+            mesh = int32_t(i);
+        }
+    }
+    std::vector<Edit> edits;
+    if (!scene.materials.empty()) {
+        edits.push_back({"material", SceneChanges::Materials, [&](uint32_t run) {
+                             scene.materials[0].params.roughness = run % 2 ? 0.3f : 0.6f;
+                         }});
+    }
+    if (!scene.instances.empty()) {
+        const Affine3 original = scene.instances[0].objectToWorld;
+        edits.push_back({"transform", SceneChanges::Transforms, [&, original](uint32_t run) {
+                             Affine3 moved = original;
+                             moved.rows[0].w += run % 2 ? 1e-3f : 0.0f;
+                             scene.instances[0].objectToWorld = moved;
+                         }});
+    }
+    if (mesh >= 0) {
+        const std::vector<Vec3> original = scene.meshes[size_t(mesh)].positions;
+        const std::string label = "vertices (" + std::to_string(original.size()) + ")";
+        edits.push_back({"vertices", SceneChanges::Geometry, [&, original](uint32_t run) {
+                             std::vector<Vec3>& p = scene.meshes[size_t(mesh)].positions;
+                             const float amount = run % 2 ? 1e-3f : 0.0f;
+                             for (size_t i = 0; i < p.size(); ++i) {
+                                 p[i] = original[i] + Vec3(amount * std::sin(float(i)), 0.0f, 0.0f);
+                             }
+                         }});
+    }
+    for (const Edit& edit : edits) {
+        std::vector<double> seconds;
+        SyncReport last;
+        for (uint32_t run = 0; run <= settings.runs; ++run) {
+            edit.apply(run + 1);
+            const auto start = Clock::now();
+            last = backend.sync(scene, edit.changes, {});
+            backend.render(1);
+            if (run > 0) seconds.push_back(secondsSince(start));  // run 0 warms up
+        }
+        std::string steps = "sync: " + last.action;
+        for (const SyncStep& s : last.steps) steps += ", " + s.name + " " + std::to_string(s.seconds * 1e3) + " ms";
+        report.add({"edit to first frame", edit.name, "", median(seconds) * 1e3, "ms", steps});
+    }
+}
+
+void benchImageCheck(Backend& backend, Scene scene, const BenchSettings& settings, BenchReport& report) {
+    if (backend.name() == "cpu") return;
+    // Small enough for the CPU to match in seconds.
+    const double scale = std::min(1.0, 160.0 / std::max(scene.render.width, scene.render.height));
+    scene.render.width = std::max(1u, uint32_t(scene.render.width * scale));
+    scene.render.height = std::max(1u, uint32_t(scene.render.height * scale));
+    constexpr uint32_t kSpp = 16;
+    std::vector<float> gpu, cpu;
+    backend.setToggles(settings.toggles);
+    backend.sync(scene, SceneChanges::All, {});
+    backend.render(kSpp);
+    backend.readBeauty(gpu);
+    std::unique_ptr<Backend> reference = createBackend("cpu");
+    reference->setToggles(settings.toggles);
+    reference->sync(scene, SceneChanges::All, {});
+    reference->render(kSpp);
+    reference->readBeauty(cpu);
+    double worst = 0.0, sumDiff = 0.0, sumCpu = 0.0;
+    for (size_t i = 0; i < cpu.size(); ++i) {
+        if (i % 4 == 3) continue;
+        worst = std::max(worst, double(std::fabs(gpu[i] - cpu[i])));
+        sumDiff += std::fabs(gpu[i] - cpu[i]);
+        sumCpu += std::fabs(cpu[i]);
+    }
+    const std::string size = std::to_string(scene.render.width) + "x" + std::to_string(scene.render.height) + ", " +
+                             std::to_string(kSpp) + " spp";
+    report.add({"image check", "largest deviation from the CPU", size, worst, "radiance", ""});
+    report.add({"image check", "mean relative deviation from the CPU", size, sumCpu > 0 ? sumDiff / sumCpu : 0.0, "",
+                ""});
+}
+
+}  // namespace pt::cli

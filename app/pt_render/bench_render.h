@@ -1,0 +1,23 @@
+#pragma once
+// Path tracing figures for `pt-render bench`: samples per pixel per second and Mpaths/s with
+// the toggles on and off, the time from an edit to its first accumulated frame, and the
+// image check of a GPU backend against the CPU one.
+#include <string>
+
+#include "bench_report.h"
+#include "render/backend/backend.h"
+
+namespace pt::cli {
+
+struct BenchSettings {
+    uint32_t runs = 5;
+    uint32_t spp = 4;             // per timed path-tracing run
+    IntegratorToggles toggles;    // the base every variant flips one toggle of
+};
+
+void benchPathTracing(Backend& backend, const Scene& scene, const BenchSettings& settings, BenchReport& report);
+void benchEdits(Backend& backend, Scene scene, const BenchSettings& settings, BenchReport& report);
+// Renders a reduced-size copy of the scene on `backend` and on the CPU at equal samples.
+void benchImageCheck(Backend& backend, Scene scene, const BenchSettings& settings, BenchReport& report);
+
+}  // namespace pt::cli

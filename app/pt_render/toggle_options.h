@@ -1,0 +1,28 @@
+#pragma once
+// The renderer toggles as command-line flags, shared by render and bench (so every command
+// spells them alike), and their report in stats JSON.
+#include <nlohmann/json.hpp>
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "cli_options.h"
+#include "render/backend/backend.h"
+
+namespace pt::cli {
+
+// --no-nee --no-mis --no-rr --bvh-off --no-jitter --megakernel --wavefront --no-compaction
+// --sort-materials --no-sort-materials --no-first-hit-cache
+const std::set<std::string>& toggleSwitches();
+// --clamp X, --rebuild-ratio R
+const std::set<std::string>& toggleValuedFlags();
+IntegratorToggles parseToggles(const Options& options);
+
+// {"nee": {"on": true}, "first_hit_cache": {"on": true, "active": false, "note": "..."}, ...}
+nlohmann::ordered_json toggleStatesJson(const std::vector<ToggleState>& states);
+
+// `a` plus every element of `b`.
+std::set<std::string> joined(std::set<std::string> a, const std::set<std::string>& b);
+
+}  // namespace pt::cli

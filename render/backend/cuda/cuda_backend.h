@@ -1,0 +1,73 @@
+#pragma once
+// CudaBackend: the shared per-ray code on the GPU, scheduled as a wavefront (or a megakernel,
+// a toggle), accumulating in double per pixel like the CPU backend so both give the same sums.
+// sync() does the least work an edit needs (DESIGN.md, "Data flow"): nothing, a reset, new
+// materials or lights, a TLAS rebuilt on the GPU, a BLAS refit on the GPU (rebuilt there
+// with an LBVH once refits have degraded its SAH cost past a ratio), or a full compile on the
+// host for new meshes and textures, whose binned SAH BLASes are uploaded.
+#include <cuda_runtime.h>
+
+#include <memory>
+
+#include "render/backend/backend.h"
+#include "render/backend/cuda/device_scene.h"
+#include "render/backend/cuda/gpu_bvh.h"
+#include "render/backend/cuda/path_scheduler.h"
+#include "render/scene/compile_scene.h"
+
+namespace pt::cuda {
+
+class CudaBackend final : public Backend {
+public:
+    CudaBackend();  // throws std::runtime_error when no CUDA device can be used
+    ~CudaBackend() override;
+
+    std::string name() const override { return "cuda"; }
+    SyncReport sync(const Scene& scene, SceneChangeMask changes, const ProgressFn& progress) override;
+    void setToggles(const IntegratorToggles& toggles) override;
+    void render(uint32_t passes) override;
+    void resetAccumulation() override;
+    uint32_t width() const override { return width_; }
+    uint32_t height() const override { return height_; }
+    void readBeauty(std::vector<float>& rgba) const override;
+    BackendStats stats() const override;
+    std::vector<ToggleState> toggleStates() const override;
+    uint64_t deviceMemoryBytes() const override;
+    std::vector<double> traceRays(const std::vector<Ray>& rays, bool anyHit, uint32_t runs,
+                                  std::vector<Hit>* hits) override;
+
+    // Paths alive at the start of each bounce in the last wavefront wave (compaction's effect).
+    const std::vector<uint32_t>& pathsPerBounce() const { return scheduler_.pathsPerBounce(); }
+    // SAH cost of BLAS i now, and right after its last build.
+    float blasSahCost(uint32_t blas) const;
+    float blasBuiltSahCost(uint32_t blas) const { return builtSah_[blas]; }
+
+private:
+    void fullBuild(const Scene& scene, const ProgressFn& progress, SyncReport& report);
+    // Uploads meshes whose vertices changed and refits (or rebuilds) their BLASes; returns
+    // whether any changed. Sets needsFullBuild when a mesh changed size (a topology edit).
+    bool refitChangedMeshes(const Scene& scene, SyncReport& report, bool& needsFullBuild);
+    void buildTlasOnDevice(SyncReport& report);
+    void updateView();
+    ScheduleOptions scheduleOptions() const;
+    bool firstHitCacheApplies(std::string* why) const;
+
+    cudaStream_t stream_ = nullptr;
+    std::unique_ptr<CompiledScene> compiled_;
+    DeviceScene device_;
+    LbvhBuilder lbvh_;
+    PathScheduler scheduler_;
+    DeviceBuffer<double> sum_;
+    DeviceBuffer<Aabb> primBoxes_;
+    DeviceBuffer<uint32_t> refitVisits_;
+    DeviceBuffer<Ray> queryRays_;
+    DeviceBuffer<Hit> queryHits_;
+    std::vector<float> builtSah_;            // per BLAS, after its last build
+    std::vector<uint32_t> meshVertexOffset_;  // per mesh: its first vertex in compiled_->positions
+    RenderScene view_{};
+    IntegratorToggles toggles_;
+    uint32_t width_ = 0, height_ = 0;
+    BackendStats stats_;
+};
+
+}  // namespace pt::cuda

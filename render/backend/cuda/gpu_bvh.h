@@ -1,0 +1,77 @@
+#pragma once
+// The CUDA backend's BVH work on the device: building a BLAS or the TLAS from primitive boxes
+// (LBVH), refitting a BLAS bottom-up after its vertices moved, and measuring SAH cost, all in
+// the canonical layout of bvh_node.h, so the shared traversal reads GPU-built and CPU-built
+// trees alike. Host functions; every pointer argument is device memory; work is queued on
+// `stream` and nothing here synchronises unless it says so.
+#include <cuda_runtime.h>
+
+#include <cstdint>
+
+#include "render/backend/cuda/device_buffer.h"
+#include "render/bvh/aabb.h"
+#include "render/bvh/bvh_node.h"
+#include "render/scene/render_scene.h"
+
+namespace pt::cuda {
+
+// Node count the LBVH of `count` primitives writes: 2 count - 1, and 1 (an empty root) for 0.
+inline uint32_t lbvhNodeCount(uint32_t count) { return count == 0 ? 1u : 2u * count - 1u; }
+
+// Linear BVH (Karras, "Maximizing Parallelism in the Construction of BVHs, Octrees, and k-d
+// Trees", HPG 2012): 30-bit Morton codes of box centres in the boxes' common bounds, a radix
+// sort, one thread per internal node to find its range and split, boxes bottom-up. One
+// primitive per leaf. Keeps its scratch memory between builds.
+// Layout: the root (Karras internal node 0) is node 0 and the two children of Karras internal
+// node i are nodes 1 + 2i and 2 + 2i, so siblings are adjacent without a renumbering pass; the
+// leaf of the primitive at sorted position q has leftOrFirst = q. Keys are Morton code << 32 |
+// primitive index, unique even where centres coincide, so the depth is bounded by the key bits.
+// The scratch is the builder's: one build at a time per builder (builds that may overlap on
+// different streams need a builder each).
+class LbvhBuilder {
+public:
+    // Writes lbvhNodeCount(count) nodes to `nodes` (root first; siblings adjacent) and `count`
+    // entries to `primIndices` (indices into `boxes`). `boxes` must hold no NaN. The result
+    // obeys every rule of binned_sah_builder.h's Bvh except the leaf size (always 1) and
+    // depth-first order; its depth is at most 62 < kBvhStackSize.
+    void build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint32_t* primIndices, cudaStream_t stream);
+
+private:
+    // Grows the scratch to `count` primitives and asks cub for its temporary storage sizes,
+    // which happens only when the capacity grows: builds of the same size or smaller reuse it.
+    void reserve(uint32_t count);
+
+    uint32_t capacity_ = 0;
+    DeviceBuffer<uint64_t> keys_, sortedKeys_;  // Morton code << 32 | primitive index: unique keys
+    DeviceBuffer<uint8_t> sortScratch_;
+    DeviceBuffer<Aabb> centroidBounds_;         // one box: the bounds of all box centres
+    DeviceBuffer<uint8_t> reduceScratch_;
+    DeviceBuffer<uint32_t> leafSlots_;          // node index of the leaf of each sorted primitive
+    DeviceBuffer<uint32_t> internalSlots_;      // node index of each Karras internal node
+    DeviceBuffer<uint32_t> visits_;             // bottom-up box pass: arrivals per node
+};
+
+// The object-space box of each primitive of `blas` (mesh-local order), read from the device
+// geometry `scene` points at.
+void computePrimitiveBoxes(const RenderScene& scene, const BlasRef& blas, Aabb* boxes, cudaStream_t stream);
+
+// parents[i] = the node whose children include node i; parents[0] = ~0u.
+void computeParents(const BvhNode* nodes, uint32_t nodeCount, uint32_t* parents, cudaStream_t stream);
+
+// Bottom-up refit: every node's box becomes the exact union of its primitives' current boxes
+// (`primBoxes`, indexed like the BVH's primIndices entries); the topology is kept. `parents`
+// comes from computeParents over the same topology; `visits` is nodeCount words of scratch.
+// `nodes` must be 16-byte aligned (boxes are read as float4), as every cudaMalloc'd node is.
+void refitBvh(BvhNode* nodes, uint32_t nodeCount, const uint32_t* parents, const uint32_t* primIndices,
+              const Aabb* primBoxes, uint32_t* visits, cudaStream_t stream);
+
+// SAH cost as sah_cost.h defines it (traversal and intersection cost 1), equal to the host's
+// sahCost() of the same nodes to float rounding. Synchronises `stream`.
+float sahCostOnDevice(const BvhNode* nodes, uint32_t nodeCount, cudaStream_t stream);
+
+// World-space box of each instance: its BLAS root box through objectToWorld, padded exactly as
+// the CPU scene compiler pads it (render/bvh/instance_bounds.h).
+void computeInstanceBoxes(const RenderInstance* instances, uint32_t count, const BlasRef* blases,
+                          const BvhNode* blasNodes, Aabb* boxes, cudaStream_t stream);
+
+}  // namespace pt::cuda

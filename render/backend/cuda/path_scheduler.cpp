@@ -1,0 +1,152 @@
+#include "render/backend/cuda/path_scheduler.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <utility>
+
+namespace pt::cuda {
+
+namespace {
+
+// Paths in flight per wave: enough to fill an H100 many times over, small enough that the
+// per-path state (about 200 bytes) stays a few hundred MB.
+constexpr uint32_t kMaxWavePaths = 1u << 21;
+
+uint32_t bitsFor(uint32_t maxValue) {
+    uint32_t bits = 1;
+    while (bits < 32 && (maxValue >> bits) != 0) ++bits;
+    return bits;
+}
+
+}  // namespace
+
+PathScheduler::PathScheduler() {
+    PT_CUDA_CHECK(cudaMallocHost(&hostCounters_, sizeof(RenderCounters)));
+    counters_.resize(1);
+    counters_.fillZero();
+}
+
+PathScheduler::~PathScheduler() {
+    if (hostCounters_) cudaFreeHost(hostCounters_);
+}
+
+void PathScheduler::reserve(uint32_t pixelCount, uint32_t pathCount, const ScheduleOptions& options) {
+    paths_.resize(pathCount);
+    radiance_.resize(size_t(pathCount) * 3);
+    if (!options.megakernel) {
+        hits_.resize(pathCount);
+        shadows_.resize(pathCount);
+        queue0_.resize(pathCount);
+        queue1_.resize(pathCount);
+        shadowQueue_.resize(pathCount);
+    }
+    if (options.materialSort && !options.megakernel) {
+        sortKeys0_.resize(pathCount);
+        sortKeys1_.resize(pathCount);
+        const size_t scratch = sortScratchBytes(pathCount);
+        if (sortScratch_.size() < scratch) sortScratch_.resize(scratch);
+    }
+    if (options.firstHitCache && firstHitsPixels_ != pixelCount) {
+        firstHits_.resize(pixelCount);
+        firstHitsPixels_ = pixelCount;
+        firstHitsValid_ = false;
+    }
+}
+
+WaveBuffers PathScheduler::buffers() const {
+    WaveBuffers b{};
+    b.paths = paths_.data();
+    b.hits = hits_.data();
+    b.shadows = shadows_.data();
+    b.queue[0] = queue0_.data();
+    b.queue[1] = queue1_.data();
+    b.shadowQueue = shadowQueue_.data();
+    b.sortKeys[0] = sortKeys0_.data();
+    b.sortKeys[1] = sortKeys1_.data();
+    b.firstHits = firstHits_.data();
+    b.radiance = radiance_.data();
+    b.counters = counters_.data();
+    return b;
+}
+
+void PathScheduler::render(const RenderScene& scene, uint32_t firstSample, uint32_t samples,
+                           const ScheduleOptions& options, double* sum, cudaStream_t stream) {
+    const uint32_t pixelCount = scene.settings.width * scene.settings.height;
+    if (pixelCount == 0 || samples == 0) return;
+    const uint32_t samplesPerWave = std::max(1u, std::min(samples, kMaxWavePaths / pixelCount));
+    reserve(pixelCount, pixelCount * samplesPerWave, options);
+    for (uint32_t done = 0; done < samples;) {
+        const uint32_t n = std::min(samplesPerWave, samples - done);
+        const WaveShape shape{pixelCount, pixelCount * n, firstSample + done};
+        if (options.megakernel) {
+            launchMegakernel(scene, buffers(), shape, stream);
+        } else {
+            runWavefront(scene, shape, options, stream);
+        }
+        launchAccumulate(buffers(), shape, sum, stream);
+        done += n;
+    }
+}
+
+void PathScheduler::runWavefront(const RenderScene& scene, const WaveShape& shape, const ScheduleOptions& options,
+                                 cudaStream_t stream) {
+    WaveBuffers b = buffers();
+    launchGeneratePaths(scene, b, shape, stream);
+    const bool cacheReads = options.firstHitCache && firstHitsValid_;
+    const bool cacheWrites = options.firstHitCache && !firstHitsValid_;
+    const uint32_t keyBits = bitsFor(options.materialCount + 1);
+    // Per-bounce queue sizes live at a fixed offset of the counters; they are reset before
+    // each shade and read back after it.
+    constexpr size_t kQueueCountsOffset = offsetof(RenderCounters, queueCount);
+    constexpr size_t kQueueCountsBytes = sizeof(RenderCounters) - kQueueCountsOffset;
+    auto* countsDevice = reinterpret_cast<uint8_t*>(b.counters) + kQueueCountsOffset;
+    auto* countsHost = reinterpret_cast<uint8_t*>(hostCounters_) + kQueueCountsOffset;
+
+    pathsPerBounce_.clear();
+    const uint32_t* queue = nullptr;  // nullptr: every path of the wave, in order
+    uint32_t count = shape.pathCount;
+    for (uint32_t iteration = 0; count > 0; ++iteration) {
+        pathsPerBounce_.push_back(count);
+        const bool cameraRays = iteration == 0;
+        launchExtend(scene, b, shape, queue, count, cameraRays && cacheReads, cameraRays && cacheWrites, stream);
+        if (options.materialSort) {
+            launchSortByMaterial(scene, b, count, queue == nullptr, keyBits, sortScratch_.data(), sortScratch_.size(),
+                                 stream);
+            queue = b.queue[0];
+        }
+        PT_CUDA_CHECK(cudaMemsetAsync(countsDevice, 0, kQueueCountsBytes, stream));
+        launchShade(scene, b, shape, queue, count, options.compaction, stream);
+        PT_CUDA_CHECK(cudaMemcpyAsync(countsHost, countsDevice, kQueueCountsBytes, cudaMemcpyDeviceToHost, stream));
+        PT_CUDA_CHECK(cudaStreamSynchronize(stream));
+        if (options.compaction) {
+            launchShadow(scene, b, b.shadowQueue, hostCounters_->shadowCount, false, stream);
+            std::swap(b.queue[0], b.queue[1]);
+            queue = b.queue[0];
+            count = hostCounters_->queueCount[1];
+        } else {
+            launchShadow(scene, b, queue, count, true, stream);
+            queue = nullptr;
+            count = hostCounters_->alive > 0 ? shape.pathCount : 0;
+        }
+    }
+    if (cacheWrites) firstHitsValid_ = true;
+    launchFinishPaths(b, shape, stream);
+}
+
+void PathScheduler::resetCounters(cudaStream_t stream) { counters_.fillZero(stream); }
+
+uint64_t PathScheduler::rays() const {
+    return counters_.download()[0].rays;
+}
+
+uint64_t PathScheduler::nonfiniteSamples() const {
+    return counters_.download()[0].nonfinite;
+}
+
+uint64_t PathScheduler::bytes() const {
+    return paths_.bytes() + hits_.bytes() + firstHits_.bytes() + shadows_.bytes() + queue0_.bytes() +
+           queue1_.bytes() + shadowQueue_.bytes() + sortKeys0_.bytes() + sortKeys1_.bytes() + sortScratch_.bytes() +
+           radiance_.bytes() + counters_.bytes();
+}
+
+}  // namespace pt::cuda

@@ -1,0 +1,63 @@
+#pragma once
+// PathScheduler: runs waves of paths on the GPU, either as wavefront stages (generate, extend,
+// [sort], shade, shadow, repeated until no path is alive) or as the megakernel, and adds the
+// finished samples to a per-pixel double accumulation.
+#include <cuda_runtime.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "render/backend/cuda/device_buffer.h"
+#include "render/backend/cuda/wavefront_kernels.h"
+
+namespace pt::cuda {
+
+struct ScheduleOptions {
+    bool megakernel = false;
+    bool compaction = true;
+    bool materialSort = false;
+    bool firstHitCache = false;   // only where camera rays repeat exactly (no jitter, no lens)
+    uint32_t materialCount = 1;
+};
+
+class PathScheduler {
+public:
+    PathScheduler();
+    ~PathScheduler();
+    PathScheduler(const PathScheduler&) = delete;
+    PathScheduler& operator=(const PathScheduler&) = delete;
+
+    // Forget cached camera-ray hits (the scene, camera or image size changed).
+    void invalidateFirstHits() { firstHitsValid_ = false; }
+
+    // Adds samples firstSample .. firstSample + samples - 1 of every pixel to `sum` (RGB doubles).
+    void render(const RenderScene& scene, uint32_t firstSample, uint32_t samples, const ScheduleOptions& options,
+                double* sum, cudaStream_t stream);
+
+    void resetCounters(cudaStream_t stream);
+    uint64_t rays() const;              // since resetCounters; synchronises
+    uint64_t nonfiniteSamples() const;
+    // Paths alive at the start of each bounce of the last wavefront wave.
+    const std::vector<uint32_t>& pathsPerBounce() const { return pathsPerBounce_; }
+    uint64_t bytes() const;
+
+private:
+    void reserve(uint32_t pixelCount, uint32_t pathCount, const ScheduleOptions& options);
+    WaveBuffers buffers() const;
+    void runWavefront(const RenderScene& scene, const WaveShape& shape, const ScheduleOptions& options,
+                      cudaStream_t stream);
+
+    DeviceBuffer<PathState> paths_;
+    DeviceBuffer<Hit> hits_, firstHits_;
+    DeviceBuffer<ShadowRay> shadows_;
+    DeviceBuffer<uint32_t> queue0_, queue1_, shadowQueue_, sortKeys0_, sortKeys1_;
+    DeviceBuffer<uint8_t> sortScratch_;
+    DeviceBuffer<float> radiance_;
+    DeviceBuffer<RenderCounters> counters_;
+    RenderCounters* hostCounters_ = nullptr;  // pinned, for the per-bounce queue sizes
+    bool firstHitsValid_ = false;
+    uint32_t firstHitsPixels_ = 0;
+    std::vector<uint32_t> pathsPerBounce_;
+};
+
+}  // namespace pt::cuda

@@ -1,0 +1,195 @@
+// The wavefront stages (wavefront_kernels.h): thin kernels around the shared stage functions of
+// render/integrator/path_tracer.h, so both backends shade with the same code.
+#include <cub/device/device_radix_sort.cuh>
+
+#include "render/backend/cuda/cuda_check.h"
+#include "render/backend/cuda/warp_atomics.cuh"
+#include "render/backend/cuda/wavefront_kernels.h"
+#include "render/integrator/path_tracer.h"
+
+namespace pt::cuda {
+
+namespace {
+
+constexpr uint32_t kBlock = 128;
+
+uint32_t blocksFor(uint32_t count) { return (count + kBlock - 1) / kBlock; }
+
+__device__ __forceinline__ uint32_t threadIndex() { return blockIdx.x * blockDim.x + threadIdx.x; }
+
+__global__ void generateKernel(RenderScene scene, WaveBuffers b, WaveShape shape) {
+    const uint32_t i = threadIndex();
+    if (i >= shape.pathCount) return;
+    const uint32_t pixel = i % shape.pixelCount, sample = i / shape.pixelCount;
+    const uint32_t width = scene.settings.width;
+    b.paths[i] = generatePath(scene, pixel % width, pixel / width, shape.firstSample + sample);
+    b.shadows[i].valid = false;  // read in place when compaction is off
+}
+
+__global__ void extendKernel(RenderScene scene, WaveBuffers b, WaveShape shape, const uint32_t* queue,
+                             uint32_t count, bool readCache, bool writeCache) {
+    const uint32_t i = threadIndex();
+    if (i >= count) return;
+    const uint32_t path = queue ? queue[i] : i;
+    if (!queue && !b.paths[path].alive) return;
+    const uint32_t pixel = path % shape.pixelCount;
+    Hit hit;
+    if (readCache) {
+        hit = b.firstHits[pixel];
+    } else {
+        intersectClosest(scene, b.paths[path].ray, hit);
+        warpAtomicAdd(&b.counters->rays, 1u);
+        // Every sample of a pixel shares the camera ray here, so sample 0 speaks for all.
+        if (writeCache && path < shape.pixelCount) b.firstHits[pixel] = hit;
+    }
+    b.hits[path] = hit;
+}
+
+// The key of a path: 0 for a miss, else 1 + the material it hit.
+// With `identity`, queue[0] is first filled with 0..count-1 (every path, in order).
+__global__ void materialKeyKernel(RenderScene scene, WaveBuffers b, uint32_t count, bool identity) {
+    const uint32_t i = threadIndex();
+    if (i >= count) return;
+    if (identity) b.queue[0][i] = i;
+    const uint32_t path = b.queue[0][i];
+    const Hit hit = b.hits[path];
+    if (!b.paths[path].alive) {
+        b.sortKeys[0][i] = 0;
+        return;
+    }
+    uint32_t key = 0;
+    if (hit.valid()) {
+        const RenderInstance& inst = scene.instances[hit.instance];
+        const BlasRef& blas = scene.blases[inst.blas];
+        const uint32_t global = blas.primitiveOffset + hit.primitive;
+        const uint32_t slot = blas.kind == GeometryKind::Spheres ? scene.sphereSlots[global] : scene.triangleSlots[global];
+        key = 1 + scene.instanceMaterials[inst.materialOffset + slot];
+    }
+    b.sortKeys[0][i] = key;
+}
+
+__global__ void shadeKernel(RenderScene scene, WaveBuffers b, const uint32_t* queue, uint32_t count, bool compaction) {
+    const uint32_t i = threadIndex();
+    if (i >= count) return;
+    const uint32_t path = queue ? queue[i] : i;
+    PathState state = b.paths[path];
+    if (!state.alive) return;
+    const Hit hit = b.hits[path];
+    ShadowRay shadow{};
+    if (hit.valid()) {
+        shadow = shadeSurface(scene, state, hit);
+    } else {
+        shadeMiss(scene, state);
+    }
+    b.paths[path] = state;
+    if (compaction) {
+        if (shadow.valid) b.shadows[path] = shadow;
+        warpAppend(b.shadowQueue, &b.counters->shadowCount, path, shadow.valid);
+        warpAppend(b.queue[1], &b.counters->queueCount[1], path, state.alive);
+    } else {
+        b.shadows[path] = shadow;
+        warpAtomicAdd(&b.counters->alive, state.alive ? 1u : 0u);
+    }
+}
+
+__global__ void shadowKernel(RenderScene scene, WaveBuffers b, const uint32_t* queue, uint32_t count, bool consume) {
+    const uint32_t i = threadIndex();
+    if (i >= count) return;
+    const uint32_t path = queue ? queue[i] : i;
+    const ShadowRay shadow = b.shadows[path];
+    if (!shadow.valid) return;
+    if (consume) b.shadows[path].valid = false;  // in place: the next bounce starts clean
+    PathState& state = b.paths[path];
+    PathCounters counters;
+    // state.depth as tracePath passes it (after shading), so both schedules draw the same numbers.
+    if (shadowRayUnoccluded(scene, shadow.ray, state.sampler, state.depth, counters)) {
+        state.radiance += shadow.contribution;
+    }
+    warpAtomicAdd(&b.counters->rays, uint32_t(counters.rays));
+}
+
+__global__ void finishKernel(WaveBuffers b, WaveShape shape) {
+    const uint32_t i = threadIndex();
+    if (i >= shape.pathCount) return;
+    Vec3 radiance = b.paths[i].radiance;
+    const bool finite = isFinite(radiance);
+    if (!finite) radiance = Vec3(0.0f);
+    warpAtomicAdd(&b.counters->nonfinite, finite ? 0u : 1u);
+    b.radiance[3 * i + 0] = radiance.x;
+    b.radiance[3 * i + 1] = radiance.y;
+    b.radiance[3 * i + 2] = radiance.z;
+}
+
+__global__ void accumulateKernel(WaveBuffers b, WaveShape shape, double* sum) {
+    const uint32_t pixel = threadIndex();
+    if (pixel >= shape.pixelCount) return;
+    double r = sum[3 * pixel + 0], g = sum[3 * pixel + 1], bl = sum[3 * pixel + 2];
+    // In sample order, one addition at a time, exactly as the CPU backend adds them.
+    for (uint32_t path = pixel; path < shape.pathCount; path += shape.pixelCount) {
+        r += double(b.radiance[3 * path + 0]);
+        g += double(b.radiance[3 * path + 1]);
+        bl += double(b.radiance[3 * path + 2]);
+    }
+    sum[3 * pixel + 0] = r;
+    sum[3 * pixel + 1] = g;
+    sum[3 * pixel + 2] = bl;
+}
+
+}  // namespace
+
+void launchGeneratePaths(const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape, cudaStream_t stream) {
+    generateKernel<<<blocksFor(shape.pathCount), kBlock, 0, stream>>>(scene, b, shape);
+    PT_CUDA_CHECK_LAUNCH("generateKernel");
+}
+
+void launchExtend(const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape, const uint32_t* queue,
+                  uint32_t count, bool readCache, bool writeCache, cudaStream_t stream) {
+    if (count == 0) return;
+    extendKernel<<<blocksFor(count), kBlock, 0, stream>>>(scene, b, shape, queue, count, readCache, writeCache);
+    PT_CUDA_CHECK_LAUNCH("extendKernel");
+}
+
+size_t sortScratchBytes(uint32_t pathCount) {
+    size_t bytes = 0;
+    PT_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, bytes, static_cast<const uint32_t*>(nullptr),
+                                                  static_cast<uint32_t*>(nullptr), static_cast<const uint32_t*>(nullptr),
+                                                  static_cast<uint32_t*>(nullptr), int(pathCount)));
+    return bytes;
+}
+
+void launchSortByMaterial(const RenderScene& scene, const WaveBuffers& b, uint32_t count, bool identity,
+                          uint32_t keyBits, void* scratch, size_t scratchBytes, cudaStream_t stream) {
+    if (count == 0) return;
+    materialKeyKernel<<<blocksFor(count), kBlock, 0, stream>>>(scene, b, count, identity);
+    PT_CUDA_CHECK_LAUNCH("materialKeyKernel");
+    // Sorted into queue[1], then copied back: the shade stage reads queue[0].
+    PT_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(scratch, scratchBytes, b.sortKeys[0], b.sortKeys[1], b.queue[0],
+                                                  b.queue[1], int(count), 0, int(keyBits), stream));
+    PT_CUDA_CHECK(cudaMemcpyAsync(b.queue[0], b.queue[1], count * sizeof(uint32_t), cudaMemcpyDeviceToDevice, stream));
+}
+
+void launchShade(const RenderScene& scene, const WaveBuffers& b, const WaveShape&, const uint32_t* queue,
+                 uint32_t count, bool compaction, cudaStream_t stream) {
+    if (count == 0) return;
+    shadeKernel<<<blocksFor(count), kBlock, 0, stream>>>(scene, b, queue, count, compaction);
+    PT_CUDA_CHECK_LAUNCH("shadeKernel");
+}
+
+void launchShadow(const RenderScene& scene, const WaveBuffers& b, const uint32_t* queue, uint32_t count,
+                  bool consume, cudaStream_t stream) {
+    if (count == 0) return;
+    shadowKernel<<<blocksFor(count), kBlock, 0, stream>>>(scene, b, queue, count, consume);
+    PT_CUDA_CHECK_LAUNCH("shadowKernel");
+}
+
+void launchFinishPaths(const WaveBuffers& b, const WaveShape& shape, cudaStream_t stream) {
+    finishKernel<<<blocksFor(shape.pathCount), kBlock, 0, stream>>>(b, shape);
+    PT_CUDA_CHECK_LAUNCH("finishKernel");
+}
+
+void launchAccumulate(const WaveBuffers& b, const WaveShape& shape, double* sum, cudaStream_t stream) {
+    accumulateKernel<<<blocksFor(shape.pixelCount), kBlock, 0, stream>>>(b, shape, sum);
+    PT_CUDA_CHECK_LAUNCH("accumulateKernel");
+}
+
+}  // namespace pt::cuda

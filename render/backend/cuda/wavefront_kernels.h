@@ -1,0 +1,83 @@
+#pragma once
+// The stages of the wavefront path tracer as host-callable launches (the kernels live in
+// wavefront_kernels.cu). One wave holds `pathCount` paths: sample s of pixel p is path
+// s * pixelCount + p. Between stages the paths live in device arrays (PathState, Hit,
+// ShadowRay per path) and the stages pass work on through index queues.
+#include <cuda_runtime.h>
+
+#include <cstdint>
+
+#include "render/bvh/hit.h"
+#include "render/integrator/path_state.h"
+#include "render/scene/render_scene.h"
+
+namespace pt::cuda {
+
+// Device counters of a render, summed over kernels.
+struct RenderCounters {
+    unsigned long long rays;          // closest-hit and shadow rays traced
+    unsigned long long nonfinite;     // samples dropped for NaN or Inf
+    uint32_t queueCount[2];           // wavefront: paths appended to the next queue (compaction)
+    uint32_t shadowCount;             // wavefront: shadow rays appended to the shadow queue
+    uint32_t alive;                   // wavefront without compaction: paths still alive
+};
+
+struct WaveBuffers {
+    PathState* paths;
+    Hit* hits;
+    ShadowRay* shadows;
+    uint32_t* queue[2];         // this bounce's paths, the next bounce's
+    uint32_t* shadowQueue;
+    uint32_t* sortKeys[2];      // material sort: keys in, keys out
+    Hit* firstHits;             // first-hit cache, one per pixel (nullptr: no cache)
+    float* radiance;            // RGB per path: the finished samples of the wave
+    RenderCounters* counters;
+};
+
+struct WaveShape {
+    uint32_t pixelCount;
+    uint32_t pathCount;         // pixelCount x samples in the wave
+    uint32_t firstSample;
+};
+
+void launchGeneratePaths(const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape, cudaStream_t stream);
+
+// Closest hits of the paths in `queue` (count entries; all paths when queue is nullptr).
+// readCache: camera rays whose hits are in b.firstHits; writeCache: store them there.
+void launchExtend(const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape, const uint32_t* queue,
+                  uint32_t count, bool readCache, bool writeCache, cudaStream_t stream);
+
+// Material sort: reorders queue[0] (count entries; with `identity` first set to every path) by
+// the material each path hit, misses and dead paths first, through queue[1] and sortKeys.
+// `scratch` must hold sortScratchBytes(pathCount) bytes.
+size_t sortScratchBytes(uint32_t pathCount);
+void launchSortByMaterial(const RenderScene& scene, const WaveBuffers& b, uint32_t count, bool identity,
+                          uint32_t keyBits, void* scratch, size_t scratchBytes, cudaStream_t stream);
+
+// Shading of the paths in `queue` (all paths when nullptr). With compaction, live paths are
+// appended to b.queue[1] and valid shadow rays to b.shadowQueue; without, shadows are marked
+// valid in place and b.counters->alive counts the live paths.
+void launchShade(const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape, const uint32_t* queue,
+                 uint32_t count, bool compaction, cudaStream_t stream);
+
+// Shadow rays of the paths in `queue` (count entries; all paths when nullptr); invalid ones are
+// skipped, and unoccluded contributions are added to the paths' radiance. `consume` marks
+// each one invalid once traced (in-place shadow rays, compaction off).
+void launchShadow(const RenderScene& scene, const WaveBuffers& b, const uint32_t* queue, uint32_t count,
+                  bool consume, cudaStream_t stream);
+
+// Finished paths' radiance into b.radiance, non-finite samples counted and zeroed.
+void launchFinishPaths(const WaveBuffers& b, const WaveShape& shape, cudaStream_t stream);
+
+// The megakernel: each thread traces one whole path (tracePath) into b.radiance.
+void launchMegakernel(const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape, cudaStream_t stream);
+
+// Traversal alone (Backend::traceRays): closest hits, or with anyHit occlusion as instance 0 /
+// Hit::kNoHit, of `count` world-space rays.
+void launchTraceRays(const RenderScene& scene, const Ray* rays, uint32_t count, bool anyHit, Hit* hits,
+                     cudaStream_t stream);
+
+// Adds the wave's samples to the per-pixel double sums (RGB), samples of a pixel in order.
+void launchAccumulate(const WaveBuffers& b, const WaveShape& shape, double* sum, cudaStream_t stream);
+
+}  // namespace pt::cuda

@@ -1,0 +1,25 @@
+#include "render/backend/toggle_states.h"
+
+namespace pt {
+
+std::vector<ToggleState> integratorToggleStates(const IntegratorToggles& t) {
+    const auto state = [](const char* name, bool on) { return ToggleState{name, on, on, ""}; };
+    return {
+        state("nee", t.nextEventEstimation),
+        state("mis", t.multipleImportance),
+        state("rr", t.russianRoulette),
+        // "bvh" is on when the BVH is used, i.e. when brute force is off.
+        state("bvh", !t.bruteForce),
+        state("pixel_jitter", t.pixelJitter),
+        state("megakernel", t.megakernel),
+        state("compaction", t.streamCompaction),
+        state("material_sort", t.materialSort),
+        state("first_hit_cache", t.firstHitCache),
+    };
+}
+
+bool isGpuSchedulingToggle(const std::string& name) {
+    return name == "megakernel" || name == "compaction" || name == "material_sort" || name == "first_hit_cache";
+}
+
+}  // namespace pt

@@ -1,0 +1,73 @@
+// pt-render bench on the CPU backend (the GPU figures are taken on a GPU machine): it runs
+// every section, writes its JSON atomically, and refuses what it cannot honour.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "cli_runner.h"
+#include "support/test_paths.h"
+
+namespace pt {
+namespace {
+
+using test::runCli;
+
+std::string cornell() { return "'" + test::projectPath("scenes/cornell.json") + "'"; }
+
+TEST(PtRenderBench, MeasuresEverySectionAndWritesJson) {
+    const std::string json = test::tempDir() + "/bench.json";
+    const auto r = runCli("bench " + cornell() + " --size 24x16 --runs 2 --spp 1 --quiet --json " + json);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("median of 2 runs"), std::string::npos) << r.out;
+    std::ifstream in(json);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["backend"], "cpu");
+    EXPECT_EQ(j["width"], 24);
+    std::set<std::string> sections;
+    std::map<std::string, double> value;  // "section/figure/variant"
+    for (const auto& row : j["rows"]) {
+        sections.insert(row["section"].get<std::string>());
+        value[row["section"].get<std::string>() + "/" + row["figure"].get<std::string>() + "/" +
+              row["variant"].get<std::string>()] = row["value"].get<double>();
+    }
+    for (const char* s : {"scene", "rays", "path tracing", "BVH", "edit to first frame"}) {
+        EXPECT_TRUE(sections.count(s)) << "missing section " << s;
+    }
+    // Every pixel's camera ray is traced, with the BVH and without (24 triangles are in budget).
+    EXPECT_GT(value["rays/primary/BVH on"], 0.0);
+    EXPECT_GT(value["rays/primary/BVH off"], 0.0);
+    EXPECT_GT(value["path tracing/samples per pixel per second/default"], 0.0);
+    EXPECT_GT(value["path tracing/samples per pixel per second/roulette off"], 0.0);
+    EXPECT_GT(value["edit to first frame/material/"], 0.0);
+    EXPECT_EQ(value["BVH/SAH cost vs CPU binned (CPU binned SAH)/"], 1.0);
+}
+
+TEST(PtRenderBench, RejectsContradictoryToggles) {
+    const auto r = runCli("bench " + cornell() + " --megakernel --wavefront");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("exclude each other"), std::string::npos) << r.err;
+    const auto ratio = runCli("render " + cornell() + " --png x.png --rebuild-ratio 0.5");
+    EXPECT_EQ(ratio.exitCode, 2);
+    EXPECT_NE(ratio.err.find("--rebuild-ratio"), std::string::npos) << ratio.err;
+}
+
+TEST(PtRenderBench, ReportsTheTogglesInRenderStats) {
+    const std::string dir = test::tempDir();
+    const auto r = runCli("render " + cornell() + " --png " + dir + "/t.png --stats " + dir +
+                          "/t.json --spp 1 --size 8x8 --quiet --no-jitter --no-rr");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::ifstream in(dir + "/t.json");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["toggles"]["rr"]["on"], false);
+    EXPECT_EQ(j["toggles"]["pixel_jitter"]["on"], false);
+    EXPECT_EQ(j["toggles"]["nee"]["on"], true);
+    // The CPU backend says why it has no GPU scheduling.
+    EXPECT_EQ(j["toggles"]["megakernel"]["active"], false);
+    EXPECT_NE(j["toggles"]["megakernel"]["note"].get<std::string>().find("CUDA only"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace pt

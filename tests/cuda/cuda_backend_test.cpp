@@ -1,0 +1,425 @@
+// The CUDA backend against the CPU backend: the same first hits, the same beauty at equal
+// samples, refits that trace like rebuilds, and scheduling toggles that leave the image alone.
+// Every test skips with a message where no CUDA device is present.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <random>
+#include <vector>
+
+#include "cuda_test_support.h"
+#include "render/backend/cpu/cpu_backend.h"
+#include "render/backend/cuda/cuda_backend.h"
+#include "render/integrator/camera.h"
+#include "support/load_scene.h"
+#include "support/scene_builder.h"
+#include "support/test_paths.h"
+
+namespace pt {
+namespace {
+
+using test::addMaterial;
+using test::addShape;
+using test::trs;
+
+Scene cornell(uint32_t size, uint32_t maxDepth = 8) {
+    Scene scene = test::loadSceneOrFail(test::projectPath("scenes/cornell.json"));
+    scene.render.width = scene.render.height = size;
+    scene.render.maxDepth = maxDepth;
+    return scene;
+}
+
+// Renders in `batches` calls of spp / batches samples (so caches made by one call serve the next).
+std::vector<float> renderWith(Backend& backend, const Scene& scene, uint32_t spp, const IntegratorToggles& toggles = {},
+                              uint32_t batches = 1) {
+    backend.setToggles(toggles);
+    backend.sync(scene, SceneChanges::All, {});
+    for (uint32_t b = 0; b < batches; ++b) backend.render(spp / batches);
+    EXPECT_EQ(backend.stats().nonfiniteSamples, 0u) << backend.name();
+    std::vector<float> rgba;
+    backend.readBeauty(rgba);
+    return rgba;
+}
+
+// A bumpy grid of (n x n) quads in the XZ plane, as one mesh, under a sky.
+Scene bumpyGridScene(uint32_t n, uint32_t seed) {
+    Scene scene;
+    scene.render = {64, 64, 4, 16, 0};
+    scene.camera.position = {0.0f, 2.5f, 2.5f};
+    scene.camera.lookAt = {0, 0, 0};
+    scene.environment.color = {1, 1, 1};
+    Mesh mesh;
+    mesh.name = "grid";
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> height(-0.05f, 0.05f);
+    for (uint32_t z = 0; z <= n; ++z) {
+        for (uint32_t x = 0; x <= n; ++x) {
+            mesh.positions.push_back({2.0f * x / n - 1.0f, height(rng), 2.0f * z / n - 1.0f});
+        }
+    }
+    for (uint32_t z = 0; z < n; ++z) {
+        for (uint32_t x = 0; x < n; ++x) {
+            const uint32_t a = z * (n + 1) + x, b = a + 1, c = a + n + 1, d = c + 1;
+            mesh.indices.insert(mesh.indices.end(), {a, c, b, b, c, d});
+        }
+    }
+    scene.meshes.push_back(mesh);
+    const uint32_t material = addMaterial(scene, "grey", test::diffuse({0.5f, 0.5f, 0.5f}));
+    for (int i = 0; i < 3; ++i) {
+        Instance inst;
+        inst.name = "grid " + std::to_string(i);
+        inst.mesh = 0;
+        inst.objectToWorld = trs({0.0f, 0.3f * float(i), 0.0f}, {0.0f, 20.0f * float(i), 0.0f}).toAffine();
+        inst.materials = {material};
+        scene.instances.push_back(inst);
+    }
+    return scene;
+}
+
+std::vector<Ray> randomRays(uint32_t count, uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    std::vector<Ray> rays(count);
+    for (Ray& r : rays) {
+        r.origin = {1.5f * u(rng), 1.5f + u(rng), 1.5f * u(rng)};
+        r.direction = normalize(Vec3(0.5f * u(rng), -1.0f, 0.5f * u(rng)));
+        r.tMax = kInf;
+    }
+    return rays;
+}
+
+// Hits must agree exactly: both backends run the same float operations without contraction.
+// Where two surfaces meet at exactly the same t (a box's faces at an edge), whichever the
+// tree visits first wins, and trees built by other builders may differ there: such ties
+// count as agreement when they are rare.
+void expectSameHits(const std::vector<Hit>& a, const std::vector<Hit>& b, const char* what) {
+    ASSERT_EQ(a.size(), b.size());
+    size_t mismatches = 0, hits = 0, ties = 0;
+    for (size_t i = 0; i < a.size(); ++i) {
+        hits += a[i].valid();
+        const bool bothHit = a[i].valid() && b[i].valid();
+        const bool tie = bothHit && a[i].t == b[i].t &&
+                         (a[i].instance != b[i].instance || a[i].primitive != b[i].primitive);
+        ties += tie;
+        const bool same = tie || (a[i].instance == b[i].instance &&
+                                  (!a[i].valid() || (a[i].primitive == b[i].primitive && a[i].t == b[i].t &&
+                                                     a[i].u == b[i].u && a[i].v == b[i].v)));
+        if (!same && mismatches++ < 5) {
+            ADD_FAILURE() << what << ": ray " << i << ": instance " << a[i].instance << " vs " << b[i].instance
+                          << ", primitive " << a[i].primitive << " vs " << b[i].primitive << ", t " << a[i].t
+                          << " vs " << b[i].t;
+        }
+    }
+    EXPECT_EQ(mismatches, 0u) << what;
+    EXPECT_LE(ties, a.size() / 100) << what << ": too many equal-distance ties to be edges";
+    if (ties) std::cout << "[ figures  ] " << what << ": " << ties << " equal-distance ties of " << a.size() << " rays\n";
+    EXPECT_GT(hits, a.size() / 4) << what << ": too few rays hit to test anything";
+}
+
+float maxAbsDifference(const std::vector<float>& a, const std::vector<float>& b) {
+    float worst = 0.0f;
+    for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::fabs(a[i] - b[i]));
+    return worst;
+}
+
+TEST(CudaBackend, CameraRaysHitWhatTheCpuHits) {
+    PT_REQUIRE_CUDA_DEVICE();
+    const Scene scene = cornell(128);
+    const RenderCamera camera = makeRenderCamera(scene.camera, 128, 128);
+    std::vector<Ray> rays;
+    for (uint32_t y = 0; y < 128; ++y) {
+        for (uint32_t x = 0; x < 128; ++x) rays.push_back(generateCameraRay(camera, 128, 128, x, y, {0.5f, 0.5f}, {0.5f, 0.5f}));
+    }
+    CpuBackend cpu;
+    cuda::CudaBackend gpu;
+    cpu.sync(scene, SceneChanges::All, {});
+    gpu.sync(scene, SceneChanges::All, {});
+    std::vector<Hit> cpuHits, gpuHits;
+    cpu.traceRays(rays, false, 1, &cpuHits);
+    gpu.traceRays(rays, false, 1, &gpuHits);
+    expectSameHits(cpuHits, gpuHits, "camera rays");
+    std::vector<Hit> cpuAny, gpuAny;
+    cpu.traceRays(rays, true, 1, &cpuAny);
+    gpu.traceRays(rays, true, 1, &gpuAny);
+    for (size_t i = 0; i < rays.size(); ++i) ASSERT_EQ(cpuAny[i].instance, gpuAny[i].instance) << "ray " << i;
+}
+
+TEST(CudaBackend, BeautyMatchesTheCpuAtEqualSamples) {
+    PT_REQUIRE_CUDA_DEVICE();
+    const Scene scene = cornell(64);
+    CpuBackend cpuBackend;
+    cuda::CudaBackend gpuBackend;
+    const std::vector<float> cpu = renderWith(cpuBackend, scene, 64);
+    const std::vector<float> gpu = renderWith(gpuBackend, scene, 64);
+    // Same sample numbers, same arithmetic: pixels differ only where a transcendental function
+    // rounded differently and a path took another turn.
+    size_t differing = 0;
+    double sumCpu = 0.0, sumGpu = 0.0;
+    for (size_t i = 0; i < cpu.size(); i += 4) {
+        for (int c = 0; c < 3; ++c) {
+            sumCpu += cpu[i + c];
+            sumGpu += gpu[i + c];
+        }
+        const float scale = std::max(1e-3f, std::max(cpu[i], std::max(cpu[i + 1], cpu[i + 2])));
+        for (int c = 0; c < 3; ++c) {
+            if (std::fabs(cpu[i + c] - gpu[i + c]) > 1e-3f * scale) {
+                ++differing;
+                break;
+            }
+        }
+    }
+    const double pixels = double(cpu.size() / 4);
+    std::cout << "[ figures  ] CPU vs CUDA, Cornell 64x64 at 64 spp: " << differing << " of " << pixels
+              << " pixels differ by more than 1e-3 relative; largest deviation " << maxAbsDifference(cpu, gpu)
+              << "; image means " << sumCpu / pixels / 3 << " vs " << sumGpu / pixels / 3 << "\n";
+    EXPECT_LT(double(differing), 0.02 * pixels);
+    EXPECT_NEAR(sumGpu / sumCpu, 1.0, 2e-3);
+}
+
+// Independent samples (other seeds) on the GPU against the CPU: an unbiasedness check by a
+// z-test on 8x8 pixel blocks, with the variance taken from the spread of batch means.
+TEST(CudaBackend, BeautyAgreesWithTheCpuStatistically) {
+    PT_REQUIRE_CUDA_DEVICE();
+    Scene scene = cornell(64, 6);
+    constexpr uint32_t kBatches = 8, kSpp = 32, kBlock = 8, kBlocks = (64 / kBlock) * (64 / kBlock);
+    std::vector<std::vector<double>> cpuMeans(kBlocks), gpuMeans(kBlocks);
+    CpuBackend cpuBackend;
+    cuda::CudaBackend gpuBackend;
+    for (uint32_t batch = 0; batch < kBatches; ++batch) {
+        for (int backendIndex = 0; backendIndex < 2; ++backendIndex) {
+            scene.render.seed = backendIndex == 0 ? batch : 1000 + batch;
+            Backend& backend = backendIndex == 0 ? static_cast<Backend&>(cpuBackend) : gpuBackend;
+            const std::vector<float> image = renderWith(backend, scene, kSpp);
+            for (uint32_t b = 0; b < kBlocks; ++b) {
+                const uint32_t bx = (b % (64 / kBlock)) * kBlock, by = (b / (64 / kBlock)) * kBlock;
+                double sum = 0.0;
+                for (uint32_t y = by; y < by + kBlock; ++y) {
+                    for (uint32_t x = bx; x < bx + kBlock; ++x) {
+                        const float* p = &image[(size_t(y) * 64 + x) * 4];
+                        sum += p[0] + p[1] + p[2];
+                    }
+                }
+                (backendIndex == 0 ? cpuMeans : gpuMeans)[b].push_back(sum / (kBlock * kBlock * 3));
+            }
+        }
+    }
+    const auto meanVar = [](const std::vector<double>& v, double& mean, double& varOfMean) {
+        mean = 0.0;
+        for (double x : v) mean += x;
+        mean /= double(v.size());
+        double var = 0.0;
+        for (double x : v) var += (x - mean) * (x - mean);
+        varOfMean = var / double(v.size() - 1) / double(v.size());
+    };
+    uint32_t outliers = 0;
+    double worstZ = 0.0;
+    for (uint32_t b = 0; b < kBlocks; ++b) {
+        double mc, vc, mg, vg;
+        meanVar(cpuMeans[b], mc, vc);
+        meanVar(gpuMeans[b], mg, vg);
+        const double z = (mg - mc) / std::sqrt(vc + vg + 1e-12);
+        worstZ = std::max(worstZ, std::fabs(z));
+        outliers += std::fabs(z) > 4.0;
+    }
+    std::cout << "[ figures  ] block z-test, CPU vs CUDA (independent seeds): largest |z| " << worstZ << ", "
+              << outliers << " of " << kBlocks << " blocks over 4\n";
+    // A t-distribution with 14 degrees of freedom puts about 0.1% of blocks past |z| = 4.
+    EXPECT_LE(outliers, 1u);
+}
+
+// Scheduling toggles change the order of work, never a path's arithmetic: images stay equal.
+TEST(CudaBackend, SchedulingTogglesLeaveTheImageUnchanged) {
+    PT_REQUIRE_CUDA_DEVICE();
+    const Scene scene = cornell(64);
+    cuda::CudaBackend backend;
+    IntegratorToggles base;
+    base.megakernel = false;   // the wavefront, whose scheduling the toggles change
+    base.pixelJitter = false;  // so that the first-hit cache applies
+    base.firstHitCache = false;
+    const std::vector<float> reference = renderWith(backend, scene, 16, base, 2);
+    struct Variant {
+        const char* name;
+        IntegratorToggles toggles;
+    };
+    std::vector<Variant> variants;
+    IntegratorToggles t = base;
+    t.megakernel = true;
+    variants.push_back({"megakernel", t});
+    t = base;
+    t.streamCompaction = false;
+    variants.push_back({"no compaction", t});
+    t = base;
+    t.materialSort = true;
+    variants.push_back({"material sort", t});
+    t = base;
+    t.materialSort = true;
+    t.streamCompaction = false;
+    variants.push_back({"material sort without compaction", t});
+    t = base;
+    t.firstHitCache = true;
+    variants.push_back({"first-hit cache", t});
+    for (const Variant& v : variants) {
+        const std::vector<float> image = renderWith(backend, scene, 16, v.toggles, 2);
+        const float worst = maxAbsDifference(reference, image);
+        std::cout << "[ figures  ] " << v.name << ": largest deviation from the default " << worst << "\n";
+        EXPECT_LE(worst, 1e-5f) << v.name;
+    }
+    // The first-hit cache must actually be used once it applies.
+    IntegratorToggles cached = base;
+    cached.firstHitCache = true;
+    backend.setToggles(cached);
+    for (const ToggleState& s : backend.toggleStates()) {
+        if (s.name == "first_hit_cache") {
+            EXPECT_TRUE(s.active) << s.note;
+        }
+    }
+    backend.render(4);
+    backend.render(4);
+    const uint64_t raysCached = backend.stats().rays;
+    backend.setToggles(base);
+    backend.render(4);
+    backend.render(4);
+    EXPECT_LT(raysCached, backend.stats().rays) << "a cached first hit traces fewer rays";
+}
+
+TEST(CudaBackend, RussianRouletteKeepsTheMean) {
+    PT_REQUIRE_CUDA_DEVICE();
+    const Scene scene = cornell(32);
+    cuda::CudaBackend backend;
+    IntegratorToggles noRoulette;
+    noRoulette.russianRoulette = false;
+    const std::vector<float> with = renderWith(backend, scene, 1024);
+    const std::vector<float> without = renderWith(backend, scene, 1024, noRoulette);
+    double a = 0.0, b = 0.0;
+    for (size_t i = 0; i < with.size(); i += 4) {
+        a += with[i] + with[i + 1] + with[i + 2];
+        b += without[i] + without[i + 1] + without[i + 2];
+    }
+    EXPECT_NEAR(a / b, 1.0, 0.01);
+}
+
+TEST(CudaBackend, RefitTracesLikeARebuild) {
+    PT_REQUIRE_CUDA_DEVICE();
+    Scene scene = bumpyGridScene(200, 1);
+    cuda::CudaBackend refitted;
+    IntegratorToggles neverRebuild;
+    neverRebuild.rebuildSahRatio = 1e9f;
+    refitted.setToggles(neverRebuild);
+    refitted.sync(scene, SceneChanges::All, {});
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> jitter(-0.02f, 0.02f);
+    for (Vec3& p : scene.meshes[0].positions) p += Vec3(jitter(rng), 4.0f * jitter(rng), jitter(rng));
+    const SyncReport report = refitted.sync(scene, SceneChanges::Geometry, {});
+    EXPECT_EQ(report.action, "refit");
+    EXPECT_GE(refitted.blasSahCost(0), refitted.blasBuiltSahCost(0) * 0.99f);
+
+    cuda::CudaBackend rebuilt;
+    rebuilt.sync(scene, SceneChanges::All, {});
+    CpuBackend cpu;
+    cpu.sync(scene, SceneChanges::All, {});
+    const std::vector<Ray> rays = randomRays(200000, 3);
+    std::vector<Hit> a, b, c;
+    refitted.traceRays(rays, false, 1, &a);
+    rebuilt.traceRays(rays, false, 1, &b);
+    cpu.traceRays(rays, false, 1, &c);
+    expectSameHits(b, a, "refit vs rebuild");
+    expectSameHits(c, a, "refit vs CPU");
+}
+
+TEST(CudaBackend, DegradedRefitRebuildsOnTheGpu) {
+    PT_REQUIRE_CUDA_DEVICE();
+    Scene scene = bumpyGridScene(100, 2);
+    cuda::CudaBackend backend;
+    backend.sync(scene, SceneChanges::All, {});
+    // Shuffle vertices across the grid: boxes of the old tree now span the whole mesh.
+    std::mt19937 rng(9);
+    std::shuffle(scene.meshes[0].positions.begin(), scene.meshes[0].positions.end(), rng);
+    const SyncReport report = backend.sync(scene, SceneChanges::Geometry, {});
+    EXPECT_EQ(report.action, "rebuild");
+    EXPECT_LE(backend.blasSahCost(0), backend.blasBuiltSahCost(0) * 1.0001f);
+    CpuBackend cpu;
+    cpu.sync(scene, SceneChanges::All, {});
+    const std::vector<Ray> rays = randomRays(100000, 4);
+    std::vector<Hit> a, b;
+    backend.traceRays(rays, false, 1, &a);
+    cpu.traceRays(rays, false, 1, &b);
+    // Exact t and barycentrics; ties between coincident triangles may pick either, so compare
+    // the distance only.
+    size_t mismatches = 0;
+    for (size_t i = 0; i < a.size(); ++i) mismatches += a[i].instance != b[i].instance || a[i].t != b[i].t;
+    EXPECT_EQ(mismatches, 0u);
+}
+
+TEST(CudaBackend, SyncDoesTheLeastWorkAnEditNeeds) {
+    PT_REQUIRE_CUDA_DEVICE();
+    Scene scene = bumpyGridScene(20, 3);
+    cuda::CudaBackend backend;
+    EXPECT_EQ(backend.sync(scene, SceneChanges::All, {}).action, "full build");
+    scene.materials[0].params.roughness = 0.9f;
+    EXPECT_EQ(backend.sync(scene, SceneChanges::Materials, {}).action, "materials");
+    scene.instances[1].objectToWorld = trs({0.5f, 0.0f, 0.0f}).toAffine();
+    EXPECT_EQ(backend.sync(scene, SceneChanges::Transforms, {}).action, "TLAS");
+    scene.camera.position.x += 0.1f;
+    EXPECT_EQ(backend.sync(scene, SceneChanges::Camera, {}).action, "reset");
+    backend.render(2);
+    EXPECT_EQ(backend.sync(scene, SceneChanges::Display, {}).action, "nothing");
+    EXPECT_EQ(backend.stats().samplesPerPixel, 2u) << "a display change keeps the accumulation";
+    // Moving an instance must move what the rays see, exactly as a fresh build does.
+    cuda::CudaBackend fresh;
+    fresh.sync(scene, SceneChanges::All, {});
+    const std::vector<Ray> rays = randomRays(50000, 5);
+    std::vector<Hit> a, b;
+    backend.traceRays(rays, false, 1, &a);
+    fresh.traceRays(rays, false, 1, &b);
+    expectSameHits(b, a, "TLAS rebuild vs fresh build");
+}
+
+TEST(CudaBackend, AMillionSamplesOfAConstantStayThatConstant) {
+    PT_REQUIRE_CUDA_DEVICE();
+    Scene scene;
+    scene.render = {16, 16, 4, 1, 0};
+    scene.environment.color = {0.7f, 0.3f, 0.1f};
+    cuda::CudaBackend backend;
+    const std::vector<float> image = renderWith(backend, scene, 1000000);
+    for (size_t i = 0; i < image.size(); i += 4) {
+        ASSERT_NEAR(image[i + 0], 0.7f, 0.7f * 1e-6f) << "pixel " << i / 4;
+        ASSERT_NEAR(image[i + 1], 0.3f, 0.3f * 1e-6f) << "pixel " << i / 4;
+        ASSERT_NEAR(image[i + 2], 0.1f, 0.1f * 1e-6f) << "pixel " << i / 4;
+    }
+}
+
+TEST(CudaBackend, BruteForceFindsTheSameHits) {
+    PT_REQUIRE_CUDA_DEVICE();
+    const Scene scene = bumpyGridScene(60, 4);
+    cuda::CudaBackend bvh, brute;
+    IntegratorToggles off;
+    off.bruteForce = true;
+    brute.setToggles(off);
+    bvh.sync(scene, SceneChanges::All, {});
+    brute.sync(scene, SceneChanges::All, {});
+    const std::vector<Ray> rays = randomRays(20000, 6);
+    std::vector<Hit> a, b;
+    bvh.traceRays(rays, false, 1, &a);
+    brute.traceRays(rays, false, 1, &b);
+    expectSameHits(b, a, "BVH vs brute force");
+}
+
+TEST(CudaBackend, ReportsWhyTheFirstHitCacheCannotApply) {
+    PT_REQUIRE_CUDA_DEVICE();
+    cuda::CudaBackend backend;
+    IntegratorToggles wavefront;
+    wavefront.megakernel = false;
+    backend.setToggles(wavefront);
+    backend.sync(cornell(16), SceneChanges::All, {});
+    for (const ToggleState& s : backend.toggleStates()) {
+        if (s.name != "first_hit_cache") continue;
+        EXPECT_TRUE(s.requested);
+        EXPECT_FALSE(s.active);
+        EXPECT_NE(s.note.find("jitter"), std::string::npos) << s.note;
+    }
+}
+
+}  // namespace
+}  // namespace pt

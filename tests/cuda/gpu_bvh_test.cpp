@@ -1,0 +1,495 @@
+// The CUDA backend's BVH work (render/backend/cuda/gpu_bvh.h), checked on the host against
+// downloaded results: LBVH structure and closest hits against brute force, refit of CPU-built
+// and LBVH trees after the vertices moved, SAH cost against sah_cost.h, primitive and instance
+// boxes bit for bit against the CPU scene compiler's; and the speed of build and refit.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+#include "cuda/cuda_test_support.h"
+#include "cuda/gpu_bvh_test_util.h"
+#include "render/bvh/bvh_walk.h"
+#include "render/bvh/sah_cost.h"
+
+namespace pt {
+namespace {
+
+using cuda::DeviceBuffer;
+using test::Rng;
+using test::SoupKind;
+using test::TestStream;
+
+// ---- LBVH structure ---------------------------------------------------------------------------
+
+// Every promise of gpu_bvh.h's LbvhBuilder::build, for a tree of `boxes`.
+void expectValidLbvh(const Bvh& bvh, const std::vector<Aabb>& boxes) {
+    const uint32_t n = uint32_t(boxes.size());
+    ASSERT_EQ(bvh.nodes.size(), cuda::lbvhNodeCount(n));
+    ASSERT_EQ(bvh.primIndices.size(), n);
+    if (n == 0) {
+        EXPECT_EQ(bvh.nodes[0].count, 0u);
+        EXPECT_TRUE(bvh.nodes[0].lo == Vec3(kInf) && bvh.nodes[0].hi == Vec3(-kInf)) << "empty root box";
+        return;
+    }
+    std::vector<uint32_t> seenPrim(n, 0), seenNode(bvh.nodes.size(), 0);
+    std::vector<std::pair<uint32_t, uint32_t>> stack{{0u, 0u}};  // (node, depth)
+    uint32_t maxDepth = 0;
+    int boxFailures = 0;
+    while (!stack.empty()) {
+        const auto [index, depth] = stack.back();
+        stack.pop_back();
+        ASSERT_LT(index, bvh.nodes.size());
+        ASSERT_EQ(seenNode[index]++, 0u) << "node " << index << " reached twice";
+        maxDepth = std::max(maxDepth, depth);
+        const BvhNode& node = bvh.nodes[index];
+        Aabb exact;
+        if (node.isLeaf()) {
+            ASSERT_EQ(node.count, 1u) << "LBVH leaves hold one primitive";
+            ASSERT_LT(node.leftOrFirst, n);
+            const uint32_t prim = bvh.primIndices[node.leftOrFirst];
+            ASSERT_LT(prim, n);
+            ++seenPrim[prim];
+            exact = boxes[prim];
+        } else {
+            ASSERT_LT(node.leftOrFirst + 1, bvh.nodes.size());
+            for (uint32_t c = 0; c < 2; ++c) {
+                exact.grow(test::boxOf(bvh.nodes[node.leftOrFirst + c]));
+                stack.push_back({node.leftOrFirst + c, depth + 1});
+            }
+        }
+        if (!test::sameBox(node, exact) && ++boxFailures <= 5) {
+            ADD_FAILURE() << "node " << index << (node.isLeaf() ? " (leaf)" : "")
+                          << ": box is not the exact union of its children / primitive";
+        }
+    }
+    EXPECT_EQ(boxFailures, 0);
+    for (uint32_t p = 0; p < n; ++p) ASSERT_EQ(seenPrim[p], 1u) << "primitive " << p;
+    for (size_t i = 0; i < seenNode.size(); ++i) ASSERT_EQ(seenNode[i], 1u) << "unreachable node " << i;
+    EXPECT_LE(maxDepth, 62u);
+    EXPECT_LT(maxDepth, kBvhStackSize);
+    Aabb all;
+    for (const Aabb& b : boxes) all.grow(b);
+    EXPECT_TRUE(test::sameBox(bvh.nodes[0], all)) << "root box is not the union of all boxes";
+}
+
+struct SoupSize {
+    uint32_t triangles, rays;
+};
+
+std::vector<Aabb> soupBoxes(SoupKind kind, uint32_t count, Rng& rng) {
+    return test::triangleBounds(test::makeSoup(kind, count, rng));
+}
+
+TEST(GpuBvh, LbvhIsValidForEverySize) {
+    PT_REQUIRE_CUDA_DEVICE();
+    TestStream s;
+    Rng rng(101);
+    cuda::LbvhBuilder builder;  // one builder throughout: its scratch grows, shrinks back and is reused
+    for (uint32_t n : {1000u, 0u, 1u, 2u, 3u, 100000u, 5u, 1000u, 17u}) {
+        for (SoupKind kind : {SoupKind::Uniform, SoupKind::Clustered, SoupKind::Needles}) {
+            SCOPED_TRACE(std::to_string(n) + " " + test::soupName(kind));
+            const std::vector<Aabb> boxes = soupBoxes(kind, n, rng);
+            expectValidLbvh(test::buildLbvhOnDevice(builder, boxes, s), boxes);
+        }
+    }
+}
+
+// Coincident centres: the index half of the keys must keep them unique and the depth bounded.
+TEST(GpuBvh, LbvhIsValidForDuplicateCentroids) {
+    PT_REQUIRE_CUDA_DEVICE();
+    TestStream s;
+    Rng rng(102);
+    cuda::LbvhBuilder builder;
+    {
+        SCOPED_TRACE("all primitives at one point");
+        const Vec3 p = rng.inBox(Vec3(-1.0f), Vec3(1.0f));
+        const std::vector<Aabb> boxes(50000, Aabb{p, p});
+        const Bvh bvh = test::buildLbvhOnDevice(builder, boxes, s);
+        expectValidLbvh(bvh, boxes);
+    }
+    {
+        SCOPED_TRACE("boxes of many sizes about one centre");
+        const std::vector<Aabb> boxes = soupBoxes(SoupKind::CoincidentCentroids, 20000, rng);
+        expectValidLbvh(test::buildLbvhOnDevice(builder, boxes, s), boxes);
+    }
+    {
+        SCOPED_TRACE("centres on a 3x3x3 grid, in a plane, and on a line");
+        std::vector<Aabb> grid, plane, line;
+        for (int i = 0; i < 30000; ++i) {
+            const Vec3 c{float(rng.index(3)), float(rng.index(3)), float(rng.index(3))};
+            const Vec3 half = rng.inBox(Vec3(0.0f), Vec3(0.5f));
+            grid.push_back(Aabb{c - half, c + half});
+            const Vec3 q{rng.uniform(-1, 1), rng.uniform(-1, 1), 0.25f};
+            plane.push_back(Aabb{q - half, q + half});
+            const Vec3 r{rng.uniform(-1, 1), 0.0f, 0.0f};
+            line.push_back(Aabb{r, r});
+        }
+        expectValidLbvh(test::buildLbvhOnDevice(builder, grid, s), grid);
+        expectValidLbvh(test::buildLbvhOnDevice(builder, plane, s), plane);
+        expectValidLbvh(test::buildLbvhOnDevice(builder, line, s), line);
+    }
+}
+
+TEST(GpuBvh, LbvhClosestHitsMatchBruteForce) {
+    PT_REQUIRE_CUDA_DEVICE();
+    TestStream s;
+    Rng rng(103);
+    cuda::LbvhBuilder builder;
+    for (SoupKind kind :
+         {SoupKind::Uniform, SoupKind::Clustered, SoupKind::Needles, SoupKind::CoincidentCentroids}) {
+        for (const SoupSize& size : {SoupSize{2, 2000}, {3, 2000}, {2000, 20000}, {20000, 2000}}) {
+            const auto [triangles, rays] = size;
+            SCOPED_TRACE(std::to_string(triangles) + " " + test::soupName(kind));
+            const Mesh mesh = test::makeSoup(kind, triangles, rng);
+            Bvh lbvh = test::buildLbvhOnDevice(builder, test::triangleBounds(mesh), s);
+            EXPECT_EQ(test::compareClosestHits(mesh, std::move(lbvh), rays, rng), 0);
+        }
+    }
+}
+
+// ---- refit ------------------------------------------------------------------------------------
+
+// A triangle mesh on the device, as the backend holds one: global arrays and one BlasRef.
+struct DeviceMesh {
+    DeviceBuffer<Vec3> positions;
+    DeviceBuffer<TriangleIndices> triangles;
+    BlasRef blas{};
+
+    explicit DeviceMesh(const Mesh& mesh, cudaStream_t stream) {
+        positions.upload(mesh.positions, stream);
+        triangles.upload(test::triangleIndices(mesh), stream);
+        blas.kind = GeometryKind::Triangles;
+        blas.primitiveCount = uint32_t(triangles.size());
+    }
+    RenderScene view() const {
+        RenderScene scene;
+        scene.positions = positions.span();
+        scene.triangles = triangles.span();
+        return scene;
+    }
+};
+
+// Moves every vertex by up to `amount` per axis (the soups' triangles share no vertices).
+Mesh perturbed(Mesh mesh, float amount, Rng& rng) {
+    for (Vec3& p : mesh.positions) p += rng.inBox(Vec3(-amount), Vec3(amount));
+    return mesh;
+}
+
+// Uploads `tree` (built for `mesh`), moves the vertices on the device, computes the primitive
+// boxes there, refits, and downloads the refitted tree. Checks the parent table on the way.
+Bvh refitOnDevice(const Bvh& tree, const Mesh& moved, const TestStream& s) {
+    DeviceMesh mesh(moved, s.stream);
+    DeviceBuffer<BvhNode> nodes;
+    DeviceBuffer<uint32_t> primIndices, parents(tree.nodes.size()), visits(tree.nodes.size());
+    nodes.upload(tree.nodes, s.stream);
+    primIndices.upload(tree.primIndices, s.stream);
+    DeviceBuffer<Aabb> primBoxes(mesh.blas.primitiveCount);
+    cuda::computePrimitiveBoxes(mesh.view(), mesh.blas, primBoxes.data(), s.stream);
+    const uint32_t nodeCount = uint32_t(tree.nodes.size());
+    cuda::computeParents(nodes.data(), nodeCount, parents.data(), s.stream);
+    cuda::refitBvh(nodes.data(), nodeCount, parents.data(), primIndices.data(), primBoxes.data(),
+                   visits.data(), s.stream);
+    s.sync();
+    const std::vector<uint32_t> parent = parents.download();
+    EXPECT_EQ(parent[0], ~0u);
+    for (uint32_t i = 0; i < nodeCount && nodeCount > 1; ++i) {
+        const BvhNode& node = tree.nodes[i];
+        if (node.isLeaf()) continue;
+        EXPECT_EQ(parent[node.leftOrFirst], i);
+        EXPECT_EQ(parent[node.leftOrFirst + 1], i);
+    }
+    Bvh refitted;
+    nodes.download(refitted.nodes);
+    refitted.primIndices = tree.primIndices;
+    return refitted;
+}
+
+// The refitted tree keeps the topology and holds exactly the boxes a from-scratch computation
+// over the moved geometry gives; closest hits through it equal brute force.
+void expectRefitExact(const Bvh& tree, const Mesh& moved, uint32_t rays, Rng& rng, const TestStream& s) {
+    const Bvh refitted = refitOnDevice(tree, moved, s);
+    const std::vector<Aabb> exact = test::exactNodeBoxes(tree, test::triangleBounds(moved));
+    ASSERT_EQ(refitted.nodes.size(), tree.nodes.size());
+    int failures = 0;
+    for (size_t i = 0; i < tree.nodes.size(); ++i) {
+        const BvhNode &before = tree.nodes[i], &after = refitted.nodes[i];
+        const bool ok = before.leftOrFirst == after.leftOrFirst && before.count == after.count &&
+                        test::sameBox(after, exact[i]);
+        if (!ok && ++failures <= 5) ADD_FAILURE() << "node " << i << " differs from the exact refit";
+    }
+    EXPECT_EQ(failures, 0);
+    if (rays > 0) {
+        EXPECT_EQ(test::compareClosestHits(moved, refitted, rays, rng), 0);
+    }
+}
+
+TEST(GpuBvh, RefitOfCpuBuiltTreeIsExact) {
+    PT_REQUIRE_CUDA_DEVICE();
+    TestStream s;
+    Rng rng(104);
+    for (SoupKind kind : {SoupKind::Uniform, SoupKind::Clustered, SoupKind::Needles}) {
+        for (const SoupSize& size : {SoupSize{1, 0}, {3, 500}, {5, 500}, {1000, 5000}, {100000, 1000}}) {
+            const auto [triangles, rays] = size;
+            SCOPED_TRACE(std::to_string(triangles) + " " + test::soupName(kind));
+            const Mesh mesh = test::makeSoup(kind, triangles, rng);
+            const std::vector<Aabb> boxes = test::triangleBounds(mesh);
+            const Bvh tree = buildBinnedSahBvh(boxes.data(), uint32_t(boxes.size()));
+            expectRefitExact(tree, perturbed(mesh, 0.3f, rng), rays, rng, s);
+        }
+    }
+}
+
+TEST(GpuBvh, RefitOfLbvhIsExact) {
+    PT_REQUIRE_CUDA_DEVICE();
+    TestStream s;
+    Rng rng(105);
+    cuda::LbvhBuilder builder;
+    for (uint32_t triangles : {2u, 1000u, 100000u}) {
+        SCOPED_TRACE(triangles);
+        const Mesh mesh = test::makeSoup(SoupKind::Uniform, triangles, rng);
+        const Bvh tree = test::buildLbvhOnDevice(builder, test::triangleBounds(mesh), s);
+        expectRefitExact(tree, perturbed(mesh, 0.5f, rng), 2000, rng, s);
+    }
+}
+
+TEST(GpuBvh, RefitLeavesAnEmptyTreeEmpty) {
+    PT_REQUIRE_CUDA_DEVICE();
+    TestStream s;
+    const Bvh empty = buildBinnedSahBvh(nullptr, 0);
+    DeviceBuffer<BvhNode> nodes;
+    nodes.upload(empty.nodes, s.stream);
+    DeviceBuffer<uint32_t> parents(1), visits(1);
+    cuda::computeParents(nodes.data(), 1, parents.data(), s.stream);
+    cuda::refitBvh(nodes.data(), 1, parents.data(), nullptr, nullptr, visits.data(), s.stream);
+    s.sync();
+    const std::vector<BvhNode> after = nodes.download();
+    EXPECT_EQ(std::memcmp(&after[0], &empty.nodes[0], sizeof(BvhNode)), 0);
+    EXPECT_EQ(parents.download()[0], ~0u);
+}
+
+// ---- SAH cost ---------------------------------------------------------------------------------
+
+void expectSahAgrees(const Bvh& bvh, const TestStream& s) {
+    DeviceBuffer<BvhNode> nodes;
+    nodes.upload(bvh.nodes, s.stream);
+    const float device = cuda::sahCostOnDevice(nodes.data(), uint32_t(bvh.nodes.size()), s.stream);
+    const float host = sahCost(bvh);
+    EXPECT_NEAR(device, host, 1e-4f * host) << "device " << device << ", host " << host;
+}
+
+TEST(GpuBvh, SahCostMatchesHost) {
+    PT_REQUIRE_CUDA_DEVICE();
+    TestStream s;
+    Rng rng(106);
+    cuda::LbvhBuilder builder;
+    for (SoupKind kind :
+         {SoupKind::Uniform, SoupKind::Clustered, SoupKind::Needles, SoupKind::CoincidentCentroids}) {
+        for (uint32_t n : {0u, 1u, 2u, 3u, 1000u, 100000u}) {
+            SCOPED_TRACE(std::to_string(n) + " " + test::soupName(kind));
+            const std::vector<Aabb> boxes = soupBoxes(kind, n, rng);
+            expectSahAgrees(buildBinnedSahBvh(boxes.data(), n), s);
+            expectSahAgrees(test::buildLbvhOnDevice(builder, boxes, s), s);
+        }
+    }
+    // A root of zero area: every node counts as if it had the root's area.
+    for (uint32_t n : {1u, 7u, 5000u}) {
+        const Vec3 p{0.5f, -0.25f, 2.0f};
+        const std::vector<Aabb> point(n, Aabb{p, p});
+        expectSahAgrees(buildBinnedSahBvh(point.data(), n), s);
+        expectSahAgrees(test::buildLbvhOnDevice(builder, point, s), s);
+    }
+    EXPECT_EQ(cuda::sahCostOnDevice(nullptr, 0, s.stream), 0.0f);
+}
+
+// LBVH quality against the binned SAH builder: reported, and bounded loosely (an LBVH of
+// one-primitive leaves is typically 1.2-2x the binned builder's cost).
+TEST(GpuBvh, LbvhSahCostAgainstBinnedBuilder) {
+    PT_REQUIRE_CUDA_DEVICE();
+    TestStream s;
+    Rng rng(107);
+    cuda::LbvhBuilder builder;
+    const std::pair<const char*, Mesh> meshes[] = {
+        {"random100k", test::makeSoup(SoupKind::Uniform, 100000, rng)},
+        {"icosphere82k", test::makeIcosphere(6)}};
+    for (const auto& [name, mesh] : meshes) {
+        const std::vector<Aabb> boxes = test::triangleBounds(mesh);
+        const Bvh binned = buildBinnedSahBvh(boxes.data(), uint32_t(boxes.size()));
+        const Bvh lbvh = test::buildLbvhOnDevice(builder, boxes, s);
+        const float ratio = sahCost(lbvh) / sahCost(binned);
+        std::cout << "[ sah      ] " << name << " (" << boxes.size() << " triangles): LBVH " << sahCost(lbvh)
+                  << ", binned SAH " << sahCost(binned) << ", ratio " << ratio << "\n";
+        ::testing::Test::RecordProperty(std::string("lbvh_sah_ratio_") + name, std::to_string(ratio));
+        EXPECT_GT(ratio, 0.8f);
+        EXPECT_LT(ratio, 3.0f);
+    }
+}
+
+// ---- primitive and instance boxes --------------------------------------------------------------
+
+// Meshes of both kinds at non-zero primitive offsets, and instances of each under random
+// rotations, scales (some mirrored) and far translations.
+CompiledScene makeInstancedScene(Rng& rng) {
+    std::vector<Mesh> meshes;
+    meshes.push_back(test::makeSoup(SoupKind::Clustered, 300, rng));
+    std::vector<Vec4> spheres;
+    for (int i = 0; i < 100; ++i) {
+        const Vec3 c = rng.inBox(Vec3(-2.0f), Vec3(2.0f));
+        spheres.push_back({c.x, c.y, c.z, rng.uniform(0.01f, 0.3f)});
+    }
+    meshes.push_back(test::makeSphereMesh(spheres));
+    meshes.push_back(test::makeSoup(SoupKind::Needles, 500, rng));
+    meshes.push_back(test::makeIcosphere(2));
+    std::vector<test::InstanceSpec> specs;
+    for (uint32_t i = 0; i < 300; ++i) {
+        Vec3 scale = rng.inBox(Vec3(0.1f), Vec3(3.0f));
+        if (i % 3 == 0) scale.y = -scale.y;
+        const Vec3 axis = rng.unitVector();
+        const float half = rng.uniform(0.0f, kPi), sinHalf = std::sin(half);
+        const Vec4 rotation{axis.x * sinHalf, axis.y * sinHalf, axis.z * sinHalf, std::cos(half)};
+        const float reach = i % 2 ? 10.0f : 5000.0f;
+        const Affine3 toWorld = translationTransform(rng.inBox(Vec3(-reach), Vec3(reach))) *
+                                rotationTransform(rotation) * scaleTransform(scale);
+        specs.push_back({i % 4, toWorld});
+    }
+    return test::compileTestScene(std::move(meshes), specs);
+}
+
+TEST(GpuBvh, PrimitiveBoxesMatchTheSceneCompiler) {
+    PT_REQUIRE_CUDA_DEVICE();
+    TestStream s;
+    Rng rng(108);
+    const CompiledScene compiled = makeInstancedScene(rng);
+    DeviceBuffer<Vec3> positions;
+    DeviceBuffer<TriangleIndices> triangles;
+    DeviceBuffer<Vec4> spheres;
+    positions.upload(compiled.positions, s.stream);
+    triangles.upload(compiled.triangles, s.stream);
+    spheres.upload(compiled.spheres, s.stream);
+    RenderScene device;
+    device.positions = positions.span();
+    device.triangles = triangles.span();
+    device.spheres = spheres.span();
+    for (const BlasRef& blas : compiled.blases) {
+        DeviceBuffer<Aabb> boxes(blas.primitiveCount);
+        cuda::computePrimitiveBoxes(device, blas, boxes.data(), s.stream);
+        s.sync();
+        const std::vector<Aabb> got = boxes.download();
+        Aabb all;
+        for (uint32_t p = 0; p < blas.primitiveCount; ++p) {
+            Aabb want;  // compile_geometry.cpp's primitiveBounds
+            if (blas.kind == GeometryKind::Spheres) {
+                const Vec4 sphere = compiled.spheres[blas.primitiveOffset + p];
+                want.grow(sphere.xyz() - Vec3(sphere.w));
+                want.grow(sphere.xyz() + Vec3(sphere.w));
+            } else {
+                const TriangleIndices t = compiled.triangles[blas.primitiveOffset + p];
+                for (uint32_t v : {t.v0, t.v1, t.v2}) want.grow(compiled.positions[v]);
+            }
+            ASSERT_TRUE(test::sameBits(got[p], want)) << "primitive " << p;
+            all.grow(got[p]);
+        }
+        EXPECT_TRUE(test::sameBox(compiled.blasNodes[blas.nodeOffset], all)) << "BLAS root of the CPU build";
+    }
+}
+
+TEST(GpuBvh, InstanceBoxesMatchTheSceneCompilerBitForBit) {
+    PT_REQUIRE_CUDA_DEVICE();
+    TestStream s;
+    Rng rng(109);
+    const CompiledScene compiled = makeInstancedScene(rng);
+    ASSERT_EQ(compiled.instances.size(), 300u);
+    DeviceBuffer<RenderInstance> instances;
+    DeviceBuffer<BlasRef> blases;
+    DeviceBuffer<BvhNode> blasNodes;
+    instances.upload(compiled.instances, s.stream);
+    blases.upload(compiled.blases, s.stream);
+    blasNodes.upload(compiled.blasNodes, s.stream);
+    DeviceBuffer<Aabb> boxes(instances.size());
+    cuda::computeInstanceBoxes(instances.data(), uint32_t(instances.size()), blases.data(), blasNodes.data(),
+                               boxes.data(), s.stream);
+    s.sync();
+    const std::vector<Aabb> got = boxes.download();
+    Aabb all;
+    for (size_t i = 0; i < got.size(); ++i) {
+        const RenderInstance& inst = compiled.instances[i];
+        const Aabb want =
+            instanceBounds(compiled.blasNodes[compiled.blases[inst.blas].nodeOffset], inst.objectToWorld);
+        ASSERT_TRUE(test::sameBits(got[i], want)) << "instance " << i;
+        all.grow(want);
+    }
+    // The scene compiler's TLAS was built over the same boxes.
+    EXPECT_TRUE(test::sameBox(compiled.tlasNodes[0], all)) << "TLAS root of the CPU build";
+}
+
+// ---- speed ------------------------------------------------------------------------------------
+
+// Median of `runs` timings (ms, CUDA events on the stream) of `work`, after two warm-up runs.
+template <class Work>
+float medianMilliseconds(const TestStream& s, int runs, Work&& work) {
+    cudaEvent_t start, stop;
+    PT_CUDA_CHECK(cudaEventCreate(&start));
+    PT_CUDA_CHECK(cudaEventCreate(&stop));
+    for (int i = 0; i < 2; ++i) work();
+    std::vector<float> times;
+    for (int i = 0; i < runs; ++i) {
+        PT_CUDA_CHECK(cudaEventRecord(start, s.stream));
+        work();
+        PT_CUDA_CHECK(cudaEventRecord(stop, s.stream));
+        PT_CUDA_CHECK(cudaEventSynchronize(stop));
+        float ms = 0.0f;
+        PT_CUDA_CHECK(cudaEventElapsedTime(&ms, start, stop));
+        times.push_back(ms);
+    }
+    PT_CUDA_CHECK(cudaEventDestroy(start));
+    PT_CUDA_CHECK(cudaEventDestroy(stop));
+    std::sort(times.begin(), times.end());
+    return runs % 2 ? times[runs / 2] : 0.5f * (times[runs / 2 - 1] + times[runs / 2]);
+}
+
+// Reports build and refit times of one million random triangles; asserts only that the
+// results are sound (the structure tests above check them in detail).
+TEST(GpuBvh, BuildAndRefitSpeedOfOneMillionTriangles) {
+    PT_REQUIRE_CUDA_DEVICE();
+    TestStream s;
+    Rng rng(110);
+    const Mesh mesh = test::makeSoup(SoupKind::Uniform, 1u << 20, rng);
+    DeviceMesh device(mesh, s.stream);
+    const uint32_t n = device.blas.primitiveCount, nodeCount = cuda::lbvhNodeCount(n);
+    DeviceBuffer<Aabb> boxes(n);
+    DeviceBuffer<BvhNode> nodes(nodeCount);
+    DeviceBuffer<uint32_t> primIndices(n), parents(nodeCount), visits(nodeCount);
+    cuda::LbvhBuilder builder;
+    const float boxMs = medianMilliseconds(
+        s, 10, [&] { cuda::computePrimitiveBoxes(device.view(), device.blas, boxes.data(), s.stream); });
+    const float buildMs = medianMilliseconds(
+        s, 10, [&] { builder.build(boxes.data(), n, nodes.data(), primIndices.data(), s.stream); });
+    cuda::computeParents(nodes.data(), nodeCount, parents.data(), s.stream);
+    const float refitMs = medianMilliseconds(s, 10, [&] {
+        cuda::refitBvh(nodes.data(), nodeCount, parents.data(), primIndices.data(), boxes.data(),
+                       visits.data(), s.stream);
+    });
+    const float sahLbvh = cuda::sahCostOnDevice(nodes.data(), nodeCount, s.stream);
+    const auto hostStart = std::chrono::steady_clock::now();
+    const std::vector<Aabb> hostBoxes = test::triangleBounds(mesh);
+    const Bvh binned = buildBinnedSahBvh(hostBoxes.data(), n);
+    const double binnedMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - hostStart).count();
+    std::printf(
+        "[ speed    ] %u triangles: primitive boxes %.3f ms, LBVH build %.3f ms (%.0f Mtris/s), refit %.3f "
+        "ms (median of 10); CPU binned SAH build %.1f ms; SAH LBVH %.2f, binned %.2f\n",
+        n, boxMs, buildMs, n / (buildMs * 1e3), refitMs, binnedMs, sahLbvh, sahCost(binned));
+    ::testing::Test::RecordProperty("lbvh_build_1m_ms", std::to_string(buildMs));
+    ::testing::Test::RecordProperty("refit_1m_ms", std::to_string(refitMs));
+    Bvh lbvh;
+    nodes.download(lbvh.nodes);
+    Aabb all;
+    for (const Aabb& b : hostBoxes) all.grow(b);
+    EXPECT_TRUE(test::sameBox(lbvh.nodes[0], all));
+    EXPECT_GT(sahLbvh, 0.0f);
+}
+
+}  // namespace
+}  // namespace pt

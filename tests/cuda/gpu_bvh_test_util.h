@@ -1,0 +1,143 @@
+#pragma once
+// Shared by the device BVH tests (gpu_bvh_test.cpp): running gpu_bvh.h's functions on host
+// input and downloading the results, the exact boxes a tree must hold, and a one-instance
+// host scene over any downloaded BLAS for the shared traversal.
+#include <cuda_runtime.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <vector>
+
+#include "render/backend/cuda/gpu_bvh.h"
+#include "render/bvh/binned_sah_builder.h"
+#include "render/bvh/bvh_test_util.h"
+#include "render/bvh/instance_bounds.h"
+
+namespace pt::test {
+
+// A stream of its own, so the functions under test are not only tried on the legacy default
+// stream, which would hide a missing stream argument.
+struct TestStream {
+    cudaStream_t stream = nullptr;
+    TestStream() { PT_CUDA_CHECK(cudaStreamCreateWithFlags(&stream, cudaStreamNonBlocking)); }
+    ~TestStream() { cudaStreamDestroy(stream); }
+    void sync() const { PT_CUDA_CHECK(cudaStreamSynchronize(stream)); }
+};
+
+inline bool sameBits(const Aabb& a, const Aabb& b) { return std::memcmp(&a, &b, sizeof(Aabb)) == 0; }
+inline bool sameBox(const BvhNode& node, const Aabb& box) { return node.lo == box.lo && node.hi == box.hi; }
+inline Aabb boxOf(const BvhNode& node) {
+    Aabb box;
+    box.lo = node.lo;
+    box.hi = node.hi;
+    return box;
+}
+
+// An LBVH of `boxes` built on the device with `builder`, downloaded.
+inline Bvh buildLbvhOnDevice(cuda::LbvhBuilder& builder, const std::vector<Aabb>& boxes,
+                             const TestStream& s) {
+    const uint32_t n = uint32_t(boxes.size());
+    cuda::DeviceBuffer<Aabb> deviceBoxes;
+    deviceBoxes.upload(boxes, s.stream);
+    cuda::DeviceBuffer<BvhNode> nodes(cuda::lbvhNodeCount(n));
+    cuda::DeviceBuffer<uint32_t> primIndices(n);
+    builder.build(deviceBoxes.data(), n, nodes.data(), primIndices.data(), s.stream);
+    s.sync();
+    Bvh bvh;
+    nodes.download(bvh.nodes);
+    primIndices.download(bvh.primIndices);
+    return bvh;
+}
+
+// The box every node of `bvh` must hold: the exact union of its primitives' boxes, computed
+// from scratch in post-order (node indices say nothing about the order: an LBVH's children
+// may precede their parent).
+inline std::vector<Aabb> exactNodeBoxes(const Bvh& bvh, const std::vector<Aabb>& primBoxes) {
+    std::vector<Aabb> exact(bvh.nodes.size());
+    if (bvh.primIndices.empty()) return exact;
+    std::vector<std::pair<uint32_t, bool>> stack{{0u, false}};  // (node, children done)
+    while (!stack.empty()) {
+        const auto [index, childrenDone] = stack.back();
+        stack.pop_back();
+        const BvhNode& node = bvh.nodes[index];
+        if (node.isLeaf()) {
+            for (uint32_t k = node.leftOrFirst; k < node.leftOrFirst + node.count; ++k) {
+                exact[index].grow(primBoxes[bvh.primIndices[k]]);
+            }
+        } else if (childrenDone) {
+            exact[index] = exact[node.leftOrFirst];
+            exact[index].grow(exact[node.leftOrFirst + 1]);
+        } else {
+            stack.push_back({index, true});
+            stack.push_back({node.leftOrFirst, false});
+            stack.push_back({node.leftOrFirst + 1, false});
+        }
+    }
+    return exact;
+}
+
+inline std::vector<TriangleIndices> triangleIndices(const Mesh& mesh) {
+    std::vector<TriangleIndices> triangles(mesh.indices.size() / 3);
+    for (size_t t = 0; t < triangles.size(); ++t) {
+        triangles[t] = {mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]};
+    }
+    return triangles;
+}
+
+// One triangle mesh, one identity instance, a TLAS of one leaf, and `blas` as its BLAS: the
+// host scene in which the shared traversal walks a downloaded device-built or refitted tree.
+struct OneMeshScene {
+    std::vector<Vec3> positions;
+    std::vector<TriangleIndices> triangles;
+    Bvh blas;
+    BlasRef blasRef{};
+    RenderInstance instance{};
+    BvhNode tlasRoot{};
+    uint32_t tlasIndex = 0;
+
+    OneMeshScene(const Mesh& mesh, Bvh tree)
+        : positions(mesh.positions), triangles(triangleIndices(mesh)), blas(std::move(tree)) {
+        blasRef.nodeCount = uint32_t(blas.nodes.size());
+        blasRef.primitiveCount = uint32_t(triangles.size());
+        blasRef.kind = GeometryKind::Triangles;
+        const Aabb box = instanceBounds(blas.nodes[0], instance.objectToWorld);
+        tlasRoot.lo = box.lo;
+        tlasRoot.hi = box.hi;
+        tlasRoot.leftOrFirst = 0;
+        tlasRoot.count = 1;
+    }
+    OneMeshScene(const OneMeshScene&) = delete;
+
+    RenderScene view() const {
+        RenderScene s;
+        s.positions = {positions.data(), uint32_t(positions.size())};
+        s.triangles = {triangles.data(), uint32_t(triangles.size())};
+        s.blases = {&blasRef, 1};
+        s.blasNodes = {blas.nodes.data(), uint32_t(blas.nodes.size())};
+        s.blasPrimIndices = {blas.primIndices.data(), uint32_t(blas.primIndices.size())};
+        s.instances = {&instance, 1};
+        s.tlasNodes = {&tlasRoot, 1};
+        s.tlasInstanceIndices = {&tlasIndex, 1};
+        return s;
+    }
+};
+
+// Closest hits through `tree` over `mesh` equal brute force for random rays (half aimed at
+// triangles); returns the number of failures (each also a gtest failure, capped).
+inline int compareClosestHits(const Mesh& mesh, Bvh tree, uint32_t rays, Rng& rng) {
+    const OneMeshScene scene(mesh, std::move(tree));
+    const RenderScene view = scene.view();
+    int failures = 0;
+    uint32_t hits = 0;
+    for (uint32_t i = 0; i < rays; ++i) {
+        Ray ray = i % 2 ? randomRay(rng, Vec3(-1.5f), Vec3(1.5f))
+                        : rayAtTriangle(rng, mesh, Vec3(-1.5f), Vec3(1.5f));
+        if (i % 5 == 4) ray.tMax = rng.uniform(0.0f, 2.0f);
+        hits += expectBvhMatchesBruteForce(view, ray, failures);
+    }
+    EXPECT_GT(hits, rays / 4) << "the rays should hit often enough to test something";
+    return failures;
+}
+
+}  // namespace pt::test
