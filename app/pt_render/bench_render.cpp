@@ -27,16 +27,23 @@ std::vector<Variant> variantsOf(const Backend& backend, const IntegratorToggles&
     const bool gpu = backend.name() != "cpu";
     if (gpu) {
         flip(base.megakernel ? "wavefront" : "megakernel", [](IntegratorToggles& t) { t.megakernel = !t.megakernel; });
-        flip(base.streamCompaction ? "compaction off" : "compaction on",
-             [](IntegratorToggles& t) { t.streamCompaction = !t.streamCompaction; });
-        flip(base.materialSort ? "material sort off" : "material sort on",
-             [](IntegratorToggles& t) { t.materialSort = !t.materialSort; });
+        // The wavefront's own toggles, each against the plain wavefront above or below.
+        const auto wavefront = [&](const char* name, const std::function<void(IntegratorToggles&)>& change) {
+            flip(name, [&](IntegratorToggles& t) {
+                t.megakernel = false;
+                change(t);
+            });
+        };
+        wavefront(base.streamCompaction ? "wavefront, compaction off" : "wavefront, compaction on",
+                  [](IntegratorToggles& t) { t.streamCompaction = !t.streamCompaction; });
+        wavefront(base.materialSort ? "wavefront, material sort off" : "wavefront, material sort on",
+                  [](IntegratorToggles& t) { t.materialSort = !t.materialSort; });
         // The first-hit cache needs fixed camera rays: compare both without jitter.
-        flip("no jitter, first-hit cache off", [](IntegratorToggles& t) {
+        wavefront("wavefront, no jitter, first-hit cache off", [](IntegratorToggles& t) {
             t.pixelJitter = false;
             t.firstHitCache = false;
         });
-        flip("no jitter, first-hit cache on", [](IntegratorToggles& t) {
+        wavefront("wavefront, no jitter, first-hit cache on", [](IntegratorToggles& t) {
             t.pixelJitter = false;
             t.firstHitCache = true;
         });

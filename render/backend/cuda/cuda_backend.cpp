@@ -137,7 +137,11 @@ void CudaBackend::fullBuild(const Scene& scene, const ProgressFn& progress, Sync
     auto compiled = std::make_unique<CompiledScene>(compileRenderScene(scene, options, progress));
     report.steps.push_back({"compile scene (host)", compiled->stats.flattenSeconds + compiled->stats.lightSeconds});
     report.steps.push_back({"build BLAS (host, binned SAH)", compiled->stats.blasSeconds});
+    pinnedVertices_.clear();
     compiled_ = std::move(compiled);
+    pinnedVertices_.emplace_back(compiled_->positions.data(), compiled_->positions.size() * sizeof(Vec3));
+    pinnedVertices_.emplace_back(compiled_->normals.data(), compiled_->normals.size() * sizeof(Vec3));
+    pinnedVertices_.emplace_back(compiled_->tangents.data(), compiled_->tangents.size() * sizeof(Vec4));
     meshVertexOffset_.assign(scene.meshes.size(), 0);
     uint32_t vertices = 0;
     for (size_t i = 0; i < scene.meshes.size(); ++i) {
@@ -248,7 +252,10 @@ void CudaBackend::updateView() {
 void CudaBackend::setToggles(const IntegratorToggles& toggles) {
     const bool bvhChanged = toggles.bruteForce != toggles_.bruteForce;
     toggles_ = toggles;
-    if (bvhChanged) compiled_.reset();  // the next sync recompiles (and checks the budget)
+    if (bvhChanged) {  // the next sync recompiles (and checks the budget)
+        pinnedVertices_.clear();
+        compiled_.reset();
+    }
     if (compiled_) {
         updateView();
         scheduler_.invalidateFirstHits();

@@ -13,6 +13,7 @@
 #include "render/backend/cuda/device_scene.h"
 #include "render/backend/cuda/gpu_bvh.h"
 #include "render/backend/cuda/path_scheduler.h"
+#include "render/backend/cuda/pinned_range.h"
 #include "render/scene/compile_scene.h"
 
 namespace pt::cuda {
@@ -54,6 +55,9 @@ private:
 
     cudaStream_t stream_ = nullptr;
     std::unique_ptr<CompiledScene> compiled_;
+    // compiled_'s vertex arrays, pinned for vertex-edit uploads; declared after compiled_ so they
+    // are unpinned before its memory goes.
+    std::vector<PinnedRange> pinnedVertices_;
     DeviceScene device_;
     LbvhBuilder lbvh_;
     PathScheduler scheduler_;
