@@ -4,6 +4,7 @@
 
 #include "render/bvh/binned_sah_builder.h"
 #include "render/bvh/instance_bounds.h"
+#include "render/bvh/primitive_bounds.h"
 #include "render/bvh/sah_cost.h"
 #include "render/util/stopwatch.h"
 #if PT_HAVE_CUDA
@@ -28,11 +29,7 @@ BuildInput buildInput(const CompiledScene& scene) {
     if (largest) {
         for (uint32_t p = 0; p < largest->primitiveCount; ++p) {
             const TriangleIndices t = scene.triangles[largest->primitiveOffset + p];
-            Aabb box;
-            box.grow(scene.positions[t.v0]);
-            box.grow(scene.positions[t.v1]);
-            box.grow(scene.positions[t.v2]);
-            in.meshBoxes.push_back(box);
+            in.meshBoxes.push_back(triangleBounds(scene.positions[t.v0], scene.positions[t.v1], scene.positions[t.v2]));
         }
     }
     for (const RenderInstance& inst : scene.instances) {

@@ -18,6 +18,14 @@ std::vector<ToggleState> integratorToggleStates(const IntegratorToggles& t) {
     };
 }
 
+void applyIntegratorToggles(const IntegratorToggles& t, IntegratorSettings& s) {
+    s.nextEventEstimation = t.nextEventEstimation ? 1u : 0u;
+    s.multipleImportance = t.multipleImportance ? 1u : 0u;
+    s.russianRoulette = t.russianRoulette ? 1u : 0u;
+    s.clampRadiance = t.clampRadiance;
+    s.pixelJitter = t.pixelJitter ? 1u : 0u;
+}
+
 bool isGpuSchedulingToggle(const std::string& name) {
     return name == "megakernel" || name == "compaction" || name == "material_sort" || name == "first_hit_cache";
 }

@@ -3,12 +3,12 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <algorithm>
 #include <atomic>
 #include <mutex>
 #include <stdexcept>
 
 #include "render/bvh/binned_sah_builder.h"
+#include "render/bvh/primitive_bounds.h"
 
 namespace pt {
 
@@ -69,18 +69,9 @@ void appendTriangles(const Mesh& mesh, size_t index, CompiledScene& out) {
 }
 
 Aabb primitiveBounds(const CompiledScene& out, const BlasRef& blas, uint32_t p) {
-    Aabb box;
-    if (blas.kind == GeometryKind::Spheres) {
-        const Vec4 s = out.spheres[blas.primitiveOffset + p];
-        box.grow(s.xyz() - Vec3(s.w));
-        box.grow(s.xyz() + Vec3(s.w));
-        return box;
-    }
+    if (blas.kind == GeometryKind::Spheres) return sphereBounds(out.spheres[blas.primitiveOffset + p]);
     const TriangleIndices t = out.triangles[blas.primitiveOffset + p];
-    box.grow(out.positions[t.v0]);
-    box.grow(out.positions[t.v1]);
-    box.grow(out.positions[t.v2]);
-    return box;
+    return triangleBounds(out.positions[t.v0], out.positions[t.v1], out.positions[t.v2]);
 }
 
 }  // namespace

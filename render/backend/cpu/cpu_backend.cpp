@@ -42,7 +42,7 @@ SyncReport CpuBackend::sync(const Scene& scene, SceneChangeMask changes, const P
     compiled_->camera = makeRenderCamera(scene.camera, scene.render.width, scene.render.height);
     compiled_->settings = compileSettings(scene.render);
     view_ = compiled_->view();
-    applyToggles();
+    applyIntegratorToggles(toggles_, view_.settings);
     width_ = scene.render.width;
     height_ = scene.render.height;
     if (resized || changes != SceneChanges::Display) resetAccumulation();
@@ -57,17 +57,9 @@ void CpuBackend::setToggles(const IntegratorToggles& toggles) {
     toggles_ = toggles;
     if (bvhChanged) compiled_.reset();  // the next sync recompiles (and checks the budget)
     if (compiled_) {
-        applyToggles();
+        applyIntegratorToggles(toggles_, view_.settings);
         resetAccumulation();
     }
-}
-
-void CpuBackend::applyToggles() {
-    view_.settings.nextEventEstimation = toggles_.nextEventEstimation ? 1u : 0u;
-    view_.settings.multipleImportance = toggles_.multipleImportance ? 1u : 0u;
-    view_.settings.russianRoulette = toggles_.russianRoulette ? 1u : 0u;
-    view_.settings.clampRadiance = toggles_.clampRadiance;
-    view_.settings.pixelJitter = toggles_.pixelJitter ? 1u : 0u;
 }
 
 std::vector<ToggleState> CpuBackend::toggleStates() const {

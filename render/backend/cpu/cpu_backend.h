@@ -24,8 +24,6 @@ public:
                                   std::vector<Hit>* hits) override;
 
 private:
-    void applyToggles();
-
     std::unique_ptr<CompiledScene> compiled_;
     RenderScene view_{};
     IntegratorToggles toggles_;

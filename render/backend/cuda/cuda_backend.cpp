@@ -58,16 +58,20 @@ SyncReport CudaBackend::sync(const Scene& scene, SceneChangeMask changes, const 
     bool needsFullBuild = !compiled_ || (changes & kNeedsFullBuild);
     bool lightsDirty = (changes & (SceneChanges::Environment | SceneChanges::Lights)) != 0;
     bool tlasDirty = false;
-    const char* action = changes == SceneChanges::Display ? "nothing" : "reset";
+    std::string action = changes == SceneChanges::Display ? "nothing" : "reset";
+    // The report names the most expensive thing sync did; cheaper steps only replace "reset".
+    const auto promote = [&action](const char* what) {
+        if (action == "reset") action = what;
+    };
 
     if (!needsFullBuild && (changes & SceneChanges::Geometry)) {
-        if (refitChangedMeshes(scene, report, needsFullBuild)) {
+        if (const char* done = refitChangedMeshes(scene, report, needsFullBuild)) {
             tlasDirty = true;
             // The light table's weights follow emitter areas and the scene's bounds. Stale weights
             // would stay unbiased (NEE and MIS read the same table), but emissive triangles
             // deserve a table that matches their areas; other lights keep theirs.
             lightsDirty |= compiled_->emitters.triangles + compiled_->emitters.spheres > 0;
-            action = report.action.empty() ? "refit" : "rebuild";
+            action = done;
         }
     }
     if (!needsFullBuild && (changes & SceneChanges::Transforms)) {
@@ -81,7 +85,7 @@ SyncReport CudaBackend::sync(const Scene& scene, SceneChangeMask changes, const 
         // do moved emissive surfaces (see above).
         lightsDirty |= compiled_->instances.size() != instancesBefore ||
                        compiled_->emitters.triangles + compiled_->emitters.spheres > 0;
-        if (std::string(action) == "reset") action = "TLAS";
+        promote("TLAS");
     }
     if (!needsFullBuild && (changes & SceneChanges::Materials)) {
         timedStep(stream_, report, "materials", [&] {
@@ -91,7 +95,7 @@ SyncReport CudaBackend::sync(const Scene& scene, SceneChangeMask changes, const 
             updateTransparency(*compiled_);
             device_.uploadMaterials(*compiled_, stream_);
         });
-        if (std::string(action) == "reset") action = "materials";
+        promote("materials");
     }
     if (needsFullBuild) {
         fullBuild(scene, progress, report);
@@ -107,7 +111,7 @@ SyncReport CudaBackend::sync(const Scene& scene, SceneChangeMask changes, const 
             compileLights(scene, *compiled_);
             device_.uploadLights(*compiled_, stream_);
         });
-        if (std::string(action) == "reset") action = "lights";
+        promote("lights");
     }
     report.action = action;
     compiled_->camera = makeRenderCamera(scene.camera, scene.render.width, scene.render.height);
@@ -149,15 +153,15 @@ void CudaBackend::fullBuild(const Scene& scene, const ProgressFn& progress, Sync
         if (scene.meshes[i].kind == GeometryKind::Triangles) vertices += uint32_t(scene.meshes[i].positions.size());
     }
     timedStep(stream_, report, "upload", [&] { device_.uploadAll(*compiled_, stream_); });
-    builtSah_.assign(device_.blasCount(), 0.0f);
-    for (uint32_t i = 0; i < device_.blasCount(); ++i) builtSah_[i] = blasSahCost(i);
+    // Measured when a BLAS is first refitted, not here: most meshes never are.
+    builtSah_.assign(device_.blasCount(), kSahUnknown);
     buildTlasOnDevice(report);
 }
 
-bool CudaBackend::refitChangedMeshes(const Scene& scene, SyncReport& report, bool& needsFullBuild) {
+const char* CudaBackend::refitChangedMeshes(const Scene& scene, SyncReport& report, bool& needsFullBuild) {
     if (scene.meshes.size() != device_.blasCount()) {
         needsFullBuild = true;
-        return false;
+        return nullptr;
     }
     std::vector<uint32_t> changed;
     timedStep(stream_, report, "upload vertices", [&] {
@@ -193,12 +197,13 @@ bool CudaBackend::refitChangedMeshes(const Scene& scene, SyncReport& report, boo
             changed.push_back(i);
         }
     });
-    if (needsFullBuild || changed.empty()) return false;
+    if (needsFullBuild || changed.empty()) return nullptr;
 
     const RenderScene deviceView = device_.view(*compiled_);
     bool rebuilt = false;
     for (uint32_t i : changed) {
         const BlasRef& blas = device_.blas(i);
+        if (builtSah_[i] == kSahUnknown) builtSah_[i] = blasSahCost(i);  // still as built
         primBoxes_.resize(blas.primitiveCount);
         refitVisits_.resize(device_.blasNodeCapacity(i));
         timedStep(stream_, report, "refit BLAS", [&] {
@@ -219,8 +224,7 @@ bool CudaBackend::refitChangedMeshes(const Scene& scene, SyncReport& report, boo
             rebuilt = true;
         }
     }
-    if (rebuilt) report.action = "rebuild";
-    return true;
+    return rebuilt ? "rebuild" : "refit";
 }
 
 void CudaBackend::buildTlasOnDevice(SyncReport& report) {
@@ -240,13 +244,8 @@ float CudaBackend::blasSahCost(uint32_t blas) const {
 }
 
 void CudaBackend::updateView() {
-    view_ = device_.view(*compiled_);
-    view_.bruteForce = toggles_.bruteForce ? 1u : 0u;
-    view_.settings.nextEventEstimation = toggles_.nextEventEstimation ? 1u : 0u;
-    view_.settings.multipleImportance = toggles_.multipleImportance ? 1u : 0u;
-    view_.settings.russianRoulette = toggles_.russianRoulette ? 1u : 0u;
-    view_.settings.clampRadiance = toggles_.clampRadiance;
-    view_.settings.pixelJitter = toggles_.pixelJitter ? 1u : 0u;
+    view_ = device_.view(*compiled_);  // bruteForce comes from the compile options
+    applyIntegratorToggles(toggles_, view_.settings);
 }
 
 void CudaBackend::setToggles(const IntegratorToggles& toggles) {
@@ -309,8 +308,9 @@ void CudaBackend::readBeauty(std::vector<float>& rgba) const {
 
 BackendStats CudaBackend::stats() const {
     BackendStats s = stats_;
-    s.rays = scheduler_.rays();
-    s.nonfiniteSamples = scheduler_.nonfiniteSamples();
+    const RenderCounters counters = scheduler_.counters();
+    s.rays = counters.rays;
+    s.nonfiniteSamples = counters.nonfinite;
     return s;
 }
 

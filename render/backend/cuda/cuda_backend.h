@@ -39,15 +39,17 @@ public:
 
     // Paths alive at the start of each bounce in the last wavefront wave (compaction's effect).
     const std::vector<uint32_t>& pathsPerBounce() const { return scheduler_.pathsPerBounce(); }
-    // SAH cost of BLAS i now, and right after its last build.
+    // SAH cost of BLAS i now, and right after its last build (known once it has been refitted).
     float blasSahCost(uint32_t blas) const;
     float blasBuiltSahCost(uint32_t blas) const { return builtSah_[blas]; }
+    static constexpr float kSahUnknown = -1.0f;
 
 private:
     void fullBuild(const Scene& scene, const ProgressFn& progress, SyncReport& report);
     // Uploads meshes whose vertices changed and refits (or rebuilds) their BLASes; returns
-    // whether any changed. Sets needsFullBuild when a mesh changed size (a topology edit).
-    bool refitChangedMeshes(const Scene& scene, SyncReport& report, bool& needsFullBuild);
+    // "refit" or "rebuild", or nullptr when no mesh changed. Sets needsFullBuild when a mesh
+    // changed size (a topology edit).
+    const char* refitChangedMeshes(const Scene& scene, SyncReport& report, bool& needsFullBuild);
     void buildTlasOnDevice(SyncReport& report);
     void updateView();
     ScheduleOptions scheduleOptions() const;
@@ -66,7 +68,7 @@ private:
     DeviceBuffer<uint32_t> refitVisits_;
     DeviceBuffer<Ray> queryRays_;
     DeviceBuffer<Hit> queryHits_;
-    std::vector<float> builtSah_;            // per BLAS, after its last build
+    std::vector<float> builtSah_;            // per BLAS, after its last build; kSahUnknown until needed
     std::vector<uint32_t> meshVertexOffset_;  // per mesh: its first vertex in compiled_->positions
     RenderScene view_{};
     IntegratorToggles toggles_;

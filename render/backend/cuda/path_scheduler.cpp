@@ -115,7 +115,7 @@ void PathScheduler::runWavefront(const RenderScene& scene, const WaveShape& shap
             queue = b.queue[0];
         }
         PT_CUDA_CHECK(cudaMemsetAsync(countsDevice, 0, kQueueCountsBytes, stream));
-        launchShade(scene, b, shape, queue, count, options.compaction, stream);
+        launchShade(scene, b, queue, count, options.compaction, stream);
         PT_CUDA_CHECK(cudaMemcpyAsync(countsHost, countsDevice, kQueueCountsBytes, cudaMemcpyDeviceToHost, stream));
         PT_CUDA_CHECK(cudaStreamSynchronize(stream));
         if (options.compaction) {
@@ -135,13 +135,7 @@ void PathScheduler::runWavefront(const RenderScene& scene, const WaveShape& shap
 
 void PathScheduler::resetCounters(cudaStream_t stream) { counters_.fillZero(stream); }
 
-uint64_t PathScheduler::rays() const {
-    return counters_.download()[0].rays;
-}
-
-uint64_t PathScheduler::nonfiniteSamples() const {
-    return counters_.download()[0].nonfinite;
-}
+RenderCounters PathScheduler::counters() const { return counters_.download()[0]; }
 
 uint64_t PathScheduler::bytes() const {
     return paths_.bytes() + hits_.bytes() + firstHits_.bytes() + shadows_.bytes() + queue0_.bytes() +

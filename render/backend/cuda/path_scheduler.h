@@ -35,8 +35,7 @@ public:
                 double* sum, cudaStream_t stream);
 
     void resetCounters(cudaStream_t stream);
-    uint64_t rays() const;              // since resetCounters; synchronises
-    uint64_t nonfiniteSamples() const;
+    RenderCounters counters() const;    // rays and non-finite samples since resetCounters; synchronises
     // Paths alive at the start of each bounce of the last wavefront wave.
     const std::vector<uint32_t>& pathsPerBounce() const { return pathsPerBounce_; }
     uint64_t bytes() const;

@@ -1,9 +1,8 @@
-// computePrimitiveBoxes (gpu_bvh.h): the object-space box of every primitive of one BLAS, as
-// the CPU scene compiler computes it for the binned builder (compile_geometry.cpp's
-// primitiveBounds): a triangle's three vertices, a sphere's centre -/+ radius, grown in that
-// order, so both sides produce the same boxes bit for bit.
+// computePrimitiveBoxes (gpu_bvh.h): the object-space box of every primitive of one BLAS,
+// through the same functions the CPU scene compiler uses (render/bvh/primitive_bounds.h).
 #include "render/backend/cuda/bvh_bottom_up.cuh"
 #include "render/backend/cuda/gpu_bvh.h"
+#include "render/bvh/primitive_bounds.h"
 
 namespace pt::cuda {
 
@@ -14,21 +13,13 @@ __global__ void triangleBoxesKernel(const Vec3* positions, const TriangleIndices
     const uint32_t p = blockIdx.x * blockDim.x + threadIdx.x;
     if (p >= count) return;
     const TriangleIndices t = triangles[p];
-    Aabb box;
-    box.grow(positions[t.v0]);
-    box.grow(positions[t.v1]);
-    box.grow(positions[t.v2]);
-    boxes[p] = box;
+    boxes[p] = triangleBounds(positions[t.v0], positions[t.v1], positions[t.v2]);
 }
 
 __global__ void sphereBoxesKernel(const Vec4* spheres, uint32_t count, Aabb* boxes) {
     const uint32_t p = blockIdx.x * blockDim.x + threadIdx.x;
     if (p >= count) return;
-    const Vec4 s = spheres[p];
-    Aabb box;
-    box.grow(s.xyz() - Vec3(s.w));
-    box.grow(s.xyz() + Vec3(s.w));
-    boxes[p] = box;
+    boxes[p] = sphereBounds(spheres[p]);
 }
 
 }  // namespace

@@ -168,8 +168,8 @@ void launchSortByMaterial(const RenderScene& scene, const WaveBuffers& b, uint32
     PT_CUDA_CHECK(cudaMemcpyAsync(b.queue[0], b.queue[1], count * sizeof(uint32_t), cudaMemcpyDeviceToDevice, stream));
 }
 
-void launchShade(const RenderScene& scene, const WaveBuffers& b, const WaveShape&, const uint32_t* queue,
-                 uint32_t count, bool compaction, cudaStream_t stream) {
+void launchShade(const RenderScene& scene, const WaveBuffers& b, const uint32_t* queue, uint32_t count,
+                 bool compaction, cudaStream_t stream) {
     if (count == 0) return;
     shadeKernel<<<blocksFor(count), kBlock, 0, stream>>>(scene, b, queue, count, compaction);
     PT_CUDA_CHECK_LAUNCH("shadeKernel");

@@ -57,8 +57,8 @@ void launchSortByMaterial(const RenderScene& scene, const WaveBuffers& b, uint32
 // Shading of the paths in `queue` (all paths when nullptr). With compaction, live paths are
 // appended to b.queue[1] and valid shadow rays to b.shadowQueue; without, shadows are marked
 // valid in place and b.counters->alive counts the live paths.
-void launchShade(const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape, const uint32_t* queue,
-                 uint32_t count, bool compaction, cudaStream_t stream);
+void launchShade(const RenderScene& scene, const WaveBuffers& b, const uint32_t* queue, uint32_t count,
+                 bool compaction, cudaStream_t stream);
 
 // Shadow rays of the paths in `queue` (count entries; all paths when nullptr); invalid ones are
 // skipped, and unoccluded contributions are added to the paths' radiance. `consume` marks
