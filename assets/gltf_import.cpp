@@ -41,14 +41,6 @@ void warnAboutUnsupported(const GltfContext& ctx) {
     if (!model.skins.empty() || !model.animations.empty()) {
         ctx.warn("", "skins and animations are not applied; meshes are shown in their bind pose");
     }
-    for (const auto& mesh : model.meshes) {
-        for (const auto& primitive : mesh.primitives) {
-            if (!primitive.targets.empty()) {
-                ctx.warn("", "morph targets are not applied; meshes are shown without them");
-                return;
-            }
-        }
-    }
 }
 
 // The placement of `visit`'s mesh, or nullopt (with a warning) when it cannot be drawn.
@@ -86,6 +78,7 @@ ImportedFile importGltf(const std::string& path, int32_t object, Scene& scene,
     ImportedFile file;
     file.camera = gltfCamera(ctx, visits);
     file.lights = gltfLights(ctx, visits);
+    std::set<uint32_t> posedMeshes;  // Scene meshes whose first node has set their morph pose
     size_t meshNodes = 0, done = 0;
     for (const GltfNodeVisit& visit : visits) meshNodes += doc.model.nodes[size_t(visit.node)].mesh >= 0;
     for (const GltfNodeVisit& visit : visits) {
@@ -94,6 +87,7 @@ ImportedFile importGltf(const std::string& path, int32_t object, Scene& scene,
         const auto& imported = importGltfMesh(ctx, mesh, gltfPath("nodes", size_t(visit.node)));
         reportProgress(progress, "load glTF", double(++done) / double(meshNodes));
         if (!imported) continue;
+        poseGltfMeshForNode(ctx, visit.node, *imported, posedMeshes.insert(imported->sceneMesh).second);
         if (auto placement = placeNode(ctx, visit, *imported)) {
             file.placements.push_back(std::move(*placement));
         }

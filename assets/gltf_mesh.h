@@ -1,7 +1,8 @@
 #pragma once
 // A glTF mesh as one Scene Mesh: every primitive's triangles appended, one slot per imported
 // primitive (skipped primitives get none), the glTF material of each slot remembered for
-// the placements. Built once per glTF mesh however many nodes use it. Internal to pt_assets.
+// the placements, morph targets merged like the vertices they move and applied with the
+// file's default weights. Built once per glTF mesh however many nodes use it. Internal to pt_assets.
 #include <optional>
 #include <string>
 
@@ -13,5 +14,12 @@ namespace pt {
 // triangles to draw (a warning says so) and is not placed.
 const std::optional<ImportedMesh>& importGltfMesh(GltfContext& ctx, int mesh,
                                                   const std::string& element);
+
+// Poses the mesh for glTF node `node`, which uses it: its morph weights are the node's
+// `weights`, else the glTF mesh's. A Scene mesh is shared by every node that uses it, so the
+// first node (`firstUse`, in scene order) sets the mesh's default pose; a later node that asks
+// for another gets a warning naming it. InputError when the node's weights do not match the
+// mesh's target count.
+void poseGltfMeshForNode(GltfContext& ctx, int node, const ImportedMesh& mesh, bool firstUse);
 
 }  // namespace pt

@@ -112,17 +112,32 @@ std::vector<Vec4> readTangents(const GltfContext& ctx, int accessor, size_t vert
     return tangents;
 }
 
-// Flat shading needs a vertex per triangle corner; unshares positions and UVs.
-void unshareVertices(PrimitiveGeometry& g) {
-    std::vector<Vec3> positions(g.indices.size());
-    std::vector<Vec2> uvs(g.uvs.empty() ? 0 : g.indices.size());
-    for (size_t k = 0; k < g.indices.size(); ++k) {
-        positions[k] = g.positions[g.indices[k]];
-        if (!uvs.empty()) uvs[k] = g.uvs[g.indices[k]];
-        g.indices[k] = uint32_t(k);
+// values[from[k]] for each k; an empty (absent) attribute stays empty.
+template <class T>
+std::vector<T> gather(const std::vector<T>& values, const std::vector<uint32_t>& from) {
+    if (values.empty()) return {};
+    std::vector<T> out(from.size());
+    for (size_t k = 0; k < from.size(); ++k) out[k] = values[from[k]];
+    return out;
+}
+
+// Makes new vertex k a copy of old vertex from[k], every per-vertex array alike (morph
+// deltas included, so they keep following their positions); indices are the caller's.
+void remapVertices(PrimitiveGeometry& g, const std::vector<uint32_t>& from) {
+    g.positions = gather(g.positions, from);
+    g.normals = gather(g.normals, from);
+    g.uvs = gather(g.uvs, from);
+    g.tangents = gather(g.tangents, from);
+    for (MorphTarget& target : g.targets) {
+        target.positionDeltas = gather(target.positionDeltas, from);
+        target.normalDeltas = gather(target.normalDeltas, from);
     }
-    g.positions = std::move(positions);
-    g.uvs = std::move(uvs);
+}
+
+// Flat shading needs a vertex per triangle corner.
+void unshareVertices(PrimitiveGeometry& g) {
+    remapVertices(g, g.indices);
+    std::iota(g.indices.begin(), g.indices.end(), 0u);
 }
 
 // Keeps only the vertices the triangles use, in first-use order: several primitives often
@@ -130,19 +145,52 @@ void unshareVertices(PrimitiveGeometry& g) {
 void compactVertices(PrimitiveGeometry& g) {
     constexpr uint32_t kUnused = ~0u;
     std::vector<uint32_t> remap(g.positions.size(), kUnused);
-    PrimitiveGeometry out;
+    std::vector<uint32_t> used;
     for (uint32_t& index : g.indices) {
         if (remap[index] == kUnused) {
-            remap[index] = uint32_t(out.positions.size());
-            out.positions.push_back(g.positions[index]);
-            out.normals.push_back(g.normals[index]);
-            if (!g.uvs.empty()) out.uvs.push_back(g.uvs[index]);
-            if (!g.tangents.empty()) out.tangents.push_back(g.tangents[index]);
+            remap[index] = uint32_t(used.size());
+            used.push_back(index);
         }
         index = remap[index];
     }
-    out.indices = std::move(g.indices);
-    g = std::move(out);
+    remapVertices(g, used);
+}
+
+std::vector<Vec3> toVec3s(const std::vector<float>& xyz) {
+    std::vector<Vec3> out(xyz.size() / 3);
+    for (size_t v = 0; v < out.size(); ++v) out[v] = {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
+    return out;
+}
+
+// The primitive's morph targets (glTF 2.0 section 3.7.2.2), one element per position each.
+// TANGENT deltas are dropped without a warning: tangents are not deformed, and the shading
+// frame re-orthogonalizes the tangent against the deformed normal (integrator/surface_hit.h),
+// which is close for the moderate bends morph targets make. NORMAL deltas of a primitive
+// without NORMAL are dropped too: they would move generated normals the author never saw.
+// Such a primitive's flat normals stay those of the undeformed triangles (Mesh keeps no
+// record of which normals were generated, so applyMorphWeights cannot regenerate them).
+std::vector<MorphTarget> readMorphTargets(const GltfContext& ctx,
+                                          const tinygltf::Primitive& primitive,
+                                          size_t vertexCount, bool hasNormals,
+                                          const std::string& element) {
+    std::vector<MorphTarget> targets(primitive.targets.size());
+    for (size_t t = 0; t < targets.size(); ++t) {
+        const std::string at = element + ".targets[" + std::to_string(t) + "]";
+        for (const auto& [name, accessor] : primitive.targets[t]) {
+            if (name == "TANGENT" || (name == "NORMAL" && !hasNormals)) continue;
+            if (name != "POSITION" && name != "NORMAL") {
+                ctx.warn(at, "morph target attribute " + name + " is not applied; ignored");
+                continue;
+            }
+            std::vector<Vec3> deltas =
+                toVec3s(readVertexAttribute(ctx, accessor, 3, vertexCount, at, name));
+            (name == "POSITION" ? targets[t].positionDeltas : targets[t].normalDeltas) =
+                std::move(deltas);
+        }
+        // A target without POSITION leaves the positions where they are.
+        if (targets[t].positionDeltas.empty()) targets[t].positionDeltas.assign(vertexCount, Vec3(0.0f));
+    }
+    return targets;
 }
 
 // Normalizes the file's normals; regenerates zero ones (with one warning) or, when the file
@@ -194,7 +242,7 @@ std::optional<PrimitiveGeometry> readGltfPrimitive(const GltfContext& ctx, size_
     PrimitiveGeometry g;
     const std::vector<float> p = readFiniteFloats(ctx, position, 3, element, "POSITION");
     const size_t vertexCount = p.size() / 3;
-    for (size_t v = 0; v < vertexCount; ++v) g.positions.push_back({p[3 * v], p[3 * v + 1], p[3 * v + 2]});
+    g.positions = toVec3s(p);
     g.indices = toTriangleList(ctx, readCorners(ctx, primitive, vertexCount, element),
                                primitive.mode, element);
     if (g.indices.empty()) {
@@ -207,10 +255,9 @@ std::optional<PrimitiveGeometry> readGltfPrimitive(const GltfContext& ctx, size_
         for (size_t v = 0; v < vertexCount; ++v) g.uvs.push_back({t[2 * v], t[2 * v + 1]});
     }
     const int normal = attribute(primitive, "NORMAL");
+    g.targets = readMorphTargets(ctx, primitive, vertexCount, normal >= 0, element);
     if (normal >= 0) {
-        const std::vector<float> n =
-            readVertexAttribute(ctx, normal, 3, vertexCount, element, "NORMAL");
-        for (size_t v = 0; v < vertexCount; ++v) g.normals.push_back({n[3 * v], n[3 * v + 1], n[3 * v + 2]});
+        g.normals = toVec3s(readVertexAttribute(ctx, normal, 3, vertexCount, element, "NORMAL"));
         if (const int tangent = attribute(primitive, "TANGENT"); tangent >= 0) {
             g.tangents = readTangents(ctx, tangent, vertexCount, element);
         }

@@ -10,6 +10,10 @@
 // (section 3.7.2.1), and smoothing across the author's hard edges would be wrong for
 // low-poly and CAD models. Normals given as zero vectors are replaced by the area-weighted
 // normal of the triangles that use the vertex, with one warning per primitive.
+//
+// Morph targets are read like the attributes they move (same count, finiteness and accessor
+// checks, sparse accessors included) and go through the same vertex remapping as the
+// positions, so delta i always belongs to position i.
 #include <optional>
 #include <vector>
 
@@ -25,6 +29,10 @@ struct PrimitiveGeometry {
     // where the file's tangent is zero. Ignored (empty) without NORMAL, as the spec requires.
     std::vector<Vec4> tangents;
     std::vector<uint32_t> indices;  // triangle list, three per triangle, local to the primitive
+    // One per glTF target, in file order (names left empty: they belong to the glTF mesh).
+    // positionDeltas: one per position (zero where the target has no POSITION); normalDeltas:
+    // one per position, or empty (no NORMAL in the target, or none in the primitive).
+    std::vector<MorphTarget> targets;
 };
 
 // nullopt when the primitive is skipped (a warning says why); InputError when malformed.

@@ -17,6 +17,7 @@
 #include "assets/scene_json.h"
 #include "assets/scene_loader.h"
 #include "render/scene/builtin_shapes.h"
+#include "render/scene/morph.h"
 
 namespace pt {
 namespace fs = std::filesystem;
@@ -61,6 +62,9 @@ ObjectTransform readTransform(const JsonValue& value) {
     }
     return transform;
 }
+
+using MorphWeights = std::map<std::string, std::vector<float>>;  // SceneObject::morphWeights
+using ImportKey = std::pair<std::string, MorphWeights>;          // absolute path, morph pose
 
 class SceneJsonReader {
 public:
@@ -136,7 +140,15 @@ private:
         if (auto aperture = reader.get("aperture")) {
             camera.apertureRadius = aperture->asFloat(NumberRange::NonNegative);
         }
-        if (auto focus = reader.get("focusDistance")) camera.focusDistance = focus->asFloat();
+        if (auto focus = reader.get("focusDistance")) {
+            camera.focusDistance = focus->asFloat();
+            // Kept as given (the writer writes it back), but a plane of focus at or behind the
+            // lens is no focus at all: say that the renderer uses the look-at distance.
+            if (camera.focusDistance <= 0.0f) {
+                scene_.warnings.push_back(fileName_ + ": " + focus->path() + ": " + focus->describe() +
+                                          " is not a distance in front of the lens; focusing at lookAt instead");
+            }
+        }
         reader.finish();
         const Vec3 view = camera.lookAt - camera.position;
         if (lengthSquared(view) == 0.0f) value.fail("lookAt equals position: no view direction");
@@ -212,12 +224,15 @@ private:
         if (auto transform = reader.get("transform")) object.transform = readTransform(*transform);
         const std::optional<JsonValue> material = reader.get("material");
         const std::optional<JsonValue> overrides = reader.get("materialOverrides");
+        const std::optional<JsonValue> morphWeights = reader.get("morphWeights");
         if (file && material) material->fail("applies to shapes; a file object takes \"materialOverrides\"");
         if (shape && overrides) overrides->fail("applies to file objects; a shape takes \"material\"");
+        if (shape && morphWeights) morphWeights->fail("applies to file objects; shapes have no morph targets");
         reader.finish();
         if (file) {
             if (overrides) object.materialOverrides = readOverrides(*overrides);
-            addFileObject(*file, std::move(object), index);
+            if (morphWeights) object.morphWeights = readMorphWeights(*morphWeights);
+            addFileObject(*file, morphWeights, std::move(object), index);
         } else {
             object.material = material ? material->asString() : kDefaultMaterialName;
             addShapeObject(*shape, material ? *material : value, std::move(object), index);
@@ -232,6 +247,40 @@ private:
             overrides[item.key()] = target.asString();
         }
         return overrides;
+    }
+
+    // {"mesh name": [w0, w1, ...]}; the counts are checked against the meshes after import.
+    MorphWeights readMorphWeights(const JsonValue& value) const {
+        if (!value.json().is_object()) value.fail("expected an object, got " + value.describe());
+        MorphWeights weights;
+        for (const auto& item : value.json().items()) {
+            const JsonValue list(item.value(), value.childPath(item.key()), fileName_);
+            std::vector<float>& out = weights[item.key()];
+            for (const JsonValue& weight : list.asArray()) out.push_back(weight.asFloat());
+        }
+        return weights;
+    }
+
+    // Replaces the default weights of the file's meshes (Scene meshes from `firstMesh` on,
+    // added by its import) by the object's; every mesh of a name takes them.
+    void applyMorphWeightOverrides(const JsonValue& value, const MorphWeights& weights,
+                                   const std::string& path, size_t firstMesh) {
+        for (const auto& [name, given] : weights) {
+            const JsonValue at(value.json().at(name), value.childPath(name), fileName_);
+            bool found = false;
+            for (size_t m = firstMesh; m < scene_.meshes.size(); ++m) {
+                Mesh& mesh = scene_.meshes[m];
+                if (mesh.name != name) continue;
+                found = true;
+                if (given.size() != mesh.morphTargets.size()) {
+                    at.fail("expected " + std::to_string(mesh.morphTargets.size()) +
+                            " weights (the mesh's morph targets), got " + std::to_string(given.size()));
+                }
+                mesh.morphWeights = given;
+                applyMorphWeights(mesh);
+            }
+            if (!found) at.fail(fs::path(path).filename().string() + " has no mesh \"" + name + "\"");
+        }
     }
 
     void addShapeObject(const JsonValue& shape, const JsonValue& materialAt, SceneObject object,
@@ -256,7 +305,8 @@ private:
         scene_.instances.push_back(std::move(instance));
     }
 
-    void addFileObject(const JsonValue& file, SceneObject object, int32_t index) {
+    void addFileObject(const JsonValue& file, const std::optional<JsonValue>& morphWeights,
+                       SceneObject object, int32_t index) {
         const fs::path path = resolveFile(file);
         if (!isModelFile(path.string())) {
             file.fail("unsupported model format \"" + path.extension().string() +
@@ -265,8 +315,9 @@ private:
         object.kind = ObjectKind::File;
         object.path = path.string();
         const Affine3 objectToWorld = object.transform.toAffine();
+        const MorphWeights weights = object.morphWeights;
         scene_.objects.push_back(std::move(object));
-        const ImportedFile& imported = importFile(file, path.string(), index);
+        const ImportedFile& imported = importFile(file, morphWeights, {path.string(), weights}, index);
         try {
             instantiateImportedFile(imported, index, scene_);
         } catch (const InputError& e) {
@@ -276,16 +327,21 @@ private:
     }
 
     // A file named by several objects is imported once: its meshes are shared and the
-    // objects differ only by their instances (this is how scene JSON instances).
-    const ImportedFile& importFile(const JsonValue& file, const std::string& path, int32_t index) {
-        const auto cached = importedFiles_.find(path);
+    // objects differ only by their instances (this is how scene JSON instances). Meshes
+    // hold one morph pose, so objects that pose the file differently import it apart.
+    const ImportedFile& importFile(const JsonValue& file, const std::optional<JsonValue>& morphWeights,
+                                   const ImportKey& key, int32_t index) {
+        const auto cached = importedFiles_.find(key);
         if (cached != importedFiles_.end()) return cached->second;
+        const size_t firstMesh = scene_.meshes.size();
+        ImportedFile imported;
         try {
-            ImportedFile imported = importModelFile(path, index, scene_, progress_);
-            return importedFiles_.emplace(path, std::move(imported)).first->second;
+            imported = importModelFile(key.first, index, scene_, progress_);
         } catch (const InputError& e) {
             file.fail(e.what());
         }
+        if (morphWeights) applyMorphWeightOverrides(*morphWeights, key.second, key.first, firstMesh);
+        return importedFiles_.emplace(key, std::move(imported)).first->second;
     }
 
     // Paths in the JSON are relative to its folder; returned absolute and normalised.
@@ -324,7 +380,7 @@ private:
     fs::path folder_;
     ProgressFn progress_;
     Scene scene_;
-    std::map<std::string, ImportedFile> importedFiles_;  // absolute path -> its one import
+    std::map<ImportKey, ImportedFile> importedFiles_;    // (absolute path, morph weights) -> its one import
     std::map<std::string, int32_t> textures_;            // absolute path -> Scene::textures
     std::optional<Camera> fileCamera_;                   // the first file camera, in world space
 };

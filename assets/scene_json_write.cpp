@@ -83,7 +83,40 @@ Json transformToJson(const ObjectTransform& transform) {
     return out;
 }
 
-Json objectToJson(const SceneObject& object, const fs::path& folder) {
+// Whether `weights` are the file's own for the object's meshes named `mesh` (those its
+// instances use): the editor records every weight change on the object, and a change back to
+// the file's pose need not be saved. A mesh no instance uses is not known here: written.
+bool isFileMorphPose(const Scene& scene, size_t objectIndex, const std::string& mesh,
+                     const std::vector<float>& weights) {
+    bool found = false;
+    for (const Instance& instance : scene.instances) {
+        if (instance.object != int32_t(objectIndex) || instance.mesh >= scene.meshes.size()) continue;
+        const Mesh& used = scene.meshes[instance.mesh];
+        if (used.name != mesh) continue;
+        const std::vector<float>& defaults = used.defaultMorphWeights;
+        if (defaults.size() != weights.size() ||
+            !std::equal(defaults.begin(), defaults.end(), weights.begin(),
+                        [](float a, float b) { return sameBits(a, b); })) {
+            return false;
+        }
+        found = true;
+    }
+    return found;
+}
+
+Json morphWeightsToJson(const Scene& scene, size_t objectIndex) {
+    Json out = Json::object();
+    for (const auto& [mesh, weights] : scene.objects[objectIndex].morphWeights) {
+        if (isFileMorphPose(scene, objectIndex, mesh, weights)) continue;
+        Json list = Json::array();
+        for (float weight : weights) list.push_back(floatToJson(weight));
+        out[mesh] = std::move(list);
+    }
+    return out;
+}
+
+Json objectToJson(const Scene& scene, size_t objectIndex, const fs::path& folder) {
+    const SceneObject& object = scene.objects[objectIndex];
     Json out = Json::object();
     if (!object.name.empty()) out["name"] = object.name;
     if (object.kind == ObjectKind::File) {
@@ -98,6 +131,10 @@ Json objectToJson(const SceneObject& object, const fs::path& folder) {
     if (object.kind == ObjectKind::File && !object.materialOverrides.empty()) {
         out["materialOverrides"] = Json::object();
         for (const auto& [from, to] : object.materialOverrides) out["materialOverrides"][from] = to;
+    }
+    if (object.kind == ObjectKind::File) {
+        Json morphWeights = morphWeightsToJson(scene, objectIndex);
+        if (!morphWeights.empty()) out["morphWeights"] = std::move(morphWeights);
     }
     Json transform = transformToJson(object.transform);
     if (!transform.empty()) out["transform"] = std::move(transform);
@@ -174,7 +211,7 @@ std::string sceneToJson(const Scene& scene, const std::string& outputPath) {
         if (!value.empty()) root[key] = value;
     }
     Json objects = Json::array();
-    for (const SceneObject& object : scene.objects) objects.push_back(objectToJson(object, folder));
+    for (size_t i = 0; i < scene.objects.size(); ++i) objects.push_back(objectToJson(scene, i, folder));
     if (!objects.empty()) root["objects"] = std::move(objects);
     try {
         return prettyJson(root);

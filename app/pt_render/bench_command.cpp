@@ -5,6 +5,7 @@
 #include "assets/atomic_file.h"
 #include "bench_bvh.h"
 #include "bench_rays.h"
+#include "bench_edits.h"
 #include "bench_render.h"
 #include "bench_report.h"
 #include "cli_options.h"
@@ -117,7 +118,7 @@ int runBench(const std::vector<std::string>& args) {
     phase("BVH builds");
     benchBvhBuilds(compiled, r.backend == "cuda", r.settings.runs, report);
     phase("edits");
-    benchEdits(*backend, scene, r.settings, report);
+    benchEdits(r.backend, scene, r.settings, report);
     phase("image check");
     benchImageCheck(*backend, scene, r.settings, report);
     report.add({"memory", "device memory after the benchmark", "", double(backend->deviceMemoryBytes()) / (1 << 20),

@@ -96,63 +96,6 @@ void benchPathTracing(Backend& backend, const Scene& scene, const BenchSettings&
     backend.sync(scene, SceneChanges::Settings, {});
 }
 
-void benchEdits(Backend& backend, Scene scene, const BenchSettings& settings, BenchReport& report) {
-    backend.setToggles(settings.toggles);
-    backend.sync(scene, SceneChanges::All, {});
-    backend.render(1);
-    struct Edit {
-        const char* name;
-        SceneChangeMask changes;
-        std::function<void(uint32_t)> apply;  // run index, so edits alternate and do not drift
-    };
-    int32_t mesh = -1;
-    for (size_t i = 0; i < scene.meshes.size(); ++i) {
-        if (scene.meshes[i].kind == GeometryKind::Triangles &&
-            (mesh < 0 || scene.meshes[i].positions.size() > scene.meshes[size_t(mesh)].positions.size())) {
-            mesh = int32_t(i);
-        }
-    }
-    std::vector<Edit> edits;
-    if (!scene.materials.empty()) {
-        edits.push_back({"material", SceneChanges::Materials, [&](uint32_t run) {
-                             scene.materials[0].params.roughness = run % 2 ? 0.3f : 0.6f;
-                         }});
-    }
-    if (!scene.instances.empty()) {
-        const Affine3 original = scene.instances[0].objectToWorld;
-        edits.push_back({"transform", SceneChanges::Transforms, [&, original](uint32_t run) {
-                             Affine3 moved = original;
-                             moved.rows[0].w += run % 2 ? 1e-3f : 0.0f;
-                             scene.instances[0].objectToWorld = moved;
-                         }});
-    }
-    if (mesh >= 0) {
-        const std::vector<Vec3> original = scene.meshes[size_t(mesh)].positions;
-        const std::string label = "vertices (" + std::to_string(original.size()) + ")";
-        edits.push_back({"vertices", SceneChanges::Geometry, [&, original](uint32_t run) {
-                             std::vector<Vec3>& p = scene.meshes[size_t(mesh)].positions;
-                             const float amount = run % 2 ? 1e-3f : 0.0f;
-                             for (size_t i = 0; i < p.size(); ++i) {
-                                 p[i] = original[i] + Vec3(amount * std::sin(float(i)), 0.0f, 0.0f);
-                             }
-                         }});
-    }
-    for (const Edit& edit : edits) {
-        std::vector<double> seconds;
-        SyncReport last;
-        for (uint32_t run = 0; run <= settings.runs; ++run) {
-            edit.apply(run + 1);
-            const auto start = Clock::now();
-            last = backend.sync(scene, edit.changes, {});
-            backend.render(1);
-            if (run > 0) seconds.push_back(secondsSince(start));  // run 0 warms up
-        }
-        std::string steps = "sync: " + last.action;
-        for (const SyncStep& s : last.steps) steps += ", " + s.name + " " + std::to_string(s.seconds * 1e3) + " ms";
-        report.add({"edit to first frame", edit.name, "", median(seconds) * 1e3, "ms", steps});
-    }
-}
-
 void benchImageCheck(Backend& backend, Scene scene, const BenchSettings& settings, BenchReport& report) {
     if (backend.name() == "cpu") return;
     // Small enough for the CPU to match in seconds.

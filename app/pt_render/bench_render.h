@@ -1,7 +1,6 @@
 #pragma once
 // Path tracing figures for `pt-render bench`: samples per pixel per second and Mpaths/s with
-// the toggles on and off, the time from an edit to its first accumulated frame, and the
-// image check of a GPU backend against the CPU one.
+// the toggles on and off, and the image check of a GPU backend against the CPU one.
 #include <string>
 
 #include "bench_report.h"
@@ -16,7 +15,6 @@ struct BenchSettings {
 };
 
 void benchPathTracing(Backend& backend, const Scene& scene, const BenchSettings& settings, BenchReport& report);
-void benchEdits(Backend& backend, Scene scene, const BenchSettings& settings, BenchReport& report);
 // Renders a reduced-size copy of the scene on `backend` and on the CPU at equal samples.
 void benchImageCheck(Backend& backend, Scene scene, const BenchSettings& settings, BenchReport& report);
 

@@ -11,5 +11,8 @@ int runExport(const std::vector<std::string>& args);
 int runInfo(const std::vector<std::string>& args);
 int runGen(const std::vector<std::string>& args);
 int runBench(const std::vector<std::string>& args);
+int runReference(const std::vector<std::string>& args);
+int runConverge(const std::vector<std::string>& args);
+int runStress(const std::vector<std::string>& args);
 
 }  // namespace pt::cli

@@ -23,6 +23,22 @@ commands:
       path tracing spp/s and Mpaths/s with each toggle flipped, BLAS/TLAS build and refit
       times (CPU binned SAH; GPU LBVH with the cuda backend), edit-to-first-frame latency, and
       the largest deviation of the backend's image from the CPU's.
+  reference SCENE -o REF.exr --spp N [--batches K] [--backend cpu|cuda] [--size WxH] [--seed N]
+                [--threads N] [--max-depth N] [--quiet] [TOGGLES]
+      A high-spp reference as a float EXR, rendered as K (default 8) independent batches whose
+      spread gives the noise of the mean, stored as attributes pt:noise_relmse, pt:noise_rmse.
+  converge SCENE (--reference REF.exr | --reference-constant R,G,B) [--time SECONDS]
+                [--variant NAME[:KEY=VALUE,...]]... [--csv OUT.csv] [--plot OUT.svg]
+                [--backend cpu|cuda] [--size WxH] [--seed N] [--threads N] [--max-depth N] [--quiet]
+      Render each variant (default: full, and naive:nee=off,mis=off,rr=off) for SECONDS (default
+      10), measuring relMSE, RMSE and MAPE against the reference at log-spaced times; print the
+      errors at equal time and flag variants whose error stops falling. Keys: nee, mis, rr, bvh,
+      pixel_jitter, megakernel, compaction, material_sort, first_hit_cache (on|off), clamp,
+      rebuild_ratio (a number).
+  stress [--backend cpu|cuda|all] [--quick] [--only NAME,...] [--csv OUT.csv]
+      The robustness suite (scenes/stress/, docs/robustness.md): extreme scales, degenerate
+      geometry, materials, lights, accumulation and cameras, each against a stated expectation.
+      Exits 1 when a case fails.
   export SCENE -o OUT.json
       Write any loadable scene as scene JSON (atomically; defaults left out).
   info SCENE [--json]
@@ -53,7 +69,12 @@ int main(int argc, char** argv) {
         if (command == "info") return pt::cli::runInfo(args);
         if (command == "gen") return pt::cli::runGen(args);
         if (command == "bench") return pt::cli::runBench(args);
-        std::fprintf(stderr, "pt-render: unknown command \"%s\" (render, bench, export, info, gen; see --help)\n",
+        if (command == "reference") return pt::cli::runReference(args);
+        if (command == "converge") return pt::cli::runConverge(args);
+        if (command == "stress") return pt::cli::runStress(args);
+        std::fprintf(stderr,
+                     "pt-render: unknown command \"%s\" (render, bench, reference, converge, stress, export, info, gen; "
+                     "see --help)\n",
                      command.c_str());
         return 2;
     } catch (const pt::cli::UsageError& e) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "render/backend/aov.h"
 #include "render/bvh/hit.h"
 #include "render/math/ray.h"
 #include "render/scene/scene.h"
@@ -96,6 +97,29 @@ public:
     virtual std::vector<double> traceRays(const std::vector<Ray>& rays, bool anyHit, uint32_t runs,
                                           std::vector<Hit>* hits) = 0;
     virtual uint64_t deviceMemoryBytes() const { return 0; }  // GPU backends: buffers allocated
+    // GPU backends: writes the beauty as readBeauty() gives it (RGBA float, width x height) into
+    // device memory at `deviceRgba` (e.g. an OpenGL buffer mapped through CUDA-GL interop) and
+    // returns true once it is there. False where frames live on the host.
+    // Wavefront schedulers: the paths alive at the start of each bounce of the last wave (what
+    // stream compaction keeps the GPU busy with); empty where paths are not queued.
+    virtual std::vector<uint32_t> pathsAlivePerBounce() const { return {}; }
+    virtual bool copyBeautyToDevice(void* deviceRgba) const {
+        (void)deviceRgba;
+        return false;
+    }
+
+    // AOVs (render/integrator/aov.h says what each holds). setAovs chooses which to accumulate
+    // beside the beauty; the choice applies from the next accumulation reset (resetAccumulation,
+    // setToggles, or a sync that resets), and only the AOVs it names then have memory. The
+    // beauty is the same with or without them.
+    virtual void setAovs(AovMask aovs) = 0;
+    // The AOVs accumulated now: the last setAovs once a reset has applied it (0 before).
+    virtual AovMask aovs() const = 0;
+    // Per-pixel value of an AOV, RGBA float, row-major top row first, same size as the beauty.
+    // Throws std::invalid_argument when that AOV is not enabled (not in aovs()).
+    virtual void readAov(Aov aov, std::vector<float>& rgba) const = 0;
+    // Memory the AOVs hold now (host memory on the CPU, device memory on a GPU); 0 without AOVs.
+    virtual uint64_t aovBytes() const = 0;
 };
 
 // "cpu", or "cuda" where built. Throws std::invalid_argument naming the backends available,

@@ -34,19 +34,20 @@ PT_HD bool intersectBlasPrimitive(const RenderScene& scene, const BlasRef& blas,
 }
 
 // Leaf functor of walkBvh for one BLAS.
+template <class Count>
 struct BlasLeaf {
     const RenderScene& scene;
     const BlasRef& blas;
     const uint32_t* primIndices;  // this BLAS's slice of RenderScene::blasPrimIndices
     const TraversalRay& ray;
     Hit& hit;
-    TraversalStats* stats;
+    Count counter;
     bool anyHit;
 
     PT_HD bool operator()(uint32_t first, uint32_t count, float& tMax) {
         bool found = false;
         for (uint32_t i = first; i < first + count; ++i) {
-            if (stats) ++stats->primitivesTested;
+            counter.primitive();
             if (intersectBlasPrimitive(scene, blas, primIndices[i], ray, tMax, hit)) {
                 tMax = hit.t;
                 found = true;
@@ -60,12 +61,13 @@ struct BlasLeaf {
 // Closest (or, with kAnyHit, any) hit of `ray` (already in the BLAS's object space) with
 // t < tMax. On a hit, lowers tMax to it and fills hit.t/u/v/primitive; hit.instance is the
 // caller's business.
-template <bool kAnyHit>
+template <bool kAnyHit, class Count>
 PT_HD bool traverseBlas(const RenderScene& scene, const BlasRef& blas, const TraversalRay& ray,
-                        float& tMax, Hit& hit, TraversalStats* stats) {
+                        float& tMax, Hit& hit, Count count) {
     if (blas.primitiveCount == 0 || blas.nodeCount == 0) return false;
-    BlasLeaf leaf{scene, blas, scene.blasPrimIndices.data + blas.primIndexOffset, ray, hit, stats, kAnyHit};
-    return walkBvh<kAnyHit>(scene.blasNodes.data + blas.nodeOffset, ray, tMax, leaf, stats);
+    BlasLeaf<Count> leaf{scene, blas, scene.blasPrimIndices.data + blas.primIndexOffset, ray, hit, count,
+                         kAnyHit};
+    return walkBvh<kAnyHit>(scene.blasNodes.data + blas.nodeOffset, ray, tMax, leaf, count);
 }
 
 }  // namespace pt

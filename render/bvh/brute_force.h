@@ -7,16 +7,16 @@
 
 namespace pt {
 
-template <bool kAnyHit>
+template <bool kAnyHit, class Count>
 PT_HD bool bruteForceIntersect(const RenderScene& scene, const Ray& worldRay, float& tMax, Hit& hit,
-                               TraversalStats* stats) {
+                               Count count) {
     bool found = false;
     for (uint32_t index = 0; index < scene.instances.size(); ++index) {
         const RenderInstance& inst = scene.instances[index];
         const BlasRef& blas = scene.blases[inst.blas];
         const TraversalRay ray = objectSpaceRay(inst, worldRay);
         for (uint32_t local = 0; local < blas.primitiveCount; ++local) {
-            if (stats) ++stats->primitivesTested;
+            count.primitive();
             if (intersectBlasPrimitive(scene, blas, local, ray, tMax, hit)) {
                 tMax = hit.t;
                 hit.instance = index;

@@ -21,6 +21,19 @@ struct TraversalStats {
 };
 static_assert(sizeof(TraversalStats) == 8, "TraversalStats: 8 bytes (an AOV buffer element)");
 
+// How a walk counts its work. The choice is made once per query (traversal.h), not per node:
+// the walk is compiled once with TraversalCounter and once with NoTraversalCount, whose calls
+// vanish, so rays nobody counts run exactly the code they ran before counters existed.
+struct NoTraversalCount {
+    PT_HD void node() const {}
+    PT_HD void primitive() const {}
+};
+struct TraversalCounter {
+    TraversalStats* stats;  // never null
+    PT_HD void node() const { ++stats->nodesVisited; }
+    PT_HD void primitive() const { ++stats->primitivesTested; }
+};
+
 // min/max written as comparisons: one minss/maxss each on x86, where fminf's NaN rules cost
 // extra instructions; inputs here are never NaN, so the two agree.
 PT_HD float minFast(float a, float b) { return a < b ? a : b; }
@@ -98,10 +111,9 @@ PT_HD bool intersectBox(const TraversalRay& ray, Vec3 lo, Vec3 hi, float tMax, f
 // Walks the BVH `nodes` (root at index 0), nearest child first. `leaf(first, count, tMax)`
 // tests a leaf's primitives, lowers tMax on a closer hit and returns whether it hit; with
 // kAnyHit the walk stops at the first hit. Subtrees whose entry distance is beyond the current
-// tMax when popped are skipped.
-template <bool kAnyHit, class LeafFn>
-PT_HD bool walkBvh(const BvhNode* nodes, const TraversalRay& ray, float& tMax, LeafFn& leaf,
-                   TraversalStats* stats) {
+// tMax when popped are skipped. `count` is NoTraversalCount or TraversalCounter.
+template <bool kAnyHit, class LeafFn, class Count>
+PT_HD bool walkBvh(const BvhNode* nodes, const TraversalRay& ray, float& tMax, LeafFn& leaf, Count count) {
     uint32_t stackNode[kBvhStackSize];
     float stackEntry[kBvhStackSize];
     uint32_t size = 0;
@@ -111,7 +123,7 @@ PT_HD bool walkBvh(const BvhNode* nodes, const TraversalRay& ray, float& tMax, L
     uint32_t current = 0;
     for (;;) {
         const BvhNode& node = nodes[current];
-        if (stats) ++stats->nodesVisited;
+        count.node();
         if (node.isLeaf()) {
             if (leaf(node.leftOrFirst, node.count, tMax)) {
                 found = true;

@@ -13,11 +13,12 @@ PT_HD TraversalRay objectSpaceRay(const RenderInstance& inst, const Ray& worldRa
 }
 
 // Leaf functor of walkBvh for the TLAS: each entry of a leaf is an instance.
+template <class Count>
 struct TlasLeaf {
     const RenderScene& scene;
     const Ray& worldRay;
     Hit& hit;
-    TraversalStats* stats;
+    Count counter;
     bool anyHit;
 
     PT_HD bool operator()(uint32_t first, uint32_t count, float& tMax) {
@@ -27,8 +28,8 @@ struct TlasLeaf {
             const RenderInstance& inst = scene.instances[index];
             const TraversalRay ray = objectSpaceRay(inst, worldRay);
             const BlasRef& blas = scene.blases[inst.blas];
-            const bool hitHere = anyHit ? traverseBlas<true>(scene, blas, ray, tMax, hit, stats)
-                                        : traverseBlas<false>(scene, blas, ray, tMax, hit, stats);
+            const bool hitHere = anyHit ? traverseBlas<true>(scene, blas, ray, tMax, hit, counter)
+                                        : traverseBlas<false>(scene, blas, ray, tMax, hit, counter);
             if (hitHere) {
                 hit.instance = index;
                 found = true;
@@ -40,13 +41,12 @@ struct TlasLeaf {
 };
 
 // Closest (or any) hit over all instances with t < tMax; lowers tMax and fills `hit`.
-template <bool kAnyHit>
-PT_HD bool traverseTlas(const RenderScene& scene, const Ray& worldRay, float& tMax, Hit& hit,
-                        TraversalStats* stats) {
+template <bool kAnyHit, class Count>
+PT_HD bool traverseTlas(const RenderScene& scene, const Ray& worldRay, float& tMax, Hit& hit, Count count) {
     if (scene.tlasNodes.empty() || scene.instances.empty()) return false;
     const TraversalRay ray = makeTraversalRay(worldRay.origin, worldRay.direction);
-    TlasLeaf leaf{scene, worldRay, hit, stats, kAnyHit};
-    return walkBvh<kAnyHit>(scene.tlasNodes.data, ray, tMax, leaf, stats);
+    TlasLeaf<Count> leaf{scene, worldRay, hit, count, kAnyHit};
+    return walkBvh<kAnyHit>(scene.tlasNodes.data, ray, tMax, leaf, count);
 }
 
 }  // namespace pt

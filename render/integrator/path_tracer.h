@@ -6,8 +6,10 @@
 // importance sampling (power heuristic; Veach 1997) wherever both strategies reach a light,
 // and Russian roulette. NEE, MIS, roulette and the firefly clamp are IntegratorSettings.
 // Alpha-transparent surfaces are passed through (alpha.h); paths inside volumetric
-// materials are attenuated by Beer-Lambert (medium.h).
+// materials are attenuated by Beer-Lambert (medium.h). AOVs (aov.h) are recorded at the camera
+// ray's first visible surface where the caller passes an AovSample.
 #include "render/bvh/traversal.h"
+#include "render/integrator/aov.h"
 #include "render/integrator/camera.h"
 #include "render/integrator/medium.h"
 #include "render/integrator/path_state.h"
@@ -133,14 +135,18 @@ PT_HD bool surviveRoulette(const RenderScene& scene, PathState& state, uint32_t 
 
 // Adds emission, queues a shadow ray, and turns `state.ray` into the next segment (or ends the
 // path). `hit` is the closest hit of `state.ray`. A surface that is alpha-transparent there
-// only moves the ray past it (transparency.h).
-PT_HD ShadowRay shadeSurface(const RenderScene& scene, PathState& state, const Hit& hit) {
+// only moves the ray past it (transparency.h). On the camera segment, a non-null `aov`
+// receives the surface the camera sees (all but its cost); elsewhere it is left alone.
+PT_HD ShadowRay shadeSurface(const RenderScene& scene, PathState& state, const Hit& hit,
+                             AovSample* aov = nullptr) {
     ShadowRay shadow{};
     state.throughput *= mediumTransmittance(scene, state.media, hit.t);  // the ray is unit length
     SurfaceHit surface = surfaceAt(scene, state.ray, hit);
     if (passTransparentSurface(scene, state, surface, hit)) return shadow;
     state.transparentHits = 0;
     applyNormalMap(scene, hit, surface);
+    // Until the first bounce, lastVertex is still the camera ray's origin.
+    if (aov && state.depth == 0) recordAovSurface(scene, surface, state.lastVertex, *aov);
     addSurfaceEmission(scene, state, surface);
     if (state.depth >= scene.settings.maxDepth) {
         state.alive = false;
@@ -184,18 +190,24 @@ PT_HD ShadowRay shadeSurface(const RenderScene& scene, PathState& state, const H
     return shadow;
 }
 
-// One sample of pixel (x, y): the megakernel schedule of the stages above.
+// One sample of pixel (x, y): the megakernel schedule of the stages above. With kAovs, `aov`
+// receives the sample's AOVs, the camera segment's traversal work included; without, it is
+// ignored and the loop is compiled with no AOV code at all (the choice is the caller's, once).
+template <bool kAovs = false>
 PT_HD Vec3 tracePath(const RenderScene& scene, uint32_t x, uint32_t y, uint32_t sampleIndex,
-                     PathCounters& counters) {
+                     PathCounters& counters, AovSample* aovOut = nullptr) {
+    AovSample* const aov = kAovs ? aovOut : nullptr;
     PathState state = generatePath(scene, x, y, sampleIndex);
+    if (kAovs) *aovOut = AovSample{};
     while (state.alive) {
         Hit hit;
         ++counters.rays;
-        if (!intersectClosest(scene, state.ray, hit)) {
+        TraversalStats* cost = aov && state.depth == 0 ? &aov->cost : nullptr;
+        if (!intersectClosest(scene, state.ray, hit, cost)) {
             shadeMiss(scene, state);
             break;
         }
-        const ShadowRay shadow = shadeSurface(scene, state, hit);
+        const ShadowRay shadow = shadeSurface(scene, state, hit, aov);
         if (shadow.valid && shadowRayUnoccluded(scene, shadow.ray, state.sampler, state.depth, counters)) {
             state.radiance += shadow.contribution;
         }

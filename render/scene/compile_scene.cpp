@@ -42,6 +42,12 @@ void compileTextures(const Scene& scene, CompiledScene& out) {
 
 }  // namespace
 
+bool isTracedInstance(const Scene& scene, size_t i) {
+    const Instance& instance = scene.instances[i];
+    return instance.visible && instance.mesh < scene.meshes.size() &&
+           scene.meshes[instance.mesh].primitiveCount() > 0;
+}
+
 void compileInstances(const Scene& scene, CompiledScene& out) {
     const std::vector<Material>& materials = out.materials;
     out.instances.clear();
@@ -53,8 +59,8 @@ void compileInstances(const Scene& scene, CompiledScene& out) {
             throw std::invalid_argument("instance \"" + src.name + "\" names mesh " +
                                         std::to_string(src.mesh) + ", which does not exist");
         }
+        if (!isTracedInstance(scene, i)) continue;
         const Mesh& mesh = scene.meshes[src.mesh];
-        if (mesh.primitiveCount() == 0) continue;
         RenderInstance inst{};
         inst.objectToWorld = src.objectToWorld;
         inst.worldToObject = inverse(src.objectToWorld);

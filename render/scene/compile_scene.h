@@ -82,6 +82,9 @@ PunctualLight compilePunctualLight(const Light& light);
 // CompiledScene whose geometry and materials are compiled (after a transform or visibility
 // edit). Throws std::invalid_argument for an instance naming a missing mesh or material.
 void compileInstances(const Scene& scene, CompiledScene& out);
+// Whether compileInstances gives scene instance `i` a RenderInstance (visible, not empty):
+// the traced instances are these, in scene order, so a Hit's instance maps back through it.
+bool isTracedInstance(const Scene& scene, size_t i);
 // The TLAS (binned SAH over instance world boxes) for compiled instances and BLASes.
 void buildTlas(CompiledScene& out);
 // CompiledScene::transparentMaterials from its materials (after a material edit).

@@ -15,6 +15,14 @@ namespace pt {
 
 enum class GeometryKind : uint32_t { Triangles = 0, Spheres = 1 };
 
+// One glTF morph target of a Mesh: per-vertex offsets added, scaled by the target's weight,
+// to the undeformed vertices (glTF 2.0 section 3.7.2.2). Indexed like Mesh::positions.
+struct MorphTarget {
+    std::string name;                  // glTF mesh extras.targetNames[i] when present, else "target i"
+    std::vector<Vec3> positionDeltas;  // one per vertex of the Mesh
+    std::vector<Vec3> normalDeltas;    // empty, or one per vertex
+};
+
 // One BLAS worth of geometry, in object space. A mesh is shared by every instance that
 // references it. Materials are not stored here: each primitive names a *slot*, and each
 // instance maps slots to scene materials, so one mesh can be instanced with other materials.
@@ -32,6 +40,13 @@ struct Mesh {
     std::vector<Vec4> spheres;          // Spheres: xyz = center, w = radius (> 0)
     std::vector<uint32_t> primitiveSlots;  // empty (all slot 0), or one per primitive
     uint32_t slotCount = 1;
+    // Morph targets (render/scene/morph.h): positions and normals above are the deformed
+    // ones, basePositions + sum of weight x delta; a weight change calls applyMorphWeights.
+    std::vector<MorphTarget> morphTargets;   // glTF mesh targets, in file order
+    std::vector<float> morphWeights;         // one per target; the current deformation
+    std::vector<float> defaultMorphWeights;  // one per target: the file's pose (scene JSON writes only changes)
+    std::vector<Vec3> basePositions;         // undeformed positions; empty when no targets
+    std::vector<Vec3> baseNormals;           // undeformed normals; empty when no targets or no normals
 
     uint32_t primitiveCount() const {
         return kind == GeometryKind::Spheres ? uint32_t(spheres.size()) : uint32_t(indices.size() / 3);
@@ -118,6 +133,8 @@ struct SceneObject {
     ObjectTransform transform;
     std::string material;               // shapes: a Scene material name
     std::map<std::string, std::string> materialOverrides;  // File: file material -> scene material
+    // File: mesh name -> morph weights replacing the file's defaults (Mesh::defaultMorphWeights).
+    std::map<std::string, std::vector<float>> morphWeights;
 };
 
 enum class LightType : uint32_t { Point = 0, Spot = 1, Directional = 2 };

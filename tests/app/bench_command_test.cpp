@@ -41,7 +41,11 @@ TEST(PtRenderBench, MeasuresEverySectionAndWritesJson) {
     EXPECT_GT(value["rays/primary/BVH off"], 0.0);
     EXPECT_GT(value["path tracing/samples per pixel per second/default"], 0.0);
     EXPECT_GT(value["path tracing/samples per pixel per second/roulette off"], 0.0);
-    EXPECT_GT(value["edit to first frame/material/"], 0.0);
+    // Edits go through the editor's session: command, sync, one pass, the frame for display.
+    EXPECT_GT(value["edit to first frame/material (roughness slider)/samples done"], 0.0);
+    EXPECT_GE(value["edit to first frame/material (roughness slider)/frame on host"],
+              value["edit to first frame/material (roughness slider)/samples done"]);
+    EXPECT_GT(value["edit to first frame/transform (object)/samples done"], 0.0);
     EXPECT_EQ(value["BVH/SAH cost vs CPU binned (CPU binned SAH)/"], 1.0);
 }
 

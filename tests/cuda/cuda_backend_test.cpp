@@ -9,6 +9,8 @@
 #include <random>
 #include <vector>
 
+#include <cuda_runtime.h>
+
 #include "cuda_test_support.h"
 #include "render/backend/cpu/cpu_backend.h"
 #include "render/backend/cuda/cuda_backend.h"
@@ -419,6 +421,23 @@ TEST(CudaBackend, ReportsWhyTheFirstHitCacheCannotApply) {
         EXPECT_FALSE(s.active);
         EXPECT_NE(s.note.find("jitter"), std::string::npos) << s.note;
     }
+}
+
+// The editor's CUDA-GL interop path: the frame written into device memory is exactly what
+// readBeauty hands to the host.
+TEST(CudaBackend, DeviceFrameEqualsTheHostFrame) {
+    PT_REQUIRE_CUDA_DEVICE();
+    const Scene scene = cornell(48);
+    cuda::CudaBackend backend;
+    const std::vector<float> host = renderWith(backend, scene, 8);
+    float* device = nullptr;
+    ASSERT_EQ(cudaMalloc(&device, host.size() * sizeof(float)), cudaSuccess);
+    ASSERT_TRUE(backend.copyBeautyToDevice(device));
+    std::vector<float> copied(host.size());
+    ASSERT_EQ(cudaMemcpy(copied.data(), device, copied.size() * sizeof(float), cudaMemcpyDeviceToHost), cudaSuccess);
+    cudaFree(device);
+    EXPECT_EQ(maxAbsDifference(host, copied), 0.0f);
+    EXPECT_GT(*std::max_element(copied.begin(), copied.end()), 0.0f);
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 #   then, on the device:  build-dev-carry/run.sh <command...>  (sets LD_LIBRARY_PATH, PT_SOURCE_DIR)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-cmake -S . -B build-dev -G Ninja -DCMAKE_BUILD_TYPE=Release -DPT_CUDA=ON -DPT_OIIO=OFF -DPT_TESTS=ON >/dev/null
+cmake -S . -B build-dev -G Ninja -DCMAKE_BUILD_TYPE=Release -DPT_CUDA=ON -DPT_OIIO=OFF -DPT_EDITOR=OFF -DPT_TESTS=ON >/dev/null
 cmake --build build-dev --target pt_cuda_tests pt-render
 rm -rf build-dev-carry
 mkdir -p build-dev-carry/lib build-dev-carry/assets

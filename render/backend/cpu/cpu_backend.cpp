@@ -1,5 +1,7 @@
 #include "render/backend/cpu/cpu_backend.h"
 
+#include <algorithm>
+
 #include <tbb/blocked_range.h>
 #include <tbb/blocked_range2d.h>
 #include <tbb/combinable.h>
@@ -75,6 +77,14 @@ std::vector<ToggleState> CpuBackend::toggleStates() const {
 
 void CpuBackend::resetAccumulation() {
     sum_.assign(size_t(width_) * height_ * 3, 0.0);
+    aovs_ = aovsRequested_;
+    const size_t aovDoubles = aovDoublesPerPixel(aovs_) * width_ * height_;
+    // A fresh vector when the size changes, so memory follows the AOVs enabled now.
+    if (aovSums_.size() != aovDoubles) {
+        aovSums_ = std::vector<double>(aovDoubles, 0.0);
+    } else {
+        std::fill(aovSums_.begin(), aovSums_.end(), 0.0);
+    }
     stats_.samplesPerPixel = 0;
     stats_.renderSeconds = 0.0;
     stats_.rays = 0;
@@ -88,22 +98,18 @@ void CpuBackend::render(uint32_t passes) {
     const RenderScene& scene = view_;
     tbb::combinable<PathCounters> counters;
     constexpr size_t kTile = 16;
-    tbb::parallel_for(
-        tbb::blocked_range2d<uint32_t>(0, height_, kTile, 0, width_, kTile),
-        [&](const tbb::blocked_range2d<uint32_t>& tile) {
-            PathCounters& local = counters.local();
-            for (uint32_t y = tile.rows().begin(); y < tile.rows().end(); ++y) {
-                for (uint32_t x = tile.cols().begin(); x < tile.cols().end(); ++x) {
-                    double* pixel = &sum_[(size_t(y) * width_ + x) * 3];
-                    for (uint32_t s = 0; s < passes; ++s) {
-                        const Vec3 L = tracePath(scene, x, y, firstSample + s, local);
-                        pixel[0] += L.x;
-                        pixel[1] += L.y;
-                        pixel[2] += L.z;
-                    }
-                }
-            }
-        });
+    const bool pathAovs = (aovs_ & kPathAovs) != 0;
+    tbb::parallel_for(tbb::blocked_range2d<uint32_t>(0, height_, kTile, 0, width_, kTile),
+                      [&](const tbb::blocked_range2d<uint32_t>& tile) {
+                          const auto rows = tile.rows(), cols = tile.cols();
+                          if (pathAovs) {
+                              renderTile<true>(scene, rows.begin(), rows.end(), cols.begin(), cols.end(),
+                                               firstSample, passes, counters.local());
+                          } else {
+                              renderTile<false>(scene, rows.begin(), rows.end(), cols.begin(), cols.end(),
+                                                firstSample, passes, counters.local());
+                          }
+                      });
     counters.combine_each([&](const PathCounters& c) {
         stats_.rays += c.rays;
         stats_.nonfiniteSamples += c.nonfiniteSamples;
@@ -112,8 +118,42 @@ void CpuBackend::render(uint32_t passes) {
     stats_.renderSeconds += secondsSince(start);
 }
 
+// Each pixel's samples in order, by one thread: the sums (and Welford's variance) need no atomics.
+// kAovs: the path records AOVs (kPathAovs); without, tracePath has no AOV code.
+template <bool kAovs>
+void CpuBackend::renderTile(const RenderScene& scene, uint32_t y0, uint32_t y1, uint32_t x0, uint32_t x1,
+                            uint32_t firstSample, uint32_t passes, PathCounters& counters) {
+    const AovBuffers aovs = aovBuffersIn(aovSums_.data(), aovs_, size_t(width_) * height_);
+    const bool variance = aovs.has(Aov::Variance);
+    for (uint32_t y = y0; y < y1; ++y) {
+        for (uint32_t x = x0; x < x1; ++x) {
+            const uint32_t pixel = y * width_ + x;
+            double* sum = &sum_[size_t(pixel) * 3];
+            for (uint32_t s = 0; s < passes; ++s) {
+                AovSample aov;
+                const Vec3 L = tracePath<kAovs>(scene, x, y, firstSample + s, counters, &aov);
+                sum[0] += L.x;
+                sum[1] += L.y;
+                sum[2] += L.z;
+                if (kAovs) {
+                    addAovSample(aovs, pixel, firstSample + s, aov);
+                    addAovCost(aovs, pixel, aov.cost);
+                }
+                if (variance) addVarianceSample(aovs, pixel, firstSample + s, L);
+            }
+        }
+    }
+}
+
 void CpuBackend::readBeauty(std::vector<float>& rgba) const {
     meanImageFromSums(sum_.data(), size_t(width_) * height_, stats_.samplesPerPixel, rgba);
+}
+
+void CpuBackend::readAov(Aov aov, std::vector<float>& rgba) const {
+    requireAov(aovs_, aov);
+    const size_t pixels = size_t(width_) * height_;
+    const double* plane = aovChannels(aov) ? aovSums_.data() + aovPlaneOffset(aovs_, aov, pixels) : nullptr;
+    aovImageFromSums(aov, plane, pixels, stats_.samplesPerPixel, rgba);
 }
 
 BackendStats CpuBackend::stats() const { return stats_; }

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "render/backend/backend.h"
+#include "render/integrator/path_state.h"
 #include "render/scene/compile_scene.h"
 
 namespace pt {
@@ -22,13 +23,22 @@ public:
     std::vector<ToggleState> toggleStates() const override;
     std::vector<double> traceRays(const std::vector<Ray>& rays, bool anyHit, uint32_t runs,
                                   std::vector<Hit>* hits) override;
+    void setAovs(AovMask aovs) override { aovsRequested_ = aovs; }
+    AovMask aovs() const override { return aovs_; }
+    void readAov(Aov aov, std::vector<float>& rgba) const override;
+    uint64_t aovBytes() const override { return aovSums_.capacity() * sizeof(double); }
 
 private:
+    template <bool kAovs>
+    void renderTile(const RenderScene& scene, uint32_t y0, uint32_t y1, uint32_t x0, uint32_t x1,
+                    uint32_t firstSample, uint32_t passes, PathCounters& counters);
     std::unique_ptr<CompiledScene> compiled_;
     RenderScene view_{};
     IntegratorToggles toggles_;
     uint32_t width_ = 0, height_ = 0;
     std::vector<double> sum_;  // RGB per pixel
+    AovMask aovsRequested_ = 0, aovs_ = 0;  // as set; as applied at the last reset
+    std::vector<double> aovSums_;           // render/backend/aov.h's layout; empty without AOVs
     BackendStats stats_;
 };
 

@@ -1,4 +1,5 @@
 #include "render/backend/cuda/cuda_backend.h"
+#include "render/backend/cuda/display_copy.h"
 
 #include <cstring>
 #include <stdexcept>
@@ -284,6 +285,11 @@ ScheduleOptions CudaBackend::scheduleOptions() const {
 void CudaBackend::resetAccumulation() {
     sum_.resize(size_t(width_) * height_ * 3);
     sum_.fillZero(stream_);
+    aovs_ = aovsRequested_;
+    const size_t aovDoubles = aovDoublesPerPixel(aovs_) * width_ * height_;
+    // A fresh buffer when the size changes, so device memory follows the AOVs enabled now.
+    if (aovSums_.size() != aovDoubles) aovSums_ = DeviceBuffer<double>(aovDoubles);
+    aovSums_.fillZero(stream_);
     scheduler_.resetCounters(stream_);
     PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
     stats_.samplesPerPixel = 0;
@@ -295,7 +301,8 @@ void CudaBackend::resetAccumulation() {
 void CudaBackend::render(uint32_t passes) {
     if (!compiled_ || passes == 0) return;
     const auto start = Clock::now();
-    scheduler_.render(view_, stats_.samplesPerPixel, passes, scheduleOptions(), sum_.data(), stream_);
+    const AovBuffers aovs = aovBuffersIn(aovSums_.data(), aovs_, size_t(width_) * height_);
+    scheduler_.render(view_, stats_.samplesPerPixel, passes, scheduleOptions(), sum_.data(), aovs, stream_);
     PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
     stats_.samplesPerPixel += passes;
     stats_.renderSeconds += secondsSince(start);
@@ -305,6 +312,27 @@ void CudaBackend::readBeauty(std::vector<float>& rgba) const {
     const std::vector<double> sum = sum_.download();
     meanImageFromSums(sum.data(), size_t(width_) * height_, stats_.samplesPerPixel, rgba);
 }
+
+std::vector<uint32_t> CudaBackend::pathsAlivePerBounce() const {
+    return toggles_.megakernel ? std::vector<uint32_t>{} : scheduler_.pathsPerBounce();
+}
+
+bool CudaBackend::copyBeautyToDevice(void* deviceRgba) const {
+    launchMeanToRgba(sum_.data(), size_t(width_) * height_, stats_.samplesPerPixel, static_cast<float*>(deviceRgba),
+                     stream_);
+    PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
+    return true;
+}
+
+void CudaBackend::readAov(Aov aov, std::vector<float>& rgba) const {
+    requireAov(aovs_, aov);
+    const size_t pixels = size_t(width_) * height_;
+    std::vector<double> plane(pixels * aovChannels(aov));
+    aovSums_.downloadAt(aovPlaneOffset(aovs_, aov, pixels), plane.data(), plane.size());
+    aovImageFromSums(aov, plane.empty() ? nullptr : plane.data(), pixels, stats_.samplesPerPixel, rgba);
+}
+
+uint64_t CudaBackend::aovBytes() const { return aovSums_.bytes() + scheduler_.aovBytes(); }
 
 BackendStats CudaBackend::stats() const {
     BackendStats s = stats_;
@@ -359,7 +387,8 @@ std::vector<double> CudaBackend::traceRays(const std::vector<Ray>& rays, bool an
 }
 
 uint64_t CudaBackend::deviceMemoryBytes() const {
-    return device_.bytes() + scheduler_.bytes() + sum_.bytes() + primBoxes_.bytes() + refitVisits_.bytes();
+    return device_.bytes() + scheduler_.bytes() + sum_.bytes() + aovSums_.bytes() + primBoxes_.bytes() +
+           refitVisits_.bytes();
 }
 
 }  // namespace pt::cuda

@@ -31,11 +31,17 @@ public:
     uint32_t width() const override { return width_; }
     uint32_t height() const override { return height_; }
     void readBeauty(std::vector<float>& rgba) const override;
+    bool copyBeautyToDevice(void* deviceRgba) const override;
+    std::vector<uint32_t> pathsAlivePerBounce() const override;
     BackendStats stats() const override;
     std::vector<ToggleState> toggleStates() const override;
     uint64_t deviceMemoryBytes() const override;
     std::vector<double> traceRays(const std::vector<Ray>& rays, bool anyHit, uint32_t runs,
                                   std::vector<Hit>* hits) override;
+    void setAovs(AovMask aovs) override { aovsRequested_ = aovs; }
+    AovMask aovs() const override { return aovs_; }
+    void readAov(Aov aov, std::vector<float>& rgba) const override;
+    uint64_t aovBytes() const override;
 
     // Paths alive at the start of each bounce in the last wavefront wave (compaction's effect).
     const std::vector<uint32_t>& pathsPerBounce() const { return scheduler_.pathsPerBounce(); }
@@ -64,6 +70,8 @@ private:
     LbvhBuilder lbvh_;
     PathScheduler scheduler_;
     DeviceBuffer<double> sum_;
+    AovMask aovsRequested_ = 0, aovs_ = 0;  // as set; as applied at the last reset
+    DeviceBuffer<double> aovSums_;          // render/backend/aov.h's layout; none without AOVs
     DeviceBuffer<Aabb> primBoxes_;
     DeviceBuffer<uint32_t> refitVisits_;
     DeviceBuffer<Ray> queryRays_;

@@ -55,6 +55,10 @@ public:
         host.resize(size_);
         if (size_) PT_CUDA_CHECK(cudaMemcpy(host.data(), data_, size_ * sizeof(T), cudaMemcpyDeviceToHost));
     }
+    // Reads `count` elements from element `offset` (within the current size).
+    void downloadAt(size_t offset, T* host, size_t count) const {
+        if (count) PT_CUDA_CHECK(cudaMemcpy(host, data_ + offset, count * sizeof(T), cudaMemcpyDeviceToHost));
+    }
     std::vector<T> download() const {
         std::vector<T> host;
         download(host);

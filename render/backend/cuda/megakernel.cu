@@ -11,13 +11,21 @@ namespace {
 
 constexpr uint32_t kBlock = 128;
 
+// kAovs: whether the path records AOVs; without, the kernel is the one that ran before AOVs
+// existed.
+template <bool kAovs>
 __global__ void megakernel(RenderScene scene, WaveBuffers b, WaveShape shape) {
     const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i >= shape.pathCount) return;
-    const uint32_t pixel = i % shape.pixelCount, sample = i / shape.pixelCount;
+    const uint32_t pixel = i % shape.pixelCount, sample = shape.firstSample + i / shape.pixelCount;
     const uint32_t width = scene.settings.width;
     PathCounters counters;
-    const Vec3 radiance = tracePath(scene, pixel % width, pixel / width, shape.firstSample + sample, counters);
+    AovSample aov;
+    const Vec3 radiance = tracePath<kAovs>(scene, pixel % width, pixel / width, sample, counters, &aov);
+    if (kAovs) {
+        addAovSample(b.aovs, pixel, sample, aov);
+        addAovCost(b.aovs, pixel, aov.cost);
+    }
     b.radiance[3 * i + 0] = radiance.x;
     b.radiance[3 * i + 1] = radiance.y;
     b.radiance[3 * i + 2] = radiance.z;
@@ -28,7 +36,9 @@ __global__ void megakernel(RenderScene scene, WaveBuffers b, WaveShape shape) {
 }  // namespace
 
 void launchMegakernel(const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape, cudaStream_t stream) {
-    megakernel<<<(shape.pathCount + kBlock - 1) / kBlock, kBlock, 0, stream>>>(scene, b, shape);
+    const uint32_t blocks = (shape.pathCount + kBlock - 1) / kBlock;
+    const auto kernel = (b.aovs.mask & kPathAovs) ? megakernel<true> : megakernel<false>;
+    kernel<<<blocks, kBlock, 0, stream>>>(scene, b, shape);
     PT_CUDA_CHECK_LAUNCH("megakernel");
 }
 

@@ -30,7 +30,8 @@ PathScheduler::~PathScheduler() {
     if (hostCounters_) cudaFreeHost(hostCounters_);
 }
 
-void PathScheduler::reserve(uint32_t pixelCount, uint32_t pathCount, const ScheduleOptions& options) {
+void PathScheduler::reserve(uint32_t pixelCount, uint32_t pathCount, const ScheduleOptions& options,
+                            bool cacheCosts) {
     paths_.resize(pathCount);
     radiance_.resize(size_t(pathCount) * 3);
     if (!options.megakernel) {
@@ -51,9 +52,17 @@ void PathScheduler::reserve(uint32_t pixelCount, uint32_t pathCount, const Sched
         firstHitsPixels_ = pixelCount;
         firstHitsValid_ = false;
     }
+    // AOV memory exists only while the AOV is on: the buffer is freed, not kept, when it is off.
+    if (cacheCosts && firstHitCosts_.size() != pixelCount) {
+        firstHitCosts_.resize(pixelCount);
+        firstHitCostsValid_ = false;
+    } else if (!cacheCosts && firstHitCosts_.size() != 0) {
+        firstHitCosts_ = DeviceBuffer<TraversalStats>();
+        firstHitCostsValid_ = false;
+    }
 }
 
-WaveBuffers PathScheduler::buffers() const {
+WaveBuffers PathScheduler::buffers(const AovBuffers& aovs) const {
     WaveBuffers b{};
     b.paths = paths_.data();
     b.hits = hits_.data();
@@ -64,36 +73,42 @@ WaveBuffers PathScheduler::buffers() const {
     b.sortKeys[0] = sortKeys0_.data();
     b.sortKeys[1] = sortKeys1_.data();
     b.firstHits = firstHits_.data();
+    b.firstHitCosts = firstHitCosts_.data();
     b.radiance = radiance_.data();
     b.counters = counters_.data();
+    b.aovs = aovs;
     return b;
 }
 
 void PathScheduler::render(const RenderScene& scene, uint32_t firstSample, uint32_t samples,
-                           const ScheduleOptions& options, double* sum, cudaStream_t stream) {
+                           const ScheduleOptions& options, double* sum, const AovBuffers& aovs,
+                           cudaStream_t stream) {
     const uint32_t pixelCount = scene.settings.width * scene.settings.height;
     if (pixelCount == 0 || samples == 0) return;
     const uint32_t samplesPerWave = std::max(1u, std::min(samples, kMaxWavePaths / pixelCount));
-    reserve(pixelCount, pixelCount * samplesPerWave, options);
+    const bool cacheCosts = options.firstHitCache && aovs.has(Aov::BvhCost);
+    reserve(pixelCount, pixelCount * samplesPerWave, options, cacheCosts);
+    const WaveBuffers b = buffers(aovs);
     for (uint32_t done = 0; done < samples;) {
         const uint32_t n = std::min(samplesPerWave, samples - done);
         const WaveShape shape{pixelCount, pixelCount * n, firstSample + done};
         if (options.megakernel) {
-            launchMegakernel(scene, buffers(), shape, stream);
+            launchMegakernel(scene, b, shape, stream);
         } else {
-            runWavefront(scene, shape, options, stream);
+            runWavefront(scene, b, shape, options, stream);
         }
-        launchAccumulate(buffers(), shape, sum, stream);
+        launchAccumulate(b, shape, sum, stream);
         done += n;
     }
 }
 
-void PathScheduler::runWavefront(const RenderScene& scene, const WaveShape& shape, const ScheduleOptions& options,
-                                 cudaStream_t stream) {
-    WaveBuffers b = buffers();
+void PathScheduler::runWavefront(const RenderScene& scene, WaveBuffers b, const WaveShape& shape,
+                                 const ScheduleOptions& options, cudaStream_t stream) {
     launchGeneratePaths(scene, b, shape, stream);
-    const bool cacheReads = options.firstHitCache && firstHitsValid_;
-    const bool cacheWrites = options.firstHitCache && !firstHitsValid_;
+    // Cached hits serve bvh_cost only where their traversal work was cached with them.
+    const bool cacheValid = firstHitsValid_ && (b.firstHitCosts == nullptr || firstHitCostsValid_);
+    const bool cacheReads = options.firstHitCache && cacheValid;
+    const bool cacheWrites = options.firstHitCache && !cacheValid;
     const uint32_t keyBits = bitsFor(options.materialCount + 1);
     // Per-bounce queue sizes live at a fixed offset of the counters; they are reset before
     // each shade and read back after it.
@@ -129,7 +144,10 @@ void PathScheduler::runWavefront(const RenderScene& scene, const WaveShape& shap
             count = hostCounters_->alive > 0 ? shape.pathCount : 0;
         }
     }
-    if (cacheWrites) firstHitsValid_ = true;
+    if (cacheWrites) {
+        firstHitsValid_ = true;
+        firstHitCostsValid_ = b.firstHitCosts != nullptr;
+    }
     launchFinishPaths(b, shape, stream);
 }
 
@@ -138,9 +156,9 @@ void PathScheduler::resetCounters(cudaStream_t stream) { counters_.fillZero(stre
 RenderCounters PathScheduler::counters() const { return counters_.download()[0]; }
 
 uint64_t PathScheduler::bytes() const {
-    return paths_.bytes() + hits_.bytes() + firstHits_.bytes() + shadows_.bytes() + queue0_.bytes() +
-           queue1_.bytes() + shadowQueue_.bytes() + sortKeys0_.bytes() + sortKeys1_.bytes() + sortScratch_.bytes() +
-           radiance_.bytes() + counters_.bytes();
+    return paths_.bytes() + hits_.bytes() + firstHits_.bytes() + firstHitCosts_.bytes() + shadows_.bytes() +
+           queue0_.bytes() + queue1_.bytes() + shadowQueue_.bytes() + sortKeys0_.bytes() + sortKeys1_.bytes() +
+           sortScratch_.bytes() + radiance_.bytes() + counters_.bytes();
 }
 
 }  // namespace pt::cuda

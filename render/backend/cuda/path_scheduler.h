@@ -30,24 +30,27 @@ public:
     // Forget cached camera-ray hits (the scene, camera or image size changed).
     void invalidateFirstHits() { firstHitsValid_ = false; }
 
-    // Adds samples firstSample .. firstSample + samples - 1 of every pixel to `sum` (RGB doubles).
+    // Adds samples firstSample .. firstSample + samples - 1 of every pixel to `sum` (RGB doubles)
+    // and to the AOVs of `aovs`.
     void render(const RenderScene& scene, uint32_t firstSample, uint32_t samples, const ScheduleOptions& options,
-                double* sum, cudaStream_t stream);
+                double* sum, const AovBuffers& aovs, cudaStream_t stream);
 
     void resetCounters(cudaStream_t stream);
     RenderCounters counters() const;    // rays and non-finite samples since resetCounters; synchronises
     // Paths alive at the start of each bounce of the last wavefront wave.
     const std::vector<uint32_t>& pathsPerBounce() const { return pathsPerBounce_; }
     uint64_t bytes() const;
+    uint64_t aovBytes() const { return firstHitCosts_.bytes(); }  // within bytes()
 
 private:
-    void reserve(uint32_t pixelCount, uint32_t pathCount, const ScheduleOptions& options);
-    WaveBuffers buffers() const;
-    void runWavefront(const RenderScene& scene, const WaveShape& shape, const ScheduleOptions& options,
-                      cudaStream_t stream);
+    void reserve(uint32_t pixelCount, uint32_t pathCount, const ScheduleOptions& options, bool cacheCosts);
+    WaveBuffers buffers(const AovBuffers& aovs) const;
+    void runWavefront(const RenderScene& scene, WaveBuffers b, const WaveShape& shape,
+                      const ScheduleOptions& options, cudaStream_t stream);
 
     DeviceBuffer<PathState> paths_;
     DeviceBuffer<Hit> hits_, firstHits_;
+    DeviceBuffer<TraversalStats> firstHitCosts_;  // only while bvh_cost and the first-hit cache are on
     DeviceBuffer<ShadowRay> shadows_;
     DeviceBuffer<uint32_t> queue0_, queue1_, shadowQueue_, sortKeys0_, sortKeys1_;
     DeviceBuffer<uint8_t> sortScratch_;
@@ -55,6 +58,7 @@ private:
     DeviceBuffer<RenderCounters> counters_;
     RenderCounters* hostCounters_ = nullptr;  // pinned, for the per-bounce queue sizes
     bool firstHitsValid_ = false;
+    bool firstHitCostsValid_ = false;  // firstHitCosts_ was written with firstHits_
     uint32_t firstHitsPixels_ = 0;
     std::vector<uint32_t> pathsPerBounce_;
 };

@@ -26,6 +26,9 @@ __global__ void generateKernel(RenderScene scene, WaveBuffers b, WaveShape shape
     b.shadows[i].valid = false;  // read in place when compaction is off
 }
 
+// kCost: the bvh_cost AOV is on, so camera segments (depth 0, also past alpha-transparent
+// surfaces) count their traversal work; without, no counter exists.
+template <bool kCost>
 __global__ void extendKernel(RenderScene scene, WaveBuffers b, WaveShape shape, const uint32_t* queue,
                              uint32_t count, bool readCache, bool writeCache) {
     const uint32_t i = threadIndex();
@@ -33,15 +36,22 @@ __global__ void extendKernel(RenderScene scene, WaveBuffers b, WaveShape shape, 
     const uint32_t path = queue ? queue[i] : i;
     if (!queue && !b.paths[path].alive) return;
     const uint32_t pixel = path % shape.pixelCount;
+    const bool counted = kCost && b.paths[path].depth == 0;
     Hit hit;
+    TraversalStats cost;
     if (readCache) {
         hit = b.firstHits[pixel];
+        if (kCost) cost = b.firstHitCosts[pixel];
     } else {
-        intersectClosest(scene, b.paths[path].ray, hit);
+        intersectClosest(scene, b.paths[path].ray, hit, counted ? &cost : nullptr);
         warpAtomicAdd(&b.counters->rays, 1u);
         // Every sample of a pixel shares the camera ray here, so sample 0 speaks for all.
-        if (writeCache && path < shape.pixelCount) b.firstHits[pixel] = hit;
+        if (writeCache && path < shape.pixelCount) {
+            b.firstHits[pixel] = hit;
+            if (kCost) b.firstHitCosts[pixel] = cost;
+        }
     }
+    if (counted) addAovCost(b.aovs, pixel, cost);
     b.hits[path] = hit;
 }
 
@@ -68,6 +78,8 @@ __global__ void materialKeyKernel(RenderScene scene, WaveBuffers b, uint32_t cou
     b.sortKeys[0][i] = key;
 }
 
+// kAovs: paths record AOVs; without, the kernel is the one that ran before AOVs existed.
+template <bool kAovs>
 __global__ void shadeKernel(RenderScene scene, WaveBuffers b, const uint32_t* queue, uint32_t count, bool compaction) {
     const uint32_t i = threadIndex();
     if (i >= count) return;
@@ -75,11 +87,18 @@ __global__ void shadeKernel(RenderScene scene, WaveBuffers b, const uint32_t* qu
     PathState state = b.paths[path];
     if (!state.alive) return;
     const Hit hit = b.hits[path];
+    const bool cameraSegment = kAovs && state.depth == 0;
+    AovSample aov;  // instance stays -1 unless an opaque surface is recorded
     ShadowRay shadow{};
     if (hit.valid()) {
-        shadow = shadeSurface(scene, state, hit);
+        shadow = shadeSurface(scene, state, hit, cameraSegment ? &aov : nullptr);
     } else {
         shadeMiss(scene, state);
+    }
+    // The camera segment ends at its first opaque surface or where it leaves the scene; an
+    // alpha-transparent surface only moved it on, and a later shade records it.
+    if (cameraSegment && (!hit.valid() || aov.instance >= 0)) {
+        addAovSample(b.aovs, state.sampler.pixel, state.sampler.sampleIndex, aov);
     }
     b.paths[path] = state;
     if (compaction) {
@@ -124,11 +143,15 @@ __global__ void accumulateKernel(WaveBuffers b, WaveShape shape, double* sum) {
     const uint32_t pixel = threadIndex();
     if (pixel >= shape.pixelCount) return;
     double r = sum[3 * pixel + 0], g = sum[3 * pixel + 1], bl = sum[3 * pixel + 2];
+    const bool variance = b.aovs.has(Aov::Variance);
     // In sample order, one addition at a time, exactly as the CPU backend adds them.
-    for (uint32_t path = pixel; path < shape.pathCount; path += shape.pixelCount) {
-        r += double(b.radiance[3 * path + 0]);
-        g += double(b.radiance[3 * path + 1]);
-        bl += double(b.radiance[3 * path + 2]);
+    uint32_t sample = shape.firstSample;
+    for (uint32_t path = pixel; path < shape.pathCount; path += shape.pixelCount, ++sample) {
+        const Vec3 radiance(b.radiance[3 * path + 0], b.radiance[3 * path + 1], b.radiance[3 * path + 2]);
+        r += double(radiance.x);
+        g += double(radiance.y);
+        bl += double(radiance.z);
+        if (variance) addVarianceSample(b.aovs, pixel, sample, radiance);
     }
     sum[3 * pixel + 0] = r;
     sum[3 * pixel + 1] = g;
@@ -145,7 +168,8 @@ void launchGeneratePaths(const RenderScene& scene, const WaveBuffers& b, const W
 void launchExtend(const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape, const uint32_t* queue,
                   uint32_t count, bool readCache, bool writeCache, cudaStream_t stream) {
     if (count == 0) return;
-    extendKernel<<<blocksFor(count), kBlock, 0, stream>>>(scene, b, shape, queue, count, readCache, writeCache);
+    const auto kernel = b.aovs.has(Aov::BvhCost) ? extendKernel<true> : extendKernel<false>;
+    kernel<<<blocksFor(count), kBlock, 0, stream>>>(scene, b, shape, queue, count, readCache, writeCache);
     PT_CUDA_CHECK_LAUNCH("extendKernel");
 }
 
@@ -171,7 +195,8 @@ void launchSortByMaterial(const RenderScene& scene, const WaveBuffers& b, uint32
 void launchShade(const RenderScene& scene, const WaveBuffers& b, const uint32_t* queue, uint32_t count,
                  bool compaction, cudaStream_t stream) {
     if (count == 0) return;
-    shadeKernel<<<blocksFor(count), kBlock, 0, stream>>>(scene, b, queue, count, compaction);
+    const auto kernel = (b.aovs.mask & kPathAovs) ? shadeKernel<true> : shadeKernel<false>;
+    kernel<<<blocksFor(count), kBlock, 0, stream>>>(scene, b, queue, count, compaction);
     PT_CUDA_CHECK_LAUNCH("shadeKernel");
 }
 

@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "render/bvh/hit.h"
+#include "render/integrator/aov.h"
 #include "render/integrator/path_state.h"
 #include "render/scene/render_scene.h"
 
@@ -30,8 +31,10 @@ struct WaveBuffers {
     uint32_t* shadowQueue;
     uint32_t* sortKeys[2];      // material sort: keys in, keys out
     Hit* firstHits;             // first-hit cache, one per pixel (nullptr: no cache)
+    TraversalStats* firstHitCosts;  // their traversal work, for bvh_cost (nullptr: not needed)
     float* radiance;            // RGB per path: the finished samples of the wave
     RenderCounters* counters;
+    AovBuffers aovs;            // per-pixel AOV sums (mask 0: none)
 };
 
 struct WaveShape {
@@ -43,7 +46,8 @@ struct WaveShape {
 void launchGeneratePaths(const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape, cudaStream_t stream);
 
 // Closest hits of the paths in `queue` (count entries; all paths when queue is nullptr).
-// readCache: camera rays whose hits are in b.firstHits; writeCache: store them there.
+// readCache: camera rays whose hits are in b.firstHits; writeCache: store them there. With the
+// bvh_cost AOV, camera segments count their traversal work into it.
 void launchExtend(const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape, const uint32_t* queue,
                   uint32_t count, bool readCache, bool writeCache, cudaStream_t stream);
 
@@ -56,7 +60,8 @@ void launchSortByMaterial(const RenderScene& scene, const WaveBuffers& b, uint32
 
 // Shading of the paths in `queue` (all paths when nullptr). With compaction, live paths are
 // appended to b.queue[1] and valid shadow rays to b.shadowQueue; without, shadows are marked
-// valid in place and b.counters->alive counts the live paths.
+// valid in place and b.counters->alive counts the live paths. Camera segments that end here
+// add their AOVs to b.aovs.
 void launchShade(const RenderScene& scene, const WaveBuffers& b, const uint32_t* queue, uint32_t count,
                  bool compaction, cudaStream_t stream);
 
@@ -69,7 +74,8 @@ void launchShadow(const RenderScene& scene, const WaveBuffers& b, const uint32_t
 // Finished paths' radiance into b.radiance, non-finite samples counted and zeroed.
 void launchFinishPaths(const WaveBuffers& b, const WaveShape& shape, cudaStream_t stream);
 
-// The megakernel: each thread traces one whole path (tracePath) into b.radiance.
+// The megakernel: each thread traces one whole path (tracePath) into b.radiance, and its AOVs
+// into b.aovs.
 void launchMegakernel(const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape, cudaStream_t stream);
 
 // Traversal alone (Backend::traceRays): closest hits, or with anyHit occlusion as instance 0 /
@@ -77,7 +83,8 @@ void launchMegakernel(const RenderScene& scene, const WaveBuffers& b, const Wave
 void launchTraceRays(const RenderScene& scene, const Ray* rays, uint32_t count, bool anyHit, Hit* hits,
                      cudaStream_t stream);
 
-// Adds the wave's samples to the per-pixel double sums (RGB), samples of a pixel in order.
+// Adds the wave's samples to the per-pixel double sums (RGB), samples of a pixel in order, and
+// to the variance AOV where it is on.
 void launchAccumulate(const WaveBuffers& b, const WaveShape& shape, double* sum, cudaStream_t stream);
 
 }  // namespace pt::cuda

@@ -1,0 +1,124 @@
+// pt-render converge: error against a reference as a function of render time, one curve per
+// set of toggles, compared at equal time (DESIGN.md, "Error against run time").
+#include <cstdio>
+#include <string>
+
+#include "assets/atomic_file.h"
+#include "cli_options.h"
+#include "commands.h"
+#include "converge_reference.h"
+#include "converge_report.h"
+#include "converge_variant.h"
+#include "output_paths.h"
+#include "progress_bar.h"
+#include "render_setup.h"
+#include "scene_input.h"
+#include "svg_plot.h"
+#include "toggle_options.h"
+
+namespace pt::cli {
+
+namespace {
+
+constexpr double kDefaultSeconds = 10.0;
+
+struct ConvergeRequest {
+    std::string scenePath, referencePath, referenceConstant, csvPath, plotPath;
+    double seconds = kDefaultSeconds;
+    std::vector<ConvergeVariant> variants;
+    RenderSetup setup;
+};
+
+// --variant may be given many times, which Options (one value a flag) does not hold: take
+// those out first.
+std::vector<std::string> takeVariants(std::vector<std::string>& args) {
+    std::vector<std::string> specs;
+    for (size_t i = 0; i < args.size();) {
+        if (args[i] != "--variant") {
+            ++i;
+            continue;
+        }
+        if (i + 1 >= args.size()) throw UsageError("--variant needs a value");
+        specs.push_back(args[i + 1]);
+        args.erase(args.begin() + long(i), args.begin() + long(i) + 2);
+    }
+    return specs;
+}
+
+ConvergeRequest parseRequest(std::vector<std::string> args) {
+    std::vector<std::string> specs = takeVariants(args);
+    const Options o(args, joined({"--reference", "--reference-constant", "--time", "--csv", "--plot"}, renderSetupValuedFlags()),
+                    renderSetupSwitches());
+    if (o.positional().size() != 1) throw UsageError("expected one SCENE argument");
+    ConvergeRequest r;
+    r.scenePath = o.positional()[0];
+    r.referencePath = o.value("--reference").value_or("");
+    r.referenceConstant = o.value("--reference-constant").value_or("");
+    if (r.referencePath.empty() == r.referenceConstant.empty()) {
+        throw UsageError("give one of --reference REF.exr and --reference-constant R,G,B");
+    }
+    r.csvPath = o.value("--csv").value_or("");
+    r.plotPath = o.value("--plot").value_or("");
+    r.seconds = o.positiveNumber("--time").value_or(kDefaultSeconds);
+    r.setup = parseRenderSetup(o);
+    if (specs.empty()) specs = {"full", "naive:nee=off,mis=off,rr=off"};
+    for (const std::string& spec : specs) {
+        r.variants.push_back(parseVariant(spec));
+        for (size_t i = 0; i + 1 < r.variants.size(); ++i) {
+            if (r.variants[i].name == r.variants.back().name) throw UsageError("two variants are named " + r.variants[i].name);
+        }
+    }
+    return r;
+}
+
+LogLogPlot plotOf(const std::vector<VariantCurve>& curves, const std::string& sceneName) {
+    LogLogPlot plot;
+    plot.title = "relMSE against render time: " + sceneName;
+    plot.xLabel = "render time (s)";
+    plot.yLabel = "relMSE";
+    plot.guideSlope = -1.0;
+    plot.guideLabel = "slope -1";
+    for (const VariantCurve& c : curves) {
+        PlotSeries series{c.name, {}};
+        for (const ConvergePoint& p : c.points) series.points.emplace_back(p.seconds, p.error.relMse);
+        plot.series.push_back(std::move(series));
+    }
+    return plot;
+}
+
+}  // namespace
+
+int runConverge(const std::vector<std::string>& args) {
+    const ConvergeRequest r = parseRequest(args);
+    checkOutputFolder(r.csvPath);
+    checkOutputFolder(r.plotPath);
+    const auto threadLimit = limitThreads(r.setup);
+    ProgressBar bar(!r.setup.quiet);
+    SceneInput input = loadSceneInput(r.scenePath, bar);
+    applyRenderSetup(r.setup, input.scene);
+    const uint32_t width = input.scene.render.width, height = input.scene.render.height;
+    const ConvergeReference reference = r.referencePath.empty()
+                                            ? constantReference(r.referenceConstant, width, height)
+                                            : readReferenceImage(r.referencePath, width, height);
+
+    std::vector<VariantCurve> curves;
+    for (const ConvergeVariant& variant : r.variants) {
+        const auto backend = syncedBackend(r.setup, variant.toggles, input.scene, bar);
+        backend->render(1);  // warm-up (thread pools, first-touch pages), not charged to the variant
+        backend->resetAccumulation();
+        const ProgressFn progress = [&](const std::string&, double f) { bar.update(variant.name, f); };
+        curves.push_back({variant.name, measureConvergence(*backend, reference.rgba, r.seconds, progress)});
+        bar.finish();
+        if (!r.setup.quiet) {
+            const ConvergePoint& last = curves.back().points.back();
+            std::fprintf(stderr, "%s: %u spp in %.2f s, relMSE %.4g\n", variant.name.c_str(), last.spp, last.seconds,
+                         last.error.relMse);
+        }
+    }
+    if (!r.csvPath.empty()) writeTextAtomically(r.csvPath, convergeCsv(curves));
+    if (!r.plotPath.empty()) writeTextAtomically(r.plotPath, svgLogLogPlot(plotOf(curves, r.scenePath)));
+    printConvergeSummary(stdout, curves, reference.noiseRelMse);
+    return 0;
+}
+
+}  // namespace pt::cli

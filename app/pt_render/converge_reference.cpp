@@ -1,0 +1,57 @@
+#include "converge_reference.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+
+#include "assets/image_metadata.h"
+#include "assets/image_write.h"
+#include "cli_options.h"
+
+namespace pt::cli {
+
+ConvergeReference readReferenceImage(const std::string& path, uint32_t width, uint32_t height) {
+    ConvergeReference reference;
+    uint32_t w = 0, h = 0;
+    reference.rgba = readImageRgba(path, w, h);
+    if (w != width || h != height) {
+        throw std::runtime_error(path + ": the reference is " + std::to_string(w) + "x" + std::to_string(h) +
+                                 " but the render is " + std::to_string(width) + "x" + std::to_string(height) +
+                                 " (render the reference at this size, or pass --size " + std::to_string(w) + "x" +
+                                 std::to_string(h) + ")");
+    }
+    for (const auto& [key, value] : readImageMetadata(path)) {
+        if (key == "pt:noise_relmse") reference.noiseRelMse = std::strtod(value.c_str(), nullptr);
+    }
+    return reference;
+}
+
+ConvergeReference constantReference(const std::string& rgb, uint32_t width, uint32_t height) {
+    float color[3];
+    const char* text = rgb.c_str();
+    for (int c = 0; c < 3; ++c) {
+        char* end = nullptr;
+        const double v = std::strtod(text, &end);
+        if (end == text || !std::isfinite(v) || v < 0) {
+            throw UsageError("--reference-constant: expected R,G,B (finite, >= 0), got \"" + rgb + "\"");
+        }
+        color[c] = float(v);
+        if (c == 0 && *end == '\0') {  // one number: grey
+            color[1] = color[2] = color[0];
+            break;
+        }
+        if (*end != (c < 2 ? ',' : '\0')) {
+            throw UsageError("--reference-constant: expected R,G,B (finite, >= 0), got \"" + rgb + "\"");
+        }
+        text = end + 1;
+    }
+    ConvergeReference reference;
+    reference.rgba.resize(size_t(width) * height * 4);
+    for (size_t i = 0; i < reference.rgba.size(); i += 4) {
+        reference.rgba[i] = color[0], reference.rgba[i + 1] = color[1], reference.rgba[i + 2] = color[2];
+        reference.rgba[i + 3] = 1.0f;
+    }
+    return reference;
+}
+
+}  // namespace pt::cli

@@ -1,0 +1,24 @@
+#pragma once
+// A --variant of `pt-render converge`: "NAME" (the default toggles) or
+// "NAME:KEY=VALUE,KEY=VALUE". Keys are the toggle names of stats and the editor
+// (render/backend/toggle_states.h): nee, mis, rr, bvh, pixel_jitter, megakernel, compaction,
+// material_sort, first_hit_cache take on/off; clamp and rebuild_ratio take a number. Each
+// key is turned into the render command's flag and read by parseToggles, so a variant means
+// exactly what the same flags mean to `pt-render render`.
+#include <string>
+#include <vector>
+
+#include "render/backend/backend.h"
+
+namespace pt::cli {
+
+struct ConvergeVariant {
+    std::string name;
+    std::string spec;  // as given, for reports
+    IntegratorToggles toggles;
+};
+
+// Throws UsageError naming the spec and the bad key or value.
+ConvergeVariant parseVariant(const std::string& spec);
+
+}  // namespace pt::cli

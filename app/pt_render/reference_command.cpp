@@ -1,0 +1,84 @@
+// pt-render reference: a high-spp render to compare against, written as a float EXR that
+// carries an estimate of its own noise (see batched_render.h for how it is measured).
+#include <cstdio>
+#include <string>
+
+#include "assets/image_write.h"
+#include "batched_render.h"
+#include "cli_options.h"
+#include "commands.h"
+#include "output_paths.h"
+#include "progress_bar.h"
+#include "render/util/image_error.h"
+#include "render_setup.h"
+#include "scene_input.h"
+#include "toggle_options.h"
+
+namespace pt::cli {
+
+namespace {
+
+constexpr uint32_t kDefaultBatches = 8;
+
+struct ReferenceRequest {
+    std::string scenePath, exrPath;
+    uint32_t spp = 0, batches = kDefaultBatches;
+    RenderSetup setup;
+    IntegratorToggles toggles;
+};
+
+ReferenceRequest parseRequest(const std::vector<std::string>& args) {
+    const Options o(args, joined(joined({"-o", "--spp", "--batches"}, renderSetupValuedFlags()), toggleValuedFlags()),
+                    joined(renderSetupSwitches(), toggleSwitches()));
+    if (o.positional().size() != 1) throw UsageError("expected one SCENE argument");
+    ReferenceRequest r;
+    r.scenePath = o.positional()[0];
+    r.exrPath = o.value("-o").value_or("");
+    if (r.exrPath.empty()) throw UsageError("give an output: -o REF.exr");
+    const auto spp = o.positiveInt("--spp");
+    if (!spp) throw UsageError("give the sample count: --spp N");
+    r.spp = *spp;
+    r.batches = o.positiveInt("--batches").value_or(kDefaultBatches);
+    if (r.batches < 2) throw UsageError("--batches: at least 2 are needed to estimate the noise");
+    if (r.spp < r.batches) throw UsageError("--spp must be at least --batches (" + std::to_string(r.batches) + ")");
+    r.setup = parseRenderSetup(o);
+    r.toggles = parseToggles(o);
+    return r;
+}
+
+}  // namespace
+
+int runReference(const std::vector<std::string>& args) {
+    const ReferenceRequest r = parseRequest(args);
+    checkOutputFolder(r.exrPath);
+    const auto threadLimit = limitThreads(r.setup);
+    ProgressBar bar(!r.setup.quiet);
+    SceneInput input = loadSceneInput(r.scenePath, bar);
+    applyRenderSetup(r.setup, input.scene);
+    const auto backend = syncedBackend(r.setup, r.toggles, input.scene, bar);
+
+    // Equal batches keep the variance estimate simple; the count rounds up to a multiple.
+    const uint32_t sppPerBatch = (r.spp + r.batches - 1) / r.batches;
+    const BatchedImage image = renderBatches(*backend, input.scene, sppPerBatch, r.batches, bar.callback());
+    bar.finish();
+    const NoiseLevel noise = noiseLevel(image.varianceOfMean, image.mean);
+    const ImageMetadata metadata = {{"pt:spp", std::to_string(image.spp)},
+                                    {"pt:batches", std::to_string(image.batches)},
+                                    {"pt:noise_relmse", formatFigure(noise.relMse)},
+                                    {"pt:noise_rmse", formatFigure(noise.rmse)},
+                                    {"pt:nonfinite_samples", std::to_string(image.nonfiniteSamples)},
+                                    {"pt:render_seconds", formatFigure(image.renderSeconds)},
+                                    {"pt:backend", backend->name()},
+                                    {"pt:scene", r.scenePath},
+                                    {"Software", "pt-render 0.1"}};
+    writeExr(r.exrPath, backend->width(), backend->height(), image.mean, metadata);
+    std::printf("%s\n", r.exrPath.c_str());
+    if (!r.setup.quiet) {
+        std::fprintf(stderr, "%ux%u, %u spp in %u batches, %.2f s; estimated noise of the mean: relMSE %.3g, RMSE %.3g\n",
+                     backend->width(), backend->height(), image.spp, image.batches, image.renderSeconds,
+                     noise.relMse, noise.rmse);
+    }
+    return 0;
+}
+
+}  // namespace pt::cli

@@ -1,0 +1,49 @@
+#include "editor/command_stack.h"
+
+namespace pt::editor {
+
+SceneChangeMask CommandStack::execute(Document& doc, std::unique_ptr<EditCommand> command) {
+    const SceneChangeMask changes = command->apply(doc);
+    redo_.clear();
+    const std::string key = command->mergeKey();
+    if (mergeOpen_ && !key.empty() && !undo_.empty() && undo_.back().command->mergeKey() == key) {
+        undo_.back().command->mergeFrom(*command);
+    } else {
+        undo_.push_back({nextId_++, std::move(command)});
+    }
+    mergeOpen_ = !key.empty();
+    return changes;
+}
+
+SceneChangeMask CommandStack::undo(Document& doc) {
+    mergeOpen_ = false;
+    if (undo_.empty()) return SceneChanges::None;
+    Entry entry = std::move(undo_.back());
+    undo_.pop_back();
+    const SceneChangeMask changes = entry.command->revert(doc);
+    redo_.push_back(std::move(entry));
+    return changes;
+}
+
+SceneChangeMask CommandStack::redo(Document& doc) {
+    mergeOpen_ = false;
+    if (redo_.empty()) return SceneChanges::None;
+    Entry entry = std::move(redo_.back());
+    redo_.pop_back();
+    const SceneChangeMask changes = entry.command->apply(doc);
+    undo_.push_back(std::move(entry));
+    return changes;
+}
+
+void CommandStack::clear() {
+    undo_.clear();
+    redo_.clear();
+    markSaved();
+}
+
+void CommandStack::markSaved() {
+    mergeOpen_ = false;
+    savedState_ = currentState();
+}
+
+}  // namespace pt::editor

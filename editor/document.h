@@ -1,0 +1,24 @@
+#pragma once
+// Document: everything an editor command may change. The scene is what gets saved; the
+// toggles and display settings are the session's renderer and viewer state, undoable like
+// scene edits (STYLE.md rule 6) but never written into scene JSON.
+#include "render/backend/backend.h"
+#include "render/display/display_transform.h"
+#include "render/scene/scene.h"
+
+namespace pt::editor {
+
+struct ViewerSettings {
+    DisplaySettings display;
+    int32_t aov = -1;                 // -1: the beauty; else a pt::Aov value
+    uint32_t samplesPerFrame = 1;     // passes per render step (more: fewer syncs, slower UI)
+    uint32_t targetSpp = 0;           // stop accumulating here; 0 = never stop
+};
+
+struct Document {
+    Scene scene;
+    IntegratorToggles toggles;
+    ViewerSettings viewer;
+};
+
+}  // namespace pt::editor

@@ -1,0 +1,174 @@
+#include "editor/editor_session.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "assets/image_write.h"
+#include "assets/scene_loader.h"
+#include "editor/scene_saving.h"
+
+namespace pt::editor {
+
+EditorSession::EditorSession(std::unique_ptr<Backend> backend) : backend_(std::move(backend)) {
+    if (!backend_) throw std::invalid_argument("EditorSession needs a backend");
+}
+
+std::string EditorSession::open(const std::string& path, const ProgressFn& progress) {
+    LoadResult loaded = loadScene(path, progress);
+    if (!loaded.ok()) return loaded.error;
+    adopt(std::move(*loaded.scene));
+    return {};
+}
+
+void EditorSession::adopt(Scene scene) {
+    doc_.scene = std::move(scene);
+    materialsAtLoad_ = materialParams(doc_.scene);
+    resolutionOverridden_ = false;
+    history_.clear();
+    pending_ = SceneChanges::All;
+    std::lock_guard<std::mutex> lock(statusMutex_);
+    lastEdit_ = {};
+}
+
+void EditorSession::noteEdit(const std::string& label, SceneChangeMask changes) {
+    pending_ |= changes;
+    if ((changes & ~SceneChangeMask(SceneChanges::Display)) == 0) return;  // nothing to render again
+    std::lock_guard<std::mutex> lock(statusMutex_);
+    lastEdit_ = {};
+    lastEdit_.label = label;
+    editStart_ = Clock::now();
+}
+
+SceneChangeMask EditorSession::execute(std::unique_ptr<EditCommand> command) {
+    const std::string label = command->label();
+    const SceneChangeMask changes = history_.execute(doc_, std::move(command));
+    noteEdit(label, changes);
+    return changes;
+}
+
+bool EditorSession::undo() {
+    if (!history_.canUndo()) return false;
+    const std::string label = "Undo " + history_.undoLabel();
+    noteEdit(label, history_.undo(doc_));
+    return true;
+}
+
+bool EditorSession::redo() {
+    if (!history_.canRedo()) return false;
+    const std::string label = "Redo " + history_.redoLabel();
+    noteEdit(label, history_.redo(doc_));
+    return true;
+}
+
+void EditorSession::overrideResolution(uint32_t width, uint32_t height) {
+    fileRender_ = doc_.scene.render;
+    doc_.scene.render.width = width;
+    doc_.scene.render.height = height;
+    overriddenRender_ = doc_.scene.render;
+    resolutionOverridden_ = true;
+    pending_ |= SceneChanges::Settings;
+}
+
+void EditorSession::save(const std::string& path) {
+    RenderSettings& render = doc_.scene.render;
+    const RenderSettings shown = render;
+    const bool restore = resolutionOverridden_ && shown.width == overriddenRender_.width &&
+                         shown.height == overriddenRender_.height;
+    if (restore) {
+        render.width = fileRender_.width;
+        render.height = fileRender_.height;
+    }
+    try {
+        saveSceneJson(doc_.scene, materialsAtLoad_, path);
+    } catch (...) {
+        render = shown;
+        throw;
+    }
+    render = shown;
+    history_.markSaved();
+}
+
+SyncReport EditorSession::sync(const ProgressFn& progress) {
+    SceneChangeMask changes = pending_ & ~SceneChangeMask(SceneChanges::Display);
+    pending_ = SceneChanges::None;
+    // Only the AOV on screen is accumulated (the others are not even allocated).
+    const int32_t aov = doc_.viewer.aov;
+    const AovMask wanted = aov >= 0 && aov < int32_t(Aov::Count) ? aovBit(Aov(aov)) : 0u;
+    if (backend_->aovs() != wanted) {
+        backend_->setAovs(wanted);
+        changes |= SceneChanges::Settings;
+    }
+    if (changes == SceneChanges::None) return {"nothing", 0.0, 0.0, {}};
+    if (changes & SceneChanges::Settings) backend_->setToggles(doc_.toggles);
+    SyncReport report;
+    try {
+        report = backend_->sync(doc_.scene, changes, progress);
+    } catch (...) {
+        pending_ |= changes;  // still owed: the next sync tries again (e.g. after an undo)
+        throw;
+    }
+    std::lock_guard<std::mutex> lock(statusMutex_);
+    lastSync_ = report;
+    lastEdit_.action = report.action;
+    lastEdit_.syncSeconds = report.seconds;
+    return report;
+}
+
+bool EditorSession::converged(uint32_t target) const {
+    return target > 0 && backend_->stats().samplesPerPixel >= target;
+}
+
+void EditorSession::readDisplayed(int32_t aov, std::vector<float>& rgba) const {
+    if (aov >= 0 && (backend_->aovs() & aovBit(Aov(aov)))) {
+        backend_->readAov(Aov(aov), rgba);
+        return;
+    }
+    backend_->readBeauty(rgba);
+}
+
+EditLatency EditorSession::lastEdit() const {
+    std::lock_guard<std::mutex> lock(statusMutex_);
+    return lastEdit_;
+}
+
+SyncReport EditorSession::lastSync() const {
+    std::lock_guard<std::mutex> lock(statusMutex_);
+    return lastSync_;
+}
+
+uint32_t EditorSession::render(uint32_t passes, uint32_t target) {
+    const uint32_t done = backend_->stats().samplesPerPixel;
+    if (target > 0) passes = done >= target ? 0 : std::min(passes, target - done);
+    if (passes == 0) return 0;
+    backend_->render(passes);
+    std::lock_guard<std::mutex> lock(statusMutex_);
+    if (!lastEdit_.complete && !lastEdit_.label.empty()) {
+        lastEdit_.toFrameSeconds = secondsSince(editStart_);
+        lastEdit_.complete = true;
+    }
+    return passes;
+}
+
+void EditorSession::setBackend(std::unique_ptr<Backend> backend) {
+    if (!backend) throw std::invalid_argument("setBackend: no backend");
+    backend_ = std::move(backend);
+    pending_ = SceneChanges::All;
+}
+
+void EditorSession::exportRender(const std::string& exrPath, const std::string& displayPath) const {
+    std::vector<float> beauty;
+    backend_->readBeauty(beauty);
+    const BackendStats stats = backend_->stats();
+    const ImageMetadata metadata = {{"pt:spp", std::to_string(stats.samplesPerPixel)},
+                                    {"pt:render_seconds", std::to_string(stats.renderSeconds)},
+                                    {"pt:backend", backend_->name()},
+                                    {"pt:scene", doc_.scene.sourcePath},
+                                    {"pt:tone_mapper", toneMapperName(doc_.viewer.display.toneMapper)},
+                                    {"pt:exposure", std::to_string(doc_.viewer.display.exposureStops)},
+                                    {"Software", "pathtracer editor 0.1"}};
+    const uint32_t w = backend_->width(), h = backend_->height();
+    if (!exrPath.empty()) writeExr(exrPath, w, h, beauty, metadata);
+    if (!displayPath.empty()) writeDisplayImage(displayPath, w, h, encodeDisplay8(beauty, doc_.viewer.display), metadata);
+}
+
+}  // namespace pt::editor

@@ -1,0 +1,96 @@
+#pragma once
+// EditorSession: the editor without a window. It holds the document, its undo history and a
+// backend, turns edits into the least backend work (their SceneChanges), and renders. The
+// window (editor/ui) drives it from two threads through RenderWorker; tests and the
+// `pt-render editbench` latency benchmark drive it directly, so what they measure is the
+// editor's own path from an edit to a frame.
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "editor/command_stack.h"
+#include "editor/picking.h"
+#include "render/util/progress.h"
+#include "render/util/stopwatch.h"
+
+namespace pt::editor {
+
+// What the last edit cost, from the command to the first frame that shows it.
+struct EditLatency {
+    std::string label;              // the command, e.g. "Edit material white"
+    std::string action;             // what sync did: nothing / reset / materials / TLAS / refit / rebuild / full build
+    double syncSeconds = 0.0;       // backend sync alone
+    double toFrameSeconds = 0.0;    // command applied -> first pass of samples done
+    bool complete = false;          // false until that first frame exists
+};
+
+class EditorSession {
+public:
+    explicit EditorSession(std::unique_ptr<Backend> backend);
+
+    // --- The document (the UI thread) ---
+    // Replaces the document with the scene at `path`; on failure returns the loader's message
+    // (naming the file and element) and keeps the current scene. "" on success.
+    std::string open(const std::string& path, const ProgressFn& progress = {});
+    // Takes a scene loaded elsewhere (e.g. on a loader thread) as the new document.
+    void adopt(Scene scene);
+    const Document& document() const { return doc_; }
+    const CommandStack& history() const { return history_; }
+    SceneChangeMask execute(std::unique_ptr<EditCommand> command);
+    bool undo();
+    bool redo();
+    void endDrag() { history_.closeMerge(); }
+    // Renders at width x height without making that an edit (the editor's --size): saving
+    // writes the file's own resolution unless the user changes the resolution afterwards.
+    void overrideResolution(uint32_t width, uint32_t height);
+    // Writes scene JSON (atomic); throws InputError naming the file.
+    void save(const std::string& path);
+    bool modified() const { return history_.modified(); }
+
+    // --- The backend (the render thread) ---
+    // Brings the backend up to date with every edit since the last call. Returns the report;
+    // a backend refusing the scene (e.g. BVH off over its budget) throws std::invalid_argument
+    // and keeps its previous state.
+    SyncReport sync(const ProgressFn& progress = {});
+    SceneChangeMask pendingChanges() const { return pending_; }
+    // Adds up to `passes` samples per pixel, stopping at the viewer's target spp. Returns the
+    // passes rendered.
+    uint32_t render(uint32_t passes) { return render(passes, doc_.viewer.targetSpp); }
+    // The same, with the target given, for a render thread that must not read the document
+    // while the UI thread edits it.
+    uint32_t render(uint32_t passes, uint32_t targetSpp);
+    // The linear image the viewport shows: the beauty (aov -1) or that AOV, RGBA float.
+    void readDisplayed(int32_t aov, std::vector<float>& rgba) const;
+    bool converged() const { return converged(doc_.viewer.targetSpp); }
+    bool converged(uint32_t targetSpp) const;
+    Backend& backend() { return *backend_; }
+    const Backend& backend() const { return *backend_; }
+    void setBackend(std::unique_ptr<Backend> backend);  // everything is synced again
+    PickResult pick(float px, float py) { return editor::pick(*backend_, doc_.scene, px, py); }
+    // Copies: the UI thread reads them while the render thread updates them.
+    EditLatency lastEdit() const;
+    SyncReport lastSync() const;
+
+    // Writes the beauty as float EXR and/or display-referred PNG/JPEG/TIFF (through the
+    // viewer's display settings), with spp, render time, backend and scene in the metadata.
+    void exportRender(const std::string& exrPath, const std::string& displayPath) const;
+
+private:
+    void noteEdit(const std::string& label, SceneChangeMask changes);
+
+    Document doc_;
+    CommandStack history_;
+    std::unique_ptr<Backend> backend_;
+    SceneChangeMask pending_ = SceneChanges::All;
+    std::vector<Material> materialsAtLoad_;
+    RenderSettings fileRender_, overriddenRender_;
+    bool resolutionOverridden_ = false;
+    // Written by both threads (edits on the UI's, frames on the render thread's).
+    mutable std::mutex statusMutex_;
+    EditLatency lastEdit_;
+    Clock::time_point editStart_{};
+    SyncReport lastSync_;
+};
+
+}  // namespace pt::editor

@@ -1,0 +1,144 @@
+#include "editor/render_worker.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace pt::editor {
+
+RenderWorker::RenderWorker(EditorSession& session) : session_(session), thread_([this] { run(); }) {}
+
+RenderWorker::~RenderWorker() {
+    stop_ = true;
+    {
+        std::lock_guard<std::mutex> lock(wakeMutex_);
+        woken_ = true;
+    }
+    wake_.notify_all();
+    thread_.join();
+}
+
+void RenderWorker::edit(const std::function<void(EditorSession&)>& change) {
+    {
+        std::unique_lock<std::shared_mutex> lock(sceneMutex_);
+        change(session_);
+    }
+    {
+        std::lock_guard<std::mutex> lock(wakeMutex_);
+        woken_ = true;
+    }
+    wake_.notify_all();
+}
+
+bool RenderWorker::tryEdit(const std::function<void(EditorSession&)>& change) {
+    {
+        std::unique_lock<std::shared_mutex> lock(sceneMutex_, std::try_to_lock);
+        if (!lock.owns_lock()) return false;
+        change(session_);
+    }
+    {
+        std::lock_guard<std::mutex> lock(wakeMutex_);
+        woken_ = true;
+    }
+    wake_.notify_all();
+    return true;
+}
+
+void RenderWorker::withBackend(const std::function<void(EditorSession&)>& use) {
+    std::lock_guard<std::mutex> lock(backendMutex_);
+    use(session_);
+}
+
+bool RenderWorker::takeFrame(DisplayFrame& out) {
+    std::lock_guard<std::mutex> lock(frameMutex_);
+    if (frame_.serial == taken_) return false;
+    out = frame_;
+    taken_ = frame_.serial;
+    return true;
+}
+
+WorkerStatus RenderWorker::status() const {
+    std::lock_guard<std::mutex> lock(statusMutex_);
+    return status_;
+}
+
+void RenderWorker::setStage(const std::string& stage, double fraction) {
+    std::lock_guard<std::mutex> lock(statusMutex_);
+    status_.stage = stage;
+    status_.fraction = fraction;
+}
+
+void RenderWorker::publishFrame(int32_t aov) {
+    DisplayFrame next;
+    const Backend& backend = session_.backend();
+    next.width = backend.width();
+    next.height = backend.height();
+    next.aov = aov;
+    next.stats = backend.stats();
+    if (hostFrames_ || aov >= 0) session_.readDisplayed(aov, next.rgba);
+    std::lock_guard<std::mutex> lock(frameMutex_);
+    next.serial = frame_.serial + 1;
+    frame_ = std::move(next);
+    publishedAov_ = aov;
+}
+
+bool RenderWorker::step() {
+    SceneChangeMask pending;
+    uint32_t passes, target;
+    int32_t aov;
+    {
+        std::shared_lock<std::shared_mutex> lock(sceneMutex_);
+        pending = session_.pendingChanges();
+        const ViewerSettings& viewer = session_.document().viewer;
+        passes = std::max(viewer.samplesPerFrame, 1u);
+        target = viewer.targetSpp;
+        aov = viewer.aov;
+    }
+    std::lock_guard<std::mutex> backendLock(backendMutex_);
+    bool changed = false;
+    if (pending != SceneChanges::None && !syncRefused_) {
+        std::shared_lock<std::shared_mutex> lock(sceneMutex_);
+        try {
+            const SyncReport report =
+                session_.sync([this](const std::string& stage, double f) { setStage(stage, f); });
+            // Display-only edits (exposure, tone mapper) need no new frame: the shader applies them.
+            changed = report.action != "nothing";
+            std::vector<ToggleState> toggles = session_.backend().toggleStates();
+            std::lock_guard<std::mutex> status(statusMutex_);
+            status_.error.clear();
+            status_.toggles = std::move(toggles);
+            status_.deviceMemoryBytes = session_.backend().deviceMemoryBytes();
+        } catch (const std::exception& e) {
+            syncRefused_ = true;
+            changed = true;
+            std::lock_guard<std::mutex> status(statusMutex_);
+            status_.error = e.what();
+        }
+        setStage("", 0.0);
+    }
+    if (syncRefused_) return false;
+    const auto start = Clock::now();
+    const uint32_t rendered = session_.render(passes, target);
+    if (rendered > 0 || changed || aov != publishedAov_) publishFrame(aov);
+    const double seconds = secondsSince(start);
+    std::vector<uint32_t> alive = rendered > 0 ? session_.backend().pathsAlivePerBounce() : std::vector<uint32_t>{};
+    std::lock_guard<std::mutex> status(statusMutex_);
+    if (rendered > 0) {
+        status_.secondsPerPass = seconds / rendered;
+        status_.pathsAlivePerBounce = std::move(alive);
+    }
+    status_.converged = session_.converged(target);
+    return rendered > 0 || changed;
+}
+
+void RenderWorker::run() {
+    while (!stop_) {
+        if (step()) continue;
+        // Nothing to do (converged, or a refused sync): sleep until an edit wakes us.
+        std::unique_lock<std::mutex> lock(wakeMutex_);
+        wake_.wait_for(lock, std::chrono::milliseconds(100), [this] { return woken_; });
+        if (woken_) syncRefused_ = false;
+        woken_ = false;
+    }
+}
+
+}  // namespace pt::editor

@@ -1,0 +1,91 @@
+#pragma once
+// RenderWorker: the editor's render thread. It syncs the backend after edits and adds samples
+// while the UI thread keeps drawing at its own rate (DESIGN.md: accumulation never blocks the
+// UI). Ownership rules, which keep the two threads apart:
+//   - the UI thread is the only writer of the document: it edits through edit()/tryEdit(),
+//     which hold the scene lock exclusively; it reads the document without locking;
+//   - the render thread reads the document only under the shared scene lock (sync) and
+//     touches the backend only under the backend lock, which the UI takes for picking,
+//     exporting and switching backends (withBackend());
+//   - frames cross over as copies (takeFrame()).
+#include <atomic>
+#include <condition_variable>
+#include <functional>
+#include <mutex>
+#include <shared_mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "editor/editor_session.h"
+
+namespace pt::editor {
+
+// What the viewport shows: the beauty or the selected AOV, linear RGBA float.
+struct DisplayFrame {
+    uint32_t width = 0, height = 0;
+    std::vector<float> rgba;
+    int32_t aov = -1;        // -1: the beauty
+    uint64_t serial = 0;     // grows with every published frame
+    BackendStats stats;
+};
+
+struct WorkerStatus {
+    std::string stage;        // "" when idle, else the long operation under way ("BLAS build", ...)
+    double fraction = 0.0;    // of that stage
+    std::string error;        // the last sync's refusal, until the next edit
+    double secondsPerPass = 0.0;
+    bool converged = false;
+    std::vector<ToggleState> toggles;  // as the backend applies them, after the last sync
+    uint64_t deviceMemoryBytes = 0;
+    std::vector<uint32_t> pathsAlivePerBounce;  // wavefront only, of the last wave
+};
+
+class RenderWorker {
+public:
+    explicit RenderWorker(EditorSession& session);
+    ~RenderWorker();
+    RenderWorker(const RenderWorker&) = delete;
+    RenderWorker& operator=(const RenderWorker&) = delete;
+
+    // UI thread: changes the document. edit() waits for a sync under way to finish; tryEdit()
+    // returns false instead, so a long BVH build never freezes the window.
+    void edit(const std::function<void(EditorSession&)>& change);
+    bool tryEdit(const std::function<void(EditorSession&)>& change);
+    // UI thread: uses the backend while the render thread is between passes.
+    void withBackend(const std::function<void(EditorSession&)>& use);
+
+    // A frame newer than the one last taken, if any.
+    bool takeFrame(DisplayFrame& out);
+    // Whether frames of the beauty carry their pixels (false while the window takes them from
+    // the GPU directly through CUDA-GL interop; AOV frames always do).
+    void setHostFrames(bool on) { hostFrames_ = on; }
+    WorkerStatus status() const;
+
+private:
+    void run();
+    bool step();  // one sync and/or batch of passes; false when there was nothing to do
+    void publishFrame(int32_t aov);
+    void setStage(const std::string& stage, double fraction);
+
+    EditorSession& session_;
+    std::shared_mutex sceneMutex_;
+    std::mutex backendMutex_;
+    std::mutex wakeMutex_;
+    std::condition_variable wake_;
+    bool woken_ = false;
+    std::atomic<bool> stop_{false};
+    std::atomic<bool> hostFrames_{true};
+    bool syncRefused_ = false;  // render thread only: wait for the next edit before retrying
+
+    mutable std::mutex frameMutex_;
+    DisplayFrame frame_;
+    uint64_t taken_ = 0;
+    int32_t publishedAov_ = -2;
+
+    mutable std::mutex statusMutex_;
+    WorkerStatus status_;
+    std::thread thread_;
+};
+
+}  // namespace pt::editor

@@ -1,0 +1,150 @@
+#include "editor/scene_edits.h"
+
+#include <map>
+
+#include "render/scene/morph.h"
+
+namespace pt::editor {
+namespace {
+
+std::string key(const char* what, uint32_t index) { return std::string(what) + ":" + std::to_string(index); }
+
+// An object's transform with everything it places, so that undo restores the instances and
+// lights bit for bit instead of recomputing them through an inverse.
+struct ObjectPlacement {
+    ObjectTransform transform;
+    std::vector<Affine3> instanceTransforms;  // of the object's instances, in scene order
+    std::vector<Light> lights;                // the object's lights, in scene order
+};
+
+ObjectPlacement placementOf(const Scene& scene, uint32_t object) {
+    ObjectPlacement p;
+    p.transform = scene.objects.at(object).transform;
+    for (const Instance& instance : scene.instances) {
+        if (instance.object == int32_t(object)) p.instanceTransforms.push_back(instance.objectToWorld);
+    }
+    for (const Light& light : scene.lights) {
+        if (light.object == int32_t(object)) p.lights.push_back(light);
+    }
+    return p;
+}
+
+void assignPlacement(Scene& scene, uint32_t object, const ObjectPlacement& p) {
+    scene.objects.at(object).transform = p.transform;
+    size_t i = 0, l = 0;
+    for (Instance& instance : scene.instances) {
+        if (instance.object == int32_t(object)) instance.objectToWorld = p.instanceTransforms.at(i++);
+    }
+    for (Light& light : scene.lights) {
+        if (light.object == int32_t(object)) light = p.lights.at(l++);
+    }
+}
+
+// The placement after moving the object: each instance keeps its transform relative to the
+// object (the file's node hierarchy), now under the new object transform.
+ObjectPlacement movedPlacement(const ObjectPlacement& before, const ObjectTransform& after) {
+    const Affine3 delta = after.toAffine() * inverse(before.transform.toAffine());
+    ObjectPlacement p;
+    p.transform = after;
+    for (const Affine3& m : before.instanceTransforms) p.instanceTransforms.push_back(delta * m);
+    for (Light light : before.lights) {
+        light.position = delta.transformPoint(light.position);
+        light.direction = delta.transformVector(light.direction);
+        p.lights.push_back(light);
+    }
+    return p;
+}
+
+}  // namespace
+
+std::unique_ptr<EditCommand> setMaterial(const Document& doc, uint32_t material, const Material& after) {
+    const NamedMaterial& named = doc.scene.materials.at(material);
+    return makeValueCommand<Material>("Edit material " + named.name, key("material", material),
+                                      SceneChanges::Materials, named.params, after,
+                                      [material](Document& d, const Material& m) {
+                                          d.scene.materials.at(material).params = m;
+                                      });
+}
+
+std::unique_ptr<EditCommand> setObjectTransform(const Document& doc, uint32_t object, const ObjectTransform& after) {
+    const ObjectPlacement before = placementOf(doc.scene, object);
+    // Lights placed by the object move with it: the light table follows the transform.
+    const SceneChangeMask changes =
+        SceneChanges::Transforms | (before.lights.empty() ? SceneChanges::None : SceneChanges::Lights);
+    return makeValueCommand<ObjectPlacement>("Move " + doc.scene.objects.at(object).name, key("object-transform", object),
+                                             changes, before, movedPlacement(before, after),
+                                             [object](Document& d, const ObjectPlacement& p) {
+                                                 assignPlacement(d.scene, object, p);
+                                             });
+}
+
+std::unique_ptr<EditCommand> setInstanceTransform(const Document& doc, uint32_t instance, const Affine3& after) {
+    const Instance& target = doc.scene.instances.at(instance);
+    return makeValueCommand<Affine3>("Move " + target.name, key("instance-transform", instance),
+                                     SceneChanges::Transforms, target.objectToWorld, after,
+                                     [instance](Document& d, const Affine3& m) {
+                                         d.scene.instances.at(instance).objectToWorld = m;
+                                     });
+}
+
+std::unique_ptr<EditCommand> setLight(const Document& doc, uint32_t light, const Light& after) {
+    const Light& before = doc.scene.lights.at(light);
+    return makeValueCommand<Light>("Edit light " + before.name, key("light", light), SceneChanges::Lights, before,
+                                   after, [light](Document& d, const Light& l) { d.scene.lights.at(light) = l; });
+}
+
+std::unique_ptr<EditCommand> setCamera(const Document& doc, const Camera& after) {
+    return makeValueCommand<Camera>("Camera", "camera", SceneChanges::Camera, doc.scene.camera, after,
+                                    [](Document& d, const Camera& c) { d.scene.camera = c; });
+}
+
+std::unique_ptr<EditCommand> setRenderSettings(const Document& doc, const RenderSettings& after) {
+    return makeValueCommand<RenderSettings>("Render settings", "render-settings", SceneChanges::Settings,
+                                            doc.scene.render, after,
+                                            [](Document& d, const RenderSettings& r) { d.scene.render = r; });
+}
+
+std::unique_ptr<EditCommand> setEnvironment(const Document& doc, const Environment& after) {
+    return makeValueCommand<Environment>("Environment", "environment", SceneChanges::Environment,
+                                         doc.scene.environment, after,
+                                         [](Document& d, const Environment& e) { d.scene.environment = e; });
+}
+
+std::unique_ptr<EditCommand> setToggles(const Document& doc, const IntegratorToggles& after) {
+    return makeValueCommand<IntegratorToggles>("Renderer toggles", "toggles", SceneChanges::Settings, doc.toggles,
+                                               after,
+                                               [](Document& d, const IntegratorToggles& t) { d.toggles = t; });
+}
+
+std::unique_ptr<EditCommand> setViewer(const Document& doc, const ViewerSettings& after) {
+    return makeValueCommand<ViewerSettings>("Display", "viewer", SceneChanges::Display, doc.viewer, after,
+                                            [](Document& d, const ViewerSettings& v) { d.viewer = v; });
+}
+
+std::unique_ptr<EditCommand> setMorphWeights(const Document& doc, uint32_t mesh, const std::vector<float>& after) {
+    // The weights, and what each object records of them for saving, before and after.
+    struct MorphState {
+        std::vector<float> weights;
+        std::vector<std::map<std::string, std::vector<float>>> objectWeights;  // per scene object
+    };
+    const Scene& scene = doc.scene;
+    const Mesh& target = scene.meshes.at(mesh);
+    MorphState before{target.morphWeights, {}};
+    for (const SceneObject& object : scene.objects) before.objectWeights.push_back(object.morphWeights);
+    MorphState next{after, before.objectWeights};
+    for (const Instance& instance : scene.instances) {
+        if (instance.mesh == mesh && instance.object >= 0) next.objectWeights.at(size_t(instance.object))[target.name] = after;
+    }
+    auto assign = [mesh](Document& d, const MorphState& state) {
+        Mesh& m = d.scene.meshes.at(mesh);
+        m.morphWeights = state.weights;
+        applyMorphWeights(m);
+        for (size_t i = 0; i < d.scene.objects.size() && i < state.objectWeights.size(); ++i) {
+            d.scene.objects[i].morphWeights = state.objectWeights[i];
+        }
+    };
+    return makeValueCommand<MorphState>("Morph " + target.name, key("morph", mesh), SceneChanges::Geometry, before,
+                                        next, assign);
+}
+
+}  // namespace pt::editor

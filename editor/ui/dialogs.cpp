@@ -1,0 +1,147 @@
+// Modal dialogs: errors (one at a time; the current scene always stays), open with a path field
+// and recent files, save with overwrite confirmation, export render, and load progress.
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "editor/ui/widgets.h"
+
+namespace pt::editor {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A text field holding a path between frames.
+struct PathField {
+    char text[1024] = {};
+    void set(const std::string& s) { std::snprintf(text, sizeof(text), "%s", s.c_str()); }
+};
+
+std::string defaultScenePath(const Scene& scene) {
+    if (scene.sourcePath.empty()) return "scene.json";
+    fs::path p(scene.sourcePath);
+    return p.extension() == ".json" ? p.string() : p.replace_extension(".json").string();
+}
+
+void errorDialog(EditorUi& ui) {
+    if (ui.errors.empty()) return;
+    ImGui::OpenPopup("Message");
+    if (ImGui::BeginPopupModal("Message", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::PushTextWrapPos(600.0f);
+        ImGui::TextUnformatted(ui.errors.front().c_str());
+        ImGui::PopTextWrapPos();
+        if (ImGui::Button("OK") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter))) {
+            ui.errors.erase(ui.errors.begin());
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::EndPopup();
+    }
+}
+
+void openDialog(EditorUi& ui) {
+    static PathField path;
+    if (ui.showOpenDialog) {
+        ImGui::OpenPopup("Open scene");
+        ui.showOpenDialog = false;
+    }
+    if (!ImGui::BeginPopupModal("Open scene", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    ImGui::TextUnformatted(".json, .gltf, .glb or .obj (or drop a file on the window)");
+    ImGui::SetNextItemWidth(500);
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();  // type, then Return
+    const bool enter = ImGui::InputText("Path", path.text, sizeof(path.text), ImGuiInputTextFlags_EnterReturnsTrue);
+    for (const std::string& recent : ui.recentFiles) {
+        if (ImGui::Selectable(recent.c_str())) path.set(recent);
+    }
+    if (ImGui::Button("Open") || enter) {
+        ui.openScene(path.text);
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+}
+
+void saveDialog(EditorUi& ui) {
+    static PathField path;
+    if (ui.showSaveDialog) {
+        path.set(defaultScenePath(ui.doc().scene));
+        ImGui::OpenPopup("Save scene");
+        ui.showSaveDialog = false;
+    }
+    if (ImGui::BeginPopupModal("Save scene", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::SetNextItemWidth(500);
+        if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+        const bool enter = ImGui::InputText("JSON path", path.text, sizeof(path.text), ImGuiInputTextFlags_EnterReturnsTrue);
+        if (ImGui::Button("Save") || enter) {
+            ui.saveScene(path.text, false);
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
+    if (!ui.pendingOverwrite.empty()) ImGui::OpenPopup("Replace file?");
+    if (ImGui::BeginPopupModal("Replace file?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::Text("%s exists and is not the scene's own file. Replace it?", ui.pendingOverwrite.c_str());
+        if (ImGui::Button("Replace")) {
+            const std::string target = ui.pendingOverwrite;
+            ui.pendingOverwrite.clear();
+            ui.saveScene(target, true);
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel")) {
+            ui.pendingOverwrite.clear();
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::EndPopup();
+    }
+}
+
+void exportDialog(EditorUi& ui) {
+    static PathField exr, png;
+    if (ui.showExportDialog) {
+        const fs::path base = fs::path(defaultScenePath(ui.doc().scene)).replace_extension("");
+        exr.set(base.string() + ".exr");
+        png.set(base.string() + ".png");
+        ImGui::OpenPopup("Export render");
+        ui.showExportDialog = false;
+    }
+    if (!ImGui::BeginPopupModal("Export render", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    ImGui::TextUnformatted("Scene-linear EXR and display-referred PNG (through the current display settings).");
+    ImGui::TextUnformatted("Leave a path empty to skip that file. Existing files are replaced.");
+    ImGui::SetNextItemWidth(500);
+    ImGui::InputText("EXR", exr.text, sizeof(exr.text));
+    ImGui::SetNextItemWidth(500);
+    ImGui::InputText("PNG", png.text, sizeof(png.text));
+    if (ImGui::Button("Export")) {
+        ui.exportRender(exr.text, png.text);
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+}
+
+void loadingDialog(EditorUi& ui) {
+    if (!ui.loading) return;
+    ImGui::OpenPopup("Loading");
+    if (ImGui::BeginPopupModal("Loading", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::Text("%s", ui.loading->path().c_str());
+        ImGui::ProgressBar(float(ui.loading->fraction()), ImVec2(400, 0), ui.loading->stage().c_str());
+        if (ui.loading->done()) ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
+}
+
+}  // namespace
+
+void drawDialogs(EditorUi& ui) {
+    loadingDialog(ui);
+    openDialog(ui);
+    saveDialog(ui);
+    exportDialog(ui);
+    errorDialog(ui);
+}
+
+}  // namespace pt::editor

@@ -1,0 +1,51 @@
+#pragma once
+// DisplayView: the render on screen. The linear frame goes into a float texture and a
+// fragment shader applies the display transform (exposure, tone mapper, sRGB) on the GPU, so
+// display edits never touch the accumulation. AOVs are shown through a false-colour mode
+// suited to each (normals remapped to [0, 1], ids hashed to colours, costs as a heat map).
+#include <cstdint>
+
+#include "editor/document.h"
+#include "editor/render_worker.h"
+#include "editor/ui/gl.h"
+
+namespace pt::editor {
+
+// Where the image lies in the window, in window pixels (y down), fitted into the viewport
+// with its aspect ratio kept.
+struct ImageRect {
+    float x = 0, y = 0, width = 0, height = 0;
+    uint32_t imageWidth = 0, imageHeight = 0;
+    bool contains(float px, float py) const { return px >= x && py >= y && px < x + width && py < y + height; }
+    // Window point -> image pixel coordinates (continuous; y down).
+    float toImageX(float px) const { return (px - x) / width * float(imageWidth); }
+    float toImageY(float py) const { return (py - y) / height * float(imageHeight); }
+};
+
+class DisplayView {
+public:
+    DisplayView();
+    ~DisplayView();
+    DisplayView(const DisplayView&) = delete;
+    DisplayView& operator=(const DisplayView&) = delete;
+
+    void upload(const DisplayFrame& frame);
+    // A frame whose pixels arrive on the GPU (CudaGlFrame): sizes the texture, keeps the AOV.
+    void prepareDeviceFrame(const DisplayFrame& frame);
+    GLuint texture() const { return texture_; }
+    // Draws into the window area (x, y, w, h) in window pixels (y down) of a framebuffer of
+    // `framebufferHeight` pixels; returns where the image went.
+    ImageRect draw(const ViewerSettings& viewer, float x, float y, float w, float h, float framebufferHeight,
+                   float pixelScale);
+    bool hasImage() const { return width_ > 0; }
+    // The largest value of the shown AOV's first channel, for the heat map's legend.
+    float aovMaximum() const { return aovMax_; }
+
+private:
+    GLuint program_ = 0, texture_ = 0, vao_ = 0;
+    uint32_t width_ = 0, height_ = 0;
+    int32_t aov_ = -1;
+    float aovMax_ = 1.0f;
+};
+
+}  // namespace pt::editor

@@ -1,0 +1,109 @@
+#include "editor/ui/editor_ui.h"
+
+#include <filesystem>
+
+#include "assets/input_error.h"
+#include "editor/ui/recent_files.h"
+
+namespace pt::editor {
+
+namespace fs = std::filesystem;
+
+EditorUi::EditorUi(EditorSession& s, RenderWorker& w, const EditorOptions& o)
+    : session(s), worker(w), options(o), recentFiles(loadRecentFiles()) {}
+
+void EditorUi::flushEdits() {
+    while (!queued_.empty()) {
+        if (!worker.tryEdit(queued_.front())) return;  // the render thread is syncing: next frame
+        queued_.pop_front();
+    }
+}
+
+void EditorUi::apply(std::unique_ptr<EditCommand> command) {
+    // std::function needs a copyable callable; the command itself runs once.
+    auto held = std::make_shared<std::unique_ptr<EditCommand>>(std::move(command));
+    queued_.push_back([held](EditorSession& s) { s.execute(std::move(*held)); });
+    flushEdits();
+}
+
+void EditorUi::endDrag() {
+    queued_.push_back([](EditorSession& s) { s.endDrag(); });
+    flushEdits();
+}
+
+void EditorUi::undo() {
+    queued_.push_back([](EditorSession& s) { s.undo(); });
+    flushEdits();
+}
+
+void EditorUi::redo() {
+    queued_.push_back([](EditorSession& s) { s.redo(); });
+    flushEdits();
+}
+
+void EditorUi::openScene(const std::string& path) {
+    if (loading) {
+        showError("Still loading " + loading->path() + "; open " + path + " afterwards.");
+        return;
+    }
+    loading = std::make_unique<SceneLoadJob>(path);
+}
+
+bool EditorUi::pollLoad() {
+    if (!loading || !loading->done()) return true;
+    const std::string path = loading->path();
+    LoadResult result = loading->take();
+    loading.reset();
+    if (!result.ok()) {
+        showError(result.error);  // the current scene stays
+        return false;
+    }
+    Scene scene = std::move(*result.scene);
+    for (const std::string& warning : scene.warnings) showError("Warning: " + warning);
+    queued_.clear();
+    worker.edit([&](EditorSession& s) {
+        s.adopt(std::move(scene));
+        if (options.width > 0 && options.height > 0) s.overrideResolution(options.width, options.height);
+    });
+    selection = {};
+    bookmarks.clear();
+    recentFiles = rememberRecentFile(recentFiles, fs::absolute(path).string());
+    return true;
+}
+
+void EditorUi::saveScene(const std::string& path, bool confirmedOverwrite) {
+    const std::string current = doc().scene.sourcePath;
+    std::error_code ec;
+    const bool sameFile = !current.empty() && fs::exists(path) && fs::equivalent(path, current, ec);
+    if (!confirmedOverwrite && fs::exists(path) && !sameFile) {
+        pendingOverwrite = path;  // drawDialogs asks first
+        return;
+    }
+    flushEdits();
+    try {
+        worker.edit([&](EditorSession& s) { s.save(path); });
+        recentFiles = rememberRecentFile(recentFiles, fs::absolute(path).string());
+    } catch (const std::exception& e) {
+        showError(e.what());
+    }
+}
+
+void EditorUi::exportRender(const std::string& exrPath, const std::string& pngPath) {
+    try {
+        worker.withBackend([&](EditorSession& s) { s.exportRender(exrPath, pngPath); });
+    } catch (const std::exception& e) {
+        showError(e.what());
+    }
+}
+
+void EditorUi::switchBackend(const std::string& name) {
+    try {
+        std::unique_ptr<Backend> next = createBackend(name);
+        worker.withBackend([&](EditorSession& s) { worker.edit([&](EditorSession&) { s.setBackend(std::move(next)); }); });
+        backendName = name;
+    } catch (const std::exception& e) {
+        showError(e.what());
+    }
+}
+
+}  // namespace pt::editor

@@ -1,0 +1,90 @@
+#pragma once
+// EditorUi: the state the window's panels share (selection, dialogs, the queue of edits for the
+// render thread) and the operations they call. Panels are free functions over it, one file each
+// (outliner_panel.cpp, inspector_panel.cpp, ...), so each reads on its own.
+#include <deque>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "editor/render_worker.h"
+#include "editor/ui/display_view.h"
+#include "editor/scene_load_job.h"
+
+namespace pt::editor {
+
+struct Selection {
+    enum class Kind { None, Object, Instance, Light, Camera } kind = Kind::None;
+    int32_t index = -1;       // objects, instances or lights index by kind
+    int32_t instance = -1;    // the instance picked in the viewport (its materials are shown), or -1
+};
+
+struct CameraBookmark {
+    std::string name;
+    Camera camera;
+};
+
+// Command-line choices that shape the session (app/pathtracer/main.cpp).
+struct EditorOptions {
+    std::string scenePath;
+    std::string backend;                 // "" = cuda where usable, else cpu
+    uint32_t width = 0, height = 0;      // --size; 0 = the scene's
+    int64_t frames = -1;                 // --frames N: exit after N frames with new samples
+    std::string screenshotPath;          // --screenshot: written after --frames, and on F12
+    uint32_t spp = 0;                    // --spp: stop accumulating there
+};
+
+class EditorUi {
+public:
+    EditorUi(EditorSession& session, RenderWorker& worker, const EditorOptions& options);
+
+    EditorSession& session;
+    RenderWorker& worker;
+    const EditorOptions options;
+    const Document& doc() const { return session.document(); }
+
+    // Edits go through here: applied now when the render thread allows, else queued in order.
+    void apply(std::unique_ptr<EditCommand> command);
+    void endDrag();  // after ImGui::IsItemDeactivatedAfterEdit(): closes the undo step
+    void undo();
+    void redo();
+    void flushEdits();  // once per frame: applies what was queued
+
+    // Files.
+    void openScene(const std::string& path);   // asynchronous; errors end in a dialog
+    // Takes a finished load; false when it failed (the error is queued for the dialog).
+    bool pollLoad();
+    void saveScene(const std::string& path, bool confirmedOverwrite);
+    void exportRender(const std::string& exrPath, const std::string& pngPath);
+    void switchBackend(const std::string& name);
+    void showError(const std::string& message) { errors.push_back(message); }
+
+    Selection selection;
+    std::vector<CameraBookmark> bookmarks;
+    std::vector<std::string> recentFiles;
+    std::vector<std::string> errors;         // shown one at a time in a modal dialog
+    std::string pendingOverwrite;            // a save path awaiting "replace?" confirmation
+    std::unique_ptr<SceneLoadJob> loading;
+    std::string backendName;
+    bool showOpenDialog = false, showSaveDialog = false, showExportDialog = false;
+    // Numbers the Stats panel shows.
+    std::vector<float> frameMillis;          // UI frame times, most recent last
+    std::vector<float> spsHistory;           // samples per second
+    DisplayFrame lastFrame;
+
+private:
+    std::deque<std::function<void(EditorSession&)>> queued_;
+};
+
+// The panels and menus (one file each).
+void drawMainMenu(EditorUi& ui);
+void drawOutliner(EditorUi& ui);
+void drawInspector(EditorUi& ui);
+void drawCameraPanel(EditorUi& ui);
+void drawRenderPanel(EditorUi& ui);
+void drawDisplayPanel(EditorUi& ui, const DisplayView& view);
+void drawStatsPanel(EditorUi& ui);
+void drawDialogs(EditorUi& ui);
+
+}  // namespace pt::editor

@@ -1,0 +1,218 @@
+#include "editor/ui/editor_window.h"
+
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <thread>
+
+#include "editor/scene_edits.h"
+#include "editor/ui/cuda_gl_frame.h"
+#include "editor/ui/gl.h"
+#include "editor/ui/key_taps.h"
+#include "editor/ui/screenshot.h"
+#include "editor/ui/viewport_input.h"
+#if defined(PT_HAVE_CUDA)
+#include "render/backend/cuda/cuda_device.h"
+#endif
+#include "render/util/stopwatch.h"
+
+namespace pt::editor {
+namespace {
+
+constexpr float kPanelWidth = 400.0f;
+constexpr size_t kFrameHistory = 120;
+
+// Files dropped on the window, collected by GLFW's callback and opened by the frame loop.
+std::vector<std::string>& droppedFiles() {
+    static std::vector<std::string> files;
+    return files;
+}
+
+void onDrop(GLFWwindow*, int count, const char** paths) {
+    for (int i = 0; i < count; ++i) droppedFiles().push_back(paths[i]);
+}
+
+std::string chooseBackend(const std::string& requested) {
+    if (!requested.empty()) return requested;
+#if defined(PT_HAVE_CUDA)
+    if (cuda::deviceAvailable()) return "cuda";
+#endif
+    return "cpu";
+}
+
+// The numbered path of the n-th F12 screenshot: shot.png, shot-1.png, shot-2.png, ...
+std::string screenshotPath(const std::string& base, int n) {
+    if (n == 0) return base;
+    std::filesystem::path p(base);
+    return (p.parent_path() / (p.stem().string() + "-" + std::to_string(n) + p.extension().string())).string();
+}
+
+void drawPanels(EditorUi& ui, const DisplayView& view, float width, float height) {
+    const float top = ImGui::GetFrameHeight();
+    ImGui::SetNextWindowPos(ImVec2(width - kPanelWidth, top));
+    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, height - top));
+    ImGui::Begin("Panels", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoTitleBar |
+                                        ImGuiWindowFlags_NoCollapse);
+    drawOutliner(ui);
+    drawInspector(ui);
+    drawCameraPanel(ui);
+    drawRenderPanel(ui);
+    drawDisplayPanel(ui, view);
+    drawStatsPanel(ui);
+    ImGui::End();
+}
+
+class Window {
+public:
+    explicit Window(const EditorOptions& o) {
+        if (!glfwInit()) throw std::runtime_error("cannot initialise GLFW (is there a display? DISPLAY is unset or unusable)");
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+        glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+        glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+        // Room for the render at its size (at least 640 square) beside the panels.
+        const int w = int(std::max(o.width, 640u) + uint32_t(kPanelWidth)), h = int(std::max(o.height, 640u) + 20u);
+        handle = glfwCreateWindow(w, h, "pathtracer", nullptr, nullptr);
+        if (!handle) {
+            glfwTerminate();
+            throw std::runtime_error("cannot open an OpenGL 3.3 core window");
+        }
+        glfwMakeContextCurrent(handle);
+        glfwSwapInterval(1);
+        glfwSetDropCallback(handle, onDrop);
+        installKeyTapCallback(handle);  // before ImGui's callbacks, which chain to it
+        IMGUI_CHECKVERSION();
+        ImGui::CreateContext();
+        ImGui::GetIO().IniFilename = nullptr;  // a fixed layout: no imgui.ini littering the working folder
+        ImGui::StyleColorsDark();
+        ImGui_ImplGlfw_InitForOpenGL(handle, true);
+        ImGui_ImplOpenGL3_Init("#version 330 core");
+    }
+    ~Window() {
+        ImGui_ImplOpenGL3_Shutdown();
+        ImGui_ImplGlfw_Shutdown();
+        ImGui::DestroyContext();
+        glfwDestroyWindow(handle);
+        glfwTerminate();
+    }
+    GLFWwindow* handle = nullptr;
+};
+
+// A new frame on screen: through CUDA-GL interop for the CUDA backend's beauty where the GL
+// allows it, else from the frame's host copy.
+void showFrame(EditorUi& ui, DisplayView& view, CudaGlFrame& interop) {
+    const DisplayFrame& frame = ui.lastFrame;
+    const bool device = ui.backendName == "cuda" && frame.aov < 0;
+    if (device && frame.rgba.empty()) {
+        view.prepareDeviceFrame(frame);
+        if (interop.update(ui.worker, view.texture(), frame.width, frame.height)) return;
+        ui.worker.setHostFrames(true);  // no interop here: the next frames bring their pixels
+        return;
+    }
+    view.upload(frame);
+    if (device) {
+        // Try interop from the next frame on; it stays off once it failed.
+        view.prepareDeviceFrame(frame);
+        ui.worker.setHostFrames(!interop.update(ui.worker, view.texture(), frame.width, frame.height));
+    }
+}
+
+int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
+    DisplayView view;
+    CudaGlFrame interop;
+    ViewportInput input;
+    ImageRect image;
+    int64_t renderedFrames = 0;
+    int screenshots = 0;
+    auto last = Clock::now();
+    while (!glfwWindowShouldClose(window.handle)) {
+        glfwPollEvents();
+        const float dt = float(secondsSince(last));
+        last = Clock::now();
+        ui.frameMillis.push_back(dt * 1e3f);
+        if (ui.frameMillis.size() > kFrameHistory) ui.frameMillis.erase(ui.frameMillis.begin());
+        for (const std::string& path : droppedFiles()) ui.openScene(path);
+        droppedFiles().clear();
+        if (!ui.pollLoad() && options.frames >= 0) {
+            std::fprintf(stderr, "pathtracer: %s\n", ui.errors.empty() ? "load failed" : ui.errors.front().c_str());
+            return 1;  // automation: a scene that does not load is a failure, not a dialog
+        }
+        ui.flushEdits();
+        if (ui.worker.takeFrame(ui.lastFrame)) {
+            showFrame(ui, view, interop);
+            if (ui.lastFrame.stats.samplesPerPixel > 0) ++renderedFrames;
+        }
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui_ImplGlfw_NewFrame();
+        ImGui::NewFrame();
+        const bool screenshot = input.handle(ui, image, dt);
+        drawMainMenu(ui);
+        int fbw = 0, fbh = 0, ww = 0, wh = 0;
+        glfwGetFramebufferSize(window.handle, &fbw, &fbh);
+        glfwGetWindowSize(window.handle, &ww, &wh);
+        drawPanels(ui, view, float(ww), float(wh));
+        drawDialogs(ui);
+        ImGui::Render();
+        glViewport(0, 0, fbw, fbh);
+        glClearColor(0.12f, 0.12f, 0.13f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        const float top = ImGui::GetFrameHeight(), scale = ww > 0 ? float(fbw) / float(ww) : 1.0f;
+        image = view.draw(ui.doc().viewer, 0.0f, top, float(ww) - kPanelWidth, float(wh) - top, float(fbh), scale);
+        glViewport(0, 0, fbw, fbh);
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        // --frames: done after that many frames with new samples, or once the frame on screen
+        // has the --spp target.
+        const bool sppReached = options.spp > 0 && ui.lastFrame.stats.samplesPerPixel >= options.spp;
+        const bool framesDone = options.frames >= 0 && (renderedFrames >= options.frames || sppReached) &&
+                                !ui.loading && view.hasImage();
+        if ((screenshot || framesDone) && !options.screenshotPath.empty()) {
+            try {
+                writeWindowScreenshot(screenshotPath(options.screenshotPath, screenshots++), fbw, fbh);
+            } catch (const std::exception& e) {
+                std::fprintf(stderr, "pathtracer: %s\n", e.what());
+                if (framesDone) return 1;
+            }
+        }
+        glfwSwapBuffers(window.handle);
+        clearKeyTaps();
+        if (framesDone) break;
+    }
+    return 0;
+}
+
+}  // namespace
+
+int runEditor(const EditorOptions& options) {
+    const std::string backendName = chooseBackend(options.backend);
+    std::unique_ptr<Backend> backend = createBackend(backendName);
+    EditorSession session(std::move(backend));
+    std::unique_ptr<Window> window;
+    try {
+        window = std::make_unique<Window>(options);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "pathtracer: %s\n", e.what());
+        return 1;
+    }
+    // One core stays with the window: the CPU backend's threads would otherwise starve it.
+    const size_t cores = std::max<size_t>(std::thread::hardware_concurrency(), 2);
+    tbb::global_control renderThreads(tbb::global_control::max_allowed_parallelism, cores - 1);
+    RenderWorker worker(session);
+    EditorUi ui(session, worker, options);
+    ui.backendName = backendName;
+    worker.edit([&](EditorSession& s) {
+        ViewerSettings viewer = s.document().viewer;
+        viewer.targetSpp = options.spp;
+        s.execute(setViewer(s.document(), viewer));
+    });
+    // Loaded on its own thread, so the window shows progress from the start.
+    if (!options.scenePath.empty()) ui.openScene(options.scenePath);
+    return frameLoop(*window, ui, options);
+}
+
+}  // namespace pt::editor

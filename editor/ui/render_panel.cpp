@@ -1,0 +1,80 @@
+// Render settings: backend, resolution, depth, samples per frame and target, the integrator's
+// switches and every optimization toggle of the active backend (with why one is inactive).
+#include <algorithm>
+#include <string>
+
+#include "editor/scene_edits.h"
+#include "editor/ui/widgets.h"
+
+namespace pt::editor {
+namespace {
+
+void backendChoice(EditorUi& ui) {
+    const char* names[] = {"cpu", "cuda"};
+    int current = ui.backendName == "cuda" ? 1 : 0;
+    if (ImGui::Combo("Backend", &current, names, 2) && names[current] != ui.backendName) ui.switchBackend(names[current]);
+}
+
+void integratorSwitches(EditorUi& ui) {
+    IntegratorToggles t = ui.doc().toggles;
+    bool changed = false;
+    changed |= checkbox("Next-event estimation", &t.nextEventEstimation);
+    changed |= checkbox("Multiple importance sampling", &t.multipleImportance);
+    changed |= checkbox("Russian roulette", &t.russianRoulette);
+    changed |= checkbox("Pixel jitter (antialiasing)", &t.pixelJitter);
+    changed |= checkbox("BVH off (brute force)", &t.bruteForce);
+    changed |= sliderFloat(ui, "Firefly clamp (0 = off)", &t.clampRadiance, 0.0f, 100.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+    if (ui.backendName == "cuda") {
+        ImGui::Separator();
+        ImGui::TextUnformatted("GPU scheduling");
+        changed |= checkbox("Megakernel (else wavefront)", &t.megakernel);
+        changed |= checkbox("Stream compaction", &t.streamCompaction);
+        changed |= checkbox("Material sort", &t.materialSort);
+        changed |= checkbox("First-hit cache", &t.firstHitCache);
+        changed |= sliderFloat(ui, "Rebuild at SAH ratio", &t.rebuildSahRatio, 1.0f, 4.0f);
+    }
+    if (changed) ui.apply(setToggles(ui.doc(), t));
+}
+
+void toggleStates(EditorUi& ui) {
+    for (const ToggleState& s : ui.worker.status().toggles) {
+        if (s.requested && !s.active) ImGui::TextDisabled("%s: inactive (%s)", s.name.c_str(), s.note.c_str());
+    }
+}
+
+}  // namespace
+
+void drawRenderPanel(EditorUi& ui) {
+    if (!ImGui::CollapsingHeader("Render settings")) return;
+    backendChoice(ui);
+    RenderSettings r = ui.doc().scene.render;
+    int size[2] = {int(r.width), int(r.height)};
+    int depth = int(r.maxDepth);
+    bool changed = false;
+    if (ImGui::InputInt2("Resolution", size, ImGuiInputTextFlags_EnterReturnsTrue) && size[0] > 0 && size[1] > 0) {
+        r.width = uint32_t(size[0]);
+        r.height = uint32_t(size[1]);
+        changed = true;
+    }
+    if (ImGui::SliderInt("Max depth", &depth, 1, 64)) {
+        r.maxDepth = uint32_t(depth);
+        changed = true;
+    }
+    closeStepIfReleased(ui);
+    if (changed) ui.apply(setRenderSettings(ui.doc(), r));
+    ViewerSettings v = ui.doc().viewer;
+    int perFrame = int(v.samplesPerFrame), target = int(v.targetSpp);
+    bool viewerChanged = ImGui::SliderInt("Samples per frame", &perFrame, 1, 64);
+    closeStepIfReleased(ui);
+    viewerChanged |= ImGui::InputInt("Stop at spp (0 = never)", &target);
+    closeStepIfReleased(ui);
+    if (viewerChanged) {
+        v.samplesPerFrame = uint32_t(std::max(perFrame, 1));
+        v.targetSpp = uint32_t(std::max(target, 0));
+        ui.apply(setViewer(ui.doc(), v));
+    }
+    integratorSwitches(ui);
+    toggleStates(ui);
+}
+
+}  // namespace pt::editor

@@ -1,0 +1,52 @@
+// Stats: samples, frame times, throughput, what the last edit made the backend do and how long
+// it took to reach the screen, memory.
+#include <algorithm>
+#include <numeric>
+#include <vector>
+
+#include "editor/ui/widgets.h"
+
+namespace pt::editor {
+
+void drawStatsPanel(EditorUi& ui) {
+    if (!ImGui::CollapsingHeader("Stats", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const WorkerStatus status = ui.worker.status();
+    const BackendStats& s = ui.lastFrame.stats;
+    ImGui::Text("Backend: %s   %ux%u", ui.backendName.c_str(), ui.lastFrame.width, ui.lastFrame.height);
+    ImGui::Text("Samples: %u spp%s", s.samplesPerPixel, status.converged ? " (target reached)" : "");
+    if (!ui.frameMillis.empty()) {
+        const float mean = std::accumulate(ui.frameMillis.begin(), ui.frameMillis.end(), 0.0f) / float(ui.frameMillis.size());
+        ImGui::Text("UI: %.1f ms/frame (%.0f frames/s)", double(mean), mean > 0 ? 1000.0 / double(mean) : 0.0);
+        ImGui::PlotLines("##frame ms", ui.frameMillis.data(), int(ui.frameMillis.size()), 0, "ms per UI frame", 0.0f,
+                         100.0f, ImVec2(0, 40));
+    }
+    ImGui::Text("Render: %.1f ms/pass, %.1f Mrays/s", status.secondsPerPass * 1e3,
+                s.renderSeconds > 0 ? double(s.rays) / s.renderSeconds / 1e6 : 0.0);
+    ImGui::Text("Scene: %llu triangles, %u instances", static_cast<unsigned long long>(s.triangles), s.instances);
+    if (s.nonfiniteSamples > 0) {
+        ImGui::TextColored(ImVec4(1, 0.5f, 0.3f, 1), "%llu non-finite samples dropped",
+                           static_cast<unsigned long long>(s.nonfiniteSamples));
+    }
+    const EditLatency edit = ui.session.lastEdit();
+    if (!edit.label.empty()) {
+        ImGui::Separator();
+        ImGui::TextWrapped("Last edit: %s", edit.label.c_str());
+        ImGui::Text("Triggered: %s (sync %.2f ms)", edit.action.empty() ? "..." : edit.action.c_str(),
+                    edit.syncSeconds * 1e3);
+        if (edit.complete) ImGui::Text("Edit to first frame: %.2f ms", edit.toFrameSeconds * 1e3);
+    }
+    if (!status.pathsAlivePerBounce.empty()) {
+        std::vector<float> alive(status.pathsAlivePerBounce.begin(), status.pathsAlivePerBounce.end());
+        ImGui::PlotHistogram("##alive", alive.data(), int(alive.size()), 0, "paths alive per bounce", 0.0f,
+                             alive.front(), ImVec2(0, 50));
+        ImGui::Text("bounce 0: %u paths, last (%zu): %u", status.pathsAlivePerBounce.front(), alive.size() - 1,
+                    status.pathsAlivePerBounce.back());
+    }
+    if (status.deviceMemoryBytes > 0) {
+        ImGui::Text("GPU memory: %.1f MiB", double(status.deviceMemoryBytes) / (1024.0 * 1024.0));
+    }
+    if (!status.stage.empty()) ImGui::ProgressBar(float(status.fraction), ImVec2(-1, 0), status.stage.c_str());
+    if (!status.error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", status.error.c_str());
+}
+
+}  // namespace pt::editor

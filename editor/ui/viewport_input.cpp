@@ -1,0 +1,130 @@
+#include "editor/ui/viewport_input.h"
+
+#include <cmath>
+
+#include "editor/camera_controller.h"
+#include "editor/object_edits.h"
+#include "editor/scene_edits.h"
+#include "editor/ui/gl.h"
+#include "editor/ui/key_taps.h"
+#include "editor/ui/widgets.h"
+
+namespace pt::editor {
+namespace {
+
+constexpr float kClickSlop = 3.0f;  // pixels a click may move and still select
+
+// Runs a pick on the backend between passes; the image point is in render pixels.
+PickResult pickAt(EditorUi& ui, const ImageRect& image, float x, float y) {
+    PickResult result;
+    const float px = image.toImageX(x), py = image.toImageY(y);
+    ui.worker.withBackend([&](EditorSession& s) { result = s.pick(px, py); });
+    return result;
+}
+
+}  // namespace
+
+void ViewportInput::navigate(EditorUi& ui, const ImageRect& image, float frameSeconds) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const bool over = image.contains(io.MousePos.x, io.MousePos.y);
+    const Camera& camera = ui.doc().scene.camera;
+    const float h = image.height;
+    const bool middle = ImGui::IsMouseDown(ImGuiMouseButton_Middle);
+    const bool altLeft = io.KeyAlt && ImGui::IsMouseDown(ImGuiMouseButton_Left);
+    if ((middle || altLeft) && (dragging_ || (over && !io.WantCaptureMouse))) {
+        const ImVec2 d = io.MouseDelta;
+        if (d.x != 0.0f || d.y != 0.0f) {
+            const Camera next = io.KeyShift ? panCamera(camera, d.x, d.y, h) : orbitCamera(camera, d.x, d.y, h);
+            ui.apply(setCamera(ui.doc(), next));
+        }
+        dragging_ = true;
+    } else if (dragging_) {
+        dragging_ = false;
+        ui.endDrag();
+    }
+    if (over && !io.WantCaptureMouse && io.MouseWheel != 0.0f) {
+        ui.apply(setCamera(ui.doc(), dollyCamera(camera, io.MouseWheel)));
+        ui.endDrag();
+    }
+    if (io.WantCaptureKeyboard || io.KeyCtrl) return;
+    const float forward = float(ImGui::IsKeyDown(GLFW_KEY_W)) - float(ImGui::IsKeyDown(GLFW_KEY_S));
+    const float right = float(ImGui::IsKeyDown(GLFW_KEY_D)) - float(ImGui::IsKeyDown(GLFW_KEY_A));
+    const float up = float(ImGui::IsKeyDown(GLFW_KEY_E)) - float(ImGui::IsKeyDown(GLFW_KEY_Q));
+    if (forward != 0.0f || right != 0.0f || up != 0.0f) {
+        const float speed = flySpeedFor(ui.doc().scene) * (io.KeyShift ? 4.0f : 1.0f);
+        ui.apply(setCamera(ui.doc(), flyCamera(camera, forward, right, up, frameSeconds, speed)));
+        flying_ = true;
+    } else if (flying_) {
+        flying_ = false;
+        ui.endDrag();
+    }
+}
+
+void ViewportInput::clickTools(EditorUi& ui, const ImageRect& image) {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantCaptureMouse || io.KeyAlt) return;
+    const ImVec2 m = io.MousePos;
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+        pressX_ = m.x;
+        pressY_ = m.y;
+    }
+    if (!image.contains(m.x, m.y)) return;
+    if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
+        const PickResult hit = pickAt(ui, image, m.x, m.y);
+        if (hit.hit()) {
+            Camera c = ui.doc().scene.camera;
+            c.focusDistance = hit.focusDistance;
+            ui.apply(setCamera(ui.doc(), c));
+            ui.endDrag();
+        }
+        return;
+    }
+    if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && std::fabs(m.x - pressX_) <= kClickSlop &&
+        std::fabs(m.y - pressY_) <= kClickSlop) {
+        const PickResult hit = pickAt(ui, image, m.x, m.y);
+        if (!hit.hit()) ui.selection = {};
+        else if (hit.object >= 0) ui.selection = {Selection::Kind::Object, hit.object, hit.instance};
+        else ui.selection = {Selection::Kind::Instance, hit.instance, hit.instance};
+    }
+}
+
+bool ViewportInput::shortcuts(EditorUi& ui) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const bool screenshot = keyTapped(GLFW_KEY_F12);
+    if (io.WantTextInput) return screenshot;
+    // Modifiers are read from GLFW: a tapped key's modifiers may be up again by the frame.
+    GLFWwindow* window = glfwGetCurrentContext();
+    const auto down = [window](int a, int b) {
+        return glfwGetKey(window, a) == GLFW_PRESS || glfwGetKey(window, b) == GLFW_PRESS;
+    };
+    const bool ctrl = io.KeyCtrl || down(GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL);
+    const bool shift = io.KeyShift || down(GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT);
+    if (ctrl) {
+        if (keyTapped(GLFW_KEY_Z)) shift ? ui.redo() : ui.undo();
+        if (keyTapped(GLFW_KEY_Y)) ui.redo();
+        if (keyTapped(GLFW_KEY_O)) ui.showOpenDialog = true;
+        if (keyTapped(GLFW_KEY_S)) ui.showSaveDialog = true;
+        if (keyTapped(GLFW_KEY_E)) ui.showExportDialog = true;
+        if (keyTapped(GLFW_KEY_Q)) glfwSetWindowShouldClose(window, 1);
+    }
+    const Selection& sel = ui.selection;
+    if (sel.kind != Selection::Kind::Object || sel.index < 0 || io.WantCaptureKeyboard) return screenshot;
+    const uint32_t object = uint32_t(sel.index);
+    if (keyTapped(GLFW_KEY_DELETE)) {
+        ui.apply(deleteObject(ui.doc(), object));
+        ui.selection = {};
+    } else if (ctrl && keyTapped(GLFW_KEY_D)) {
+        ui.apply(duplicateObject(ui.doc(), object));
+    } else if (!ctrl && keyTapped(GLFW_KEY_H)) {
+        ui.apply(setObjectHidden(ui.doc(), object, !objectHidden(ui.doc().scene, object)));
+    }
+    return screenshot;
+}
+
+bool ViewportInput::handle(EditorUi& ui, const ImageRect& image, float frameSeconds) {
+    navigate(ui, image, frameSeconds);
+    clickTools(ui, image);
+    return shortcuts(ui);
+}
+
+}  // namespace pt::editor

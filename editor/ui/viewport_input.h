@@ -1,0 +1,26 @@
+#pragma once
+// Viewport mouse and keyboard: orbit (middle drag, or Alt+left), pan (Shift+middle), zoom
+// (wheel), WASD fly (Q/E down/up), click to select what is under the cursor, double-click to
+// focus depth of field there. Shortcuts: Ctrl+Z / Ctrl+Shift+Z (or Ctrl+Y), Ctrl+O, Ctrl+S,
+// Ctrl+E, Delete, Ctrl+D, H, F12 (screenshot).
+#include "editor/ui/display_view.h"
+#include "editor/ui/editor_ui.h"
+
+namespace pt::editor {
+
+class ViewportInput {
+public:
+    // Call once per frame after ImGui::NewFrame(). Returns true when F12 asked for a screenshot.
+    bool handle(EditorUi& ui, const ImageRect& image, float frameSeconds);
+
+private:
+    void navigate(EditorUi& ui, const ImageRect& image, float frameSeconds);
+    void clickTools(EditorUi& ui, const ImageRect& image);
+    bool shortcuts(EditorUi& ui);
+
+    bool dragging_ = false;   // a camera drag is under way (one undo step)
+    bool flying_ = false;
+    float pressX_ = 0, pressY_ = 0;
+};
+
+}  // namespace pt::editor

@@ -1,0 +1,52 @@
+#pragma once
+// Small ImGui helpers shared by the panels: every value widget edits a copy, and the panel
+// turns a change into one command; a drag folds into one undo step that closes when the
+// widget is released (STYLE.md rule 6).
+#include <imgui.h>
+
+#include "editor/ui/editor_ui.h"
+
+namespace pt::editor {
+
+// Call right after a widget: ends the undo step when its drag or text edit finished.
+inline void closeStepIfReleased(EditorUi& ui) {
+    if (ImGui::IsItemDeactivatedAfterEdit()) ui.endDrag();
+}
+
+// Widgets that report a change and close their step on release.
+inline bool sliderFloat(EditorUi& ui, const char* label, float* v, float lo, float hi, const char* format = "%.3f",
+                        ImGuiSliderFlags flags = 0) {
+    const bool changed = ImGui::SliderFloat(label, v, lo, hi, format, flags);
+    closeStepIfReleased(ui);
+    return changed;
+}
+
+inline bool dragFloat(EditorUi& ui, const char* label, float* v, float speed, float lo = 0.0f, float hi = 0.0f,
+                      const char* format = "%.3f") {
+    const bool changed = ImGui::DragFloat(label, v, speed, lo, hi, format);
+    closeStepIfReleased(ui);
+    return changed;
+}
+
+inline bool dragVec3(EditorUi& ui, const char* label, Vec3* v, float speed, const char* format = "%.3f") {
+    float a[3] = {v->x, v->y, v->z};
+    const bool changed = ImGui::DragFloat3(label, a, speed, 0.0f, 0.0f, format);
+    closeStepIfReleased(ui);
+    if (changed) *v = Vec3(a[0], a[1], a[2]);
+    return changed;
+}
+
+inline bool colorEdit(EditorUi& ui, const char* label, Vec3* v, ImGuiColorEditFlags flags = ImGuiColorEditFlags_Float) {
+    float a[3] = {v->x, v->y, v->z};
+    const bool changed = ImGui::ColorEdit3(label, a, flags);
+    closeStepIfReleased(ui);
+    if (changed) *v = Vec3(a[0], a[1], a[2]);
+    return changed;
+}
+
+inline bool checkbox(const char* label, bool* v) { return ImGui::Checkbox(label, v); }
+
+// Editable name: returns true with `name` changed once the user presses Enter or leaves the field.
+bool inputName(const char* label, std::string& name);
+
+}  // namespace pt::editor

@@ -1,0 +1,89 @@
+#include "render/backend/aov.h"
+
+#include <stdexcept>
+
+namespace pt {
+
+namespace {
+
+constexpr const char* kAovNames[kAovCount] = {
+    "albedo",   "shading_normal", "geometric_normal", "depth",       "position", "uv",           "roughness",
+    "metallic", "emission",       "instance_id",      "material_id", "bvh_cost", "sample_count", "variance"};
+
+// The value of channel c of one pixel's sums, as the image shows it.
+float aovValue(Aov aov, const double* sums, uint32_t c, uint32_t samples) {
+    const double n = double(samples);
+    switch (aov) {
+        case Aov::SampleCount:
+            return float(samples);
+        case Aov::InstanceId:
+        case Aov::MaterialId:
+            return float(sums[0]);
+        case Aov::Variance:  // of the mean: the sample variance M2 / (n - 1), over n
+            return samples > 1 ? float(sums[1] / ((n - 1.0) * n)) : 0.0f;
+        default:
+            return samples ? float(sums[c] / n) : 0.0f;
+    }
+}
+
+}  // namespace
+
+const char* aovName(Aov a) { return uint32_t(a) < kAovCount ? kAovNames[uint32_t(a)] : "unknown"; }
+
+bool parseAov(const std::string& name, Aov& out) {
+    for (uint32_t i = 0; i < kAovCount; ++i) {
+        if (name == kAovNames[i]) {
+            out = Aov(i);
+            return true;
+        }
+    }
+    return false;
+}
+
+size_t aovDoublesPerPixel(AovMask mask) {
+    size_t doubles = 0;
+    for (uint32_t i = 0; i < kAovCount; ++i) {
+        if (mask & aovBit(Aov(i))) doubles += aovChannels(Aov(i));
+    }
+    return doubles;
+}
+
+size_t aovPlaneOffset(AovMask mask, Aov aov, size_t pixels) {
+    return aovDoublesPerPixel(mask & (aovBit(aov) - 1u)) * pixels;
+}
+
+AovBuffers aovBuffersIn(double* base, AovMask mask, size_t pixels) {
+    AovBuffers b{};
+    b.mask = mask;
+    for (uint32_t i = 0; i < kAovCount; ++i) {
+        const Aov a = Aov(i);
+        if ((mask & aovBit(a)) && aovChannels(a) > 0) b.sums[i] = base + aovPlaneOffset(mask, a, pixels);
+    }
+    return b;
+}
+
+void requireAov(AovMask enabled, Aov aov) {
+    if (uint32_t(aov) >= kAovCount) throw std::invalid_argument("no such AOV");
+    if (!(enabled & aovBit(aov))) {
+        throw std::invalid_argument(std::string("AOV \"") + aovName(aov) +
+                                    "\" is not enabled (setAovs, then reset the accumulation)");
+    }
+}
+
+void aovImageFromSums(Aov aov, const double* plane, size_t pixels, uint32_t samples,
+                      std::vector<float>& rgba) {
+    const uint32_t channels = aovChannels(aov);
+    rgba.assign(pixels * 4, 0.0f);
+    for (size_t i = 0; i < pixels; ++i) {
+        const double* sums = plane ? plane + i * channels : nullptr;
+        float* out = &rgba[i * 4];
+        if (channels == 1 || aov == Aov::SampleCount || aov == Aov::Variance) {
+            out[0] = out[1] = out[2] = aovValue(aov, sums, 0, samples);
+        } else {
+            for (uint32_t c = 0; c < channels; ++c) out[c] = aovValue(aov, sums, c, samples);
+        }
+        out[3] = 1.0f;
+    }
+}
+
+}  // namespace pt

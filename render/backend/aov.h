@@ -1,0 +1,32 @@
+#pragma once
+// The host side of AOVs (render/integrator/aov.h): names, and how a backend lays out, sizes and
+// reads back the per-pixel sums. Both backends keep all enabled AOVs in one array of doubles:
+// one plane per AOV (aovChannels() doubles per pixel), in the enum's order.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "render/integrator/aov.h"
+
+namespace pt {
+
+// "albedo", "shading_normal", "geometric_normal", "depth", "position", "uv", "roughness",
+// "metallic", "emission", "instance_id", "material_id", "bvh_cost", "sample_count", "variance".
+const char* aovName(Aov a);
+bool parseAov(const std::string& name, Aov& out);  // false for an unknown name
+
+size_t aovDoublesPerPixel(AovMask mask);
+// Where AOV `aov`'s plane starts in the array of `mask`'s AOVs, in doubles.
+size_t aovPlaneOffset(AovMask mask, Aov aov, size_t pixels);
+// The kernels' view of an array of aovDoublesPerPixel(mask) x pixels doubles at `base`.
+AovBuffers aovBuffersIn(double* base, AovMask mask, size_t pixels);
+
+// Throws std::invalid_argument naming the AOV when it is not in `enabled`.
+void requireAov(AovMask enabled, Aov aov);
+
+// RGBA floats (A = 1) of AOV `aov` from its plane of sums over `samples` samples: averages,
+// except the ids (as stored) and sample_count (`samples`). One-channel AOVs fill R, G and B.
+void aovImageFromSums(Aov aov, const double* plane, size_t pixels, uint32_t samples,
+                      std::vector<float>& rgba);
+
+}  // namespace pt

@@ -1,0 +1,494 @@
+// End to end: the real `pathtracer` window under a private Xvfb, driven by X input events
+// (xdotool through XTEST), checked through its own F12 screenshots and the file it saves.
+// Select the glass sphere by clicking it, drag its Roughness slider, undo, redo, save, quit.
+//
+// Sections: layout (where the editor draws what: derived from its code and ImGui's default
+// style, not from pixels of one run) - images - the driver (process, input, screenshots,
+// convergence) - the test.
+//
+// Renders are deterministic at a fixed sample count (--spp 8 stops accumulation), so two
+// screenshots of the same converged scene state have identical viewports: measured mean
+// absolute difference 0 (max 0) over the 640x639 viewport, also after undo and redo. The
+// roughness edit (0 -> 0.602) changes the viewport by 2.53 levels of 255 on average.
+//
+// Keys are held for a few UI frames rather than tapped: the editor's ImGui 1.86 GLFW backend
+// keeps only "is down" per key, so a press and release that land in one UI frame (xdotool key
+// sends both a few ms apart; a UI frame here takes ~50 ms) are never seen.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "assets/image_write.h"
+#include "assets/scene_loader.h"
+#include "editor/scene_equality.h"
+#include "editor/x11_session.h"
+#include "render/integrator/camera.h"
+#include "support/test_paths.h"
+
+namespace pt::test {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+#if defined(PT_EDITOR_APP)
+constexpr const char* kEditorApp = PT_EDITOR_APP;  // tests/CMakeLists.txt, where the editor is built
+#else
+constexpr const char* kEditorApp = nullptr;
+#endif
+
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+void sleepSeconds(double s) { std::this_thread::sleep_for(std::chrono::duration<double>(s)); }
+
+// ---- Layout -------------------------------------------------------------------------------
+// ImGui 1.86's default style and font (the editor changes neither): ProggyClean 13 px,
+// FramePadding (4, 3), ItemSpacing (8, 4), WindowPadding (8, 8), GrabMinSize 10, and a
+// slider's grab inset of 2 px; the default item width is 65% of the window's width.
+constexpr float kFontSize = 13.0f;
+constexpr float kFrameHeight = kFontSize + 2 * 3.0f;  // menu bar, headers, one-line widgets: 19
+constexpr float kItemSpacingY = 4.0f;
+constexpr float kRow = kFrameHeight + kItemSpacingY;   // one widget row: 23
+constexpr float kTextRow = kFontSize + kItemSpacingY;  // one line of text: 17
+constexpr float kWindowPadding = 8.0f;
+constexpr float kGrabMinSize = 10.0f, kGrabPadding = 2.0f;
+// The editor's own (editor_window.cpp kPanelWidth, outliner_panel.cpp BeginChild height).
+constexpr float kPanelWidth = 400.0f;
+constexpr float kOutlinerHeight = 180.0f;
+
+struct Point {
+    float x = 0, y = 0;
+};
+
+struct PixelRect {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // [x0, x1) x [y0, y1), window pixels
+};
+
+struct Layout {
+    float width = 0, height = 0;  // the window, in pixels (no window manager: no frame)
+    uint32_t renderWidth = 0, renderHeight = 0;
+    float imageX = 0, imageY = 0, imageSize = 0;  // the render, scaled to fit the viewport
+
+    Layout(float w, float h, uint32_t rw, uint32_t rh)
+        : width(w), height(h), renderWidth(rw), renderHeight(rh) {
+        // DisplayView::draw: the viewport is left of the panel and below the menu bar; the
+        // image keeps its aspect (square here) and is centred.
+        const float vw = width - kPanelWidth, vh = height - kFrameHeight;
+        imageSize = std::min(vw, vh);
+        imageX = 0.5f * (vw - imageSize);
+        imageY = kFrameHeight + 0.5f * (vh - imageSize);
+    }
+    float scale() const { return imageSize / float(renderWidth); }
+    // Whole pixels of the window that show the render.
+    PixelRect viewport() const {
+        return {int(std::ceil(imageX)), int(std::ceil(imageY)), int(std::floor(imageX + imageSize)),
+                int(std::floor(imageY + imageSize))};
+    }
+    Point fromRender(Point p) const { return {imageX + p.x * scale(), imageY + p.y * scale()}; }
+
+    float panelX() const { return width - kPanelWidth; }
+    // Top of the Inspector's first widget: the panel's padding, the Outliner (header, list,
+    // hint line) and the Inspector header.
+    float inspectorTop() const {
+        return kFrameHeight + kWindowPadding + kRow + (kOutlinerHeight + kItemSpacingY) + kTextRow + kRow;
+    }
+    // The rows of an object with a TRS transform and one material (inspector_panel.cpp):
+    // Name, Hidden, Translate, Rotate, Scale; the "Instance:" line; the material's header;
+    // Base color, Metallic, Roughness, ...
+    float materialTop() const { return inspectorTop() + 5 * kRow + kTextRow + kRow; }
+    float roughnessCentreY() const { return materialTop() + 2 * kRow + 0.5f * kFrameHeight; }
+    // A slider's frame starts at the panel's padding and is 65% of the panel wide; the grab's
+    // centre runs over [usableMin, usableMin + usableSize] as the value runs over its range.
+    float sliderLeft() const { return panelX() + kWindowPadding; }
+    float sliderWidth() const { return std::floor(0.65f * kPanelWidth); }
+    float usableMin() const { return sliderLeft() + kGrabPadding + 0.5f * kGrabMinSize; }
+    float usableSize() const { return sliderWidth() - 2 * kGrabPadding - kGrabMinSize; }
+    float sliderX(float t) const { return usableMin() + t * usableSize(); }
+    // The Inspector rows the selection fills (Name .. Scale): panels that do not change from
+    // frame to frame before it (the hint, the Camera, Render settings and Display headers).
+    PixelRect inspectorRows() const {
+        return {int(panelX()), int(inspectorTop()), int(width), int(materialTop() - kRow)};
+    }
+    // Where the pointer rests between actions: a viewport corner hovers over nothing.
+    Point restingPoint() const { return {imageX + 4, height - 4}; }
+};
+
+// Where a world point lands in the render (pixels, y down), the inverse of generateCameraRay.
+Point projectToRender(const Camera& camera, Vec3 p, uint32_t width, uint32_t height) {
+    const RenderCamera rc = makeRenderCamera(camera, width, height);
+    const Vec3 d = p - rc.origin;
+    const float z = dot(d, rc.forward);
+    const float ndcX = dot(d, rc.right) / (lengthSquared(rc.right) * z);
+    const float ndcY = dot(d, rc.up) / (lengthSquared(rc.up) * z);
+    return {0.5f * (ndcX + 1.0f) * float(width), 0.5f * (1.0f - ndcY) * float(height)};
+}
+
+// ---- Images -------------------------------------------------------------------------------
+
+struct Image {
+    uint32_t width = 0, height = 0;
+    std::vector<float> rgb;  // 0..255 levels, three a pixel, top row first
+    const float* at(int x, int y) const { return &rgb[(size_t(y) * width + size_t(x)) * 3]; }
+};
+
+Image readScreenshot(const std::string& path) {
+    Image image;
+    const std::vector<float> rgba = readImageRgba(path, image.width, image.height);
+    image.rgb.reserve(size_t(image.width) * image.height * 3);
+    for (size_t i = 0; i < rgba.size(); i += 4) {
+        for (size_t c = 0; c < 3; ++c) image.rgb.push_back(std::round(rgba[i + c] * 255.0f));
+    }
+    return image;
+}
+
+// Mean absolute difference in levels of 255 over the region, all channels.
+double meanAbsDiff(const Image& a, const Image& b, const PixelRect& r) {
+    double sum = 0;
+    for (int y = r.y0; y < r.y1; ++y) {
+        for (int x = r.x0; x < r.x1; ++x) {
+            for (int c = 0; c < 3; ++c) sum += std::fabs(double(a.at(x, y)[c]) - double(b.at(x, y)[c]));
+        }
+    }
+    return sum / (3.0 * double(r.x1 - r.x0) * double(r.y1 - r.y0));
+}
+
+bool uniform(const Image& image, const PixelRect& r) {
+    for (int y = r.y0; y < r.y1; ++y) {
+        for (int x = r.x0; x < r.x1; ++x) {
+            if (!std::equal(image.at(x, y), image.at(x, y) + 3, image.at(r.x0, r.y0))) return false;
+        }
+    }
+    return true;
+}
+
+// ---- The driver ---------------------------------------------------------------------------
+
+std::string readText(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+class EditorEndToEnd : public ::testing::Test {
+protected:
+    fs::path dir;
+    std::unique_ptr<X11Session> x;
+    std::unique_ptr<ChildProcess> editor;  // declared after the server: ends before it
+    std::string window;
+    int shots = 0;
+    uint32_t windowWidth = 0, windowHeight = 0;  // once known: every screenshot must be this size
+    double frameSeconds = 0.1;  // an upper bound of one UI frame, from the last F12's latency
+
+    // What the editor printed, for failure messages.
+    std::string editorOutput() const {
+        return "\n--- editor output (" + (dir / "editor.log").string() + ") ---\n" +
+               readText(dir / "editor.log");
+    }
+
+    // xdotool on the test's display; a failure fails the test with its output.
+    std::string xdo(const std::vector<std::string>& args) {
+        const CommandResult r = x->xdotool(args);
+        if (r.status != 0) {
+            std::string line = "xdotool";
+            for (const std::string& a : args) line += " " + a;
+            ADD_FAILURE() << line << " failed (status " << r.status << "): " << r.output << editorOutput();
+        }
+        return r.output;
+    }
+
+    // Long enough for a few UI frames to see a key or button down (see the file comment).
+    double hold() const { return std::clamp(3.0 * frameSeconds, 0.25, 2.0); }
+
+    void chord(const std::string& keys) {
+        xdo({"keydown", keys});
+        sleepSeconds(hold());
+        xdo({"keyup", keys});
+        sleepSeconds(hold());
+    }
+
+    void moveTo(Point p) {
+        xdo({"mousemove", "--window", window, std::to_string(int(std::lround(p.x))),
+             std::to_string(int(std::lround(p.y)))});
+    }
+
+    // F12, then the numbered file the editor writes (editor_window.cpp screenshotPath).
+    std::string screenshotFile(int n) const {
+        return (dir / (n == 0 ? std::string("shot.png") : "shot-" + std::to_string(n) + ".png")).string();
+    }
+
+    // Holds F12 until the screenshot is there (the editor writes it atomically).
+    Image screenshot() {
+        const std::string path = screenshotFile(shots++);
+        const auto start = Clock::now();
+        xdo({"keydown", "F12"});
+        while (!fs::exists(path) && secondsSince(start) < 20.0 && editor->running()) sleepSeconds(0.01);
+        frameSeconds = secondsSince(start);
+        xdo({"keyup", "F12"});
+        if (!fs::exists(path)) {
+            ADD_FAILURE() << "no screenshot " << path << " within 20 s of pressing F12" << editorOutput();
+            return {};
+        }
+        Image image = readScreenshot(path);
+        if (image.width != windowWidth || image.height != windowHeight) {
+            ADD_FAILURE() << path << " is " << image.width << "x" << image.height << ", not the window's "
+                          << windowWidth << "x" << windowHeight;
+        }
+        return image;
+    }
+
+    // Takes screenshots until the viewport has stopped changing: still for 1.5 s and for three
+    // times the longest interval seen between two changes (a render pass, or the time between
+    // screenshots), so a slow pass is not taken for the end. With `before` (the converged image
+    // of the previous state), the result must also have moved on from it at some point, so an
+    // edit not yet picked up is not taken for its result either.
+    Image converged(const char* what, const Image* before, const Layout& layout) {
+        const PixelRect view = layout.viewport();
+        const auto start = Clock::now();
+        Image last = screenshot();
+        auto lastChange = Clock::now();
+        double longestGap = 0.0;
+        bool movedOn = before == nullptr;
+        while (!HasFailure()) {
+            if (secondsSince(start) > 40.0) {
+                ADD_FAILURE() << what
+                              << ": the viewport did not settle within 40 s (moved on from the previous "
+                              << "state: " << (movedOn ? "yes" : "no") << ")" << editorOutput();
+                break;
+            }
+            sleepSeconds(0.25);
+            Image next = screenshot();
+            if (HasFailure()) break;
+            if (meanAbsDiff(last, next, view) > 0.0) {
+                longestGap = std::max(longestGap, secondsSince(lastChange));
+                lastChange = Clock::now();
+                last = std::move(next);
+                movedOn = true;
+                continue;
+            }
+            if (before && meanAbsDiff(*before, next, view) > 0.0) movedOn = true;
+            const bool still = secondsSince(lastChange) >= std::max(1.5, 3.0 * longestGap);
+            if (still && movedOn && !uniform(next, view)) return next;
+        }
+        return last;
+    }
+
+    // Starts the editor on `scene` (its window found, focused and measured) and returns the layout.
+    Layout launch(const fs::path& scene, uint32_t renderSize) {
+        std::string error;
+        x = X11Session::start((dir / "xvfb.log").string(), 20.0, error);
+        if (!x) {
+            ADD_FAILURE() << error;
+            return Layout(0, 0, renderSize, renderSize);
+        }
+        const std::string size = std::to_string(renderSize) + "x" + std::to_string(renderSize);
+        editor = std::make_unique<ChildProcess>(
+            std::vector<std::string>{kEditorApp, scene.string(), "--backend", "cpu", "--size", size, "--spp",
+                                     "8", "--screenshot", (dir / "shot.png").string()},
+            // llvmpipe; and recent files kept out of the user's configuration.
+            std::vector<std::string>{x->displayEnv(), "LIBGL_ALWAYS_SOFTWARE=1",
+                                     "XDG_CONFIG_HOME=" + (dir / "config").string()},
+            (dir / "editor.log").string());
+        // The window once mapped; keys go to the focused window (there is no window manager).
+        const auto start = Clock::now();
+        while (window.empty() && secondsSince(start) < 30.0 && editor->running()) {
+            const CommandResult r = x->xdotool({"search", "--onlyvisible", "--name", "^pathtracer$"});
+            if (r.status == 0)
+                window = r.output.substr(0, r.output.find('\n'));
+            else
+                sleepSeconds(0.2);
+        }
+        if (window.empty()) {
+            ADD_FAILURE() << "no pathtracer window within 30 s" << editorOutput();
+            return Layout(0, 0, renderSize, renderSize);
+        }
+        xdo({"windowfocus", "--sync", window});
+        const std::string geometry = xdo({"getwindowgeometry", "--shell", window});
+        const auto field = [&](const std::string& name) {
+            const size_t at = geometry.find(name + "=");
+            return at == std::string::npos ? 0.0f : std::stof(geometry.substr(at + name.size() + 1));
+        };
+        const Layout layout(field("WIDTH"), field("HEIGHT"), renderSize, renderSize);
+        if (layout.imageSize <= 0.0f) ADD_FAILURE() << "no room for the viewport in " << geometry;
+        windowWidth = uint32_t(layout.width);
+        windowHeight = uint32_t(layout.height);
+        moveTo(layout.restingPoint());
+        return layout;
+    }
+
+    void click(Point p) {
+        moveTo(p);
+        sleepSeconds(hold());
+        xdo({"click", "1"});
+        sleepSeconds(hold());
+    }
+
+    // Presses on a slider's grab at `fromT` of its range, moves in steps to `toT`, releases.
+    // Returns the window x of the release.
+    float dragSlider(const Layout& layout, float y, float fromT, float toT) {
+        const float startX = layout.sliderX(fromT), endX = std::round(layout.sliderX(toT));
+        moveTo({startX, y});
+        sleepSeconds(hold());
+        xdo({"mousedown", "1"});
+        sleepSeconds(hold());
+        for (int step = 1; step <= 6; ++step) {
+            moveTo({startX + (endX - startX) * float(step) / 6.0f, y});
+            sleepSeconds(frameSeconds);
+        }
+        sleepSeconds(hold());
+        xdo({"mouseup", "1"});
+        sleepSeconds(hold());
+        moveTo(layout.restingPoint());
+        return endX;
+    }
+
+    // Ctrl+S, Return (saving over the scene's own file asks nothing), then Ctrl+Q; waits for
+    // the file to change and the editor to end with status 0.
+    void saveAndQuit(const fs::path& scene) {
+        const std::string before = readText(scene);
+        chord("ctrl+s");
+        // The dialog opens with its path field (prefilled with the scene's path) focused.
+        chord("Return");
+        const auto start = Clock::now();
+        while (readText(scene) == before && secondsSince(start) < 10.0) sleepSeconds(0.05);
+        EXPECT_NE(readText(scene), before) << "ctrl+s, Return did not save " << scene << editorOutput();
+        chord("ctrl+q");
+        const std::optional<int> status = editor->waitForExit(15.0);
+        ASSERT_TRUE(status.has_value()) << "ctrl+q did not close the editor within 15 s" << editorOutput();
+        EXPECT_EQ(*status, 0) << editorOutput();
+    }
+
+    void TearDown() override {
+        editor.reset();
+        x.reset();
+    }
+};
+
+// ---- The test -----------------------------------------------------------------------------
+
+// The Cornell box copied into the test's folder (saving must never touch the project's file);
+// it names no other file (model, texture, environment image) that would have to come along.
+LoadResult copyCornellBox(const fs::path& to) {
+    fs::copy_file(projectPath("scenes/cornell.json"), to);
+    LoadResult scene = loadScene(to.string());
+    if (!scene.ok()) return scene;
+    for (const SceneObject& o : scene.scene->objects) EXPECT_NE(o.kind, ObjectKind::File) << o.name;
+    EXPECT_TRUE(scene.scene->textures.empty());
+    EXPECT_TRUE(scene.scene->environment.imagePath.empty());
+    return scene;
+}
+
+TEST_F(EditorEndToEnd, ClickDragUndoRedoSaveQuit) {
+    if (!kEditorApp)
+        GTEST_SKIP() << "the editor (pathtracer) is not built here: configure with -DPT_EDITOR=ON";
+    for (const char* program : {"Xvfb", "xdotool"}) {
+        if (findOnPath(program).empty()) GTEST_SKIP() << program << " is not on PATH";
+    }
+    const auto testStart = Clock::now();
+    dir = fs::path(tempDir()) / "editor-e2e";
+    fs::remove_all(dir);
+    fs::create_directories(dir / "config");
+    const fs::path scenePath = dir / "cornell.json";
+    LoadResult original = copyCornellBox(scenePath);
+    ASSERT_TRUE(original.ok()) << original.error;
+    const int32_t glass = original.scene->findMaterial("glass");
+    ASSERT_GE(glass, 0);
+    ASSERT_EQ(original.scene->materials[size_t(glass)].params.roughness, 0.0f);
+    const auto sphere = std::find_if(original.scene->instances.begin(), original.scene->instances.end(),
+                                     [](const Instance& i) { return i.name == "glass sphere"; });
+    ASSERT_NE(sphere, original.scene->instances.end());
+
+    constexpr uint32_t kRender = 160;
+    const Layout layout = launch(scenePath, kRender);
+    ASSERT_FALSE(HasFailure());
+    const PixelRect view = layout.viewport();
+
+    // 1. The first converged image.
+    const Image first = converged("first render", nullptr, layout);
+    ASSERT_FALSE(HasFailure());
+
+    // 2. Click the sphere's centre (projected through the scene's camera) to select it.
+    const Point sphereAt = layout.fromRender(
+        projectToRender(original.scene->camera, sphere->objectToWorld.translation(), kRender, kRender));
+    click(sphereAt);
+    moveTo(layout.restingPoint());
+    sleepSeconds(hold());
+    const Image selected = screenshot();
+    ASSERT_FALSE(HasFailure());
+    // The Inspector's rows now hold the object's widgets instead of the hint and the headers
+    // below it (measured: 32.7 levels; before the click these rows do not change at all).
+    const double inspectorChange = meanAbsDiff(first, selected, layout.inspectorRows());
+    EXPECT_GT(inspectorChange, 5.0) << "clicking the sphere at (" << sphereAt.x << ", " << sphereAt.y
+                                    << ") did not fill the Inspector" << editorOutput();
+    // The Roughness slider is where the layout says: a plain widget frame left of its
+    // centred value text, unlike the panel's background beside it.
+    const int rowY = int(layout.roughnessCentreY());
+    const PixelRect frameStrip{int(layout.sliderX(0.15f)), rowY - 4, int(layout.sliderX(0.35f)), rowY + 5};
+    const float* panelBackground = selected.at(int(layout.panelX()) + 4, rowY);
+    EXPECT_TRUE(uniform(selected, frameStrip) &&
+                !std::equal(panelBackground, panelBackground + 3, selected.at(frameStrip.x0, rowY)))
+        << "no slider frame at y = " << rowY << ": the Inspector's layout moved (see "
+        << screenshotFile(shots - 1) << ")";
+    ASSERT_FALSE(HasFailure());
+
+    // 3. Drag Roughness from 0 to 0.6 of its range. The slider rounds to its "%.3f" format.
+    const float endX = dragSlider(layout, float(rowY), 0.0f, 0.6f);
+    const float expectedRoughness =
+        std::round((endX - layout.usableMin()) / layout.usableSize() * 1000.0f) / 1000.0f;
+    const Image dragged = converged("after the Roughness drag", &first, layout);
+    ASSERT_FALSE(HasFailure());
+    const double dragChange = meanAbsDiff(first, dragged, view);
+    // Same-state renders differ by exactly 0; the edit measured 2.53. Any threshold above 0
+    // would do; 1.0 also rejects an edit that reached only a few pixels.
+    EXPECT_GT(dragChange, 1.0) << "the Roughness drag barely changed the render" << editorOutput();
+
+    // 4. Undo: back to the first image.
+    chord("ctrl+z");
+    const Image undone = converged("after ctrl+z", &dragged, layout);
+    ASSERT_FALSE(HasFailure());
+    const double undoDiff = meanAbsDiff(first, undone, view);
+    EXPECT_LE(undoDiff, 0.05) << "ctrl+z did not restore the render (measured 0 when it does)"
+                              << editorOutput();
+
+    // 5. Redo: the dragged image again.
+    chord("ctrl+shift+z");
+    const Image redone = converged("after ctrl+shift+z", &undone, layout);
+    ASSERT_FALSE(HasFailure());
+    const double redoDiff = meanAbsDiff(dragged, redone, view);
+    EXPECT_LE(redoDiff, 0.05) << "ctrl+shift+z did not bring the edit back" << editorOutput();
+
+    // 6. Save over the scene's own file, then quit.
+    saveAndQuit(scenePath);
+    ASSERT_FALSE(HasFailure());
+
+    // 7. The file holds the redone roughness; everything else is what the original held.
+    LoadResult saved = loadScene(scenePath.string());
+    ASSERT_TRUE(saved.ok()) << saved.error << "\n" << readText(scenePath);
+    const int32_t savedGlass = saved.scene->findMaterial("glass");
+    ASSERT_GE(savedGlass, 0);
+    const float roughness = saved.scene->materials[size_t(savedGlass)].params.roughness;
+    EXPECT_NEAR(roughness, expectedRoughness, 0.0015) << "the slider's value for a release at x = " << endX;
+    Scene expected = std::move(*original.scene);
+    expected.materials[size_t(glass)].params.roughness = roughness;
+    // --size is a viewing choice: the file keeps its own resolution (checked by the equality).
+    expectScenesEqual(expected, *saved.scene);
+
+    std::printf(
+        "[ measured ] inspector change %.2f, drag change %.3f, undo diff %.3f, redo diff %.3f levels; "
+        "roughness %.3f; last F12 latency %.0f ms; %.1f s in all\n",
+        inspectorChange, dragChange, undoDiff, redoDiff, double(roughness), frameSeconds * 1e3,
+        secondsSince(testStart));
+    // The screenshots (about 45, 4 MB) stay only when something failed, for a look at them.
+    if (!HasFailure()) fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace pt::test

@@ -1,0 +1,325 @@
+// EditorSession on the CPU backend: opening files (errors keep the document), edits turned
+// into the SceneChanges the backend syncs, display-only edits that keep the accumulation, the
+// target spp, edit latency, undo, export and save.
+//
+// The CPU backend recompiles its scene for any edit (its report says "compile scene"), so the
+// tests wrap it in a backend that records what the session asked of it and reports the action
+// the CUDA backend takes for those changes ("materials", "TLAS", ...): what the tests check is
+// that the session passes each edit's changes and reports the backend's answer.
+#include "editor/editor_session.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "assets/image_read.h"
+#include "assets/image_write.h"
+#include "assets/input_error.h"
+#include "assets/scene_test_helpers.h"
+#include "editor/scene_edits.h"
+#include "editor/scene_equality.h"
+#include "support/load_scene.h"
+#include "support/scene_builder.h"
+#include "support/test_paths.h"
+
+namespace pt::editor {
+namespace {
+
+using test::addMaterial;
+using test::addShape;
+using test::diffuse;
+using test::trs;
+
+// The CPU backend, recording every sync's changes.
+class RecordingBackend final : public Backend {
+public:
+    std::vector<SceneChangeMask> syncs;
+
+    std::string name() const override { return "recording " + cpu_->name(); }
+    SyncReport sync(const Scene& scene, SceneChangeMask changes, const ProgressFn& progress) override {
+        syncs.push_back(changes);
+        SyncReport report = cpu_->sync(scene, changes, progress);
+        report.action = actionFor(changes);
+        return report;
+    }
+    void setToggles(const IntegratorToggles& toggles) override { cpu_->setToggles(toggles); }
+    void render(uint32_t passes) override { cpu_->render(passes); }
+    void resetAccumulation() override { cpu_->resetAccumulation(); }
+    uint32_t width() const override { return cpu_->width(); }
+    uint32_t height() const override { return cpu_->height(); }
+    void readBeauty(std::vector<float>& rgba) const override { cpu_->readBeauty(rgba); }
+    BackendStats stats() const override { return cpu_->stats(); }
+    std::vector<ToggleState> toggleStates() const override { return cpu_->toggleStates(); }
+    std::vector<double> traceRays(const std::vector<Ray>& rays, bool anyHit, uint32_t runs,
+                                  std::vector<Hit>* hits) override {
+        return cpu_->traceRays(rays, anyHit, runs, hits);
+    }
+    uint64_t deviceMemoryBytes() const override { return cpu_->deviceMemoryBytes(); }
+    void setAovs(AovMask aovs) override { cpu_->setAovs(aovs); }
+    AovMask aovs() const override { return cpu_->aovs(); }
+    void readAov(Aov aov, std::vector<float>& rgba) const override { cpu_->readAov(aov, rgba); }
+    uint64_t aovBytes() const override { return cpu_->aovBytes(); }
+
+private:
+    // The CUDA backend's names for the least work each change needs (render/backend/backend.h).
+    static std::string actionFor(SceneChangeMask changes) {
+        if (changes & (SceneChanges::Topology | SceneChanges::Textures)) return "full build";
+        if (changes & SceneChanges::Geometry) return "refit";
+        if (changes & SceneChanges::Transforms) return "TLAS";
+        if (changes & SceneChanges::Materials) return "materials";
+        if (changes & (SceneChanges::Lights | SceneChanges::Environment)) return "lights";
+        return changes == SceneChanges::None ? "nothing" : "reset";
+    }
+
+    std::unique_ptr<Backend> cpu_ = createBackend("cpu");
+};
+
+// A 16x16 scene: a sphere and a box under an emitting quad.
+Scene tinyScene() {
+    Scene scene;
+    scene.render = {16, 16, 2, 4, 0};
+    scene.camera.position = {0, 0, 5};
+    scene.camera.lookAt = {0, 0, 0};
+    const uint32_t red = addMaterial(scene, "red", diffuse({0.8f, 0.1f, 0.1f}));
+    const uint32_t blue = addMaterial(scene, "blue", diffuse({0.1f, 0.1f, 0.8f}));
+    const uint32_t lamp = addMaterial(scene, "lamp", test::emitter({4, 4, 4}));
+    addShape(scene, ObjectKind::Sphere, trs({-1, 0, 0}, {0, 0, 0}, {0.7f, 0.7f, 0.7f}), red, "ball");
+    addShape(scene, ObjectKind::Box, trs({1, 0, 0}, {0, 30, 0}, {0.5f, 0.5f, 0.5f}), blue, "crate");
+    addShape(scene, ObjectKind::Quad, trs({0, 2, 0}, {180, 0, 0}, {2, 1, 2}), lamp, "lamp");
+    scene.environment.color = {0.1f, 0.1f, 0.1f};
+    return scene;
+}
+
+struct Fixture {
+    RecordingBackend* backend;
+    std::unique_ptr<EditorSession> session;
+};
+
+// A session on the tiny scene, synced, with `spp` samples rendered.
+Fixture startSession(uint32_t spp = 1) {
+    auto backend = std::make_unique<RecordingBackend>();
+    Fixture f{backend.get(), std::make_unique<EditorSession>(std::move(backend))};
+    f.session->adopt(tinyScene());
+    EXPECT_EQ(f.session->pendingChanges(), SceneChanges::All);
+    f.session->sync();
+    EXPECT_EQ(f.session->pendingChanges(), SceneChanges::None);
+    f.session->render(spp);
+    return f;
+}
+
+Material edited(const EditorSession& session, uint32_t material) {
+    Material m = session.document().scene.materials[material].params;
+    m.baseColor = {0.2f, 0.9f, 0.2f};
+    return m;
+}
+
+TEST(EditorSession, OpenFailuresNameTheFileAndKeepTheDocument) {
+    Fixture f = startSession();
+    EditorSession& session = *f.session;
+    session.execute(setMaterial(session.document(), 0, edited(session, 0)));
+    const Scene before = session.document().scene;
+
+    const std::string folder = test::testFolder();
+    const std::string missing = folder + "/missing scene.json";
+    const std::string error = session.open(missing);
+    EXPECT_NE(error.find("missing scene.json"), std::string::npos) << error;
+
+    const std::string malformed =
+        test::writeFile(folder, "malformed.json", "{\"version\": 1, \"objects\": [");
+    const std::string error2 = session.open(malformed);
+    EXPECT_NE(error2.find("malformed.json"), std::string::npos) << error2;
+
+    test::expectScenesEqual(before, session.document().scene);
+    EXPECT_TRUE(session.history().canUndo()) << "the history of the kept document stays";
+    EXPECT_TRUE(session.modified());
+}
+
+TEST(EditorSession, OpenReplacesTheDocument) {
+    Fixture f = startSession();
+    EditorSession& session = *f.session;
+    session.execute(setMaterial(session.document(), 0, edited(session, 0)));
+    session.sync();
+    EXPECT_EQ(session.open(test::projectPath("scenes/cornell.json")), "");
+    EXPECT_EQ(session.document().scene.objects.size(), 8u);
+    EXPECT_EQ(session.pendingChanges(), SceneChanges::All);
+    EXPECT_FALSE(session.history().canUndo());
+    EXPECT_FALSE(session.modified());
+}
+
+TEST(EditorSession, AMaterialEditSyncsMaterials) {
+    Fixture f = startSession();
+    EditorSession& session = *f.session;
+    const size_t syncs = f.backend->syncs.size();
+    EXPECT_EQ(session.execute(setMaterial(session.document(), 1, edited(session, 1))),
+              SceneChanges::Materials);
+    EXPECT_EQ(session.pendingChanges(), SceneChanges::Materials);
+    EXPECT_FALSE(session.lastEdit().complete);
+    const SyncReport report = session.sync();
+    ASSERT_EQ(f.backend->syncs.size(), syncs + 1);
+    EXPECT_EQ(f.backend->syncs.back(), SceneChanges::Materials);
+    EXPECT_EQ(report.action, "materials");
+    EXPECT_EQ(session.lastEdit().action, "materials");
+    EXPECT_EQ(session.backend().stats().samplesPerPixel, 0u) << "the edit restarts accumulation";
+    EXPECT_FALSE(session.lastEdit().complete) << "no frame yet";
+    EXPECT_EQ(session.render(1), 1u);
+    const EditLatency& latency = session.lastEdit();
+    EXPECT_TRUE(latency.complete);
+    EXPECT_GT(latency.toFrameSeconds, 0.0);
+    EXPECT_GE(latency.toFrameSeconds, latency.syncSeconds);
+    EXPECT_EQ(latency.label, "Edit material blue");
+    // Later frames do not move the measurement.
+    const double measured = latency.toFrameSeconds;
+    session.render(1);
+    EXPECT_EQ(session.lastEdit().toFrameSeconds, measured);
+}
+
+TEST(EditorSession, AnObjectMoveSyncsTheTlas) {
+    Fixture f = startSession();
+    EditorSession& session = *f.session;
+    EXPECT_EQ(session.execute(setObjectTransform(session.document(), 0, trs({-1, 0.5f, 0}))),
+              SceneChanges::Transforms);
+    EXPECT_EQ(session.sync().action, "TLAS");
+    EXPECT_EQ(f.backend->syncs.back(), SceneChanges::Transforms);
+    EXPECT_EQ(session.lastEdit().action, "TLAS");
+}
+
+TEST(EditorSession, ADisplayEditKeepsTheAccumulation) {
+    Fixture f = startSession(2);
+    EditorSession& session = *f.session;
+    session.execute(setMaterial(session.document(), 0, edited(session, 0)));
+    session.sync();
+    session.render(2);
+    const EditLatency latency = session.lastEdit();
+    ASSERT_TRUE(latency.complete);
+    const size_t syncs = f.backend->syncs.size();
+
+    ViewerSettings viewer = session.document().viewer;
+    viewer.display.exposureStops = 2.0f;
+    EXPECT_EQ(session.execute(setViewer(session.document(), viewer)), SceneChanges::Display);
+    EXPECT_EQ(session.pendingChanges(), SceneChanges::Display);
+    EXPECT_EQ(session.sync().action, "nothing");
+    EXPECT_EQ(f.backend->syncs.size(), syncs) << "the backend is not asked to sync";
+    EXPECT_EQ(session.pendingChanges(), SceneChanges::None);
+    EXPECT_EQ(session.backend().stats().samplesPerPixel, 2u);
+    EXPECT_EQ(session.document().viewer.display.exposureStops, 2.0f);
+    EXPECT_EQ(session.lastEdit().label, latency.label) << "a display edit is not an edit to render";
+    EXPECT_TRUE(session.lastEdit().complete);
+}
+
+TEST(EditorSession, RenderStopsAtTheTargetSpp) {
+    Fixture f = startSession(0);
+    EditorSession& session = *f.session;
+    ViewerSettings viewer = session.document().viewer;
+    viewer.targetSpp = 3;
+    session.execute(setViewer(session.document(), viewer));
+    session.sync();
+    EXPECT_FALSE(session.converged());
+    EXPECT_EQ(session.render(2), 2u);
+    EXPECT_EQ(session.render(2), 1u);
+    EXPECT_EQ(session.render(2), 0u);
+    EXPECT_EQ(session.backend().stats().samplesPerPixel, 3u);
+    EXPECT_TRUE(session.converged());
+    // No target: renders what it is asked.
+    viewer.targetSpp = 0;
+    session.execute(setViewer(session.document(), viewer));
+    EXPECT_EQ(session.render(2), 2u);
+    EXPECT_FALSE(session.converged());
+}
+
+TEST(EditorSession, UndoAndRedoSyncLikeTheEdit) {
+    Fixture f = startSession();
+    EditorSession& session = *f.session;
+    const Scene before = session.document().scene;
+    session.execute(setMaterial(session.document(), 1, edited(session, 1)));
+    const std::string action = session.sync().action;
+    session.render(1);
+    const Scene after = session.document().scene;
+
+    ASSERT_TRUE(session.undo());
+    EXPECT_EQ(session.pendingChanges(), SceneChanges::Materials);
+    EXPECT_EQ(session.sync().action, action);
+    EXPECT_EQ(f.backend->syncs.back(), SceneChanges::Materials);
+    test::expectScenesEqual(before, session.document().scene);
+    EXPECT_EQ(session.lastEdit().label, "Undo Edit material blue");
+    EXPECT_FALSE(session.lastEdit().complete);
+    session.render(1);
+    EXPECT_TRUE(session.lastEdit().complete);
+    EXPECT_FALSE(session.undo()) << "nothing more to undo";
+
+    ASSERT_TRUE(session.redo());
+    EXPECT_EQ(session.sync().action, action);
+    EXPECT_EQ(session.lastEdit().label, "Redo Edit material blue");
+    test::expectScenesEqual(after, session.document().scene);
+    EXPECT_FALSE(session.redo());
+}
+
+TEST(EditorSession, ExportWritesTheBeautyAndItsDisplayImage) {
+    Fixture f = startSession(2);
+    EditorSession& session = *f.session;
+    ViewerSettings viewer = session.document().viewer;
+    viewer.display.exposureStops = 1.0f;
+    viewer.display.toneMapper = ToneMapper::Reinhard;
+    session.execute(setViewer(session.document(), viewer));
+    std::vector<float> beauty;
+    session.backend().readBeauty(beauty);
+    ASSERT_EQ(beauty.size(), 16u * 16u * 4u);
+
+    const std::string folder = test::testFolder();
+    const std::string png = folder + "/render.png";
+    const std::string exr = PT_TEST_HAVE_OIIO ? folder + "/render.exr" : std::string();
+    session.exportRender(exr, png);
+
+    const Texture image = readTextureFile(png);
+    ASSERT_EQ(image.width, 16u);
+    ASSERT_EQ(image.height, 16u);
+    ASSERT_EQ(image.format, TexelFormat::RGBA8);
+    const std::vector<uint8_t> expected = encodeDisplay8(beauty, viewer.display);
+    size_t differing = 0;
+    for (size_t i = 0; i < 16u * 16u; ++i) {
+        for (size_t c = 0; c < 3; ++c) differing += image.texels8[i * 4 + c] != expected[i * 3 + c] ? 1 : 0;
+    }
+    EXPECT_EQ(differing, 0u) << "PNG pixels differ from encodeDisplay8 of the beauty";
+    // Exposure + Reinhard must show: the plain sRGB encoding gives other pixels.
+    EXPECT_NE(encodeDisplay8(beauty, DisplaySettings{}), expected);
+
+    if (!PT_TEST_HAVE_OIIO) GTEST_SKIP() << "this build has no OpenImageIO (PT_OIIO=OFF): no EXR";
+    uint32_t w = 0, h = 0;
+    const std::vector<float> read = readImageRgba(exr, w, h);
+    ASSERT_EQ(w, 16u);
+    ASSERT_EQ(h, 16u);
+    ASSERT_EQ(read.size(), beauty.size());
+    for (size_t i = 0; i < beauty.size(); ++i) {
+        if (i % 4 == 3) continue;  // alpha
+        ASSERT_EQ(read[i], beauty[i]) << "EXR value " << i;
+    }
+}
+
+TEST(EditorSession, SaveWritesTheSceneAndClearsModified) {
+    Fixture f = startSession();
+    EditorSession& session = *f.session;
+    EXPECT_FALSE(session.modified());
+    const Material m = edited(session, 0);
+    session.execute(setMaterial(session.document(), 0, m));
+    EXPECT_TRUE(session.modified());
+    const std::string folder = test::testFolder();
+    const std::string path = folder + "/saved.json";
+    session.save(path);
+    EXPECT_FALSE(session.modified());
+    const Scene loaded = test::loadSceneOrFail(path);
+    const int32_t red = loaded.findMaterial("red");
+    ASSERT_GE(red, 0);
+    EXPECT_EQ(std::memcmp(&loaded.materials[size_t(red)].params, &m, sizeof(Material)), 0);
+    EXPECT_EQ(loaded.objects.size(), session.document().scene.objects.size());
+    // Undoing past the save modifies the document again.
+    session.undo();
+    EXPECT_TRUE(session.modified());
+    // A failing save throws and keeps the modified flag.
+    EXPECT_THROW(session.save(folder + "/missing folder/x.json"), InputError);
+    EXPECT_TRUE(session.modified());
+}
+
+}  // namespace
+}  // namespace pt::editor
