@@ -39,6 +39,15 @@ void writeBytesAtomically(const std::string& path, const std::vector<uint8_t>& b
 
 }  // namespace
 
+ImageMetadata renderMetadata(uint32_t spp, const std::string& renderSeconds, const std::string& backend,
+                             const std::string& scene, const std::string& software) {
+    return {{"pt:spp", std::to_string(spp)},
+            {"pt:render_seconds", renderSeconds},
+            {"pt:backend", backend},
+            {"pt:scene", scene},
+            {"Software", software}};
+}
+
 void writeExr(const std::string& path, uint32_t width, uint32_t height, const std::vector<float>& rgba,
               const ImageMetadata& metadata) {
     checkPixelCount(path, width, height, 4, rgba);

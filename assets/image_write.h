@@ -12,6 +12,12 @@ namespace pt {
 // PT_OIIO=OFF build).
 using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
 
+// The attributes every render carries: its samples per pixel and render time, the backend,
+// the scene and the program that made it (pt:spp, pt:render_seconds, pt:backend, pt:scene,
+// Software). `renderSeconds` is written as given, so callers choose its precision.
+ImageMetadata renderMetadata(uint32_t spp, const std::string& renderSeconds, const std::string& backend,
+                             const std::string& scene, const std::string& software);
+
 // Scene-linear RGBA float as a float EXR. Throws InputError naming `path` on failure.
 void writeExr(const std::string& path, uint32_t width, uint32_t height, const std::vector<float>& rgba,
               const ImageMetadata& metadata = {});

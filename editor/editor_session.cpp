@@ -159,13 +159,10 @@ void EditorSession::exportRender(const std::string& exrPath, const std::string& 
     std::vector<float> beauty;
     backend_->readBeauty(beauty);
     const BackendStats stats = backend_->stats();
-    const ImageMetadata metadata = {{"pt:spp", std::to_string(stats.samplesPerPixel)},
-                                    {"pt:render_seconds", std::to_string(stats.renderSeconds)},
-                                    {"pt:backend", backend_->name()},
-                                    {"pt:scene", doc_.scene.sourcePath},
-                                    {"pt:tone_mapper", toneMapperName(doc_.viewer.display.toneMapper)},
-                                    {"pt:exposure", std::to_string(doc_.viewer.display.exposureStops)},
-                                    {"Software", "pathtracer editor 0.1"}};
+    ImageMetadata metadata = renderMetadata(stats.samplesPerPixel, std::to_string(stats.renderSeconds),
+                                            backend_->name(), doc_.scene.sourcePath, "pathtracer editor 0.1");
+    metadata.insert(metadata.end(), {{"pt:tone_mapper", toneMapperName(doc_.viewer.display.toneMapper)},
+                                     {"pt:exposure", std::to_string(doc_.viewer.display.exposureStops)}});
     const uint32_t w = backend_->width(), h = backend_->height();
     if (!exrPath.empty()) writeExr(exrPath, w, h, beauty, metadata);
     if (!displayPath.empty()) writeDisplayImage(displayPath, w, h, encodeDisplay8(beauty, doc_.viewer.display), metadata);

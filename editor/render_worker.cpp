@@ -9,12 +9,16 @@ RenderWorker::RenderWorker(EditorSession& session) : session_(session), thread_(
 
 RenderWorker::~RenderWorker() {
     stop_ = true;
+    wake();
+    thread_.join();
+}
+
+void RenderWorker::wake() {
     {
         std::lock_guard<std::mutex> lock(wakeMutex_);
         woken_ = true;
     }
     wake_.notify_all();
-    thread_.join();
 }
 
 void RenderWorker::edit(const std::function<void(EditorSession&)>& change) {
@@ -22,11 +26,7 @@ void RenderWorker::edit(const std::function<void(EditorSession&)>& change) {
         std::unique_lock<std::shared_mutex> lock(sceneMutex_);
         change(session_);
     }
-    {
-        std::lock_guard<std::mutex> lock(wakeMutex_);
-        woken_ = true;
-    }
-    wake_.notify_all();
+    wake();
 }
 
 bool RenderWorker::tryEdit(const std::function<void(EditorSession&)>& change) {
@@ -35,11 +35,7 @@ bool RenderWorker::tryEdit(const std::function<void(EditorSession&)>& change) {
         if (!lock.owns_lock()) return false;
         change(session_);
     }
-    {
-        std::lock_guard<std::mutex> lock(wakeMutex_);
-        woken_ = true;
-    }
-    wake_.notify_all();
+    wake();
     return true;
 }
 

@@ -64,6 +64,7 @@ public:
 
 private:
     void run();
+    void wake();  // the render thread: there is new work (an edit, or stop)
     bool step();  // one sync and/or batch of passes; false when there was nothing to do
     void publishFrame(int32_t aov);
     void setStage(const std::string& stage, double fraction);

@@ -62,15 +62,12 @@ int runReference(const std::vector<std::string>& args) {
     const BatchedImage image = renderBatches(*backend, input.scene, sppPerBatch, r.batches, bar.callback());
     bar.finish();
     const NoiseLevel noise = noiseLevel(image.varianceOfMean, image.mean);
-    const ImageMetadata metadata = {{"pt:spp", std::to_string(image.spp)},
-                                    {"pt:batches", std::to_string(image.batches)},
-                                    {"pt:noise_relmse", formatFigure(noise.relMse)},
-                                    {"pt:noise_rmse", formatFigure(noise.rmse)},
-                                    {"pt:nonfinite_samples", std::to_string(image.nonfiniteSamples)},
-                                    {"pt:render_seconds", formatFigure(image.renderSeconds)},
-                                    {"pt:backend", backend->name()},
-                                    {"pt:scene", r.scenePath},
-                                    {"Software", "pt-render 0.1"}};
+    ImageMetadata metadata =
+        renderMetadata(image.spp, formatFigure(image.renderSeconds), backend->name(), r.scenePath, "pt-render 0.1");
+    metadata.insert(metadata.end(), {{"pt:batches", std::to_string(image.batches)},
+                                     {"pt:noise_relmse", formatFigure(noise.relMse)},
+                                     {"pt:noise_rmse", formatFigure(noise.rmse)},
+                                     {"pt:nonfinite_samples", std::to_string(image.nonfiniteSamples)}});
     writeExr(r.exrPath, backend->width(), backend->height(), image.mean, metadata);
     std::printf("%s\n", r.exrPath.c_str());
     if (!r.setup.quiet) {

@@ -139,17 +139,14 @@ int runRender(const std::vector<std::string>& args) {
     std::vector<float> beauty;
     backend->readBeauty(beauty);
     const BackendStats stats = backend->stats();
-    const ImageMetadata metadata = {{"pt:spp", std::to_string(stats.samplesPerPixel)},
-                                    {"pt:render_seconds", std::to_string(stats.renderSeconds)},
-                                    {"pt:backend", backend->name()},
-                                    {"pt:scene", r.scenePath},
-                                    {"Software", "pt-render 0.1"}};
+    const ImageMetadata metadata = renderMetadata(stats.samplesPerPixel, std::to_string(stats.renderSeconds),
+                                                  backend->name(), r.scenePath, "pt-render 0.1");
     if (!r.exrPath.empty()) {
         writeExr(r.exrPath, backend->width(), backend->height(), beauty, metadata);
         std::printf("%s\n", r.exrPath.c_str());
     }
     if (!r.pngPath.empty()) {
-        writeDisplayImage(r.pngPath, backend->width(), backend->height(), encodeSrgb8(beauty), metadata);
+        writeDisplayImage(r.pngPath, backend->width(), backend->height(), encodeDisplay8(beauty, DisplaySettings{}), metadata);
         std::printf("%s\n", r.pngPath.c_str());
     }
     if (!r.statsPath.empty()) writeStats(r, *backend, input.loadSeconds, sync);

@@ -42,7 +42,10 @@ void bookmarks(EditorUi& ui) {
     if (ImGui::Button("Add")) ui.bookmarks.push_back({name, ui.doc().scene.camera});
     for (size_t i = 0; i < ui.bookmarks.size(); ++i) {
         ImGui::PushID(int(i));
-        if (ImGui::Button("Go")) ui.apply(setCamera(ui.doc(), ui.bookmarks[i].camera)), ui.endDrag();
+        if (ImGui::Button("Go")) {
+            ui.apply(setCamera(ui.doc(), ui.bookmarks[i].camera));
+            ui.endDrag();
+        }
         ImGui::SameLine();
         if (ImGui::Button("X")) {
             ui.bookmarks.erase(ui.bookmarks.begin() + std::ptrdiff_t(i));

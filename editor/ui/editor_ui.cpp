@@ -67,6 +67,7 @@ bool EditorUi::pollLoad() {
     });
     selection = {};
     bookmarks.clear();
+    switchedOffTextures.clear();
     recentFiles = rememberRecentFile(recentFiles, fs::absolute(path).string());
     return true;
 }

@@ -4,8 +4,10 @@
 // (outliner_panel.cpp, inspector_panel.cpp, ...), so each reads on its own.
 #include <deque>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "editor/render_worker.h"
@@ -70,8 +72,11 @@ public:
     bool showOpenDialog = false, showSaveDialog = false, showExportDialog = false;
     // Numbers the Stats panel shows.
     std::vector<float> frameMillis;          // UI frame times, most recent last
-    std::vector<float> spsHistory;           // samples per second
     DisplayFrame lastFrame;
+    std::string framePath;                   // how frames reach the screen, and why not by interop
+    // Texture slots the user switched off, (material, slot) -> texture, so switching back on
+    // restores them; cleared when another scene is opened.
+    std::map<std::pair<uint32_t, int>, int32_t> switchedOffTextures;
 
 private:
     std::deque<std::function<void(EditorSession&)>> queued_;

@@ -109,18 +109,17 @@ public:
 void showFrame(EditorUi& ui, DisplayView& view, CudaGlFrame& interop) {
     const DisplayFrame& frame = ui.lastFrame;
     const bool device = ui.backendName == "cuda" && frame.aov < 0;
-    if (device && frame.rgba.empty()) {
-        view.prepareDeviceFrame(frame);
-        if (interop.update(ui.worker, view.texture(), frame.width, frame.height)) return;
-        ui.worker.setHostFrames(true);  // no interop here: the next frames bring their pixels
-        return;
-    }
-    view.upload(frame);
+    if (!frame.rgba.empty()) view.upload(frame);
+    bool onGpu = false;
     if (device) {
-        // Try interop from the next frame on; it stays off once it failed.
         view.prepareDeviceFrame(frame);
-        ui.worker.setHostFrames(!interop.update(ui.worker, view.texture(), frame.width, frame.height));
+        onGpu = interop.update(ui.worker, view.texture(), frame.width, frame.height);
+        // Without interop the next frames must bring their pixels; with it they need not.
+        ui.worker.setHostFrames(!onGpu);
     }
+    ui.framePath = onGpu ? "CUDA-GL interop (no host copy)"
+                   : device ? std::string("host upload: ") + interop.why()
+                            : "host upload";
 }
 
 int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {

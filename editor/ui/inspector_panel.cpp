@@ -2,8 +2,6 @@
 // of the picked instance (every parameter, per-slot texture on/off) and morph target weights.
 // Lights: colour, intensity, placement and cone. Each change is one command; a drag is one
 // undo step.
-#include <cstdio>
-#include <map>
 #include <string>
 
 #include "editor/object_edits.h"
@@ -14,14 +12,9 @@
 namespace pt::editor {
 namespace {
 
-// Texture indices of slots the user switched off, so switching back on restores them.
-std::map<std::pair<uint32_t, int>, int32_t>& switchedOffTextures() {
-    static std::map<std::pair<uint32_t, int>, int32_t> slots;
-    return slots;
-}
-
-bool textureToggle(const Scene& scene, uint32_t material, int slot, const char* label, TextureRef& ref) {
-    auto& off = switchedOffTextures();
+bool textureToggle(EditorUi& ui, uint32_t material, int slot, const char* label, TextureRef& ref) {
+    const Scene& scene = ui.doc().scene;
+    auto& off = ui.switchedOffTextures;
     const auto key = std::make_pair(material, slot);
     const bool known = ref.present() || off.count(key);
     if (!known) return false;
@@ -45,22 +38,22 @@ void materialEditor(EditorUi& ui, uint32_t index) {
     bool changed = false;
     ImGui::PushID(int(index));
     changed |= colorEdit(ui, "Base color", &m.baseColor);
-    changed |= textureToggle(scene, index, 0, "Base color", m.baseColorTexture);
+    changed |= textureToggle(ui, index, 0, "Base color", m.baseColorTexture);
     changed |= sliderFloat(ui, "Metallic", &m.metallic, 0.0f, 1.0f);
     changed |= sliderFloat(ui, "Roughness", &m.roughness, 0.0f, 1.0f);
-    changed |= textureToggle(scene, index, 1, "Metallic-roughness", m.metallicRoughnessTexture);
+    changed |= textureToggle(ui, index, 1, "Metallic-roughness", m.metallicRoughnessTexture);
     changed |= sliderFloat(ui, "Specular", &m.specular, 0.0f, 1.0f);
     changed |= colorEdit(ui, "Specular color", &m.specularColor);
     changed |= sliderFloat(ui, "IOR", &m.ior, 1.0f, 4.0f);
     changed |= sliderFloat(ui, "Transmission", &m.transmission, 0.0f, 1.0f);
-    changed |= textureToggle(scene, index, 4, "Transmission", m.transmissionTexture);
+    changed |= textureToggle(ui, index, 4, "Transmission", m.transmissionTexture);
     changed |= sliderFloat(ui, "Clearcoat", &m.clearcoat, 0.0f, 1.0f);
     changed |= sliderFloat(ui, "Clearcoat roughness", &m.clearcoatRoughness, 0.0f, 1.0f);
     changed |= colorEdit(ui, "Emission", &m.emission);
     changed |= sliderFloat(ui, "Emission strength", &m.emissionStrength, 0.0f, 1000.0f, "%.3f",
                            ImGuiSliderFlags_Logarithmic);
-    changed |= textureToggle(scene, index, 3, "Emission", m.emissiveTexture);
-    changed |= textureToggle(scene, index, 2, "Normal", m.normalTexture);
+    changed |= textureToggle(ui, index, 3, "Emission", m.emissiveTexture);
+    changed |= textureToggle(ui, index, 2, "Normal", m.normalTexture);
     changed |= sliderFloat(ui, "Normal scale", &m.normalScale, 0.0f, 2.0f);
     if (ImGui::TreeNode("Volume and alpha")) {
         changed |= sliderFloat(ui, "Thickness", &m.thickness, 0.0f, 10.0f);
@@ -178,15 +171,6 @@ void lightInspector(EditorUi& ui) {
 }
 
 }  // namespace
-
-bool inputName(const char* label, std::string& name) {
-    char buffer[256];
-    std::snprintf(buffer, sizeof(buffer), "%s", name.c_str());
-    ImGui::InputText(label, buffer, sizeof(buffer));
-    if (!ImGui::IsItemDeactivatedAfterEdit()) return false;
-    name = buffer;
-    return true;
-}
 
 void drawInspector(EditorUi& ui) {
     if (!ImGui::CollapsingHeader("Inspector", ImGuiTreeNodeFlags_DefaultOpen)) return;

@@ -18,19 +18,19 @@ void backendChoice(EditorUi& ui) {
 void integratorSwitches(EditorUi& ui) {
     IntegratorToggles t = ui.doc().toggles;
     bool changed = false;
-    changed |= checkbox("Next-event estimation", &t.nextEventEstimation);
-    changed |= checkbox("Multiple importance sampling", &t.multipleImportance);
-    changed |= checkbox("Russian roulette", &t.russianRoulette);
-    changed |= checkbox("Pixel jitter (antialiasing)", &t.pixelJitter);
-    changed |= checkbox("BVH off (brute force)", &t.bruteForce);
+    changed |= ImGui::Checkbox("Next-event estimation", &t.nextEventEstimation);
+    changed |= ImGui::Checkbox("Multiple importance sampling", &t.multipleImportance);
+    changed |= ImGui::Checkbox("Russian roulette", &t.russianRoulette);
+    changed |= ImGui::Checkbox("Pixel jitter (antialiasing)", &t.pixelJitter);
+    changed |= ImGui::Checkbox("BVH off (brute force)", &t.bruteForce);
     changed |= sliderFloat(ui, "Firefly clamp (0 = off)", &t.clampRadiance, 0.0f, 100.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
     if (ui.backendName == "cuda") {
         ImGui::Separator();
         ImGui::TextUnformatted("GPU scheduling");
-        changed |= checkbox("Megakernel (else wavefront)", &t.megakernel);
-        changed |= checkbox("Stream compaction", &t.streamCompaction);
-        changed |= checkbox("Material sort", &t.materialSort);
-        changed |= checkbox("First-hit cache", &t.firstHitCache);
+        changed |= ImGui::Checkbox("Megakernel (else wavefront)", &t.megakernel);
+        changed |= ImGui::Checkbox("Stream compaction", &t.streamCompaction);
+        changed |= ImGui::Checkbox("Material sort", &t.materialSort);
+        changed |= ImGui::Checkbox("First-hit cache", &t.firstHitCache);
         changed |= sliderFloat(ui, "Rebuild at SAH ratio", &t.rebuildSahRatio, 1.0f, 4.0f);
     }
     if (changed) ui.apply(setToggles(ui.doc(), t));

@@ -13,6 +13,7 @@ void drawStatsPanel(EditorUi& ui) {
     const WorkerStatus status = ui.worker.status();
     const BackendStats& s = ui.lastFrame.stats;
     ImGui::Text("Backend: %s   %ux%u", ui.backendName.c_str(), ui.lastFrame.width, ui.lastFrame.height);
+    if (!ui.framePath.empty()) ImGui::TextWrapped("Frames: %s", ui.framePath.c_str());
     ImGui::Text("Samples: %u spp%s", s.samplesPerPixel, status.converged ? " (target reached)" : "");
     if (!ui.frameMillis.empty()) {
         const float mean = std::accumulate(ui.frameMillis.begin(), ui.frameMillis.end(), 0.0f) / float(ui.frameMillis.size());

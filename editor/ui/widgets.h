@@ -4,6 +4,9 @@
 // widget is released (STYLE.md rule 6).
 #include <imgui.h>
 
+#include <cstdio>
+#include <string>
+
 #include "editor/ui/editor_ui.h"
 
 namespace pt::editor {
@@ -44,9 +47,14 @@ inline bool colorEdit(EditorUi& ui, const char* label, Vec3* v, ImGuiColorEditFl
     return changed;
 }
 
-inline bool checkbox(const char* label, bool* v) { return ImGui::Checkbox(label, v); }
-
 // Editable name: returns true with `name` changed once the user presses Enter or leaves the field.
-bool inputName(const char* label, std::string& name);
+inline bool inputName(const char* label, std::string& name) {
+    char buffer[256];
+    std::snprintf(buffer, sizeof(buffer), "%s", name.c_str());
+    ImGui::InputText(label, buffer, sizeof(buffer));
+    if (!ImGui::IsItemDeactivatedAfterEdit()) return false;
+    name = buffer;
+    return true;
+}
 
 }  // namespace pt::editor

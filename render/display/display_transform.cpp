@@ -27,10 +27,4 @@ std::vector<uint8_t> encodeDisplay8(const std::vector<float>& rgba, const Displa
     return out;
 }
 
-std::vector<uint8_t> encodeSrgb8(const std::vector<float>& rgba, float exposureStops) {
-    DisplaySettings display;
-    display.exposureStops = exposureStops;
-    return encodeDisplay8(rgba, display);
-}
-
 }  // namespace pt

@@ -67,6 +67,5 @@ PT_HD Vec3 displayEncode(Vec3 linear, const DisplaySettings& d) {
 // RGBA float (linear) -> RGB 8-bit (display-referred), same pixel order. Non-finite values
 // display as 0.
 std::vector<uint8_t> encodeDisplay8(const std::vector<float>& rgba, const DisplaySettings& display);
-std::vector<uint8_t> encodeSrgb8(const std::vector<float>& rgba, float exposureStops = 0.0f);
 
 }  // namespace pt
