@@ -29,6 +29,13 @@ void checkImageSize(const std::string& name, int width, int height, int depth, i
     }
 }
 
+void checkPixelCount(const std::string& path, uint32_t width, uint32_t height, size_t channels, size_t values) {
+    if (values != size_t(width) * height * channels) {
+        throw InputError(path + ": " + std::to_string(values) + " pixel values for a " + std::to_string(width) + "x" +
+                         std::to_string(height) + "x" + std::to_string(channels) + " image");
+    }
+}
+
 std::string sniffImageExtension(const std::vector<uint8_t>& bytes, const std::string& name) {
     if (startsWith(bytes, "\x89PNG\r\n\x1a\n", 8)) return "png";
     if (startsWith(bytes, "\xff\xd8\xff", 3)) return "jpg";

@@ -2,6 +2,7 @@
 // What the image readers and writers share whichever library does the work (OpenImageIO or
 // stb): telling formats apart by their bytes or file extension, the limits on what we decode,
 // and the message for formats this build cannot handle.
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -16,6 +17,10 @@ constexpr int kMaxImageSide = 1 << 16;
 // Throws InputError naming `name` unless a width x height x depth image of `channels`
 // channels is within the limits above (and is a 2D image with at least one channel).
 void checkImageSize(const std::string& name, int width, int height, int depth, int channels);
+
+// Throws InputError naming `path` unless `values` is width x height x channels: the writers
+// read that many values, and fewer would be read past their end.
+void checkPixelCount(const std::string& path, uint32_t width, uint32_t height, size_t channels, size_t values);
 
 // The format the bytes announce ("png", "jpg", "hdr", "exr", "tif", "webp", "gif", "bmp"),
 // or "" when they announce none (formats without a signature, such as TGA). Throws

@@ -3,8 +3,10 @@
 #include <fstream>
 
 #include "assets/atomic_file.h"
+#include "assets/exr_layers.h"
 #include "assets/image_read_format.h"
 #include "assets/input_error.h"
+#include "assets/pfm_file.h"
 #if PT_HAVE_OIIO
 #include "assets/image_write_oiio.h"
 #else
@@ -14,17 +16,6 @@
 
 namespace pt {
 namespace {
-
-// The writers read width x height x channels values; fewer would be read past their end.
-template <class T>
-void checkPixelCount(const std::string& path, uint32_t width, uint32_t height, size_t channels,
-                     const std::vector<T>& pixels) {
-    if (pixels.size() != size_t(width) * height * channels) {
-        throw InputError(path + ": " + std::to_string(pixels.size()) + " pixel values for a " +
-                         std::to_string(width) + "x" + std::to_string(height) + "x" +
-                         std::to_string(channels) + " image");
-    }
-}
 
 #if !PT_HAVE_OIIO
 void writeBytesAtomically(const std::string& path, const std::vector<uint8_t>& bytes) {
@@ -50,20 +41,14 @@ ImageMetadata renderMetadata(uint32_t spp, const std::string& renderSeconds, con
 
 void writeExr(const std::string& path, uint32_t width, uint32_t height, const std::vector<float>& rgba,
               const ImageMetadata& metadata) {
-    checkPixelCount(path, width, height, 4, rgba);
-#if PT_HAVE_OIIO
-    writeFileAtomically(path, [&](const std::string& temp) {
-        writeExrWithOiio(temp, path, width, height, rgba.data(), metadata);
-    });
-#else
-    (void)metadata;
-    throw InputError(needsOpenImageIoMessage(path, "exr"));
-#endif
+    checkPixelCount(path, width, height, 4, rgba.size());
+    writeExrChannels(path, width, height, interleavedChannels({"R", "G", "B", "A"}, ExrPixelType::Float, rgba.data(), 4),
+                     metadata);
 }
 
 void writeDisplayImage(const std::string& path, uint32_t width, uint32_t height,
                        const std::vector<uint8_t>& rgb, const ImageMetadata& metadata) {
-    checkPixelCount(path, width, height, 3, rgb);
+    checkPixelCount(path, width, height, 3, rgb.size());
 #if PT_HAVE_OIIO
     writeFileAtomically(path, [&](const std::string& temp) {
         writeDisplayImageWithOiio(temp, path, width, height, rgb.data(), metadata);
@@ -84,6 +69,7 @@ void writeDisplayImage(const std::string& path, uint32_t width, uint32_t height,
 }
 
 std::vector<float> readImageRgba(const std::string& path, uint32_t& width, uint32_t& height) {
+    if (isPfmPath(path)) return readPfm(path, width, height);  // the same exact floats in every build
 #if PT_HAVE_OIIO
     return readImageRgbaWithOiio(path, width, height);
 #else

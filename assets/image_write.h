@@ -1,6 +1,7 @@
 #pragma once
 // Writing renders, atomically (temp file, then rename), through OpenImageIO; with PT_OIIO=OFF
 // through stb_image_write, which writes PNG and JPEG, and EXR and TIFF throw InputError.
+// EXRs with AOV layers and half channels: exr_layers.h.
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -26,7 +27,8 @@ void writeExr(const std::string& path, uint32_t width, uint32_t height, const st
 void writeDisplayImage(const std::string& path, uint32_t width, uint32_t height,
                        const std::vector<uint8_t>& rgb, const ImageMetadata& metadata = {});
 
-// Reads any image OIIO knows as RGBA float (for tests and references); with PT_OIIO=OFF,
+// Reads any image OIIO knows as RGBA float (for tests and references): the channels named R,
+// G, B and A where it has them (a layered EXR's beauty), else its first ones. With PT_OIIO=OFF,
 // what readTextureFile reads. Throws InputError.
 std::vector<float> readImageRgba(const std::string& path, uint32_t& width, uint32_t& height);
 

@@ -82,6 +82,7 @@ public:
         const std::optional<JsonValue> camera = reader.get("camera");
         const std::optional<JsonValue> render = reader.get("render");
         const std::optional<JsonValue> environment = reader.get("environment");
+        const std::optional<JsonValue> color = reader.get("color");
         const std::optional<JsonValue> materials = reader.get("materials");
         const std::optional<JsonValue> lights = reader.get("lights");
         const std::optional<JsonValue> objects = reader.get("objects");
@@ -89,6 +90,7 @@ public:
         if (render) readRender(*render);
         if (camera) readCamera(*camera);
         if (environment) readEnvironment(*environment);
+        if (color) readColor(*color);
         if (materials) readMaterials(*materials);
         if (lights) readLights(*lights);  // before the lights of model files, as the writer expects
         if (objects) readObjects(*objects);
@@ -170,6 +172,18 @@ private:
             environment.intensity = intensity->asFloat(NumberRange::NonNegative);
         }
         if (auto rotation = reader.get("rotation")) environment.rotationDegrees = rotation->asFloat();
+        reader.finish();
+    }
+
+    // {"config": path, "display", "view", "look"}: names are checked against the config when
+    // the display is built (the config may be absent from this build), the file here.
+    void readColor(const JsonValue& value) {
+        ObjectReader reader(value);
+        ColorSettings& color = scene_.color;
+        if (auto config = reader.get("config")) color.config = resolveFile(*config).string();
+        if (auto display = reader.get("display")) color.display = display->asString();
+        if (auto view = reader.get("view")) color.view = view->asString();
+        if (auto look = reader.get("look")) color.look = look->asString();
         reader.finish();
     }
 

@@ -66,6 +66,17 @@ Json environmentToJson(const Environment& environment, const fs::path& folder) {
     return out;
 }
 
+Json colorToJson(const ColorSettings& color, const fs::path& folder) {
+    Json out = Json::object();
+    if (!color.config.empty()) out["config"] = relativePath(color.config, folder);
+    const std::pair<const char*, const std::string*> names[] = {
+        {"display", &color.display}, {"view", &color.view}, {"look", &color.look}};
+    for (const auto& [key, name] : names) {
+        if (!name->empty()) out[key] = *name;
+    }
+    return out;
+}
+
 Json transformToJson(const ObjectTransform& transform) {
     const ObjectTransform defaults;
     Json out = Json::object();
@@ -204,6 +215,7 @@ std::string sceneToJson(const Scene& scene, const std::string& outputPath) {
     const std::pair<const char*, Json> sections[] = {
         {"render", renderToJson(scene.render)},
         {"environment", environmentToJson(scene.environment, folder)},
+        {"color", colorToJson(scene.color, folder)},
         {"materials", materialsToJson(scene, folder, fs::path(outputPath).filename().string())},
         {"lights", lightsToJson(scene)},
     };

@@ -9,10 +9,17 @@
 namespace pt::editor {
 
 struct ViewerSettings {
-    DisplaySettings display;
+    DisplaySettings display;          // exposure, dither; the built-in operator when builtinDisplay
+    // The built-in operators instead of the scene's OpenColorIO view (Scene::color), e.g. to
+    // compare the two, or where no config loads.
+    bool builtinDisplay = false;
     int32_t aov = -1;                 // -1: the beauty; else a pt::Aov value
     uint32_t samplesPerFrame = 1;     // passes per render step (more: fewer syncs, slower UI)
     uint32_t targetSpp = 0;           // stop accumulating here; 0 = never stop
+    // Export: AOV layers for the EXR. They are accumulated beside the displayed AOV from the
+    // next reset on (changing them restarts accumulation); exportRender writes those that are.
+    AovMask exportAovs = 0;
+    bool exportHalf = false;          // 16-bit EXR channels (exr_layers.h: which stay float)
 };
 
 struct Document {

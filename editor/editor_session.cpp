@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "assets/exr_layers.h"
 #include "assets/image_write.h"
 #include "assets/scene_loader.h"
 #include "editor/scene_saving.h"
@@ -91,9 +92,11 @@ void EditorSession::save(const std::string& path) {
 SyncReport EditorSession::sync(const ProgressFn& progress) {
     SceneChangeMask changes = pending_ & ~SceneChangeMask(SceneChanges::Display);
     pending_ = SceneChanges::None;
-    // Only the AOV on screen is accumulated (the others are not even allocated).
+    // Only the AOV on screen and the export layers are accumulated (the others are not even
+    // allocated).
     const int32_t aov = doc_.viewer.aov;
-    const AovMask wanted = aov >= 0 && aov < int32_t(Aov::Count) ? aovBit(Aov(aov)) : 0u;
+    const AovMask shown = aov >= 0 && aov < int32_t(Aov::Count) ? aovBit(Aov(aov)) : 0u;
+    const AovMask wanted = shown | (doc_.viewer.exportAovs & kAllAovs);
     if (backend_->aovs() != wanted) {
         backend_->setAovs(wanted);
         changes |= SceneChanges::Settings;
@@ -155,17 +158,36 @@ void EditorSession::setBackend(std::unique_ptr<Backend> backend) {
     pending_ = SceneChanges::All;
 }
 
-void EditorSession::exportRender(const std::string& exrPath, const std::string& displayPath) const {
+namespace {
+
+// The OpenColorIO config, display, view and look the scene asks for, where it names them: how
+// the scene-linear EXR is meant to be viewed.
+
+}  // namespace
+
+AovMask EditorSession::exportRender(const std::string& exrPath, const std::string& displayPath,
+                                    const DisplayProcessor& display) const {
     std::vector<float> beauty;
     backend_->readBeauty(beauty);
     const BackendStats stats = backend_->stats();
     ImageMetadata metadata = renderMetadata(stats.samplesPerPixel, std::to_string(stats.renderSeconds),
                                             backend_->name(), doc_.scene.sourcePath, "pathtracer editor 0.1");
-    metadata.insert(metadata.end(), {{"pt:tone_mapper", toneMapperName(doc_.viewer.display.toneMapper)},
-                                     {"pt:exposure", std::to_string(doc_.viewer.display.exposureStops)}});
+    const ImageMetadata view = displayMetadata(display, doc_.viewer.display.dither);
+    metadata.insert(metadata.end(), view.begin(), view.end());
     const uint32_t w = backend_->width(), h = backend_->height();
-    if (!exrPath.empty()) writeExr(exrPath, w, h, beauty, metadata);
-    if (!displayPath.empty()) writeDisplayImage(displayPath, w, h, encodeDisplay8(beauty, doc_.viewer.display), metadata);
+    AovMask written = 0;
+    if (!exrPath.empty()) {
+        const ViewerSettings& viewer = doc_.viewer;
+        const LayeredExr exr = renderedExr(*backend_, viewer.exportAovs,
+                                           viewer.exportHalf ? ExrPixelType::Half : ExrPixelType::Float,
+                                           doc_.scene.camera, metadata);
+        writeLayeredExr(exrPath, exr);
+        for (const AovImage& layer : exr.aovs) written |= aovBit(layer.aov);
+    }
+    if (!displayPath.empty()) {
+        writeDisplayImage(displayPath, w, h, display.encode8(beauty, w, doc_.viewer.display.dither), metadata);
+    }
+    return written;
 }
 
 }  // namespace pt::editor

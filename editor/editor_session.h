@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "assets/color_processor.h"
 #include "editor/command_stack.h"
 #include "editor/picking.h"
 #include "render/util/progress.h"
@@ -72,9 +73,14 @@ public:
     EditLatency lastEdit() const;
     SyncReport lastSync() const;
 
-    // Writes the beauty as float EXR and/or display-referred PNG/JPEG/TIFF (through the
-    // viewer's display settings), with spp, render time, backend and scene in the metadata.
-    void exportRender(const std::string& exrPath, const std::string& displayPath) const;
+    // Writes the beauty as a layered EXR (assets/exr_layers.h: with the viewer's export AOVs
+    // that the backend accumulates now, half or float as the viewer says) and/or as a
+    // display-referred PNG/JPEG/TIFF through `display` (the viewport's: displayProcessorFor in
+    // color_view.h), dithered as the viewer says; spp, render time, backend, scene, camera and
+    // the view go in the metadata. Either path may be "" to skip that file. Returns the AOV
+    // layers written; export AOVs not accumulated yet are left out.
+    AovMask exportRender(const std::string& exrPath, const std::string& displayPath,
+                         const DisplayProcessor& display) const;
 
 private:
     void noteEdit(const std::string& label, SceneChangeMask changes);

@@ -77,6 +77,16 @@ void RenderWorker::publishFrame(int32_t aov) {
     publishedAov_ = aov;
 }
 
+// Called with the backend lock held, after passes.
+void RenderWorker::measureError() {
+    const Backend& backend = session_.backend();
+    const BackendStats stats = backend.stats();
+    if (!errors_.due(stats.renderSeconds, stats.samplesPerPixel, backend.width(), backend.height())) return;
+    std::vector<float> beauty;
+    backend.readBeauty(beauty);
+    errors_.add(stats.renderSeconds, stats.samplesPerPixel, beauty);
+}
+
 bool RenderWorker::step() {
     SceneChangeMask pending;
     uint32_t passes, target;
@@ -98,11 +108,13 @@ bool RenderWorker::step() {
                 session_.sync([this](const std::string& stage, double f) { setStage(stage, f); });
             // Display-only edits (exposure, tone mapper) need no new frame: the shader applies them.
             changed = report.action != "nothing";
+            if (changed) errors_.restart();
             std::vector<ToggleState> toggles = session_.backend().toggleStates();
             std::lock_guard<std::mutex> status(statusMutex_);
             status_.error.clear();
             status_.toggles = std::move(toggles);
             status_.deviceMemoryBytes = session_.backend().deviceMemoryBytes();
+            status_.aovs = session_.backend().aovs();
         } catch (const std::exception& e) {
             syncRefused_ = true;
             changed = true;
@@ -115,6 +127,7 @@ bool RenderWorker::step() {
     const auto start = Clock::now();
     const uint32_t rendered = session_.render(passes, target);
     if (rendered > 0 || changed || aov != publishedAov_) publishFrame(aov);
+    if (rendered > 0) measureError();  // after publishing, so the frame is not delayed by it
     const double seconds = secondsSince(start);
     std::vector<uint32_t> alive = rendered > 0 ? session_.backend().pathsAlivePerBounce() : std::vector<uint32_t>{};
     std::lock_guard<std::mutex> status(statusMutex_);

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "editor/editor_session.h"
+#include "editor/error_tracker.h"
 
 namespace pt::editor {
 
@@ -38,6 +39,7 @@ struct WorkerStatus {
     bool converged = false;
     std::vector<ToggleState> toggles;  // as the backend applies them, after the last sync
     uint64_t deviceMemoryBytes = 0;
+    AovMask aovs = 0;                  // accumulated (Backend::aovs()) after the last sync
     std::vector<uint32_t> pathsAlivePerBounce;  // wavefront only, of the last wave
 };
 
@@ -61,12 +63,16 @@ public:
     // the GPU directly through CUDA-GL interop; AOV frames always do).
     void setHostFrames(bool on) { hostFrames_ = on; }
     WorkerStatus status() const;
+    // The reference image and the live error curve against it (the UI sets the reference,
+    // the render thread measures after its passes).
+    ErrorTracker& errors() { return errors_; }
 
 private:
     void run();
     void wake();  // the render thread: there is new work (an edit, or stop)
     bool step();  // one sync and/or batch of passes; false when there was nothing to do
     void publishFrame(int32_t aov);
+    void measureError();
     void setStage(const std::string& stage, double fraction);
 
     EditorSession& session_;
@@ -83,6 +89,8 @@ private:
     DisplayFrame frame_;
     uint64_t taken_ = 0;
     int32_t publishedAov_ = -2;
+
+    ErrorTracker errors_;
 
     mutable std::mutex statusMutex_;
     WorkerStatus status_;

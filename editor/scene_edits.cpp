@@ -121,6 +121,11 @@ std::unique_ptr<EditCommand> setViewer(const Document& doc, const ViewerSettings
                                             [](Document& d, const ViewerSettings& v) { d.viewer = v; });
 }
 
+std::unique_ptr<EditCommand> setColorSettings(const Document& doc, const ColorSettings& after) {
+    return makeValueCommand<ColorSettings>("Color view", "color", SceneChanges::Display, doc.scene.color, after,
+                                           [](Document& d, const ColorSettings& c) { d.scene.color = c; });
+}
+
 std::unique_ptr<EditCommand> setMorphWeights(const Document& doc, uint32_t mesh, const std::vector<float>& after) {
     // The weights, and what each object records of them for saving, before and after.
     struct MorphState {

@@ -24,6 +24,8 @@ std::unique_ptr<EditCommand> setEnvironment(const Document& doc, const Environme
 std::unique_ptr<EditCommand> setToggles(const Document& doc, const IntegratorToggles& after);
 // Display-only (exposure, tone mapper, AOV) and the viewer's sample settings: no reset.
 std::unique_ptr<EditCommand> setViewer(const Document& doc, const ViewerSettings& after);
+// The scene's OpenColorIO config, display, view and look (saved with it): no reset.
+std::unique_ptr<EditCommand> setColorSettings(const Document& doc, const ColorSettings& after);
 // Deforms the mesh (a BLAS refit, not a rebuild) and records the weights on the objects that
 // place it, so saving keeps them.
 std::unique_ptr<EditCommand> setMorphWeights(const Document& doc, uint32_t mesh, const std::vector<float>& after);

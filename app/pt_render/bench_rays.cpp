@@ -4,6 +4,7 @@
 
 #include "render/bvh/traversal.h"
 #include "render/integrator/camera.h"
+#include "render/integrator/spawn_ray.h"
 #include "render/integrator/surface_hit.h"
 #include "render/lights/light_sample.h"
 #include "render/math/frame.h"
@@ -29,7 +30,9 @@ BenchRays makeBenchRays(const CompiledScene& compiled, uint32_t width, uint32_t 
         if (!intersectClosest(scene, ray, hit)) return;
         const SurfaceHit surface = surfaceAt(scene, ray, hit);
         const Vec3 normal = surface.frontFace ? surface.geometricNormal : -surface.geometricNormal;
-        const Vec3 origin = offsetRayOrigin(surface.position, normal, true);
+        // The integrator's own spawn rules (render/integrator/spawn_ray.h), so these rays are
+        // the ones a render traces.
+        const Vec3 origin = spawnOrigin(surface, normal, true);
         const Frame frame = Frame::fromNormal(normal);
         const uint32_t dims = SampleDims::bounce(0);
         diffuse[i] = {origin, frame.toWorld(squareToCosineHemisphere(sampler.get2(dims + SampleDims::kBsdfDir))), kInf};
@@ -37,12 +40,7 @@ BenchRays makeBenchRays(const CompiledScene& compiled, uint32_t width, uint32_t 
         LightSample light;
         if (sampleLight(scene, surface.position, sampler.get(dims + SampleDims::kLightPick),
                         sampler.get2(dims + SampleDims::kLightPoint), light)) {
-            if (isInfinite(light.distance)) {
-                shadow[i] = {origin, light.wi, kInf};
-            } else {
-                const Vec3 target = light.delta ? light.point : offsetRayOrigin(light.point, light.normal, true);
-                shadow[i] = {origin, target - origin, 1.0f};
-            }
+            shadow[i] = shadowRayTo(surface, light);
             hasShadow[i] = 1;
         }
     });

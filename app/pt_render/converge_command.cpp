@@ -80,7 +80,7 @@ LogLogPlot plotOf(const std::vector<VariantCurve>& curves, const std::string& sc
     plot.guideLabel = "slope -1";
     for (const VariantCurve& c : curves) {
         PlotSeries series{c.name, {}};
-        for (const ConvergePoint& p : c.points) series.points.emplace_back(p.seconds, p.error.relMse);
+        for (const ErrorPoint& p : c.points) series.points.emplace_back(p.seconds, p.error.relMse);
         plot.series.push_back(std::move(series));
     }
     return plot;
@@ -110,7 +110,7 @@ int runConverge(const std::vector<std::string>& args) {
         curves.push_back({variant.name, measureConvergence(*backend, reference.rgba, r.seconds, progress)});
         bar.finish();
         if (!r.setup.quiet) {
-            const ConvergePoint& last = curves.back().points.back();
+            const ErrorPoint& last = curves.back().points.back();
             std::fprintf(stderr, "%s: %u spp in %.2f s, relMSE %.4g\n", variant.name.c_str(), last.spp, last.seconds,
                          last.error.relMse);
         }

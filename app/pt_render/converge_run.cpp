@@ -18,10 +18,10 @@ std::vector<double> logSpacedTimes(double budget) {
     return times;
 }
 
-std::vector<ConvergePoint> measureConvergence(Backend& backend, const std::vector<float>& reference, double budget,
+std::vector<ErrorPoint> measureConvergence(Backend& backend, const std::vector<float>& reference, double budget,
                                               const ProgressFn& progress) {
     const std::vector<double> times = logSpacedTimes(budget);
-    std::vector<ConvergePoint> points;
+    std::vector<ErrorPoint> points;
     std::vector<float> image;
     double secondsPerPass = 0.0;  // unknown until the first pass
     size_t next = 0;

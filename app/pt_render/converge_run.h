@@ -6,23 +6,17 @@
 #include <vector>
 
 #include "render/backend/backend.h"
-#include "render/util/image_error.h"
+#include "render/util/error_curve.h"
 #include "render/util/progress.h"
 
 namespace pt::cli {
-
-struct ConvergePoint {
-    double seconds = 0.0;
-    uint32_t spp = 0;
-    ImageError error;
-};
 
 // Four times a decade, down from `budget` to budget / 1000 (but not below 10 ms), ascending.
 std::vector<double> logSpacedTimes(double budget);
 
 // Renders on `backend` (synced, with the variant's toggles) until `budget` seconds, recording
 // a point at the first pass that ends at or past each of logSpacedTimes(budget).
-std::vector<ConvergePoint> measureConvergence(Backend& backend, const std::vector<float>& reference, double budget,
+std::vector<ErrorPoint> measureConvergence(Backend& backend, const std::vector<float>& reference, double budget,
                                               const ProgressFn& progress);
 
 }  // namespace pt::cli

@@ -14,9 +14,12 @@ constexpr const char* kUsage = R"(usage: pt-render <command> [options]
 commands:
   render SCENE -o OUT.exr [--png OUT.png] [--spp N | --time SECONDS] [--size WxH]
                 [--seed N] [--threads N] [--backend cpu|cuda] [--stats STATS.json] [--quiet]
-                [--max-depth N] [TOGGLES]
+                [--max-depth N] [--aov NAME,...|all] [--half] [TOGGLES] [DISPLAY]
       Render SCENE (.json, .gltf, .glb or .obj) progressively; write a linear EXR and/or a
-      display-referred PNG. Prints the paths it wrote.
+      display-referred PNG (or .jpg, .tif; DISPLAY says how). Prints the paths it wrote. --aov adds AOV layers to the EXR
+      (albedo, shading_normal, geometric_normal, depth, position, uv, roughness, metallic,
+      emission, instance_id, material_id, bvh_cost, sample_count, variance; only these are
+      accumulated); --half writes 16-bit channels (ids, sample_count, depth, position stay float).
   bench SCENE [--backend cpu|cuda] [--size WxH] [--max-depth N] [--runs N] [--spp N]
                 [--json OUT.json] [--quiet] [TOGGLES]
       Medians of several runs: traversal Mrays/s (primary, diffuse, shadow; BVH on and off),
@@ -51,6 +54,14 @@ commands:
 TOGGLES: --no-nee --no-mis --no-rr --clamp X --bvh-off (brute force) --no-jitter
   --megakernel | --wavefront, --no-compaction, --sort-materials | --no-sort-materials,
   --no-first-hit-cache, --rebuild-ratio R (refit until SAH cost exceeds R x the built one)
+
+DISPLAY (the --png image; default: the scene's "color" setting, else the config's default,
+  sRGB / Standard in the shipped scenes/ocio/config.ocio):
+  --ocio CONFIG (else the scene's config, $OCIO, the shipped one) --display NAME --view NAME
+  --look NAME: an OpenColorIO view (shipped: displays sRGB, Rec.1886; views Standard, AgX,
+  ACES 1.0 SDR, Raw; looks "Exposure +1", "Exposure -1").
+  --tonemap standard|reinhard|aces-fitted|agx [--white-point W]: a built-in operator instead.
+  --exposure STOPS (before either), --no-dither (plain rounding to 8 bits).
 )";
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "assets/image_write.h"
+#include "assets/pfm_file.h"
 #include "batched_render.h"
 #include "cli_options.h"
 #include "commands.h"
@@ -68,7 +69,12 @@ int runReference(const std::vector<std::string>& args) {
                                      {"pt:noise_relmse", formatFigure(noise.relMse)},
                                      {"pt:noise_rmse", formatFigure(noise.rmse)},
                                      {"pt:nonfinite_samples", std::to_string(image.nonfiniteSamples)}});
-    writeExr(r.exrPath, backend->width(), backend->height(), image.mean, metadata);
+    // PFM where EXR cannot be written (the GPU machine's build): lossless, but without metadata.
+    if (isPfmPath(r.exrPath)) {
+        writePfm(r.exrPath, backend->width(), backend->height(), image.mean);
+    } else {
+        writeExr(r.exrPath, backend->width(), backend->height(), image.mean, metadata);
+    }
     std::printf("%s\n", r.exrPath.c_str());
     if (!r.setup.quiet) {
         std::fprintf(stderr, "%ux%u, %u spp in %u batches, %.2f s; estimated noise of the mean: relMSE %.3g, RMSE %.3g\n",

@@ -8,9 +8,13 @@
 #include <nlohmann/json.hpp>
 
 #include "assets/atomic_file.h"
+#include "assets/exr_layers.h"
+#include "assets/image_metadata.h"
+#include "assets/input_error.h"
 #include "assets/image_write.h"
 #include "cli_options.h"
 #include "commands.h"
+#include "display_options.h"
 #include "progress_bar.h"
 #include "render/backend/backend.h"
 #include "render/display/display_transform.h"
@@ -29,14 +33,29 @@ struct RenderRequest {
     std::optional<std::pair<uint32_t, uint32_t>> size;
     IntegratorToggles toggles;
     bool quiet = false;
+    AovMask aovs = 0;  // --aov: EXR layers beside the beauty (only these are accumulated)
+    bool half = false;  // --half: 16-bit EXR channels (exr_layers.h says which stay float)
+    DisplayRequest display;  // --png: how linear becomes display pixels (display_options.h)
 };
+
+void parseExrOptions(const Options& o, RenderRequest& r) {
+    if (const std::optional<std::string> list = o.value("--aov")) {
+        try {
+            r.aovs = parseAovList(*list);
+        } catch (const InputError& e) {
+            throw UsageError(std::string("--aov: ") + e.what());
+        }
+    }
+    r.half = o.has("--half");
+    if (r.exrPath.empty() && (o.has("--aov") || r.half)) throw UsageError("--aov and --half need -o OUT.exr");
+}
 
 RenderRequest parseRequest(const std::vector<std::string>& args) {
     const Options o(args,
                     joined({"-o", "--png", "--spp", "--time", "--size", "--seed", "--threads", "--backend", "--stats",
-                            "--max-depth"},
-                           toggleValuedFlags()),
-                    joined({"--quiet"}, toggleSwitches()));
+                            "--max-depth", "--aov"},
+                           joined(toggleValuedFlags(), displayValuedFlags())),
+                    joined(joined({"--quiet", "--half"}, toggleSwitches()), displaySwitches()));
     if (o.positional().size() != 1) throw UsageError("expected one SCENE argument");
     RenderRequest r;
     r.scenePath = o.positional()[0];
@@ -54,6 +73,9 @@ RenderRequest parseRequest(const std::vector<std::string>& args) {
     r.size = o.size("--size");
     r.quiet = o.has("--quiet");
     r.toggles = parseToggles(o);
+    parseExrOptions(o, r);
+    r.display = parseDisplayOptions(o);
+    if (r.display.anyGiven && r.pngPath.empty()) throw UsageError("display flags apply to --png OUT.png; give one");
     return r;
 }
 
@@ -97,9 +119,24 @@ void writeStats(const RenderRequest& r, const Backend& backend, double loadSecon
     j["bvh_seconds"] = sync.bvhSeconds;
     j["sync_seconds"] = sync.seconds;
     j["device_memory_bytes"] = backend.deviceMemoryBytes();
+    j["aovs"] = aovListText(backend.aovs());
+    j["aov_bytes"] = backend.aovBytes();
     j["toggles"] = toggleStatesJson(backend.toggleStates());
     j["scene"] = r.scenePath;
     writeTextAtomically(r.statsPath, j.dump(2) + "\n");
+}
+
+// The beauty and the AOVs asked for as one layered EXR, with the camera in the metadata.
+void writeRenderExr(const RenderRequest& r, const Backend& backend, const Camera& camera, const ImageMetadata& metadata) {
+    const LayeredExr exr =
+        renderedExr(backend, r.aovs, r.half ? ExrPixelType::Half : ExrPixelType::Float, camera, metadata);
+    writeLayeredExr(r.exrPath, exr);
+    if (r.quiet) return;
+    std::string channels = "R G B A";
+    for (const AovImage& layer : exr.aovs) {
+        for (const std::string& name : aovExrChannelNames(layer.aov)) channels += " " + name;
+    }
+    std::fprintf(stderr, "%s: %s channels %s\n", r.exrPath.c_str(), r.half ? "half" : "float", channels.c_str());
 }
 
 // Fails before rendering, not after, when an output cannot be written.
@@ -130,8 +167,12 @@ int runRender(const std::vector<std::string>& args) {
     if (r.seed) scene.render.seed = *r.seed;
     if (r.maxDepth) scene.render.maxDepth = *r.maxDepth;
     const uint32_t targetSpp = r.spp.value_or(scene.render.spp);
+    // Before rendering, so that a bad config or view name fails fast.
+    std::optional<DisplayProcessor> display;
+    if (!r.pngPath.empty()) display.emplace(makeDisplayProcessor(r.display, scene.color));
 
     backend->setToggles(r.toggles);
+    backend->setAovs(r.aovs);  // before the sync, whose reset allocates them
     const SyncReport sync = backend->sync(scene, SceneChanges::All, bar.callback());
     bar.finish();
     accumulate(*backend, r, targetSpp, bar);
@@ -142,11 +183,20 @@ int runRender(const std::vector<std::string>& args) {
     const ImageMetadata metadata = renderMetadata(stats.samplesPerPixel, std::to_string(stats.renderSeconds),
                                                   backend->name(), r.scenePath, "pt-render 0.1");
     if (!r.exrPath.empty()) {
-        writeExr(r.exrPath, backend->width(), backend->height(), beauty, metadata);
+        ImageMetadata exrMetadata = metadata;
+        if (display) {  // the OCIO config and view of the PNG beside it
+            const ImageMetadata view = displayMetadata(*display, r.display.dither);
+            exrMetadata.insert(exrMetadata.end(), view.begin(), view.end());
+        }
+        writeRenderExr(r, *backend, scene.camera, exrMetadata);
         std::printf("%s\n", r.exrPath.c_str());
     }
     if (!r.pngPath.empty()) {
-        writeDisplayImage(r.pngPath, backend->width(), backend->height(), encodeDisplay8(beauty, DisplaySettings{}), metadata);
+        ImageMetadata pngMetadata = metadata;
+        const ImageMetadata displayInfo = displayMetadata(*display, r.display.dither);
+        pngMetadata.insert(pngMetadata.end(), displayInfo.begin(), displayInfo.end());
+        writeDisplayImage(r.pngPath, backend->width(), backend->height(),
+                          display->encode8(beauty, backend->width(), r.display.dither), pngMetadata);
         std::printf("%s\n", r.pngPath.c_str());
     }
     if (!r.statsPath.empty()) writeStats(r, *backend, input.loadSeconds, sync);

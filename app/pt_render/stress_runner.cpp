@@ -8,8 +8,6 @@ namespace pt::cli {
 
 namespace {
 
-constexpr uint32_t kBaselineSeed = 1000;  // far from the seeds cases render with
-
 Scene loadOrThrow(const std::string& path) {
     LoadResult result = loadScene(path);
     if (!result.ok()) throw std::runtime_error(result.error);

@@ -22,6 +22,9 @@ struct StressBudget {
 
 enum class StressScale { Box, Furnace, Accumulation };  // Cornell-like, furnace, constant
 
+// The seed of baseline images: far from the seeds cases render with, so the two are independent.
+constexpr uint32_t kBaselineSeed = 1000;
+
 class StressRunner {
 public:
     StressRunner(std::string backend, bool quick, std::string scenesFolder);

@@ -20,6 +20,11 @@ void scaleAndMoveScene(Scene& scene, float scale, Vec3 offset) {
     camera.focusDistance *= scale;
 }
 
+void roundAsIfMoved(Scene& scene, Vec3 offset) {
+    scaleAndMoveScene(scene, 1.0f, offset);
+    scaleAndMoveScene(scene, 1.0f, -offset);
+}
+
 void addTriangleSoup(Scene& scene, uint32_t count, Vec3 center, float side, const std::string& material) {
     const int32_t materialIndex = scene.findMaterial(material);
     if (materialIndex < 0) throw std::invalid_argument("addTriangleSoup: no material " + material);

@@ -13,6 +13,12 @@ namespace pt::cli {
 // unchanged in exact arithmetic. Radiance is scale-free; point and spot intensities (W/sr)
 // are kept, which scales their irradiance by 1/scale^2, so scenes with them are not for this.
 void scaleAndMoveScene(Scene& scene, float scale, Vec3 offset);
+// The scene as moving it by `offset` leaves it, moved back: every translation (and the
+// camera) rounded to the floats that lie near `offset`, at the origin again. Moving back is
+// exact (a float minus another within a factor of two of it), so this is the very geometry
+// the moved scene has, without the magnitude; the baseline that tells the renderer's own
+// error at that magnitude from the scene's.
+void roundAsIfMoved(Scene& scene, Vec3 offset);
 
 // `count` random triangles with vertices inside the cube of side `side` centred at `center`,
 // as one new mesh and instance of material `material` (which must exist).

@@ -1,9 +1,12 @@
 // Modal dialogs: errors (one at a time; the current scene always stays), open with a path field
-// and recent files, save with overwrite confirmation, export render, and load progress.
+// and recent files, save with overwrite confirmation, export render (paths, EXR pixel type and
+// AOV layers), and load progress.
 #include <cstdio>
 #include <filesystem>
 #include <string>
 
+#include "assets/exr_layers.h"
+#include "editor/scene_edits.h"
 #include "editor/ui/widgets.h"
 
 namespace pt::editor {
@@ -98,24 +101,75 @@ void saveDialog(EditorUi& ui) {
     }
 }
 
+// Changes the viewer's export settings through a command, like every other document edit.
+void setExportSettings(EditorUi& ui, AovMask aovs, bool half) {
+    const ViewerSettings& viewer = ui.doc().viewer;
+    if (aovs == viewer.exportAovs && half == viewer.exportHalf) return;
+    ViewerSettings next = viewer;
+    next.exportAovs = aovs;
+    next.exportHalf = half;
+    ui.apply(setViewer(ui.doc(), next));
+}
+
+// The EXR's pixel type and AOV layers. AOVs are accumulated only while chosen here (or shown),
+// so a change restarts accumulation; chosen ones not accumulated yet are named, since an
+// export now leaves them out.
+void exrLayerChoice(EditorUi& ui) {
+    const ViewerSettings& viewer = ui.doc().viewer;
+    int half = viewer.exportHalf ? 1 : 0;
+    ImGui::TextUnformatted("EXR pixels:");
+    ImGui::SameLine();
+    ImGui::RadioButton("float (32-bit)", &half, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("half (16-bit)", &half, 1);
+    ImGui::TextDisabled("In half files too, ids, sample_count, depth and position stay 32-bit float.");
+
+    AovMask chosen = viewer.exportAovs;
+    ImGui::TextUnformatted("AOV layers:");
+    ImGui::SameLine();
+    if (ImGui::SmallButton("all")) chosen = kAllAovs;
+    ImGui::SameLine();
+    if (ImGui::SmallButton("none")) chosen = 0;
+    for (uint32_t i = 0; i < kAovCount; ++i) {
+        const AovMask bit = aovBit(Aov(i));
+        bool on = (chosen & bit) != 0;
+        if (i % 4 != 0) ImGui::SameLine(float(i % 4) * 150.0f + 8.0f);
+        if (ImGui::Checkbox(aovName(Aov(i)), &on)) chosen ^= bit;
+    }
+    setExportSettings(ui, chosen, half == 1);
+    ImGui::TextDisabled("Changing the layers restarts accumulation: AOVs accumulate only while chosen or displayed.");
+    const AovMask missing = chosen & ~ui.worker.status().aovs;
+    if (missing) {
+        ImGui::PushTextWrapPos(600.0f);
+        ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "Not accumulated yet, left out of an export now: %s",
+                           aovListText(missing, ", ").c_str());
+        ImGui::PopTextWrapPos();
+    }
+}
+
 void exportDialog(EditorUi& ui) {
-    static PathField exr, png;
+    static PathField exr, display;
     if (ui.showExportDialog) {
         const fs::path base = fs::path(defaultScenePath(ui.doc().scene)).replace_extension("");
         exr.set(base.string() + ".exr");
-        png.set(base.string() + ".png");
+        display.set(base.string() + ".png");
         ImGui::OpenPopup("Export render");
         ui.showExportDialog = false;
     }
     if (!ImGui::BeginPopupModal("Export render", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-    ImGui::TextUnformatted("Scene-linear EXR and display-referred PNG (through the current display settings).");
-    ImGui::TextUnformatted("Leave a path empty to skip that file. Existing files are replaced.");
+    ImGui::TextUnformatted("Scene-linear EXR with AOV layers, and a display-referred image (PNG, JPEG or TIFF by");
+    ImGui::TextUnformatted("extension, through the current display settings). Leave a path empty to skip that file.");
+    ImGui::TextUnformatted("Existing files are replaced.");
     ImGui::SetNextItemWidth(500);
     ImGui::InputText("EXR", exr.text, sizeof(exr.text));
     ImGui::SetNextItemWidth(500);
-    ImGui::InputText("PNG", png.text, sizeof(png.text));
+    ImGui::InputText("Display image", display.text, sizeof(display.text));
+    ImGui::Separator();
+    exrLayerChoice(ui);
+    ImGui::Separator();
+    ImGui::Text("%u samples per pixel so far", ui.lastFrame.stats.samplesPerPixel);
     if (ImGui::Button("Export")) {
-        ui.exportRender(exr.text, png.text);
+        ui.exportRender(exr.text, display.text);
         ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();

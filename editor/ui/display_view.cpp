@@ -7,88 +7,22 @@
 
 #include "render/backend/backend.h"
 
+#ifdef PT_HAS_OCIO
+#include "assets/color_gpu_shader.h"
+#endif
+
 namespace pt::editor {
 namespace {
 
-// The formulas of render/display/display_transform.h, in GLSL; keep the two equal.
-constexpr const char* kVertexShader = R"(#version 330 core
-out vec2 uv;
-void main() {
-    vec2 corner = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
-    uv = vec2(corner.x, 1.0 - corner.y);
-    gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
-}
-)";
-
-constexpr const char* kFragmentShader = R"(#version 330 core
-in vec2 uv;
-out vec4 color;
-uniform sampler2D image;
-uniform float exposure;      // 2^stops
-uniform int toneMapper;      // 0 standard, 1 Reinhard, 2 ACES fitted
-uniform float whitePoint;
-uniform int mode;            // 0 beauty, 1 linear value, 2 signed vector, 3 id colours, 4 heat map
-uniform float scale;         // heat map: 1 / maximum
-
-float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
-vec3 reinhard(vec3 c) {
-    float y = luminance(c);
-    if (!(y > 0.0)) return vec3(0.0);
-    return c * ((1.0 + y / (whitePoint * whitePoint)) / (1.0 + y));
-}
-vec3 acesFitted(vec3 c) {
-    vec3 a = vec3(dot(c, vec3(0.59719, 0.35458, 0.04823)), dot(c, vec3(0.07600, 0.90834, 0.01566)),
-                  dot(c, vec3(0.02840, 0.13383, 0.83777)));
-    vec3 f = (a * (a + 0.0245786) - 0.000090537) / (a * (0.983729 * a + 0.4329510) + 0.238081);
-    return vec3(dot(f, vec3(1.60475, -0.53108, -0.07367)), dot(f, vec3(-0.10208, 1.10813, -0.00605)),
-                dot(f, vec3(-0.00327, -0.07276, 1.07602)));
-}
-vec3 srgb(vec3 c) {
-    c = clamp(c, 0.0, 1.0);
-    return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
-}
-vec3 heat(float t) {  // black -> blue -> green -> yellow -> red
-    t = clamp(t, 0.0, 1.0);
-    return clamp(vec3(4.0 * t - 2.0, t < 0.5 ? 2.0 * t : 2.0 - 2.0 * t, 1.0 - 2.0 * t) * 1.5, 0.0, 1.0);
-}
-vec3 idColour(float id) {
-    if (id < 0.0) return vec3(0.0);
-    uint h = uint(id) * 2654435761u;
-    return vec3(float((h >> 8) & 255u), float((h >> 16) & 255u), float((h >> 24) & 255u)) / 255.0 * 0.8 + 0.2;
-}
-void main() {
-    vec4 texel = texture(image, uv);
-    vec3 c = texel.rgb;
-    if (mode == 0) {
-        c *= exposure;
-        if (toneMapper == 1) c = reinhard(c);
-        else if (toneMapper == 2) c = acesFitted(c);
-        c = srgb(c);
-    } else if (mode == 1) {
-        c = srgb(c * exposure);
-    } else if (mode == 2) {
-        c = srgb(c * 0.5 + 0.5);
-    } else if (mode == 3) {
-        c = srgb(idColour(texel.r));
-    } else {
-        c = srgb(heat(texel.r * scale));
-    }
-    color = vec4(c, 1.0);
-}
-)";
-
-GLuint compile(GLenum kind, const char* source) {
-    const GLuint shader = glCreateShader(kind);
-    glShaderSource(shader, 1, &source, nullptr);
-    glCompileShader(shader);
-    GLint ok = 0;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[2048] = {};
-        glGetShaderInfoLog(shader, sizeof(log), nullptr, log);
-        throw std::runtime_error(std::string("display shader: ") + log);
-    }
-    return shader;
+GLuint createImageTexture() {
+    GLuint texture = 0;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return texture;
 }
 
 // How each AOV is made visible.
@@ -109,30 +43,37 @@ int displayMode(int32_t aov) {
 
 }  // namespace
 
-DisplayView::DisplayView() {
-    const GLuint vs = compile(GL_VERTEX_SHADER, kVertexShader), fs = compile(GL_FRAGMENT_SHADER, kFragmentShader);
-    program_ = glCreateProgram();
-    glAttachShader(program_, vs);
-    glAttachShader(program_, fs);
-    glLinkProgram(program_);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
-    GLint ok = 0;
-    glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-    if (!ok) throw std::runtime_error("display shader: link failed");
+DisplayView::DisplayView() : shader_(std::make_unique<DisplayShader>(nullptr)) {
     glGenVertexArrays(1, &vao_);
-    glGenTextures(1, &texture_);
-    glBindTexture(GL_TEXTURE_2D, texture_);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    texture_ = createImageTexture();
+    referenceTexture_ = createImageTexture();
 }
 
 DisplayView::~DisplayView() {
     glDeleteTextures(1, &texture_);
+    glDeleteTextures(1, &referenceTexture_);
     glDeleteVertexArrays(1, &vao_);
-    glDeleteProgram(program_);
+}
+
+void DisplayView::setColorView(const ColorView& color) {
+    const std::string key = color.key();
+    if (key == colorKey_) return;
+    colorKey_ = key;
+    shaderError_.clear();
+    try {
+#ifdef PT_HAS_OCIO
+        if (color.config) {
+            const GpuColorShader ocio = makeGpuColorShader(*color.config, color.view);
+            shader_ = std::make_unique<DisplayShader>(&ocio);
+            return;
+        }
+#endif
+        shader_ = std::make_unique<DisplayShader>(nullptr);
+    } catch (const std::exception& e) {
+        // The view's shader does not build here: keep drawing with the built-in operators.
+        shaderError_ = e.what();
+        shader_ = std::make_unique<DisplayShader>(nullptr);
+    }
 }
 
 void DisplayView::upload(const DisplayFrame& frame) {
@@ -156,6 +97,15 @@ void DisplayView::upload(const DisplayFrame& frame) {
     if (!(aovMax_ > 0.0f)) aovMax_ = 1.0f;
 }
 
+void DisplayView::setReference(const std::shared_ptr<const ReferenceImage>& reference) {
+    if (reference == reference_) return;
+    reference_ = reference;
+    if (!reference_) return;
+    glBindTexture(GL_TEXTURE_2D, referenceTexture_);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, GLsizei(reference_->width), GLsizei(reference_->height), 0, GL_RGBA,
+                 GL_FLOAT, reference_->rgba.data());
+}
+
 void DisplayView::prepareDeviceFrame(const DisplayFrame& frame) {
     if (frame.width != width_ || frame.height != height_) {
         glBindTexture(GL_TEXTURE_2D, texture_);
@@ -168,7 +118,7 @@ void DisplayView::prepareDeviceFrame(const DisplayFrame& frame) {
     aovMax_ = 1.0f;
 }
 
-ImageRect DisplayView::draw(const ViewerSettings& viewer, float x, float y, float w, float h, float framebufferHeight,
+ImageRect DisplayView::draw(const ViewerSettings& viewer, CompareView compare, float x, float y, float w, float h, float framebufferHeight,
                             float pixelScale) {
     ImageRect rect;
     if (width_ == 0 || w <= 0 || h <= 0) return rect;
@@ -181,15 +131,24 @@ ImageRect DisplayView::draw(const ViewerSettings& viewer, float x, float y, floa
     rect.imageHeight = height_;
     glViewport(GLint(rect.x * pixelScale), GLint(framebufferHeight - (rect.y + rect.height) * pixelScale),
                GLsizei(rect.width * pixelScale), GLsizei(rect.height * pixelScale));
-    glUseProgram(program_);
+    const GLuint program = shader_->program();
+    glUseProgram(program);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, texture_);
-    glUniform1i(glGetUniformLocation(program_, "image"), 0);
-    glUniform1f(glGetUniformLocation(program_, "exposure"), std::exp2(viewer.display.exposureStops));
-    glUniform1i(glGetUniformLocation(program_, "toneMapper"), int(viewer.display.toneMapper));
-    glUniform1f(glGetUniformLocation(program_, "whitePoint"), viewer.display.whitePoint);
-    glUniform1i(glGetUniformLocation(program_, "mode"), displayMode(aov_));
-    glUniform1f(glGetUniformLocation(program_, "scale"), 1.0f / aovMax_);
+    glUniform1i(glGetUniformLocation(program, "image"), 0);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, referenceTexture_);
+    glUniform1i(glGetUniformLocation(program, "reference"), 1);
+    glActiveTexture(GL_TEXTURE0);
+    shader_->bindLuts(2);
+    glUniform1i(glGetUniformLocation(program, "compare"), reference_ ? int(compare) : 0);
+    glUniform1f(glGetUniformLocation(program, "exposure"), std::exp2(viewer.display.exposureStops));
+    glUniform1i(glGetUniformLocation(program, "useOcio"), shader_->hasOcioView() && !viewer.builtinDisplay ? 1 : 0);
+    glUniform1i(glGetUniformLocation(program, "toneMapper"), int(viewer.display.toneMapper));
+    glUniform1f(glGetUniformLocation(program, "whitePoint"), viewer.display.whitePoint);
+    glUniform1i(glGetUniformLocation(program, "dither"), viewer.display.dither ? 1 : 0);
+    glUniform1i(glGetUniformLocation(program, "mode"), displayMode(aov_));
+    glUniform1f(glGetUniformLocation(program, "scale"), 1.0f / aovMax_);
     glBindVertexArray(vao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);

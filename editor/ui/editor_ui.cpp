@@ -91,7 +91,25 @@ void EditorUi::saveScene(const std::string& path, bool confirmedOverwrite) {
 
 void EditorUi::exportRender(const std::string& exrPath, const std::string& pngPath) {
     try {
-        worker.withBackend([&](EditorSession& s) { s.exportRender(exrPath, pngPath); });
+        const DisplayProcessor display = displayProcessorFor(colorView, doc().viewer);
+        worker.withBackend([&](EditorSession& s) { s.exportRender(exrPath, pngPath, display); });
+    } catch (const std::exception& e) {
+        showError(e.what());
+    }
+}
+
+void EditorUi::updateColorView() {
+    const ColorSettings& c = doc().scene.color;
+    const std::string request = options.ocioPath + "\n" + c.config + "\n" + c.display + "\n" + c.view + "\n" + c.look;
+    if (request == colorRequest_) return;
+    colorRequest_ = request;
+    colorView = resolveColorView(options.ocioPath, c, colorView);
+}
+
+void EditorUi::loadReference(const std::string& path) {
+    try {
+        worker.errors().load(path);
+        referencePath = path;
     } catch (const std::exception& e) {
         showError(e.what());
     }

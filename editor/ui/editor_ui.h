@@ -34,6 +34,8 @@ struct EditorOptions {
     uint32_t width = 0, height = 0;      // --size; 0 = the scene's
     int64_t frames = -1;                 // --frames N: exit after N frames with new samples
     std::string screenshotPath;          // --screenshot: written after --frames, and on F12
+    std::string referencePath;           // --reference: an image to measure the error against
+    std::string ocioPath;                // --ocio: an OpenColorIO config, over the scene's and $OCIO
     uint32_t spp = 0;                    // --spp: stop accumulating there
 };
 
@@ -69,6 +71,14 @@ public:
     std::string pendingOverwrite;            // a save path awaiting "replace?" confirmation
     std::unique_ptr<SceneLoadJob> loading;
     std::string backendName;
+    // The OpenColorIO config and view the viewport draws with, re-resolved when the scene's
+    // color settings change (updateColorView, once a frame).
+    ColorView colorView;
+    void updateColorView();
+    // The reference image (its path as typed) and what the viewport shows of it.
+    std::string referencePath;
+    CompareView compare = CompareView::Render;
+    void loadReference(const std::string& path);
     bool showOpenDialog = false, showSaveDialog = false, showExportDialog = false;
     // Numbers the Stats panel shows.
     std::vector<float> frameMillis;          // UI frame times, most recent last
@@ -80,6 +90,7 @@ public:
 
 private:
     std::deque<std::function<void(EditorSession&)>> queued_;
+    std::string colorRequest_;  // what colorView was resolved for
 };
 
 // The panels and menus (one file each).

@@ -162,7 +162,10 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
         glClearColor(0.12f, 0.12f, 0.13f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
         const float top = ImGui::GetFrameHeight(), scale = ww > 0 ? float(fbw) / float(ww) : 1.0f;
-        image = view.draw(ui.doc().viewer, 0.0f, top, float(ww) - kPanelWidth, float(wh) - top, float(fbh), scale);
+        view.setReference(ui.worker.errors().reference());
+        ui.updateColorView();
+        view.setColorView(ui.colorView);
+        image = view.draw(ui.doc().viewer, ui.compare, 0.0f, top, float(ww) - kPanelWidth, float(wh) - top, float(fbh), scale);
         glViewport(0, 0, fbw, fbh);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         // --frames: done after that many frames with new samples, or once the frame on screen
@@ -211,6 +214,13 @@ int runEditor(const EditorOptions& options) {
     });
     // Loaded on its own thread, so the window shows progress from the start.
     if (!options.scenePath.empty()) ui.openScene(options.scenePath);
+    if (!options.referencePath.empty()) {
+        ui.loadReference(options.referencePath);
+        if (!ui.errors.empty() && options.frames >= 0) {
+            std::fprintf(stderr, "pathtracer: %s\n", ui.errors.front().c_str());
+            return 1;
+        }
+    }
     return frameLoop(*window, ui, options);
 }
 

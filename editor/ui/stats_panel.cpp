@@ -2,11 +2,45 @@
 // it took to reach the screen, memory.
 #include <algorithm>
 #include <numeric>
+#include <string>
 #include <vector>
 
+#include "editor/ui/error_plot.h"
 #include "editor/ui/widgets.h"
 
 namespace pt::editor {
+
+namespace {
+
+// Error against the reference image (Display > Reference image), live: the last figures, the
+// verdict of the curve's last decade (as pt-render converge judges it) and the log-log plot.
+void drawErrorAgainstReference(EditorUi& ui) {
+    const auto reference = ui.worker.errors().reference();
+    if (!reference) return;
+    ImGui::Separator();
+    ImGui::TextWrapped("Error against %s", reference->path.c_str());
+    const std::string problem = ui.worker.errors().problem();
+    if (!problem.empty()) {
+        ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "Not measured: %s", problem.c_str());
+        return;
+    }
+    const std::vector<ErrorPoint> curve = ui.worker.errors().curve();
+    if (!curve.empty()) {
+        const ErrorPoint& last = curve.back();
+        ImGui::Text("relMSE %.3g  RMSE %.3g  MAPE %.2f%%  (%u spp, %.2f s)", last.error.relMse, last.error.rmse,
+                    last.error.mape, last.spp, last.seconds);
+        const TailSlope fit = fitTailSlope(curve, reference->noiseRelMse);
+        if (fit.points >= 3 && !fit.exact) {
+            const bool stuck = biasedOrStuck(fit);
+            ImGui::TextColored(stuck ? ImVec4(1, 0.4f, 0.4f, 1) : ImVec4(0.6f, 0.9f, 0.6f, 1), "slope %.2f: %s",
+                               fit.slope, stuck ? "the error has stopped falling (biased, or the reference differs)"
+                                                : "converging");
+        }
+    }
+    drawErrorPlot(curve, reference->noiseRelMse, 140.0f);
+}
+
+}  // namespace
 
 void drawStatsPanel(EditorUi& ui) {
     if (!ImGui::CollapsingHeader("Stats", ImGuiTreeNodeFlags_DefaultOpen)) return;
@@ -46,6 +80,7 @@ void drawStatsPanel(EditorUi& ui) {
     if (status.deviceMemoryBytes > 0) {
         ImGui::Text("GPU memory: %.1f MiB", double(status.deviceMemoryBytes) / (1024.0 * 1024.0));
     }
+    drawErrorAgainstReference(ui);
     if (!status.stage.empty()) ImGui::ProgressBar(float(status.fraction), ImVec2(-1, 0), status.stage.c_str());
     if (!status.error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", status.error.c_str());
 }

@@ -71,7 +71,7 @@ PT_HD TraversalRay makeTraversalRay(Vec3 origin, Vec3 direction) {
 // 1 + 2 gamma(3), gamma(n) = n u / (1 - n u), u = 2^-24: the factor by which the exit
 // distance is enlarged so that rounding in the slab test never culls a box the ray enters
 // (Ize, "Robust BVH Ray Traversal", JCGT 2(2), 2013; pbrt-v3 section 3.9.2).
-constexpr float kSlabExitScale = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
+constexpr float kSlabExitScale = 1.0f + 2.0f * gammaBound(3);
 
 // The slab test for rays with zero axes (rare: axis-aligned rays); see TraversalRay.
 PT_HD bool intersectBoxWithZeroAxes(const TraversalRay& ray, Vec3 lo, Vec3 hi, float tMax, float& tEntry) {

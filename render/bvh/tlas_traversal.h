@@ -1,14 +1,16 @@
 #pragma once
 // Top level: the BVH over instances in world space. At an instance leaf the world ray is taken
-// into the instance's object space with worldToObject; the direction is NOT normalised, so a
-// ray parameter t means the same point in both spaces and hits compare across instances.
+// into the instance's object space (objectSpacePoint: translation first, so instances far from
+// the origin keep their precision); the direction is NOT normalised, so a ray parameter t means
+// the same point in both spaces and hits compare across instances.
 #include "render/bvh/blas_traversal.h"
+#include "render/bvh/instance_space.h"
 
 namespace pt {
 
 // The world ray as instance `inst` sees it.
 PT_HD TraversalRay objectSpaceRay(const RenderInstance& inst, const Ray& worldRay) {
-    return makeTraversalRay(inst.worldToObject.transformPoint(worldRay.origin),
+    return makeTraversalRay(objectSpacePoint(inst, worldRay.origin),
                             inst.worldToObject.transformVector(worldRay.direction));
 }
 

@@ -1,10 +1,14 @@
 #pragma once
-// The display transform until OpenColorIO arrives (color issue): exposure in stops, one of the
-// built-in tone mappers, then the sRGB encoding, quantised to 8 bits. The editor's display
-// shader (editor/ui/display_shader.cpp) implements the same formulas in GLSL; keep them equal.
+// The built-in display transforms, for users without an OpenColorIO config (the OCIO path is
+// assets/color_processor.h): exposure in stops, one of the built-in tone mappers, then the
+// sRGB encoding, quantised to 8 bits with an optional dither (render/display/dither.h). The
+// editor's display shader implements the same formulas in GLSL; keep them equal.
 #include <cstdint>
+#include <string>
 #include <vector>
 
+#include "render/display/agx.h"
+#include "render/display/dither.h"
 #include "render/math/vec.h"
 
 namespace pt {
@@ -13,9 +17,12 @@ enum class ToneMapper : uint32_t {
     Clamp = 0,       // "Standard": linear clamped to [0, 1], the plain sRGB encoding
     Reinhard = 1,    // extended Reinhard on luminance, white point `whitePoint` (Reinhard 2002, eq. 4)
     AcesFitted = 2,  // Stephen Hill's fit of the ACES RRT + sRGB ODT (BakingLab, MIT)
-    Count = 3,
+    AgX = 3,         // AgX-style neutral filmic curve (render/display/agx.h)
+    Count = 4,
 };
-const char* toneMapperName(ToneMapper op);  // "standard", "reinhard", "aces-fitted"
+const char* toneMapperName(ToneMapper op);  // "standard", "reinhard", "aces-fitted", "agx"
+// The inverse of toneMapperName; false (and `op` untouched) for any other name.
+bool parseToneMapper(const std::string& name, ToneMapper& op);
 
 // What turns the linear accumulation into display pixels. Changing it never restarts
 // accumulation (SceneChanges::Display).
@@ -23,6 +30,7 @@ struct DisplaySettings {
     float exposureStops = 0.0f;
     ToneMapper toneMapper = ToneMapper::Clamp;
     float whitePoint = 4.0f;  // Reinhard: linear luminance that maps to display white
+    bool dither = true;       // triangular +-1 LSB dither before 8-bit quantisation (file export)
 };
 
 PT_HD float linearToSrgb(float c) {
@@ -59,13 +67,16 @@ PT_HD Vec3 displayEncode(Vec3 linear, const DisplaySettings& d) {
     switch (d.toneMapper) {
     case ToneMapper::Reinhard: c = reinhardExtended(c, d.whitePoint); break;
     case ToneMapper::AcesFitted: c = acesFitted(c); break;
+    case ToneMapper::AgX: c = agxToneMap(c); break;
     default: break;
     }
     return Vec3(linearToSrgb(c.x), linearToSrgb(c.y), linearToSrgb(c.z));
 }
 
-// RGBA float (linear) -> RGB 8-bit (display-referred), same pixel order. Non-finite values
-// display as 0.
-std::vector<uint8_t> encodeDisplay8(const std::vector<float>& rgba, const DisplaySettings& display);
+// RGBA float (linear), rows of `width` pixels -> RGB 8-bit (display-referred), same pixel
+// order. Non-finite values display as 0. Dithered (ditherOffset at the pixel's x, y) when
+// `display.dither`.
+std::vector<uint8_t> encodeDisplay8(const std::vector<float>& rgba, uint32_t width,
+                                    const DisplaySettings& display);
 
 }  // namespace pt

@@ -13,6 +13,7 @@
 #include "render/integrator/camera.h"
 #include "render/integrator/medium.h"
 #include "render/integrator/path_state.h"
+#include "render/integrator/spawn_ray.h"
 #include "render/integrator/surface_hit.h"
 #include "render/integrator/transparency.h"
 #include "render/lights/environment.h"
@@ -108,15 +109,7 @@ PT_HD ShadowRay sampleDirectLight(const RenderScene& scene, const PathState& sta
     if (isBlack(f) || isBlack(light.radiance)) return shadow;
     const float weight =
         !light.delta && scene.settings.multipleImportance ? powerHeuristic(light.pdf, eval.pdf) : 1.0f;
-    const Vec3 origin = offsetRayOrigin(surface.position, surface.geometricNormal,
-                                        dot(light.wi, surface.geometricNormal) > 0.0f);
-    if (isInfinite(light.distance)) {
-        shadow.ray = {origin, light.wi, kInf};
-    } else {
-        // Stop short of the light's surface, on the side facing us (punctual lights have none).
-        const Vec3 target = light.delta ? light.point : offsetRayOrigin(light.point, light.normal, true);
-        shadow.ray = {origin, target - origin, 1.0f};
-    }
+    shadow.ray = shadowRayTo(surface, light);
     const Vec3 contribution = state.throughput * f * light.radiance * (weight / light.pdf) *
                               mediumTransmittance(scene, state.media, light.distance);
     shadow.contribution = clampIndirect(scene, contribution, state.depth >= 1);
@@ -182,7 +175,7 @@ PT_HD ShadowRay shadeSurface(const RenderScene& scene, PathState& state, const H
     state.lastVertex = surface.position;
     state.lastBsdfPdf = s.pdf;
     state.lastWasDelta = s.delta;
-    state.ray.origin = offsetRayOrigin(surface.position, arrivalNormal, sameSide);
+    state.ray.origin = spawnOrigin(surface, arrivalNormal, sameSide);
     state.ray.direction = s.wi;
     state.ray.tMax = kInf;
     state.depth += 1;

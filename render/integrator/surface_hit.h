@@ -1,13 +1,15 @@
 #pragma once
 // From a Hit to what shading needs: world position, geometric and shading normals, UV and
 // material. Positions are interpolated from the primitive, not taken as origin + t * dir,
-// so they lie on the surface to float precision however far the ray travelled.
+// so they lie on the surface to float precision however far the ray travelled; positionError
+// bounds what precision that is (instance_space.h), for offsetRayOrigin().
 //
 // The front face is the counter-clockwise side in object space (outside, for spheres). A
 // mirroring instance transform keeps it the front face (glTF: a negative determinant makes
 // the clockwise side the front in world space), so normals go through the inverse transpose
 // and are never flipped for mirroring; the emitter code agrees (emitter_sample.h).
 #include "render/bvh/hit.h"
+#include "render/bvh/instance_space.h"
 #include "render/lights/sphere_light.h"
 #include "render/math/ray.h"
 #include "render/scene/render_scene.h"
@@ -16,6 +18,7 @@ namespace pt {
 
 struct SurfaceHit {
     Vec3 position;
+    Vec3 positionError;    // per axis, for offsetRayOrigin()
     Vec3 geometricNormal;  // unit, on the front side
     Vec3 shadingNormal;    // unit, same hemisphere as geometricNormal
     Vec2 uv;
@@ -32,7 +35,9 @@ PT_HD SurfaceHit triangleSurface(const RenderScene& scene, const RenderInstance&
     const TriangleIndices t = scene.triangles[blas.primitiveOffset + hit.primitive];
     const float b0 = 1.0f - hit.u - hit.v;
     const Vec3 p0 = scene.positions[t.v0], p1 = scene.positions[t.v1], p2 = scene.positions[t.v2];
-    s.position = inst.objectToWorld.transformPoint(p0 * b0 + p1 * hit.u + p2 * hit.v);
+    const SurfacePoint point = triangleSurfacePoint(inst, p0, p1, p2, {b0, hit.u, hit.v});
+    s.position = point.position;
+    s.positionError = point.error;
     const Vec3 nObject = cross(p1 - p0, p2 - p0);
     const Vec3 ng = normalize(inst.worldToObject.transformNormalByInverse(nObject));
     s.geometricNormal = ng;
@@ -57,11 +62,12 @@ PT_HD SurfaceHit sphereSurface(const RenderScene& scene, const RenderInstance& i
                                const Ray& worldRay, const Hit& hit) {
     SurfaceHit s{};
     const Vec4 sphere = scene.spheres[blas.primitiveOffset + hit.primitive];
-    const Vec3 o = inst.worldToObject.transformPoint(worldRay.origin);
+    const Vec3 o = objectSpacePoint(inst, worldRay.origin);
     const Vec3 d = inst.worldToObject.transformVector(worldRay.direction);
     // Project back onto the sphere: removes the error of o + t d.
     const Vec3 radial = normalize(o + d * hit.t - sphere.xyz());
     s.position = inst.objectToWorld.transformPoint(sphere.xyz() + radial * sphere.w);
+    s.positionError = spherePointError(inst, sphere);
     s.geometricNormal = normalize(inst.worldToObject.transformNormalByInverse(radial));
     s.shadingNormal = s.geometricNormal;
     s.uv = sphereUv(radial);
@@ -94,7 +100,7 @@ PT_HD bool objectTangent(const RenderScene& scene, const SurfaceHit& s, const Hi
     const BlasRef& blas = scene.blases[inst.blas];
     if (blas.kind == GeometryKind::Spheres) {
         const Vec4 sphere = scene.spheres[blas.primitiveOffset + s.primitive];
-        const Vec3 radial = inst.worldToObject.transformPoint(s.position) - sphere.xyz();
+        const Vec3 radial = objectSpacePoint(inst, s.position) - sphere.xyz();
         tangent = {radial.z, 0.0f, -radial.x};
         w = 1.0f;
         return lengthSquared(tangent) > 0.0f;

@@ -14,6 +14,7 @@
 // NEE are weighted by their own coverage (light_sample.h), so both strategies agree.
 #include "render/bvh/traversal.h"
 #include "render/integrator/path_state.h"
+#include "render/integrator/spawn_ray.h"
 #include "render/integrator/surface_hit.h"
 #include "render/materials/alpha.h"
 #include "render/sampling/sampler.h"
@@ -24,8 +25,8 @@ namespace pt {
 // Finite rays keep their end point: the parameter range left is what lay beyond the hit.
 PT_HD Ray continuePast(const Ray& ray, const SurfaceHit& surface, float hitT) {
     Ray next = ray;
-    next.origin = offsetRayOrigin(surface.position, surface.geometricNormal,
-                                  dot(ray.direction, surface.geometricNormal) > 0.0f);
+    const Vec3 n = surface.geometricNormal;
+    next.origin = spawnOrigin(surface, n, dot(ray.direction, n) > 0.0f);
     if (isFinite(ray.tMax)) next.tMax = ray.tMax - hitT;
     return next;
 }

@@ -17,6 +17,7 @@ struct LightSample {
     Vec3 wi;         // unit, from the shading point towards the light
     Vec3 radiance;   // arriving along wi: Le (area, environment), I/d^2 x falloff, or E (directional)
     Vec3 point;      // on the light, for the shadow ray (finite lights)
+    Vec3 pointError; // per axis, for offsetRayOrigin() (area lights); zero for the others
     Vec3 normal;     // front normal at `point` (area lights); zero for punctual lights
     float distance;  // to `point`; kInf for directional lights and the environment
     float pdf;       // solid-angle density x pick probability; delta lights: the pick probability
@@ -40,6 +41,7 @@ PT_HD bool sampleTriangleLight(const RenderScene& scene, const Emitter& e, Vec3 
     if (cosLight <= 0.0f) return false;  // the light's back faces us
     out.radiance = s.radiance;
     out.point = s.point;
+    out.pointError = s.pointError;
     out.normal = s.normal;
     out.distance = distance;
     out.pdf = lightPickProbability(scene, e.weight) * distance2 / (s.area * cosLight);
@@ -54,6 +56,9 @@ PT_HD bool sampleSphereLight(const RenderScene& scene, const Emitter& e, Vec3 re
     if (!sampleSphereCone(sphere, ref, u, s)) return false;
     out.wi = s.wi;
     out.point = s.point;
+    const RenderInstance& inst = scene.instances[e.instance];
+    const Vec4 object = scene.spheres[scene.blases[inst.blas].primitiveOffset + e.primitive];
+    out.pointError = spherePointError(inst, object);
     out.normal = s.normal;
     out.distance = s.distance;
     out.radiance = sphereEmittedRadiance(scene, e.instance, e.primitive, s.point);
@@ -67,6 +72,7 @@ PT_HD bool sampleEnvironmentLight(const RenderScene& scene, const Emitter& e, Ve
     if (!sampleEnvironmentDirection(scene, u, out.wi, pdf)) return false;
     out.radiance = environmentRadiance(scene, out.wi);
     out.point = Vec3(0.0f);
+    out.pointError = Vec3(0.0f);
     out.normal = Vec3(0.0f);
     out.distance = kInf;
     out.pdf = lightPickProbability(scene, e.weight) * pdf;
@@ -91,6 +97,7 @@ PT_HD bool sampleLight(const RenderScene& scene, Vec3 ref, float uPick, Vec2 uPo
             out.wi = s.wi;
             out.radiance = s.radiance;
             out.point = s.point;
+            out.pointError = Vec3(0.0f);
             out.normal = Vec3(0.0f);
             out.distance = s.distance;
             out.pdf = lightPickProbability(scene, e.weight);

@@ -110,7 +110,7 @@ PT_HD Vec3 sphereEmittedRadiance(const RenderScene& scene, uint32_t instanceInde
     const Material& m = emitterMaterial(scene, instanceIndex, primitive, GeometryKind::Spheres);
     Vec2 uv{0.0f, 0.0f};
     if (m.emissiveTexture.present() || materialMayBeTransparent(m)) {
-        uv = sphereUv(normalize(inst.worldToObject.transformPoint(point) - s.xyz()));
+        uv = sphereUv(normalize(objectSpacePoint(inst, point) - s.xyz()));
     }
     return emittedRadiance(scene, m, uv) * surfaceCoverage(scene, m, uv);
 }

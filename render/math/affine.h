@@ -30,6 +30,13 @@ struct Affine3 {
                 rows[0].y * n.x + rows[1].y * n.y + rows[2].y * n.z,
                 rows[0].z * n.x + rows[1].z * n.y + rows[2].z * n.z};
     }
+    // |M| v for v >= 0: the linear part with each entry replaced by its magnitude. Bounds,
+    // per axis, what the transform makes of per-axis magnitudes or error bounds.
+    PT_HD Vec3 transformMagnitude(Vec3 v) const {
+        return {fabsf(rows[0].x) * v.x + fabsf(rows[0].y) * v.y + fabsf(rows[0].z) * v.z,
+                fabsf(rows[1].x) * v.x + fabsf(rows[1].y) * v.y + fabsf(rows[1].z) * v.z,
+                fabsf(rows[2].x) * v.x + fabsf(rows[2].y) * v.y + fabsf(rows[2].z) * v.z};
+    }
     PT_HD Vec3 translation() const { return {rows[0].w, rows[1].w, rows[2].w}; }
     // Determinant of the linear part: negative means the transform mirrors (flips winding).
     PT_HD float determinant() const {

@@ -159,6 +159,16 @@ struct Light {
     int32_t object = -1;                // -1: defined by the scene JSON; else imported by that object
 };
 
+// How the scene is viewed (scene JSON "color"): the OpenColorIO config and its display, view
+// and look. "" means the default: for `config` the usual search (assets/color_config.h:
+// resolveColorConfigPath), for the others the config's defaults. `config` is absolute once
+// read from a file (the JSON holds it relative to the scene file). Display only: changing it
+// never restarts accumulation.
+struct ColorSettings {
+    std::string config;
+    std::string display, view, look;
+};
+
 struct Scene {
     std::string sourcePath;             // file it was loaded from (absolute), "" if built in code
     std::vector<SceneObject> objects;
@@ -171,6 +181,7 @@ struct Scene {
     bool cameraFromFile = false;        // the camera came from the JSON or a glTF camera
     RenderSettings render;
     Environment environment;
+    ColorSettings color;
     std::vector<std::string> warnings;  // non-fatal import messages, each naming file and element
 
     int32_t findMaterial(const std::string& name) const;

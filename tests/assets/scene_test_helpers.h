@@ -195,6 +195,10 @@ inline void compareSettings(Differences& d, const Scene& a, const Scene& b) {
     d.check("environment.texture", a.environment.texture, b.environment.texture);
     d.check("environment.intensity", a.environment.intensity, b.environment.intensity);
     d.check("environment.rotation", a.environment.rotationDegrees, b.environment.rotationDegrees);
+    d.check("color.config", a.color.config, b.color.config);
+    d.check("color.display", a.color.display, b.color.display);
+    d.check("color.view", a.color.view, b.color.view);
+    d.check("color.look", a.color.look, b.color.look);
 }
 
 inline void compareLights(Differences& d, const Scene& a, const Scene& b) {

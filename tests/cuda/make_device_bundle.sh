@@ -1,18 +1,19 @@
 #!/usr/bin/env bash
 # Builds what the GPU machine runs and gathers it in build-dev-carry/ (git-ignored), for the
 # `device` tool to carry: that machine has the CUDA driver and a C++ runtime but none of our
-# Debian libraries, so this build leaves OpenImageIO out (PT_OIIO=OFF) and takes along the four
-# small shared libraries the binaries still need, plus the shared assets the benchmark reads.
+# Debian libraries, so this build leaves OpenImageIO and OpenColorIO out (PT_OIIO=OFF,
+# PT_OCIO=OFF) and takes along the four small shared libraries the binaries still need, plus
+# the shared assets the benchmark reads.
 #
 #   tests/cuda/make_device_bundle.sh
 #   then, on the device:  build-dev-carry/run.sh <command...>  (sets LD_LIBRARY_PATH, PT_SOURCE_DIR)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-cmake -S . -B build-dev -G Ninja -DCMAKE_BUILD_TYPE=Release -DPT_CUDA=ON -DPT_OIIO=OFF -DPT_EDITOR=OFF -DPT_TESTS=ON >/dev/null
+cmake -S . -B build-dev -G Ninja -DCMAKE_BUILD_TYPE=Release -DPT_CUDA=ON -DPT_OIIO=OFF -DPT_OCIO=OFF -DPT_EDITOR=OFF -DPT_TESTS=ON >/dev/null
 cmake --build build-dev --target pt_cuda_tests pt-render
 rm -rf build-dev-carry
 mkdir -p build-dev-carry/lib build-dev-carry/assets
-cp build-dev/tests/pt_cuda_tests build-dev/app/pt-render build-dev-carry/
+cp build-dev/tests/pt_cuda_tests build-dev/app/pt-render tests/cuda/device_figures.sh build-dev-carry/
 # Every shared library outside the C/C++ runtime and the dynamic loader.
 ldd build-dev-carry/pt-render build-dev-carry/pt_cuda_tests | awk '/=> \// {print $3}' | sort -u |
   grep -v -E '/(libc|libm|libstdc\+\+|libgcc_s|libpthread|libdl|librt|ld-linux[^/]*)\.so' |

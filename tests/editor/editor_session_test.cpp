@@ -10,15 +10,18 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <memory>
 #include <string>
 
+#include "assets/exr_layers.h"
 #include "assets/image_read.h"
 #include "assets/image_write.h"
 #include "assets/input_error.h"
 #include "assets/scene_test_helpers.h"
+#include "editor/color_view.h"
 #include "editor/scene_edits.h"
 #include "editor/scene_equality.h"
 #include "support/load_scene.h"
@@ -270,20 +273,20 @@ TEST(EditorSession, ExportWritesTheBeautyAndItsDisplayImage) {
     const std::string folder = test::testFolder();
     const std::string png = folder + "/render.png";
     const std::string exr = PT_TEST_HAVE_OIIO ? folder + "/render.exr" : std::string();
-    session.exportRender(exr, png);
+    session.exportRender(exr, png, DisplayProcessor(viewer.display));
 
     const Texture image = readTextureFile(png);
     ASSERT_EQ(image.width, 16u);
     ASSERT_EQ(image.height, 16u);
     ASSERT_EQ(image.format, TexelFormat::RGBA8);
-    const std::vector<uint8_t> expected = encodeDisplay8(beauty, viewer.display);
+    const std::vector<uint8_t> expected = encodeDisplay8(beauty, 16u, viewer.display);
     size_t differing = 0;
     for (size_t i = 0; i < 16u * 16u; ++i) {
         for (size_t c = 0; c < 3; ++c) differing += image.texels8[i * 4 + c] != expected[i * 3 + c] ? 1 : 0;
     }
     EXPECT_EQ(differing, 0u) << "PNG pixels differ from encodeDisplay8 of the beauty";
     // Exposure + Reinhard must show: the plain sRGB encoding gives other pixels.
-    EXPECT_NE(encodeDisplay8(beauty, DisplaySettings{}), expected);
+    EXPECT_NE(encodeDisplay8(beauty, 16u, DisplaySettings{}), expected);
 
     if (!PT_TEST_HAVE_OIIO) GTEST_SKIP() << "this build has no OpenImageIO (PT_OIIO=OFF): no EXR";
     uint32_t w = 0, h = 0;
@@ -295,6 +298,88 @@ TEST(EditorSession, ExportWritesTheBeautyAndItsDisplayImage) {
         if (i % 4 == 3) continue;  // alpha
         ASSERT_EQ(read[i], beauty[i]) << "EXR value " << i;
     }
+}
+
+// Export layers accumulate beside the displayed AOV from the next sync (which restarts the
+// accumulation); an export writes those accumulated, at the viewer's precision.
+TEST(EditorSession, ExportLayersAccumulateAfterTheirEditAndGoIntoTheExr) {
+    auto recording = std::make_unique<RecordingBackend>();
+    Fixture f{recording.get(), std::make_unique<EditorSession>(std::move(recording))};
+    EditorSession& session = *f.session;
+    Scene scene = tinyScene();
+    scene.color.display = "sRGB";
+    scene.color.view = "AgX";
+    session.adopt(scene);
+    session.sync();
+    session.render(2);
+    EXPECT_EQ(session.backend().aovs(), 0u);
+    EXPECT_EQ(session.backend().aovBytes(), 0u) << "nothing displayed or exported: no AOV memory";
+    const AovMask exported = aovBit(Aov::Albedo) | aovBit(Aov::InstanceId);
+    ViewerSettings viewer = session.document().viewer;
+    viewer.exportAovs = exported;
+    viewer.exportHalf = true;
+    viewer.aov = int32_t(Aov::Depth);  // shown, so accumulated too, but not chosen for export
+    session.execute(setViewer(session.document(), viewer));
+    const std::string folder = test::testFolder();
+    if (PT_TEST_HAVE_OIIO) {
+        EXPECT_EQ(session.exportRender(folder + "/early.exr", "", DisplayProcessor(viewer.display)), 0u)
+            << "not accumulated before the sync";
+        EXPECT_EQ(readExrChannels(folder + "/early.exr").channels.size(), 4u);
+    }
+    const size_t syncs = f.backend->syncs.size();
+    session.sync();
+    EXPECT_EQ(f.backend->syncs.size(), syncs + 1) << "new AOVs restart the accumulation";
+    EXPECT_EQ(session.backend().aovs(), exported | aovBit(Aov::Depth));
+    EXPECT_EQ(session.backend().stats().samplesPerPixel, 0u);
+    session.render(2);
+
+    if (!PT_TEST_HAVE_OIIO) GTEST_SKIP() << "this build has no OpenImageIO (PT_OIIO=OFF): no EXR";
+    const std::string exr = folder + "/layers.exr";
+    // Through the scene's OpenColorIO view, as the editor's viewport shows it.
+    const ColorView color = resolveColorView("", session.document().scene.color, {});
+    const DisplayProcessor display = displayProcessorFor(color, session.document().viewer);
+    EXPECT_EQ(session.exportRender(exr, folder + "/layers.png", display), exported);
+    const ExrImage image = readExrChannels(exr);
+    std::vector<std::string> names;
+    for (const ExrChannelData& c : image.channels) names.push_back(c.name);
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(names, (std::vector<std::string>{"A", "B", "G", "R", "albedo.B", "albedo.G", "albedo.R", "instance_id.Y"}));
+    EXPECT_EQ(image.channel("R")->type, ExrPixelType::Half);
+    EXPECT_EQ(image.channel("albedo.R")->type, ExrPixelType::Half);
+    EXPECT_EQ(image.channel("instance_id.Y")->type, ExrPixelType::Float);
+    std::vector<float> albedo, ids;
+    session.backend().readAov(Aov::Albedo, albedo);
+    session.backend().readAov(Aov::InstanceId, ids);
+    for (size_t i = 0; i < 16u * 16u; ++i) {
+        ASSERT_NEAR(image.channel("albedo.G")->values[i], albedo[i * 4 + 1], albedo[i * 4 + 1] * 0x1p-11f) << i;
+        ASSERT_EQ(image.channel("instance_id.Y")->values[i], ids[i * 4]) << i;
+    }
+    EXPECT_EQ(image.attribute("pt:aovs"), "albedo,instance_id");
+    EXPECT_EQ(image.attribute("pt:spp"), "2");
+    EXPECT_EQ(image.attribute("pt:camera_position"), "0 0 5");
+    EXPECT_EQ(image.attribute("pt:view"), display.describe());
+#ifdef PT_HAS_OCIO
+    EXPECT_NE(image.attribute("pt:view").find("sRGB / AgX"), std::string::npos) << image.attribute("pt:view");
+    EXPECT_EQ(image.attribute("pt:ocio_config"), color.config->path());
+    // The PNG holds the view's bytes: those of the CPU display path for the same beauty.
+    std::vector<float> beauty;
+    session.backend().readBeauty(beauty);
+    const Texture png = readTextureFile(folder + "/layers.png");
+    const std::vector<uint8_t> expected = display.encode8(beauty, 16u, viewer.display.dither);
+    for (size_t i = 0; i < 16u * 16u; ++i) {
+        for (size_t c = 0; c < 3; ++c) ASSERT_EQ(png.texels8[i * 4 + c], expected[i * 3 + c]) << i;
+    }
+    EXPECT_NE(expected, DisplayProcessor(viewer.display).encode8(beauty, 16u, viewer.display.dither))
+        << "AgX and the plain sRGB encoding differ on this scene";
+#endif
+
+    // Choosing none (and showing the beauty) frees the AOV memory at the next sync.
+    viewer.exportAovs = 0;
+    viewer.aov = -1;
+    session.execute(setViewer(session.document(), viewer));
+    session.sync();
+    EXPECT_EQ(session.backend().aovs(), 0u);
+    EXPECT_EQ(session.backend().aovBytes(), 0u);
 }
 
 TEST(EditorSession, SaveWritesTheSceneAndClearsModified) {

@@ -45,7 +45,11 @@ void expectViewersEqual(const ViewerSettings& a, const ViewerSettings& b) {
     EXPECT_EQ(a.display.exposureStops, b.display.exposureStops);
     EXPECT_EQ(a.display.toneMapper, b.display.toneMapper);
     EXPECT_EQ(a.display.whitePoint, b.display.whitePoint);
+    EXPECT_EQ(a.display.dither, b.display.dither);
+    EXPECT_EQ(a.builtinDisplay, b.builtinDisplay);
     EXPECT_EQ(a.aov, b.aov);
+    EXPECT_EQ(a.exportAovs, b.exportAovs);
+    EXPECT_EQ(a.exportHalf, b.exportHalf);
     EXPECT_EQ(a.samplesPerFrame, b.samplesPerFrame);
     EXPECT_EQ(a.targetSpp, b.targetSpp);
 }
@@ -192,6 +196,15 @@ TEST(SceneEdits, SetViewerIsDisplayOnly) {
     viewer.display.toneMapper = ToneMapper::AcesFitted;
     viewer.targetSpp = 16;
     checkEdit(doc, setViewer(doc, viewer), SceneChanges::Display, [&](Document& d) { d.viewer = viewer; });
+}
+
+TEST(SceneEdits, SetColorSettingsIsDisplayOnlyAndSaved) {
+    Document doc = codeDocument();
+    ColorSettings color;
+    color.display = "Rec.1886";
+    color.view = "ACES 1.0 SDR";
+    color.look = "Exposure -1";
+    checkEdit(doc, setColorSettings(doc, color), SceneChanges::Display, [&](Document& d) { d.scene.color = color; });
 }
 
 void expectNear(const Affine3& expected, const Affine3& actual, const std::string& where) {
