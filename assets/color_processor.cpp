@@ -34,30 +34,14 @@ void DisplayProcessor::applyInPlace(std::vector<float>& rgba) const {
         ocio_(rgba.data(), pixels);  // RGB only: alpha stays
         return;
     }
-    for (size_t i = 0; i < pixels; ++i) {
-        float* p = &rgba[i * 4];
-        const Vec3 linear(std::isfinite(p[0]) ? p[0] : 0.0f, std::isfinite(p[1]) ? p[1] : 0.0f,
-                          std::isfinite(p[2]) ? p[2] : 0.0f);
-        const Vec3 encoded = displayEncode(linear, builtin_);
-        for (int c = 0; c < 3; ++c) p[c] = encoded[c];
-    }
+    displayEncodeInPlace(rgba, builtin_);
 }
 
 std::vector<uint8_t> DisplayProcessor::encode8(const std::vector<float>& rgba, uint32_t width,
                                                bool dither) const {
     std::vector<float> display = rgba;
     applyInPlace(display);
-    const size_t pixels = display.size() / 4;
-    std::vector<uint8_t> out(pixels * 3);
-    for (size_t i = 0; i < pixels; ++i) {
-        const float offset =
-            dither && width > 0 ? ditherOffset(uint32_t(i % width), uint32_t(i / width)) : 0.0f;
-        for (size_t c = 0; c < 3; ++c) {
-            const float v = display[i * 4 + c];
-            out[i * 3 + c] = quantize8(std::isfinite(v) ? v : 0.0f, offset);
-        }
-    }
-    return out;
+    return quantizeDisplay8(display, width, dither);
 }
 
 std::string DisplayProcessor::describe() const {

@@ -1,27 +1,9 @@
 #include "editor/error_tracker.h"
 
-#include <cstdlib>
-
-#include "assets/image_metadata.h"
-#include "assets/image_write.h"
-#include "assets/input_error.h"
-
 namespace pt::editor {
 
 void ErrorTracker::load(const std::string& path) {
-    auto reference = std::make_shared<ReferenceImage>();
-    reference->path = path;
-    reference->rgba = readImageRgba(path, reference->width, reference->height);
-    ImageMetadata metadata;
-    try {
-        metadata = readImageMetadata(path);
-    } catch (const InputError&) {
-        // Pixels without metadata (a build without OpenImageIO): the noise stays unknown.
-    }
-    for (const auto& [key, value] : metadata) {
-        if (key == "pt:noise_relmse") reference->noiseRelMse = std::strtod(value.c_str(), nullptr);
-    }
-    setReference(std::move(reference));
+    setReference(std::make_shared<ReferenceImage>(loadReferenceImage(path)));
 }
 
 void ErrorTracker::setReference(std::shared_ptr<const ReferenceImage> reference) {

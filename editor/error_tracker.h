@@ -14,16 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "assets/reference_image.h"
 #include "render/util/error_curve.h"
 
 namespace pt::editor {
-
-struct ReferenceImage {
-    std::string path;
-    uint32_t width = 0, height = 0;
-    std::vector<float> rgba;  // linear RGBA float, row-major
-    double noiseRelMse = 0.0;  // the reference's own noise (pt-render reference writes it), 0: unknown
-};
 
 class ErrorTracker {
 public:
@@ -31,7 +25,8 @@ public:
     // a decade, as pt-render converge spaces its checkpoints).
     static constexpr double kSpacing = 1.333521432163324;
 
-    // Reads an image file (EXR, HDR, PNG...) as the reference; throws InputError naming it.
+    // Reads an image file (EXR, PFM, HDR, PNG...) as the reference (loadReferenceImage);
+    // throws InputError naming it and keeps the current one.
     void load(const std::string& path);
     void setReference(std::shared_ptr<const ReferenceImage> reference);
     void clear();

@@ -3,27 +3,22 @@
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
+#include <utility>
 
-#include "assets/image_metadata.h"
-#include "assets/image_write.h"
+#include "assets/reference_image.h"
 #include "cli_options.h"
 
 namespace pt::cli {
 
 ConvergeReference readReferenceImage(const std::string& path, uint32_t width, uint32_t height) {
-    ConvergeReference reference;
-    uint32_t w = 0, h = 0;
-    reference.rgba = readImageRgba(path, w, h);
-    if (w != width || h != height) {
-        throw std::runtime_error(path + ": the reference is " + std::to_string(w) + "x" + std::to_string(h) +
-                                 " but the render is " + std::to_string(width) + "x" + std::to_string(height) +
-                                 " (render the reference at this size, or pass --size " + std::to_string(w) + "x" +
-                                 std::to_string(h) + ")");
+    ReferenceImage image = loadReferenceImage(path);
+    if (image.width != width || image.height != height) {
+        const std::string size = std::to_string(image.width) + "x" + std::to_string(image.height);
+        throw std::runtime_error(path + ": the reference is " + size + " but the render is " + std::to_string(width) +
+                                 "x" + std::to_string(height) + " (render the reference at this size, or pass --size " +
+                                 size + ")");
     }
-    for (const auto& [key, value] : readImageMetadata(path)) {
-        if (key == "pt:noise_relmse") reference.noiseRelMse = std::strtod(value.c_str(), nullptr);
-    }
-    return reference;
+    return {std::move(image.rgba), image.noiseRelMse};
 }
 
 ConvergeReference constantReference(const std::string& rgb, uint32_t width, uint32_t height) {

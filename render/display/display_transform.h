@@ -73,9 +73,18 @@ PT_HD Vec3 displayEncode(Vec3 linear, const DisplaySettings& d) {
     return Vec3(linearToSrgb(c.x), linearToSrgb(c.y), linearToSrgb(c.z));
 }
 
-// RGBA float (linear), rows of `width` pixels -> RGB 8-bit (display-referred), same pixel
-// order. Non-finite values display as 0. Dithered (ditherOffset at the pixel's x, y) when
-// `display.dither`.
+// RGBA float (linear) -> display-referred RGB in place through the built-in operator (A is
+// untouched). Non-finite values display as 0.
+void displayEncodeInPlace(std::vector<float>& rgba, const DisplaySettings& display);
+
+// Display-referred RGBA float, rows of `width` pixels -> RGB 8-bit, same pixel order.
+// Non-finite values give 0. Dithered (ditherOffset at the pixel's x, y) when `dither`. The
+// last step of every display path (the built-in one below, OpenColorIO's in
+// assets/color_processor.h).
+std::vector<uint8_t> quantizeDisplay8(const std::vector<float>& displayRgba, uint32_t width, bool dither);
+
+// RGBA float (linear) -> RGB 8-bit through the built-in operator: displayEncodeInPlace, then
+// quantizeDisplay8 with `display.dither`.
 std::vector<uint8_t> encodeDisplay8(const std::vector<float>& rgba, uint32_t width,
                                     const DisplaySettings& display);
 
