@@ -31,33 +31,37 @@ void EditorSession::adopt(Scene scene) {
     lastEdit_ = {};
 }
 
-void EditorSession::noteEdit(const std::string& label, SceneChangeMask changes) {
+void EditorSession::noteEdit(const std::string& label, SceneChangeMask changes, Clock::time_point start) {
     pending_ |= changes;
     if ((changes & ~SceneChangeMask(SceneChanges::Display)) == 0) return;  // nothing to render again
     std::lock_guard<std::mutex> lock(statusMutex_);
     lastEdit_ = {};
     lastEdit_.label = label;
-    editStart_ = Clock::now();
+    lastEdit_.applySeconds = secondsSince(start);
+    editStart_ = start;
 }
 
 SceneChangeMask EditorSession::execute(std::unique_ptr<EditCommand> command) {
+    const auto start = Clock::now();  // the edit's latency includes its own apply
     const std::string label = command->label();
     const SceneChangeMask changes = history_.execute(doc_, std::move(command));
-    noteEdit(label, changes);
+    noteEdit(label, changes, start);
     return changes;
 }
 
 bool EditorSession::undo() {
     if (!history_.canUndo()) return false;
+    const auto start = Clock::now();
     const std::string label = "Undo " + history_.undoLabel();
-    noteEdit(label, history_.undo(doc_));
+    noteEdit(label, history_.undo(doc_), start);
     return true;
 }
 
 bool EditorSession::redo() {
     if (!history_.canRedo()) return false;
+    const auto start = Clock::now();
     const std::string label = "Redo " + history_.redoLabel();
-    noteEdit(label, history_.redo(doc_));
+    noteEdit(label, history_.redo(doc_), start);
     return true;
 }
 

@@ -21,8 +21,11 @@ namespace pt::editor {
 struct EditLatency {
     std::string label;              // the command, e.g. "Edit material white"
     std::string action;             // what sync did: nothing / reset / materials / TLAS / refit / rebuild / full build
+    double applySeconds = 0.0;      // the command writing the document (e.g. 10M new positions)
     double syncSeconds = 0.0;       // backend sync alone
-    double toFrameSeconds = 0.0;    // command applied -> first pass of samples done
+    // Command handed to the session (execute, undo, redo) -> first pass of samples done:
+    // apply, sync and the pass. Frames for display are timed from the same instant.
+    double toFrameSeconds = 0.0;
     bool complete = false;          // false until that first frame exists
 };
 
@@ -83,7 +86,8 @@ public:
                          const DisplayProcessor& display) const;
 
 private:
-    void noteEdit(const std::string& label, SceneChangeMask changes);
+    // An edit handed over at `start` and applied now.
+    void noteEdit(const std::string& label, SceneChangeMask changes, Clock::time_point start);
 
     Document doc_;
     CommandStack history_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <thread>
 
 namespace pt::editor {
 
@@ -40,7 +41,9 @@ bool RenderWorker::tryEdit(const std::function<void(EditorSession&)>& change) {
 }
 
 void RenderWorker::withBackend(const std::function<void(EditorSession&)>& use) {
-    std::lock_guard<std::mutex> lock(backendMutex_);
+    ++backendWaiters_;
+    std::unique_lock<std::mutex> lock(backendMutex_);
+    --backendWaiters_;
     use(session_);
 }
 
@@ -141,6 +144,9 @@ bool RenderWorker::step() {
 
 void RenderWorker::run() {
     while (!stop_) {
+        // The UI thread's turn first (a std::mutex is not fair: this thread would otherwise
+        // take it back at once). It holds the backend briefly: a frame copy, a pick.
+        while (backendWaiters_ > 0 && !stop_) std::this_thread::yield();
         if (step()) continue;
         // Nothing to do (converged, or a refused sync): sleep until an edit wakes us.
         std::unique_lock<std::mutex> lock(wakeMutex_);

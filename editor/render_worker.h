@@ -54,7 +54,10 @@ public:
     // returns false instead, so a long BVH build never freezes the window.
     void edit(const std::function<void(EditorSession&)>& change);
     bool tryEdit(const std::function<void(EditorSession&)>& change);
-    // UI thread: uses the backend while the render thread is between passes.
+    // UI thread: uses the backend while the render thread is between passes. The render thread
+    // lets a waiting caller in before its next batch, so a frame published for CUDA-GL interop
+    // is copied within a batch of its samples, not after however many batches the lock's
+    // unfairness would allow.
     void withBackend(const std::function<void(EditorSession&)>& use);
 
     // A frame newer than the one last taken, if any.
@@ -78,6 +81,7 @@ private:
     EditorSession& session_;
     std::shared_mutex sceneMutex_;
     std::mutex backendMutex_;
+    std::atomic<uint32_t> backendWaiters_{0};  // withBackend() callers waiting for backendMutex_
     std::mutex wakeMutex_;
     std::condition_variable wake_;
     bool woken_ = false;

@@ -6,6 +6,7 @@
 #include "bench_bvh.h"
 #include "bench_rays.h"
 #include "bench_edits.h"
+#include "bench_kernels.h"
 #include "bench_render.h"
 #include "bench_report.h"
 #include "cli_options.h"
@@ -106,6 +107,11 @@ int runBench(const std::vector<std::string>& args) {
     report.add({"scene", "instances", "", double(backend->stats().instances), "", ""});
     report.add({"scene", "device memory after the first sync", "", double(backend->deviceMemoryBytes()) / (1 << 20),
                 "MiB", ""});
+    // GPU backends: that memory by buffer, so what a scene does not use is seen not to be there.
+    for (const auto& [buffer, bytes] : backend->deviceMemoryByBuffer()) {
+        report.add({"memory", buffer, "after the first sync", double(bytes) / (1 << 20), "MiB",
+                    bytes == 0 ? "not allocated" : ""});
+    }
     const auto phase = [&](const char* name) {
         if (!r.quiet) std::fprintf(stderr, "bench: %s...\n", name);
     };
@@ -121,6 +127,7 @@ int runBench(const std::vector<std::string>& args) {
     benchEdits(r.backend, scene, r.settings, report);
     phase("image check");
     benchImageCheck(*backend, scene, r.settings, report);
+    if (r.backend == "cuda") benchKernelVariants(report);
     report.add({"memory", "device memory after the benchmark", "", double(backend->deviceMemoryBytes()) / (1 << 20),
                 "MiB", ""});
 

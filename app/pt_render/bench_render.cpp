@@ -26,10 +26,19 @@ std::vector<Variant> variantsOf(const Backend& backend, const IntegratorToggles&
     };
     const bool gpu = backend.name() != "cpu";
     if (gpu) {
-        flip(base.megakernel ? "wavefront" : "megakernel", [](IntegratorToggles& t) { t.megakernel = !t.megakernel; });
-        // The wavefront's own toggles, each against the plain wavefront above or below.
+        // Each schedule on its own, the baselines of the auto schedule's choice.
+        flip("megakernel", [](IntegratorToggles& t) {
+            t.autoSchedule = false;
+            t.megakernel = true;
+        });
+        flip("wavefront", [](IntegratorToggles& t) {
+            t.autoSchedule = false;
+            t.megakernel = false;
+        });
+        // The wavefront's own toggles, each against the plain wavefront above.
         const auto wavefront = [&](const char* name, const std::function<void(IntegratorToggles&)>& change) {
             flip(name, [&](IntegratorToggles& t) {
+                t.autoSchedule = false;
                 t.megakernel = false;
                 change(t);
             });
@@ -81,7 +90,10 @@ void benchPathTracing(Backend& backend, const Scene& scene, const BenchSettings&
             rayRates.push_back(double(backend.stats().rays - before.rays) / s / 1e6);
         }
         const double t = median(seconds);
+        const BackendStats ran = backend.stats();
         std::string note;
+        if (!ran.kernelVariant.empty()) note += "kernel variant " + ran.kernelVariant + "; ";
+        if (v.toggles.autoSchedule && !ran.schedule.empty()) note += "auto schedule: " + ran.schedule + "; ";
         for (const ToggleState& state : backend.toggleStates()) {
             // The CPU backend has no scheduling toggles to speak of.
             if (state.requested && !state.active && !(backend.name() == "cpu" && isGpuSchedulingToggle(state.name))) {

@@ -5,6 +5,7 @@
 #include "cli_options.h"
 #include "commands.h"
 #include "render/scene/compile_scene.h"
+#include "render/scene/scene_features.h"
 #include "scene_input.h"
 
 namespace pt::cli {
@@ -28,6 +29,8 @@ nlohmann::ordered_json describe(const Scene& scene, const CompiledScene& compile
     j["sphere_lights"] = s.sphereLightCount;
     j["punctual_lights"] = s.punctualLightCount;
     j["environment"] = scene.environment.texture >= 0 ? "image" : "color";
+    // What the scene uses (scene_features.h); the CUDA backend picks its kernel variant by it.
+    j["features"] = featureNames(compiled.features);
     j["bounds"] = {{"min", {lo.x, lo.y, lo.z}}, {"max", {hi.x, hi.y, hi.z}}};
     j["load_seconds"] = loadSeconds;
     j["blas_build_seconds"] = s.blasSeconds;
@@ -52,7 +55,10 @@ int runInfo(const std::vector<std::string>& args) {
         return 0;
     }
     for (const auto& [key, value] : j.items()) {
-        std::printf("%-20s %s\n", key.c_str(), value.is_string() ? value.get<std::string>().c_str() : value.dump().c_str());
+        const std::string text = key == "features"   ? describeFeatures(compiled.features)
+                                 : value.is_string() ? value.get<std::string>()
+                                                     : value.dump();
+        std::printf("%-20s %s\n", key.c_str(), text.c_str());
     }
     return 0;
 }

@@ -18,6 +18,7 @@
 #include "progress_bar.h"
 #include "render/backend/backend.h"
 #include "render/display/display_transform.h"
+#include "render/scene/scene_features.h"
 #include "render/util/stopwatch.h"
 #include "scene_input.h"
 #include "toggle_options.h"
@@ -122,6 +123,9 @@ void writeStats(const RenderRequest& r, const Backend& backend, double loadSecon
     j["aovs"] = aovListText(backend.aovs());
     j["aov_bytes"] = backend.aovBytes();
     j["toggles"] = toggleStatesJson(backend.toggleStates());
+    j["features"] = featureNames(s.features);
+    j["kernel_variant"] = s.kernelVariant;  // "" where the code is not specialised (CPU)
+    j["kernel_features"] = featureNames(s.kernelFeatures);
     j["scene"] = r.scenePath;
     writeTextAtomically(r.statsPath, j.dump(2) + "\n");
 }

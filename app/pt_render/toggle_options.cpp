@@ -23,6 +23,8 @@ IntegratorToggles parseToggles(const Options& o) {
     t.clampRadiance = float(o.positiveNumber("--clamp").value_or(0.0));
     t.pixelJitter = !o.has("--no-jitter");
     if (o.has("--megakernel") && o.has("--wavefront")) throw UsageError("--megakernel and --wavefront exclude each other");
+    // Naming a schedule turns the auto schedule off.
+    t.autoSchedule = !o.has("--megakernel") && !o.has("--wavefront");
     if (o.has("--megakernel")) t.megakernel = true;
     if (o.has("--wavefront")) t.megakernel = false;
     if (o.has("--no-compaction")) t.streamCompaction = false;

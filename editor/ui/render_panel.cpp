@@ -27,7 +27,10 @@ void integratorSwitches(EditorUi& ui) {
     if (ui.backendName == "cuda") {
         ImGui::Separator();
         ImGui::TextUnformatted("GPU scheduling");
+        changed |= ImGui::Checkbox("Auto schedule (time both, run the faster)", &t.autoSchedule);
+        ImGui::BeginDisabled(t.autoSchedule);
         changed |= ImGui::Checkbox("Megakernel (else wavefront)", &t.megakernel);
+        ImGui::EndDisabled();
         changed |= ImGui::Checkbox("Stream compaction", &t.streamCompaction);
         changed |= ImGui::Checkbox("Material sort", &t.materialSort);
         changed |= ImGui::Checkbox("First-hit cache", &t.firstHitCache);

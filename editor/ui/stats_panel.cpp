@@ -1,5 +1,5 @@
-// Stats: samples, frame times, throughput, what the last edit made the backend do and how long
-// it took to reach the screen, memory.
+// Stats: samples, frame times, throughput, scene features and the kernel variant, what the last
+// edit made the backend do and how long it took to reach the screen, memory.
 #include <algorithm>
 #include <numeric>
 #include <string>
@@ -7,6 +7,7 @@
 
 #include "editor/ui/error_plot.h"
 #include "editor/ui/widgets.h"
+#include "render/scene/scene_features.h"
 
 namespace pt::editor {
 
@@ -40,6 +41,20 @@ void drawErrorAgainstReference(EditorUi& ui) {
     drawErrorPlot(curve, reference->noiseRelMse, 140.0f);
 }
 
+// What the scene uses and, on the GPU, the kernel variant that renders it. These come with each
+// frame's BackendStats (copied on the render thread in RenderWorker::publishFrame), never from
+// the backend itself. When an edit adds a feature (say, a clearcoat slider moved off 0), the
+// backend recomputes the features at the sync that edit triggers (updateFeatures), and the CUDA
+// backend switches to a kernel variant that covers them before it renders the next samples, so
+// no sample is ever rendered by a kernel missing code the scene needs; the first frame after
+// the edit shows the new set here.
+void drawFeatures(const BackendStats& s) {
+    ImGui::TextWrapped("Features: %s", describeFeatures(s.features).c_str());
+    if (!s.kernelVariant.empty()) {
+        ImGui::TextWrapped("Kernel: %s (%s)", s.kernelVariant.c_str(), describeFeatures(s.kernelFeatures).c_str());
+    }
+}
+
 }  // namespace
 
 void drawStatsPanel(EditorUi& ui) {
@@ -58,6 +73,7 @@ void drawStatsPanel(EditorUi& ui) {
     ImGui::Text("Render: %.1f ms/pass, %.1f Mrays/s", status.secondsPerPass * 1e3,
                 s.renderSeconds > 0 ? double(s.rays) / s.renderSeconds / 1e6 : 0.0);
     ImGui::Text("Scene: %llu triangles, %u instances", static_cast<unsigned long long>(s.triangles), s.instances);
+    drawFeatures(s);
     if (s.nonfiniteSamples > 0) {
         ImGui::TextColored(ImVec4(1, 0.5f, 0.3f, 1), "%llu non-finite samples dropped",
                            static_cast<unsigned long long>(s.nonfiniteSamples));

@@ -28,8 +28,10 @@ struct IntegratorToggles {
     // with the same ray through its centre, which lets the first hit be cached.
     bool pixelJitter = true;
     // CUDA scheduling (the CPU backend runs one path per thread and has none of these).
-    // One thread runs a whole path; else the wavefront stages. The default, as measured on an
-    // H200 at 1920x1080 (README, "GPU figures"): faster on four of the five benchmark scenes.
+    // Auto: the first passes of each scene and feature set time both schedules and the rest run
+    // the faster (render/backend/schedule_chooser.h); which wins depends on the scene.
+    bool autoSchedule = true;
+    // Without autoSchedule: one thread runs a whole path; else the wavefront stages.
     bool megakernel = true;
     bool streamCompaction = true;   // wavefront: dead paths leave the queues between bounces
     bool materialSort = false;      // wavefront: paths sorted by material before shading
@@ -68,6 +70,17 @@ struct BackendStats {
     uint64_t nonfiniteSamples = 0;  // NaN/Inf samples dropped since the last reset
     uint64_t triangles = 0;       // traced (over instances)
     uint32_t instances = 0;
+    // What the scene uses (render/scene/scene_features.h), with the AOVs and brute-force bits
+    // this backend's outputs and toggles add; recomputed at every sync.
+    uint32_t features = 0;
+    // GPU backends: the kernel variant that runs (render/backend/cuda/kernel_variants.h) and the
+    // features it was compiled for; "" and 0 where code is not specialised (the CPU).
+    std::string kernelVariant;
+    uint32_t kernelFeatures = 0;
+    // GPU backends: the schedule that runs ("megakernel", "wavefront", or "measuring" while the
+    // auto schedule times both) and, under auto, the rates it measured (spp/s; 0: not yet).
+    std::string schedule;
+    double megakernelRate = 0.0, wavefrontRate = 0.0;
 };
 
 class Backend {
@@ -97,6 +110,9 @@ public:
     virtual std::vector<double> traceRays(const std::vector<Ray>& rays, bool anyHit, uint32_t runs,
                                           std::vector<Hit>* hits) = 0;
     virtual uint64_t deviceMemoryBytes() const { return 0; }  // GPU backends: buffers allocated
+    // GPU backends: every device buffer's allocated bytes by name (geometry, BVHs, materials,
+    // lights, accumulation, scheduler, scratch), summing to deviceMemoryBytes(); empty elsewhere.
+    virtual std::vector<std::pair<std::string, uint64_t>> deviceMemoryByBuffer() const { return {}; }
     // GPU backends: writes the beauty as readBeauty() gives it (RGBA float, width x height) into
     // device memory at `deviceRgba` (e.g. an OpenGL buffer mapped through CUDA-GL interop) and
     // returns true once it is there. False where frames live on the host.

@@ -11,6 +11,7 @@ std::vector<ToggleState> integratorToggleStates(const IntegratorToggles& t) {
         // "bvh" is on when the BVH is used, i.e. when brute force is off.
         state("bvh", !t.bruteForce),
         state("pixel_jitter", t.pixelJitter),
+        state("auto_schedule", t.autoSchedule),
         state("megakernel", t.megakernel),
         state("compaction", t.streamCompaction),
         state("material_sort", t.materialSort),
@@ -27,7 +28,7 @@ void applyIntegratorToggles(const IntegratorToggles& t, IntegratorSettings& s) {
 }
 
 bool isGpuSchedulingToggle(const std::string& name) {
-    return name == "megakernel" || name == "compaction" || name == "material_sort" || name == "first_hit_cache";
+    return name == "auto_schedule" || name == "megakernel" || name == "compaction" || name == "material_sort" || name == "first_hit_cache";
 }
 
 }  // namespace pt

@@ -10,12 +10,14 @@
 namespace pt {
 
 // Tests mesh-local primitive `local` of `blas` against (0, tMax); on a hit fills t, u, v and
-// primitive of `hit` (spheres set u = v = 0).
+// primitive of `hit` (spheres set u = v = 0). Without feature::kSpheres in kF every BLAS holds
+// triangles.
+template <uint32_t kF = kAllFeatures>
 PT_HD bool intersectBlasPrimitive(const RenderScene& scene, const BlasRef& blas, uint32_t local,
                                   const TraversalRay& ray, float tMax, Hit& hit) {
     const uint32_t global = blas.primitiveOffset + local;
     float t, u = 0.0f, v = 0.0f;
-    if (blas.kind == GeometryKind::Spheres) {
+    if (hasFeature<kF>(feature::kSpheres) && blas.kind == GeometryKind::Spheres) {
         if (!intersectSphere(ray.watertight.origin, ray.direction, tMax, scene.spheres[global], t)) {
             return false;
         }
@@ -34,7 +36,7 @@ PT_HD bool intersectBlasPrimitive(const RenderScene& scene, const BlasRef& blas,
 }
 
 // Leaf functor of walkBvh for one BLAS.
-template <class Count>
+template <uint32_t kF, class Count>
 struct BlasLeaf {
     const RenderScene& scene;
     const BlasRef& blas;
@@ -48,7 +50,7 @@ struct BlasLeaf {
         bool found = false;
         for (uint32_t i = first; i < first + count; ++i) {
             counter.primitive();
-            if (intersectBlasPrimitive(scene, blas, primIndices[i], ray, tMax, hit)) {
+            if (intersectBlasPrimitive<kF>(scene, blas, primIndices[i], ray, tMax, hit)) {
                 tMax = hit.t;
                 found = true;
                 if (anyHit) return true;
@@ -58,16 +60,16 @@ struct BlasLeaf {
     }
 };
 
-// Closest (or, with kAnyHit, any) hit of `ray` (already in the BLAS's object space) with
+// Closest (or, with anyHit, any) hit of `ray` (already in the BLAS's object space) with
 // t < tMax. On a hit, lowers tMax to it and fills hit.t/u/v/primitive; hit.instance is the
 // caller's business.
-template <bool kAnyHit, class Count>
+template <uint32_t kF = kAllFeatures, class Count>
 PT_HD bool traverseBlas(const RenderScene& scene, const BlasRef& blas, const TraversalRay& ray,
-                        float& tMax, Hit& hit, Count count) {
+                        float& tMax, Hit& hit, Count count, bool anyHit) {
     if (blas.primitiveCount == 0 || blas.nodeCount == 0) return false;
-    BlasLeaf<Count> leaf{scene, blas, scene.blasPrimIndices.data + blas.primIndexOffset, ray, hit, count,
-                         kAnyHit};
-    return walkBvh<kAnyHit>(scene.blasNodes.data + blas.nodeOffset, ray, tMax, leaf, count);
+    BlasLeaf<kF, Count> leaf{scene, blas, scene.blasPrimIndices.data + blas.primIndexOffset, ray, hit, count,
+                             anyHit};
+    return walkBvh(scene.blasNodes.data + blas.nodeOffset, ray, tMax, leaf, count, anyHit);
 }
 
 }  // namespace pt

@@ -7,9 +7,9 @@
 
 namespace pt {
 
-template <bool kAnyHit, class Count>
+template <class Count>
 PT_HD bool bruteForceIntersect(const RenderScene& scene, const Ray& worldRay, float& tMax, Hit& hit,
-                               Count count) {
+                               Count count, bool anyHit) {
     bool found = false;
     for (uint32_t index = 0; index < scene.instances.size(); ++index) {
         const RenderInstance& inst = scene.instances[index];
@@ -21,7 +21,7 @@ PT_HD bool bruteForceIntersect(const RenderScene& scene, const Ray& worldRay, fl
                 tMax = hit.t;
                 hit.instance = index;
                 found = true;
-                if (kAnyHit) return true;
+                if (anyHit) return true;
             }
         }
     }

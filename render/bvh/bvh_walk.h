@@ -110,10 +110,13 @@ PT_HD bool intersectBox(const TraversalRay& ray, Vec3 lo, Vec3 hi, float tMax, f
 
 // Walks the BVH `nodes` (root at index 0), nearest child first. `leaf(first, count, tMax)`
 // tests a leaf's primitives, lowers tMax on a closer hit and returns whether it hit; with
-// kAnyHit the walk stops at the first hit. Subtrees whose entry distance is beyond the current
-// tMax when popped are skipped. `count` is NoTraversalCount or TraversalCounter.
-template <bool kAnyHit, class LeafFn, class Count>
-PT_HD bool walkBvh(const BvhNode* nodes, const TraversalRay& ray, float& tMax, LeafFn& leaf, Count count) {
+// anyHit the walk stops at the first hit. Subtrees whose entry distance is beyond the current
+// tMax when popped are skipped. `count` is NoTraversalCount or TraversalCounter. anyHit is a
+// run-time argument so that one walk serves closest-hit and shadow rays alike (the megakernel
+// traces both through one call site; path_tracer.h); constant arguments fold away when inlined.
+template <class LeafFn, class Count>
+PT_HD bool walkBvh(const BvhNode* nodes, const TraversalRay& ray, float& tMax, LeafFn& leaf, Count count,
+                   bool anyHit) {
     uint32_t stackNode[kBvhStackSize];
     float stackEntry[kBvhStackSize];
     uint32_t size = 0;
@@ -127,7 +130,7 @@ PT_HD bool walkBvh(const BvhNode* nodes, const TraversalRay& ray, float& tMax, L
         if (node.isLeaf()) {
             if (leaf(node.leftOrFirst, node.count, tMax)) {
                 found = true;
-                if (kAnyHit) return true;
+                if (anyHit) return true;
             }
         } else {
             const uint32_t left = node.leftOrFirst;

@@ -14,8 +14,19 @@ PT_HD TraversalRay objectSpaceRay(const RenderInstance& inst, const Ray& worldRa
                             inst.worldToObject.transformVector(worldRay.direction));
 }
 
+// Closest (or any) hit of the world ray in instance `index` alone; on a hit sets hit.instance.
+template <uint32_t kF, class Count>
+PT_HD bool traverseInstance(const RenderScene& scene, uint32_t index, const Ray& worldRay, float& tMax, Hit& hit,
+                            Count count, bool anyHit) {
+    const RenderInstance& inst = scene.instances[index];
+    const TraversalRay ray = objectSpaceRay(inst, worldRay);
+    if (!traverseBlas<kF>(scene, scene.blases[inst.blas], ray, tMax, hit, count, anyHit)) return false;
+    hit.instance = index;
+    return true;
+}
+
 // Leaf functor of walkBvh for the TLAS: each entry of a leaf is an instance.
-template <class Count>
+template <uint32_t kF, class Count>
 struct TlasLeaf {
     const RenderScene& scene;
     const Ray& worldRay;
@@ -26,14 +37,7 @@ struct TlasLeaf {
     PT_HD bool operator()(uint32_t first, uint32_t count, float& tMax) {
         bool found = false;
         for (uint32_t i = first; i < first + count; ++i) {
-            const uint32_t index = scene.tlasInstanceIndices[i];
-            const RenderInstance& inst = scene.instances[index];
-            const TraversalRay ray = objectSpaceRay(inst, worldRay);
-            const BlasRef& blas = scene.blases[inst.blas];
-            const bool hitHere = anyHit ? traverseBlas<true>(scene, blas, ray, tMax, hit, counter)
-                                        : traverseBlas<false>(scene, blas, ray, tMax, hit, counter);
-            if (hitHere) {
-                hit.instance = index;
+            if (traverseInstance<kF>(scene, scene.tlasInstanceIndices[i], worldRay, tMax, hit, counter, anyHit)) {
                 found = true;
                 if (anyHit) return true;
             }
@@ -42,13 +46,20 @@ struct TlasLeaf {
     }
 };
 
-// Closest (or any) hit over all instances with t < tMax; lowers tMax and fills `hit`.
-template <bool kAnyHit, class Count>
-PT_HD bool traverseTlas(const RenderScene& scene, const Ray& worldRay, float& tMax, Hit& hit, Count count) {
-    if (scene.tlasNodes.empty() || scene.instances.empty()) return false;
+// Closest (or any) hit over all instances with t < tMax; lowers tMax and fills `hit`. A scene
+// of one instance walks its BLAS alone: it has no TLAS to speak of (and kernels specialised
+// without feature::kMultipleInstances carry no TLAS code).
+template <uint32_t kF = kAllFeatures, class Count>
+PT_HD bool traverseTlas(const RenderScene& scene, const Ray& worldRay, float& tMax, Hit& hit, Count count,
+                        bool anyHit) {
+    if (scene.instances.empty()) return false;
+    if (!hasFeature<kF>(feature::kMultipleInstances) || scene.instances.count == 1) {
+        return traverseInstance<kF>(scene, 0, worldRay, tMax, hit, count, anyHit);
+    }
+    if (scene.tlasNodes.empty()) return false;
     const TraversalRay ray = makeTraversalRay(worldRay.origin, worldRay.direction);
-    TlasLeaf<Count> leaf{scene, worldRay, hit, count, kAnyHit};
-    return walkBvh<kAnyHit>(scene.tlasNodes.data, ray, tMax, leaf, count);
+    TlasLeaf<kF, Count> leaf{scene, worldRay, hit, count, anyHit};
+    return walkBvh(scene.tlasNodes.data, ray, tMax, leaf, count, anyHit);
 }
 
 }  // namespace pt

@@ -20,8 +20,9 @@ PT_HD Vec3 absorptionCoefficient(const Material& m) {
 }
 
 // Transmittance over `distance` (may be infinite) inside the path's innermost volume.
+template <uint32_t kF = kAllFeatures>
 PT_HD Vec3 mediumTransmittance(const RenderScene& scene, const MediumStack& media, float distance) {
-    if (media.empty()) return Vec3(1.0f);
+    if (!hasFeature<kF>(feature::kVolume) || media.empty()) return Vec3(1.0f);
     const Vec3 sigma = absorptionCoefficient(scene.materials[media.innermost()]);
     Vec3 t(1.0f);
     for (int c = 0; c < 3; ++c) {
@@ -31,9 +32,11 @@ PT_HD Vec3 mediumTransmittance(const RenderScene& scene, const MediumStack& medi
 }
 
 // After a refraction through `material`: entering from its front face, or leaving by its back.
+template <uint32_t kF = kAllFeatures>
 PT_HD void crossVolumeBoundary(const RenderScene& scene, MediumStack& media, uint32_t material,
                                bool entering) {
-    if (!isVolumeBoundary(scene.materials[material])) return;
+    // Without absorbing volumes (scene_features.cpp) the stack would only ever give 1.
+    if (!hasFeature<kF>(feature::kVolume) || !isVolumeBoundary(scene.materials[material])) return;
     if (entering)
         media.enter(material);
     else

@@ -8,6 +8,10 @@
 // Alpha-transparent surfaces are passed through (alpha.h); paths inside volumetric
 // materials are attenuated by Beer-Lambert (medium.h). AOVs (aov.h) are recorded at the camera
 // ray's first visible surface where the caller passes an AovSample.
+//
+// Every stage takes the feature set kF it is compiled for (render/scene/scene_features.h):
+// the CUDA backend instantiates them per kernel variant, so a scene without textures, volumes,
+// clearcoat, ... runs code without them; the default, kAllFeatures, is the generic code.
 #include "render/bvh/traversal.h"
 #include "render/integrator/aov.h"
 #include "render/integrator/camera.h"
@@ -24,11 +28,14 @@
 
 namespace pt {
 
+template <uint32_t kF = kAllFeatures>
 PT_HD PathState generatePath(const RenderScene& scene, uint32_t x, uint32_t y, uint32_t sampleIndex) {
     const IntegratorSettings& s = scene.settings;
     PathState state{};
     state.sampler = {y * s.width + x, sampleIndex, s.seed};
-    state.ray = generateCameraRay(scene.camera, s.width, s.height, x, y,
+    RenderCamera camera = scene.camera;
+    if (!hasFeature<kF>(feature::kThinLens)) camera.lensRadius = 0.0f;  // a pinhole: no lens code
+    state.ray = generateCameraRay(camera, s.width, s.height, x, y,
                                   s.pixelJitter ? state.sampler.get2(SampleDims::kPixel) : Vec2(0.5f, 0.5f),
                                   state.sampler.get2(SampleDims::kLens));
     state.throughput = Vec3(1.0f);
@@ -61,20 +68,23 @@ PT_HD float bsdfSampledLightWeight(const RenderScene& scene, const PathState& st
 }
 
 // A ray that left the scene: the environment, weighted against NEE's environment sampling.
+template <uint32_t kF = kAllFeatures>
 PT_HD void shadeMiss(const RenderScene& scene, PathState& state) {
     state.alive = false;
-    state.throughput *= mediumTransmittance(scene, state.media, kInf);  // an unclosed volume
+    state.throughput *= mediumTransmittance<kF>(scene, state.media, kInf);  // an unclosed volume
+    if (!hasFeature<kF>(feature::kConstantEnvironment | feature::kImageEnvironment)) return;  // black
     if (isBlack(state.throughput)) return;
     const Vec3 direction = state.ray.direction;
-    const float lightPdf = state.lastWasDelta ? 0.0f : environmentLightPdf(scene, direction);
+    const float lightPdf = state.lastWasDelta ? 0.0f : environmentLightPdf<kF>(scene, direction);
     const float weight = bsdfSampledLightWeight(scene, state, lightPdf);
     if (weight > 0.0f) {
-        const Vec3 light = state.throughput * environmentRadiance(scene, direction) * weight;
+        const Vec3 light = state.throughput * environmentRadiance<kF>(scene, direction) * weight;
         state.radiance += clampIndirect(scene, light, state.depth >= 2);
     }
 }
 
 // Emission seen by the path's last segment, weighted against NEE where NEE could have found it.
+template <uint32_t kF = kAllFeatures>
 PT_HD void addSurfaceEmission(const RenderScene& scene, PathState& state, const SurfaceHit& surface) {
     const Material& m = scene.materials[surface.material];
     if (!m.isEmissive() || !surface.frontFace) return;
@@ -83,11 +93,13 @@ PT_HD void addSurfaceEmission(const RenderScene& scene, PathState& state, const 
         lightPdf = surface.kind == GeometryKind::Triangles
                        ? triangleLightPdf(scene, surface.instance, surface.primitive, state.lastVertex,
                                           surface.position, surface.geometricNormal)
-                       : sphereLightPdf(scene, surface.instance, surface.primitive, state.lastVertex);
+                   : hasFeature<kF>(feature::kSphereLights)
+                       ? sphereLightPdf(scene, surface.instance, surface.primitive, state.lastVertex)
+                       : 0.0f;
     }
     const float weight = bsdfSampledLightWeight(scene, state, lightPdf);
     if (weight > 0.0f) {
-        const Vec3 light = state.throughput * emittedRadiance(scene, m, surface.uv) * weight;
+        const Vec3 light = state.throughput * emittedRadiance<kF>(scene, m, surface.uv) * weight;
         state.radiance += clampIndirect(scene, light, state.depth >= 2);
     }
 }
@@ -95,23 +107,24 @@ PT_HD void addSurfaceEmission(const RenderScene& scene, PathState& state, const 
 // Next-event estimation: one light sample, MIS-weighted against the BSDF for area lights and
 // the environment, at full weight for delta (punctual) lights. The shadow ray is traced by
 // the scheduler; `contribution` counts if it is unoccluded.
+template <uint32_t kF = kAllFeatures>
 PT_HD ShadowRay sampleDirectLight(const RenderScene& scene, const PathState& state,
                                   const SurfaceHit& surface, const BsdfParams& bsdf,
                                   const Frame& frame, Vec3 wo, uint32_t dims) {
     ShadowRay shadow{};
     LightSample light;
-    if (!sampleLight(scene, surface.position, state.sampler.get(dims + SampleDims::kLightPick),
+    if (!sampleLight<kF>(scene, surface.position, state.sampler.get(dims + SampleDims::kLightPick),
                      state.sampler.get2(dims + SampleDims::kLightPoint), light)) {
         return shadow;
     }
-    const BsdfEval eval = evalBsdfWithPdf(bsdf, frame, wo, light.wi);
+    const BsdfEval eval = evalBsdfWithPdf<kF>(bsdf, frame, wo, light.wi);
     const Vec3 f = eval.value;
     if (isBlack(f) || isBlack(light.radiance)) return shadow;
     const float weight =
         !light.delta && scene.settings.multipleImportance ? powerHeuristic(light.pdf, eval.pdf) : 1.0f;
     shadow.ray = shadowRayTo(surface, light);
     const Vec3 contribution = state.throughput * f * light.radiance * (weight / light.pdf) *
-                              mediumTransmittance(scene, state.media, light.distance);
+                              mediumTransmittance<kF>(scene, state.media, light.distance);
     shadow.contribution = clampIndirect(scene, contribution, state.depth >= 1);
     shadow.valid = !isBlack(shadow.contribution);
     return shadow;
@@ -130,33 +143,35 @@ PT_HD bool surviveRoulette(const RenderScene& scene, PathState& state, uint32_t 
 // path). `hit` is the closest hit of `state.ray`. A surface that is alpha-transparent there
 // only moves the ray past it (transparency.h). On the camera segment, a non-null `aov`
 // receives the surface the camera sees (all but its cost); elsewhere it is left alone.
+template <uint32_t kF = kAllFeatures>
 PT_HD ShadowRay shadeSurface(const RenderScene& scene, PathState& state, const Hit& hit,
                              AovSample* aov = nullptr) {
     ShadowRay shadow{};
-    state.throughput *= mediumTransmittance(scene, state.media, hit.t);  // the ray is unit length
-    SurfaceHit surface = surfaceAt(scene, state.ray, hit);
-    if (passTransparentSurface(scene, state, surface, hit)) return shadow;
+    state.throughput *= mediumTransmittance<kF>(scene, state.media, hit.t);  // the ray is unit length
+    SurfaceHit surface = surfaceAt<kF>(scene, state.ray, hit);
+    if (passTransparentSurface<kF>(scene, state, surface, hit)) return shadow;
     state.transparentHits = 0;
-    applyNormalMap(scene, hit, surface);
+    applyNormalMap<kF>(scene, hit, surface);
     // Until the first bounce, lastVertex is still the camera ray's origin.
     if (aov && state.depth == 0) recordAovSurface(scene, surface, state.lastVertex, *aov);
-    addSurfaceEmission(scene, state, surface);
+    addSurfaceEmission<kF>(scene, state, surface);
     if (state.depth >= scene.settings.maxDepth) {
         state.alive = false;
         return shadow;
     }
     const Material& m = scene.materials[surface.material];
-    const BsdfParams bsdf = bsdfParamsAt(scene, m, surface.uv);
+    const BsdfParams bsdf = bsdfParamsAt<kF>(scene, m, surface.uv);
     // Shade the side the ray arrived on, except for glass, which needs to know in from out.
-    const bool twoSidedFlip = !surface.frontFace && !isTransmissive(bsdf);
+    const bool twoSidedFlip =
+        !surface.frontFace && !(hasFeature<kF>(feature::kTransmission) && isTransmissive(bsdf));
     const Frame frame = Frame::fromNormal(twoSidedFlip ? -surface.shadingNormal : surface.shadingNormal);
     const Vec3 wo = -state.ray.direction;
     const uint32_t dims = SampleDims::bounce(state.depth);
 
-    if (neeEnabled(scene) && hasNonDeltaLobes(bsdf)) {
-        shadow = sampleDirectLight(scene, state, surface, bsdf, frame, wo, dims);
+    if (neeEnabled(scene) && hasNonDeltaLobes<kF>(bsdf)) {
+        shadow = sampleDirectLight<kF>(scene, state, surface, bsdf, frame, wo, dims);
     }
-    const BsdfSample s = sampleBsdf(bsdf, frame, wo, state.sampler.get(dims + SampleDims::kBsdfLobe),
+    const BsdfSample s = sampleBsdf<kF>(bsdf, frame, wo, state.sampler.get(dims + SampleDims::kBsdfLobe),
                                     state.sampler.get2(dims + SampleDims::kBsdfDir));
     // The sampled direction must leave on the side the BSDF meant (shading normals can
     // disagree with the geometry); otherwise light would leak through the surface.
@@ -170,7 +185,7 @@ PT_HD ShadowRay shadeSurface(const RenderScene& scene, PathState& state, const H
     if (s.transmitted) {
         const float eta = surface.frontFace ? bsdf.ior : 1.0f / bsdf.ior;
         state.etaScale *= eta * eta;
-        crossVolumeBoundary(scene, state.media, surface.material, surface.frontFace);
+        crossVolumeBoundary<kF>(scene, state.media, surface.material, surface.frontFace);
     }
     state.lastVertex = surface.position;
     state.lastBsdfPdf = s.pdf;
@@ -183,26 +198,57 @@ PT_HD ShadowRay shadeSurface(const RenderScene& scene, PathState& state, const H
     return shadow;
 }
 
+// tracePath's loop where neither AOVs nor transparent surfaces are in play: each iteration
+// traces one ray, the shadow ray the last shading queued or else the path's next segment, at
+// one call site (intersectScene). A warp whose threads are at different stages then walks the
+// BVH together instead of twice in turn, and the kernel holds one copy of the walk. The rays,
+// their order and the sums are those of the plain loop, so images match it bit for bit.
+template <uint32_t kF>
+PT_HD void traceFusedPath(const RenderScene& scene, PathState& state, PathCounters& counters) {
+    ShadowRay shadow{};
+    for (;;) {
+        const bool shadowTurn = shadow.valid;
+        if (!shadowTurn && !state.alive) break;
+        Hit hit;
+        ++counters.rays;
+        const bool found = intersectScene<kF>(scene, shadowTurn ? shadow.ray : state.ray, shadowTurn, hit);
+        if (shadowTurn) {
+            if (!found) state.radiance += shadow.contribution;
+            shadow.valid = false;
+            continue;
+        }
+        if (!found) {
+            shadeMiss<kF>(scene, state);
+            break;
+        }
+        shadow = shadeSurface<kF>(scene, state, hit);
+    }
+}
+
 // One sample of pixel (x, y): the megakernel schedule of the stages above. With kAovs, `aov`
 // receives the sample's AOVs, the camera segment's traversal work included; without, it is
 // ignored and the loop is compiled with no AOV code at all (the choice is the caller's, once).
-template <bool kAovs = false>
+template <bool kAovs = false, uint32_t kF = kAllFeatures>
 PT_HD Vec3 tracePath(const RenderScene& scene, uint32_t x, uint32_t y, uint32_t sampleIndex,
                      PathCounters& counters, AovSample* aovOut = nullptr) {
     AovSample* const aov = kAovs ? aovOut : nullptr;
-    PathState state = generatePath(scene, x, y, sampleIndex);
-    if (kAovs) *aovOut = AovSample{};
-    while (state.alive) {
-        Hit hit;
-        ++counters.rays;
-        TraversalStats* cost = aov && state.depth == 0 ? &aov->cost : nullptr;
-        if (!intersectClosest(scene, state.ray, hit, cost)) {
-            shadeMiss(scene, state);
-            break;
-        }
-        const ShadowRay shadow = shadeSurface(scene, state, hit, aov);
-        if (shadow.valid && shadowRayUnoccluded(scene, shadow.ray, state.sampler, state.depth, counters)) {
-            state.radiance += shadow.contribution;
+    PathState state = generatePath<kF>(scene, x, y, sampleIndex);
+    if constexpr (!kAovs && !hasFeature<kF>(feature::kTransparency)) {
+        traceFusedPath<kF>(scene, state, counters);
+    } else {
+        if (kAovs) *aovOut = AovSample{};
+        while (state.alive) {
+            Hit hit;
+            ++counters.rays;
+            TraversalStats* cost = aov && state.depth == 0 ? &aov->cost : nullptr;
+            if (!intersectClosest<kF>(scene, state.ray, hit, cost)) {
+                shadeMiss<kF>(scene, state);
+                break;
+            }
+            const ShadowRay shadow = shadeSurface<kF>(scene, state, hit, aov);
+            if (shadow.valid && shadowRayUnoccluded<kF>(scene, shadow.ray, state.sampler, state.depth, counters)) {
+                state.radiance += shadow.contribution;
+            }
         }
     }
     if (!isFinite(state.radiance)) {

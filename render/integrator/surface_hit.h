@@ -29,6 +29,7 @@ struct SurfaceHit {
     GeometryKind kind;
 };
 
+template <uint32_t kF = kAllFeatures>
 PT_HD SurfaceHit triangleSurface(const RenderScene& scene, const RenderInstance& inst, const BlasRef& blas,
                                  const Hit& hit) {
     SurfaceHit s{};
@@ -51,7 +52,10 @@ PT_HD SurfaceHit triangleSurface(const RenderScene& scene, const RenderInstance&
             s.shadingNormal = dot(ns, ng) > 0.0f ? ns : ng;
         }
     }
-    if (blas.hasUvs) s.uv = scene.uvs[t.v0] * b0 + scene.uvs[t.v1] * hit.u + scene.uvs[t.v2] * hit.v;
+    // UVs feed textures and AOVs alone; kernels with neither never read them.
+    constexpr bool kReadsUv = hasFeature<kF>(feature::kTextures | feature::kNormalMap | feature::kAlphaMask |
+                                             feature::kAlphaBlend | feature::kAovs);
+    if (kReadsUv && blas.hasUvs) s.uv = scene.uvs[t.v0] * b0 + scene.uvs[t.v1] * hit.u + scene.uvs[t.v2] * hit.v;
     s.material = scene.instanceMaterials[inst.materialOffset +
                                          scene.triangleSlots[blas.primitiveOffset + hit.primitive]];
     s.kind = GeometryKind::Triangles;
@@ -78,11 +82,13 @@ PT_HD SurfaceHit sphereSurface(const RenderScene& scene, const RenderInstance& i
     return s;
 }
 
+template <uint32_t kF = kAllFeatures>
 PT_HD SurfaceHit surfaceAt(const RenderScene& scene, const Ray& worldRay, const Hit& hit) {
     const RenderInstance& inst = scene.instances[hit.instance];
     const BlasRef& blas = scene.blases[inst.blas];
-    SurfaceHit s = blas.kind == GeometryKind::Spheres ? sphereSurface(scene, inst, blas, worldRay, hit)
-                                                      : triangleSurface(scene, inst, blas, hit);
+    SurfaceHit s = hasFeature<kF>(feature::kSpheres) && blas.kind == GeometryKind::Spheres
+                       ? sphereSurface(scene, inst, blas, worldRay, hit)
+                       : triangleSurface<kF>(scene, inst, blas, hit);
     s.frontFace = dot(worldRay.direction, s.geometricNormal) < 0.0f;
     s.instance = hit.instance;
     s.primitive = hit.primitive;
@@ -131,7 +137,9 @@ PT_HD bool objectTangent(const RenderScene& scene, const SurfaceHit& s, const Hi
 
 // Tangent-space normal mapping (glTF normalTexture, scaled in X and Y by normalScale). The
 // result stays on the front side of the geometry, like interpolated vertex normals.
+template <uint32_t kF = kAllFeatures>
 PT_HD void applyNormalMap(const RenderScene& scene, const Hit& hit, SurfaceHit& s) {
+    if (!hasFeature<kF>(feature::kNormalMap)) return;
     const Material& m = scene.materials[s.material];
     if (!m.normalTexture.present()) return;
     Vec3 tangentObject;

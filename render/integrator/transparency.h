@@ -33,32 +33,38 @@ PT_HD Ray continuePast(const Ray& ray, const SurfaceHit& surface, float hitT) {
 
 // Whether nothing opaque lies on `ray` (0 < t < tMax). `depth` names the bounce the ray
 // leaves from, for the stochastic-transparency numbers.
+template <uint32_t kF = kAllFeatures>
 PT_HD bool shadowRayUnoccluded(const RenderScene& scene, Ray ray, const PathSampler& sampler, uint32_t depth,
                                PathCounters& counters) {
     ++counters.rays;
-    if (!intersectAny(scene, ray)) return true;
-    if (!scene.transparentMaterials) return false;
-    for (uint32_t layer = 0; layer < SampleDims::kAlphaLayers; ++layer) {
-        Hit hit;
-        ++counters.rays;
-        if (!intersectClosest(scene, ray, hit)) return true;
-        const SurfaceHit surface = surfaceAt(scene, ray, hit);
-        const Material& m = scene.materials[surface.material];
-        if (!passesThrough(scene, m, surface.uv, surface.frontFace, sampler.get(SampleDims::shadowAlpha(depth, layer))))
-            return false;
-        ray = continuePast(ray, surface, hit.t);
-        if (!(ray.tMax > 0.0f)) return true;
+    if (!intersectAny<kF>(scene, ray)) return true;
+    if constexpr (!hasFeature<kF>(feature::kTransparency)) {
+        return false;  // no surface lets rays through: the first hit blocks
+    } else {
+        if (!scene.transparentMaterials) return false;
+        for (uint32_t layer = 0; layer < SampleDims::kAlphaLayers; ++layer) {
+            Hit hit;
+            ++counters.rays;
+            if (!intersectClosest<kF>(scene, ray, hit)) return true;
+            const SurfaceHit surface = surfaceAt<kF>(scene, ray, hit);
+            const Material& m = scene.materials[surface.material];
+            const float u = sampler.get(SampleDims::shadowAlpha(depth, layer));
+            if (!passesThrough<kF>(scene, m, surface.uv, surface.frontFace, u)) return false;
+            ray = continuePast(ray, surface, hit.t);
+            if (!(ray.tMax > 0.0f)) return true;
+        }
+        return false;
     }
-    return false;
 }
 
 // If the surface `state.ray` hit is transparent there, moves the ray past it and returns true.
+template <uint32_t kF = kAllFeatures>
 PT_HD bool passTransparentSurface(const RenderScene& scene, PathState& state, const SurfaceHit& surface,
                                   const Hit& hit) {
-    if (!scene.transparentMaterials || state.transparentHits >= SampleDims::kAlphaLayers) return false;
+    if (!hasFeature<kF>(feature::kTransparency) || !scene.transparentMaterials || state.transparentHits >= SampleDims::kAlphaLayers) return false;
     const Material& m = scene.materials[surface.material];
     const float u = state.sampler.get(SampleDims::alpha(state.depth, state.transparentHits));
-    if (!passesThrough(scene, m, surface.uv, surface.frontFace, u)) return false;
+    if (!passesThrough<kF>(scene, m, surface.uv, surface.frontFace, u)) return false;
     ++state.transparentHits;
     state.ray = continuePast(state.ray, surface, hit.t);
     return true;

@@ -61,9 +61,10 @@ PT_HD float triangleLightWeight(const WorldTriangle& tri, const Material& m) {
     return tri.area * luminance(m.emittedRadiance());
 }
 
+template <uint32_t kF = kAllFeatures>
 PT_HD Vec3 emittedRadiance(const RenderScene& scene, const Material& m, Vec2 uv) {
     Vec3 e = m.emittedRadiance();
-    if (m.emissiveTexture.present()) e *= sampleTexture(scene, m.emissiveTexture, uv, true).xyz();
+    if (hasFeature<kF>(feature::kEmissiveTexture) && m.emissiveTexture.present()) e *= sampleTexture(scene, m.emissiveTexture, uv, true).xyz();
     return e;
 }
 
@@ -76,6 +77,7 @@ struct EmitterSample {
 };
 
 // A uniform point on triangle `primitive` of instance `instanceIndex`.
+template <uint32_t kF = kAllFeatures>
 PT_HD bool sampleEmitterTriangle(const RenderScene& scene, uint32_t instanceIndex, uint32_t primitive,
                                  Vec2 uPoint, EmitterSample& out) {
     const WorldTriangle tri = worldTriangle(scene, instanceIndex, primitive);
@@ -94,12 +96,12 @@ PT_HD bool sampleEmitterTriangle(const RenderScene& scene, uint32_t instanceInde
     out.area = tri.area;
     const Material& m = emitterMaterial(scene, instanceIndex, primitive, GeometryKind::Triangles);
     Vec2 uv{0.0f, 0.0f};
-    if (blas.hasUvs) {
+    if (hasFeature<kF>(feature::kEmissiveTexture | feature::kTransparency) && blas.hasUvs) {
         uv = scene.uvs[t.v0] * (1.0f - b.x - b.y) + scene.uvs[t.v1] * b.x + scene.uvs[t.v2] * b.y;
     }
     // Where the emitter is alpha-transparent, rays that hit it pass through (transparency.h);
     // NEE sees it with the same expected coverage.
-    out.radiance = emittedRadiance(scene, m, uv) * surfaceCoverage(scene, m, uv);
+    out.radiance = emittedRadiance<kF>(scene, m, uv) * surfaceCoverage<kF>(scene, m, uv);
     return true;
 }
 

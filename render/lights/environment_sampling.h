@@ -34,14 +34,16 @@ PT_HD float samplePiecewiseConstant(const float* cdf, uint32_t n, float u, uint3
     return (float(index) + frac) / float(n);
 }
 
+template <uint32_t kF = kAllFeatures>
 PT_HD bool environmentIsImportanceSampled(const RenderScene& scene) {
-    return scene.environment.texture >= 0 && scene.environment.distWidth > 0;
+    return hasFeature<kF>(feature::kImageEnvironment) && scene.environment.texture >= 0 && scene.environment.distWidth > 0;
 }
 
 // Density over solid angle with which sampleEnvironmentDirection() picks `direction` (unit).
+template <uint32_t kF = kAllFeatures>
 PT_HD float environmentDirectionPdf(const RenderScene& scene, Vec3 direction) {
     const RenderEnvironment& env = scene.environment;
-    if (!environmentIsImportanceSampled(scene)) return 1.0f / (4.0f * kPi);
+    if (!environmentIsImportanceSampled<kF>(scene)) return 1.0f / (4.0f * kPi);
     // From x and z rather than 1 - y^2, which rounds to 0 within 3e-4 radians of a pole.
     const float sinTheta = sqrtf(direction.x * direction.x + direction.z * direction.z);
     if (!(sinTheta > 0.0f)) return 0.0f;
@@ -52,9 +54,10 @@ PT_HD float environmentDirectionPdf(const RenderScene& scene, Vec3 direction) {
 }
 
 // A direction towards the environment and its solid-angle density; false when none.
+template <uint32_t kF = kAllFeatures>
 PT_HD bool sampleEnvironmentDirection(const RenderScene& scene, Vec2 u, Vec3& direction, float& pdf) {
     const RenderEnvironment& env = scene.environment;
-    if (!environmentIsImportanceSampled(scene)) {
+    if (!environmentIsImportanceSampled<kF>(scene)) {
         const float z = 1.0f - 2.0f * u.x;
         const float r = sqrtf(fmaxf(0.0f, 1.0f - z * z));
         const float phi = 2.0f * kPi * u.y;

@@ -28,10 +28,11 @@ PT_HD float lightPickProbability(const RenderScene& scene, float weight) {
     return scene.emitterTotalWeight > 0.0f ? weight / scene.emitterTotalWeight : 0.0f;
 }
 
+template <uint32_t kF = kAllFeatures>
 PT_HD bool sampleTriangleLight(const RenderScene& scene, const Emitter& e, Vec3 ref, Vec2 u,
                                LightSample& out) {
     EmitterSample s;
-    if (!sampleEmitterTriangle(scene, e.instance, e.primitive, u, s)) return false;
+    if (!sampleEmitterTriangle<kF>(scene, e.instance, e.primitive, u, s)) return false;
     const Vec3 toLight = s.point - ref;
     const float distance2 = lengthSquared(toLight);
     if (!(distance2 > 0.0f)) return false;
@@ -49,6 +50,7 @@ PT_HD bool sampleTriangleLight(const RenderScene& scene, const Emitter& e, Vec3 
     return isFinite(out.pdf) && out.pdf > 0.0f;
 }
 
+template <uint32_t kF = kAllFeatures>
 PT_HD bool sampleSphereLight(const RenderScene& scene, const Emitter& e, Vec3 ref, Vec2 u, LightSample& out) {
     WorldSphere sphere;
     if (!worldSphere(scene, e.instance, e.primitive, sphere)) return false;
@@ -61,16 +63,17 @@ PT_HD bool sampleSphereLight(const RenderScene& scene, const Emitter& e, Vec3 re
     out.pointError = spherePointError(inst, object);
     out.normal = s.normal;
     out.distance = s.distance;
-    out.radiance = sphereEmittedRadiance(scene, e.instance, e.primitive, s.point);
+    out.radiance = sphereEmittedRadiance<kF>(scene, e.instance, e.primitive, s.point);
     out.pdf = lightPickProbability(scene, e.weight) * s.pdf;
     out.delta = false;
     return isFinite(out.pdf) && out.pdf > 0.0f;
 }
 
+template <uint32_t kF = kAllFeatures>
 PT_HD bool sampleEnvironmentLight(const RenderScene& scene, const Emitter& e, Vec2 u, LightSample& out) {
     float pdf;
-    if (!sampleEnvironmentDirection(scene, u, out.wi, pdf)) return false;
-    out.radiance = environmentRadiance(scene, out.wi);
+    if (!sampleEnvironmentDirection<kF>(scene, u, out.wi, pdf)) return false;
+    out.radiance = environmentRadiance<kF>(scene, out.wi);
     out.point = Vec3(0.0f);
     out.pointError = Vec3(0.0f);
     out.normal = Vec3(0.0f);
@@ -81,17 +84,22 @@ PT_HD bool sampleEnvironmentLight(const RenderScene& scene, const Emitter& e, Ve
 }
 
 // One light sample for shading point `ref`: `uPick` chooses the light, `uPoint` the point.
+// Kinds of light the kernel's feature set kF leaves out are never in the scene's table.
+template <uint32_t kF = kAllFeatures>
 PT_HD bool sampleLight(const RenderScene& scene, Vec3 ref, float uPick, Vec2 uPoint, LightSample& out) {
     if (scene.emitterAlias.count == 0) return false;
     const Emitter& e = scene.emitters[sampleAliasTable(scene.emitterAlias, uPick)];
     switch (e.kind) {
         case LightKind::Triangle:
-            return sampleTriangleLight(scene, e, ref, uPoint, out);
+            return sampleTriangleLight<kF>(scene, e, ref, uPoint, out);
         case LightKind::Sphere:
-            return sampleSphereLight(scene, e, ref, uPoint, out);
+            if (!hasFeature<kF>(feature::kSphereLights)) return false;
+            return sampleSphereLight<kF>(scene, e, ref, uPoint, out);
         case LightKind::Environment:
-            return sampleEnvironmentLight(scene, e, uPoint, out);
+            if (!hasFeature<kF>(feature::kConstantEnvironment | feature::kImageEnvironment)) return false;
+            return sampleEnvironmentLight<kF>(scene, e, uPoint, out);
         case LightKind::Punctual: {
+            if (!hasFeature<kF>(feature::kPunctualLights)) return false;
             PunctualSample s;
             if (!samplePunctualLight(scene.punctualLights[e.instance], ref, s)) return false;
             out.wi = s.wi;
@@ -132,9 +140,11 @@ PT_HD float sphereLightPdf(const RenderScene& scene, uint32_t instance, uint32_t
 }
 
 // The same for a ray that left the scene in `direction` (unit).
+template <uint32_t kF = kAllFeatures>
 PT_HD float environmentLightPdf(const RenderScene& scene, Vec3 direction) {
+    if (!hasFeature<kF>(feature::kConstantEnvironment | feature::kImageEnvironment)) return 0.0f;
     const float pick = lightPickProbability(scene, scene.environment.lightWeight);
-    return pick > 0.0f ? pick * environmentDirectionPdf(scene, direction) : 0.0f;
+    return pick > 0.0f ? pick * environmentDirectionPdf<kF>(scene, direction) : 0.0f;
 }
 
 }  // namespace pt

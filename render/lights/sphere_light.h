@@ -102,6 +102,7 @@ PT_HD bool sampleSphereCone(const WorldSphere& sphere, Vec3 ref, Vec2 u, SphereC
 
 // Radiance leaving the front of sphere `primitive` of instance `instanceIndex` at world
 // `point`, times the surface's alpha coverage there (as NEE sees it; see emitter_sample.h).
+template <uint32_t kF = kAllFeatures>
 PT_HD Vec3 sphereEmittedRadiance(const RenderScene& scene, uint32_t instanceIndex, uint32_t primitive,
                                  Vec3 point) {
     const RenderInstance& inst = scene.instances[instanceIndex];
@@ -109,10 +110,11 @@ PT_HD Vec3 sphereEmittedRadiance(const RenderScene& scene, uint32_t instanceInde
     const Vec4 s = scene.spheres[blas.primitiveOffset + primitive];
     const Material& m = emitterMaterial(scene, instanceIndex, primitive, GeometryKind::Spheres);
     Vec2 uv{0.0f, 0.0f};
-    if (m.emissiveTexture.present() || materialMayBeTransparent(m)) {
+    if (hasFeature<kF>(feature::kEmissiveTexture | feature::kTransparency) &&
+        (m.emissiveTexture.present() || materialMayBeTransparent(m))) {
         uv = sphereUv(normalize(objectSpacePoint(inst, point) - s.xyz()));
     }
-    return emittedRadiance(scene, m, uv) * surfaceCoverage(scene, m, uv);
+    return emittedRadiance<kF>(scene, m, uv) * surfaceCoverage<kF>(scene, m, uv);
 }
 
 }  // namespace pt

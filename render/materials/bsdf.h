@@ -16,11 +16,16 @@
 // picks a lobe with probability proportional to its estimated albedo at wo; for a non-delta
 // direction it returns the weight and pdf of the whole non-delta mixture (one-sample MIS over
 // the lobes), so pdfBsdf() is exactly the density of the directions it produces.
+//
+// kF, a scene feature set (scene_features.h), leaves out the coat without feature::kClearcoat
+// and the glass lobe without feature::kTransmission: kernels specialised on a scene with
+// neither carry no code for them. The parameters must then have clearcoat 0 and transmission 0.
 #include "render/materials/clearcoat.h"
 #include "render/materials/layered_diffuse.h"
 #include "render/materials/rough_dielectric.h"
 #include "render/math/frame.h"
 #include "render/sampling/warp.h"
+#include "render/scene/scene_features.h"
 
 namespace pt {
 
@@ -80,18 +85,21 @@ PT_HD bool isDeltaLobe(const Lobes& l, int lobe) {
     }
 }
 
+template <uint32_t kF = kAllFeatures>
 PT_HD Lobes resolveLobes(const BsdfParams& p, Vec3 wo) {
+    constexpr bool kCoatLobe = hasFeature<kF>(feature::kClearcoat);
+    constexpr bool kGlassLobe = hasFeature<kF>(feature::kTransmission);
     Lobes l{};
     const bool front = wo.z > 0.0f;
     const float muO = front ? wo.z : 0.0f;
     const float metallic = clampf(p.metallic, 0.0f, 1.0f);
-    const float transmission = clampf(p.transmission, 0.0f, 1.0f);
+    const float transmission = kGlassLobe ? clampf(p.transmission, 0.0f, 1.0f) : 0.0f;
     const float specular = clampf(p.specular, 0.0f, 1.0f);
     const float ior = p.ior > 0.0f ? p.ior : 1.0f;
     const float opaque = (1.0f - metallic) * (1.0f - transmission);
     l.alpha = ggxAlpha(p.roughness);
-    l.coatAlpha = ggxAlpha(p.clearcoatRoughness);
-    l.coat = clearcoatWeight(p.clearcoat, muO);
+    l.coatAlpha = kCoatLobe ? ggxAlpha(p.clearcoatRoughness) : 0.0f;
+    l.coat = kCoatLobe ? clearcoatWeight(p.clearcoat, muO) : 0.0f;
     const float base = 1.0f - l.coat;
 
     // KHR_materials_specular: F0 = min(F0(ior) specularColor, 1) specular, F90 = specular.
@@ -112,14 +120,14 @@ PT_HD Lobes resolveLobes(const BsdfParams& p, Vec3 wo) {
             l.diffuse = p.baseColor * (base * opaque) * diffuseLayerScale(l.layer, transmittanceO);
             a[kDiffuse] = base * opaque * maxComponent(p.baseColor * transmittanceO);
         }
-        if (l.coat > 0.0f) {
+        if (kCoatLobe && l.coat > 0.0f) {
             const SpecularAlbedo coatAlbedo = ggxSpecularAlbedo(muO, l.coatAlpha);
             a[kCoat] = l.coat * (coatAlbedo.f0Part + coatAlbedo.f90Part);
         }
     }
     l.glass = (1.0f - metallic) * transmission * base;
     l.interface = {l.alpha, ior, vmin(p.specularColor * specular, Vec3(1.0f)), p.baseColor};
-    if (l.glass > 0.0f) {
+    if (kGlassLobe && l.glass > 0.0f) {
         const float f = fresnelDielectric(fabsf(wo.z), relativeEta(l.interface, wo));
         const float transmit = maxComponent(l.interface.transmitTint);
         // Not below a tenth of the refracted share: rough microfacets refract where the
@@ -134,23 +142,25 @@ PT_HD Lobes resolveLobes(const BsdfParams& p, Vec3 wo) {
 }
 
 // f * |cos(wi)| and the mixture pdf over the non-delta lobes, in the shading frame.
+template <uint32_t kF = kAllFeatures>
 PT_HD Vec3 evalLobes(const Lobes& l, Vec3 wo, Vec3 wi) {
     Vec3 f(0.0f);
     if (wo.z > 0.0f && wi.z > 0.0f) {
-        if (l.coat > 0.0f && !isDeltaLobe(l, kCoat)) f += evalClearcoat(wo, wi, l.coatAlpha) * l.coat;
+        if (hasFeature<kF>(feature::kClearcoat) && l.coat > 0.0f && !isDeltaLobe(l, kCoat)) f += evalClearcoat(wo, wi, l.coatAlpha) * l.coat;
         if (!isZero(l.specF90 + l.specF0) && !isDeltaLobe(l, kSpecular)) {
             f += evalGgxReflection(wo, wi, l.alpha, l.specF0, l.specF90);
         }
         if (!isZero(l.diffuse)) f += evalLayeredDiffuse(l.layer, l.diffuse, wi);
     }
-    if (l.glass > 0.0f && !isDeltaLobe(l, kGlass)) f += evalRoughDielectric(l.interface, wo, wi) * l.glass;
+    if (hasFeature<kF>(feature::kTransmission) && l.glass > 0.0f && !isDeltaLobe(l, kGlass)) f += evalRoughDielectric(l.interface, wo, wi) * l.glass;
     return f;
 }
 
+template <uint32_t kF = kAllFeatures>
 PT_HD float pdfLobes(const Lobes& l, Vec3 wo, Vec3 wi) {
     float pdf = 0.0f;
     if (wo.z > 0.0f && wi.z > 0.0f) {
-        if (l.probability[kCoat] > 0.0f && !isDeltaLobe(l, kCoat)) {
+        if (hasFeature<kF>(feature::kClearcoat) && l.probability[kCoat] > 0.0f && !isDeltaLobe(l, kCoat)) {
             pdf += l.probability[kCoat] * pdfGgxReflection(wo, wi, l.coatAlpha);
         }
         if (l.probability[kSpecular] > 0.0f && !isDeltaLobe(l, kSpecular)) {
@@ -158,17 +168,19 @@ PT_HD float pdfLobes(const Lobes& l, Vec3 wo, Vec3 wi) {
         }
         pdf += l.probability[kDiffuse] * cosineHemispherePdf(wi.z);
     }
-    if (l.probability[kGlass] > 0.0f && !isDeltaLobe(l, kGlass)) {
+    if (hasFeature<kF>(feature::kTransmission) && l.probability[kGlass] > 0.0f && !isDeltaLobe(l, kGlass)) {
         pdf += l.probability[kGlass] * pdfRoughDielectric(l.interface, wo, wi);
     }
     return pdf;
 }
 
 // Samples the chosen lobe alone; the weight includes the lobe's mix weight.
+template <uint32_t kF = kAllFeatures>
 PT_HD LobeSample sampleLobe(const Lobes& l, int lobe, Vec3 wo, float uChoice, Vec2 uDir) {
     LobeSample s{};
     switch (lobe) {
         case kCoat:
+            if (!hasFeature<kF>(feature::kClearcoat)) return s;
             s = isDeltaLobe(l, kCoat) ? sampleSmoothReflection(wo, Vec3(1.0f), Vec3(1.0f))
                                       : sampleGgxReflection(wo, l.coatAlpha, Vec3(1.0f), Vec3(1.0f), uDir);
             s.weight *= l.coat;
@@ -183,6 +195,7 @@ PT_HD LobeSample sampleLobe(const Lobes& l, int lobe, Vec3 wo, float uChoice, Ve
             s.weight = l.diffuse * layerTransmittance(l.layer, s.wi.z);  // the cos / pi cancel
             return s;
         default:
+            if (!hasFeature<kF>(feature::kTransmission)) return s;
             s = isDeltaLobe(l, kGlass) ? sampleSmoothDielectric(l.interface, wo, uChoice)
                                        : sampleRoughDielectric(l.interface, wo, uChoice, uDir);
             s.weight *= l.glass;
@@ -200,15 +213,17 @@ PT_HD int nonDeltaLobeCount(const Lobes& l) {
 }  // namespace bsdf_detail
 
 // f(wo, wi) |cos(wi)| for the non-delta lobes. wo, wi in world space.
+template <uint32_t kF = kAllFeatures>
 PT_HD Vec3 evalBsdf(const BsdfParams& p, const Frame& frame, Vec3 woWorld, Vec3 wiWorld) {
     const Vec3 wo = frame.toLocal(woWorld);
-    return bsdf_detail::evalLobes(bsdf_detail::resolveLobes(p, wo), wo, frame.toLocal(wiWorld));
+    return bsdf_detail::evalLobes<kF>(bsdf_detail::resolveLobes<kF>(p, wo), wo, frame.toLocal(wiWorld));
 }
 
 // Solid-angle density with which sampleBsdf() picks wi through its non-delta lobes.
+template <uint32_t kF = kAllFeatures>
 PT_HD float pdfBsdf(const BsdfParams& p, const Frame& frame, Vec3 woWorld, Vec3 wiWorld) {
     const Vec3 wo = frame.toLocal(woWorld);
-    return bsdf_detail::pdfLobes(bsdf_detail::resolveLobes(p, wo), wo, frame.toLocal(wiWorld));
+    return bsdf_detail::pdfLobes<kF>(bsdf_detail::resolveLobes<kF>(p, wo), wo, frame.toLocal(wiWorld));
 }
 
 // evalBsdf() and pdfBsdf() together, resolving the lobes once: what light sampling needs.
@@ -216,19 +231,22 @@ struct BsdfEval {
     Vec3 value;  // f(wo, wi) |cos(wi)|
     float pdf;   // as pdfBsdf()
 };
+template <uint32_t kF = kAllFeatures>
 PT_HD BsdfEval evalBsdfWithPdf(const BsdfParams& p, const Frame& frame, Vec3 woWorld, Vec3 wiWorld) {
     const Vec3 wo = frame.toLocal(woWorld), wi = frame.toLocal(wiWorld);
-    const bsdf_detail::Lobes lobes = bsdf_detail::resolveLobes(p, wo);
-    return {bsdf_detail::evalLobes(lobes, wo, wi), bsdf_detail::pdfLobes(lobes, wo, wi)};
+    const bsdf_detail::Lobes lobes = bsdf_detail::resolveLobes<kF>(p, wo);
+    return {bsdf_detail::evalLobes<kF>(lobes, wo, wi), bsdf_detail::pdfLobes<kF>(lobes, wo, wi)};
 }
 
 // Whether evalBsdf() can be non-zero for some pair of directions (light sampling pays off).
+template <uint32_t kF = kAllFeatures>
 PT_HD bool hasNonDeltaLobes(const BsdfParams& p) {
-    const float metallic = clampf(p.metallic, 0.0f, 1.0f), transmission = clampf(p.transmission, 0.0f, 1.0f);
+    const float metallic = clampf(p.metallic, 0.0f, 1.0f);
+    const float transmission = hasFeature<kF>(feature::kTransmission) ? clampf(p.transmission, 0.0f, 1.0f) : 0.0f;
     const float opaque = (1.0f - metallic) * (1.0f - transmission);
     const float alpha = ggxAlpha(p.roughness);
     if (opaque > 0.0f && maxComponent(p.baseColor) > 0.0f) return true;
-    if (p.clearcoat > 0.0f && !ggxIsSmooth(ggxAlpha(p.clearcoatRoughness))) return true;
+    if (hasFeature<kF>(feature::kClearcoat) && p.clearcoat > 0.0f && !ggxIsSmooth(ggxAlpha(p.clearcoatRoughness))) return true;
     if (ggxIsSmooth(alpha)) return false;
     const float ior = p.ior > 0.0f ? p.ior : 1.0f;
     return metallic > 0.0f || (opaque > 0.0f && p.specular > 0.0f) ||
@@ -237,10 +255,11 @@ PT_HD bool hasNonDeltaLobes(const BsdfParams& p) {
 
 // Picks a lobe with `uLobe` (the remainder of which chooses reflection or refraction in the
 // glass lobe), then a direction with `uDir`. A zero weight means no sample.
+template <uint32_t kF = kAllFeatures>
 PT_HD BsdfSample sampleBsdf(const BsdfParams& p, const Frame& frame, Vec3 woWorld, float uLobe, Vec2 uDir) {
     using namespace bsdf_detail;
     const Vec3 wo = frame.toLocal(woWorld);
-    const Lobes l = resolveLobes(p, wo);
+    const Lobes l = resolveLobes<kF>(p, wo);
     BsdfSample s{};
     int lobe = -1;
     float start = 0.0f, next = 0.0f;
@@ -253,7 +272,7 @@ PT_HD BsdfSample sampleBsdf(const BsdfParams& p, const Frame& frame, Vec3 woWorl
     }
     if (lobe < 0) return s;
     const float uChoice = clampf((uLobe - start) / l.probability[lobe], 0.0f, 0.99999994f);
-    const LobeSample ls = sampleLobe(l, lobe, wo, uChoice, uDir);
+    const LobeSample ls = sampleLobe<kF>(l, lobe, wo, uChoice, uDir);
     if (!ls.valid) return s;
     s.wi = frame.toWorld(ls.wi);
     s.transmitted = ls.transmitted;
@@ -267,10 +286,10 @@ PT_HD BsdfSample sampleBsdf(const BsdfParams& p, const Frame& frame, Vec3 woWorl
         s.weight = ls.weight * (1.0f / l.probability[lobe]);
         return s;
     }
-    const float pdf = pdfLobes(l, wo, ls.wi);
+    const float pdf = pdfLobes<kF>(l, wo, ls.wi);
     if (!(pdf > 0.0f)) return s;
     s.pdf = pdf;
-    s.weight = evalLobes(l, wo, ls.wi) / pdf;
+    s.weight = evalLobes<kF>(l, wo, ls.wi) / pdf;
     return s;
 }
 

@@ -7,6 +7,7 @@
 
 namespace pt {
 
+template <uint32_t kF = kAllFeatures>
 PT_HD BsdfParams bsdfParamsAt(const RenderScene& scene, const Material& m, Vec2 uv) {
     BsdfParams p{m.baseColor, m.metallic, m.transmission, m.ior};
     p.roughness = m.roughness;
@@ -14,15 +15,15 @@ PT_HD BsdfParams bsdfParamsAt(const RenderScene& scene, const Material& m, Vec2 
     p.specularColor = m.specularColor;
     p.clearcoat = m.clearcoat;
     p.clearcoatRoughness = m.clearcoatRoughness;
-    if (m.baseColorTexture.present()) {
+    if (hasFeature<kF>(feature::kBaseColorTexture) && m.baseColorTexture.present()) {
         p.baseColor *= sampleTexture(scene, m.baseColorTexture, uv, true).xyz();  // sRGB
     }
-    if (m.metallicRoughnessTexture.present()) {
+    if (hasFeature<kF>(feature::kMetallicRoughnessTexture) && m.metallicRoughnessTexture.present()) {
         const Vec4 mr = sampleTexture(scene, m.metallicRoughnessTexture, uv, false);
         p.roughness *= mr.y;
         p.metallic *= mr.z;
     }
-    if (m.transmissionTexture.present()) {
+    if (hasFeature<kF>(feature::kTransmissionTexture) && m.transmissionTexture.present()) {
         p.transmission *= sampleTexture(scene, m.transmissionTexture, uv, false).x;
     }
     p.baseColor = vmax(p.baseColor, Vec3(0.0f));

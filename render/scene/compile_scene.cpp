@@ -9,6 +9,7 @@
 #include "render/materials/alpha.h"
 #include "render/integrator/camera.h"
 #include "render/scene/compile_geometry.h"
+#include "render/scene/scene_features.h"
 #include "render/util/stopwatch.h"
 
 namespace pt {
@@ -50,8 +51,10 @@ bool isTracedInstance(const Scene& scene, size_t i) {
 
 void compileInstances(const Scene& scene, CompiledScene& out) {
     const std::vector<Material>& materials = out.materials;
-    out.instances.clear();
-    out.instanceMaterials.clear();
+    // Built aside and swapped in, so that a refused instance leaves `out` as it was.
+    std::vector<RenderInstance> instances;
+    std::vector<uint32_t> instanceMaterials;
+    instances.reserve(scene.instances.size());
     for (size_t i = 0; i < scene.instances.size(); ++i) {
         const Instance& src = scene.instances[i];
         if (!src.visible) continue;
@@ -66,7 +69,7 @@ void compileInstances(const Scene& scene, CompiledScene& out) {
         inst.worldToObject = inverse(src.objectToWorld);
         inst.blas = src.mesh;
         inst.flipsWinding = src.objectToWorld.determinant() < 0.0f ? 1u : 0u;
-        inst.materialOffset = uint32_t(out.instanceMaterials.size());
+        inst.materialOffset = uint32_t(instanceMaterials.size());
         // The last material is the fallback for slots an instance leaves unmapped.
         const uint32_t fallback = uint32_t(materials.size() - 1);
         for (uint32_t slot = 0; slot < mesh.slotCount; ++slot) {
@@ -75,10 +78,12 @@ void compileInstances(const Scene& scene, CompiledScene& out) {
                 throw std::invalid_argument("instance \"" + src.name + "\" names material " +
                                             std::to_string(m) + ", which does not exist");
             }
-            out.instanceMaterials.push_back(m);
+            instanceMaterials.push_back(m);
         }
-        out.instances.push_back(inst);
+        instances.push_back(inst);
     }
+    out.instances.swap(instances);
+    out.instanceMaterials.swap(instanceMaterials);
     out.stats.instanceCount = uint32_t(out.instances.size());
     out.stats.instancedTriangles = 0;
     for (const RenderInstance& inst : out.instances) {
@@ -145,24 +150,54 @@ PunctualLight compilePunctualLight(const Light& light) {
     return p;
 }
 
-void compileLights(const Scene& scene, CompiledScene& out) {
+namespace {
+
+// The BLASes as the light table should see them: those no instance shades with an emissive
+// material hold no emitter, so their primitive counts read 0 there and the table's scan
+// (buildEmitterTable, one material lookup per primitive of every instance) skips them. That
+// makes the table O(instances x slots) in a scene without emissive surfaces, where it was
+// O(triangles), and leaves what it holds unchanged.
+std::vector<BlasRef> blasesForLightTable(const CompiledScene& out) {
+    std::vector<bool> emits(out.blases.size(), false);
+    for (size_t i = 0; i < out.instances.size(); ++i) {
+        const RenderInstance& inst = out.instances[i];
+        // compileInstances lays the instances' slots out one after the other.
+        const size_t end = i + 1 < out.instances.size() ? out.instances[i + 1].materialOffset
+                                                         : out.instanceMaterials.size();
+        for (size_t slot = inst.materialOffset; slot < end && !emits[inst.blas]; ++slot) {
+            emits[inst.blas] = out.materials[out.instanceMaterials[slot]].isEmissive();
+        }
+    }
+    std::vector<BlasRef> blases = out.blases;
+    for (size_t b = 0; b < blases.size(); ++b) {
+        if (!emits[b]) blases[b].primitiveCount = 0;
+    }
+    return blases;
+}
+
+}  // namespace
+
+void compileLights(const Scene& scene, CompiledScene& out, LightsUpdate update) {
     out.punctualLights.clear();
     for (const Light& light : scene.lights) out.punctualLights.push_back(compilePunctualLight(light));
     out.environment = compileEnvironment(scene.environment);
-    out.environmentDistribution = {};
+    if (update == LightsUpdate::All) out.environmentDistribution = {};
     if (out.environment.texture >= 0) {
         if (size_t(out.environment.texture) >= scene.textures.size()) {
             throw std::invalid_argument("the environment names texture " +
                                         std::to_string(out.environment.texture) + ", which does not exist");
         }
-        if (out.environment.intensity > 0.0f) {
+        if (update == LightsUpdate::All && out.environment.intensity > 0.0f) {
             const Texture& image = scene.textures[size_t(out.environment.texture)];
             out.environmentDistribution = buildEnvironmentDistribution(image);
         }
         out.environment.distWidth = out.environmentDistribution.width;
         out.environment.distHeight = out.environmentDistribution.height;
     }
-    out.emitters = buildEmitterTable(out.view(), out.environmentDistribution.averageLuminance);
+    const std::vector<BlasRef> lightBlases = blasesForLightTable(out);
+    RenderScene view = out.view();
+    view.blases = spanOf(lightBlases);
+    out.emitters = buildEmitterTable(view, out.environmentDistribution.averageLuminance);
     out.environment.lightWeight = out.emitters.environmentWeight;
     out.stats.emitterCount = out.emitters.triangles;
     out.stats.sphereLightCount = out.emitters.spheres;
@@ -204,7 +239,14 @@ CompiledScene compileRenderScene(const Scene& scene, const CompileOptions& optio
 
     out.camera = makeRenderCamera(scene.camera, scene.render.width, scene.render.height);
     out.settings = compileSettings(scene.render);
+    updateFeatures(scene, out);
     return out;
+}
+
+void updateFeatures(const Scene& scene, CompiledScene& out) {
+    bool morphTargets = false;
+    for (const Mesh& mesh : scene.meshes) morphTargets |= !mesh.morphTargets.empty();
+    out.features = sceneFeatures(out, morphTargets);
 }
 
 RenderScene CompiledScene::view() const {
@@ -240,6 +282,7 @@ RenderScene CompiledScene::view() const {
     s.camera = camera;
     s.settings = settings;
     s.bruteForce = bruteForce ? 1u : 0u;
+    s.features = features;
     return s;
 }
 

@@ -57,6 +57,7 @@ struct CompiledScene {
     RenderCamera camera{};
     IntegratorSettings settings{};
     bool bruteForce = false;
+    uint32_t features = 0;                 // sceneFeatures() as of the last compile or edit
     CompileStats stats;
 
     // The view stays valid while this object lives and its vectors are not resized.
@@ -72,21 +73,30 @@ CompiledScene compileRenderScene(const Scene& scene, const CompileOptions& optio
 std::vector<Material> compileMaterials(const Scene& scene);
 IntegratorSettings compileSettings(const RenderSettings& settings);
 RenderEnvironment compileEnvironment(const Environment& environment);
+// What compileLights rebuilds. KeepEnvironment reuses the environment image's sampling
+// distribution (O(pixels) to build) where only lights, transforms or geometry changed.
+enum class LightsUpdate { All, KeepEnvironment };
 // Punctual lights, the environment's sampling distribution and the light table, for a
 // CompiledScene whose geometry, materials and TLAS are already compiled (after an edit of
-// the environment or the lights). Throws std::invalid_argument for an environment naming a
+// the environment or the lights). Costs O(instances x slots + lights + the primitives of
+// meshes some instance shades with an emissive material): a scene without emissive surfaces
+// never walks its triangles. Throws std::invalid_argument for an environment naming a
 // missing texture.
-void compileLights(const Scene& scene, CompiledScene& out);
+void compileLights(const Scene& scene, CompiledScene& out, LightsUpdate update = LightsUpdate::All);
 PunctualLight compilePunctualLight(const Light& light);
 // The visible instances with their material slots, and the instance statistics, for a
 // CompiledScene whose geometry and materials are compiled (after a transform or visibility
-// edit). Throws std::invalid_argument for an instance naming a missing mesh or material.
+// edit). O(instances x slots). Throws std::invalid_argument for an instance naming a missing
+// mesh or material, and then leaves `out` as it was.
 void compileInstances(const Scene& scene, CompiledScene& out);
 // Whether compileInstances gives scene instance `i` a RenderInstance (visible, not empty):
 // the traced instances are these, in scene order, so a Hit's instance maps back through it.
 bool isTracedInstance(const Scene& scene, size_t i);
-// The TLAS (binned SAH over instance world boxes) for compiled instances and BLASes.
+// The TLAS (binned SAH over instance world boxes, from each BLAS's root box) for compiled
+// instances and BLASes. O(instances log instances).
 void buildTlas(CompiledScene& out);
+// CompiledScene::features (scene_features.h) from the compiled scene; after every edit.
+void updateFeatures(const Scene& scene, CompiledScene& out);
 // CompiledScene::transparentMaterials from its materials (after a material edit).
 void updateTransparency(CompiledScene& out);
 

@@ -10,6 +10,7 @@
 #include "render/math/span.h"
 #include "render/math/vec.h"
 #include "render/scene/scene.h"
+#include "render/scene/scene_features.h"
 
 namespace pt {
 
@@ -167,6 +168,7 @@ struct RenderScene {
     RenderCamera camera;
     IntegratorSettings settings;
     uint32_t bruteForce = 0;               // validation: test every primitive, no BVH
+    uint32_t features = 0;                 // scene_features.h: what this scene uses (host decisions)
 };
 
 }  // namespace pt

@@ -3,6 +3,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "assets/image_write.h"
@@ -17,6 +19,11 @@ namespace fs = std::filesystem;
 using test::runCli;
 
 std::string cornell() { return "'" + test::projectPath("scenes/cornell.json") + "'"; }
+
+// What scenes/cornell.json uses (render/scene/scene_features.h), in bit order: its glass sphere
+// (smooth, analytic), diffuse walls (specular 0), mirror box, lamp and eight instances.
+const std::vector<std::string> kCornellFeatures = {"smooth_transmission", "specular_layer", "metal",
+                                                   "emissive_triangles", "multiple_instances", "spheres"};
 
 TEST(PtRenderCli, RendersExrPngAndStatsAndPrintsThePaths) {
     PT_REQUIRE_OIIO();  // renders to EXR
@@ -45,6 +52,25 @@ TEST(PtRenderCli, RendersExrPngAndStatsAndPrintsThePaths) {
     EXPECT_EQ(j["backend"], "cpu");
     EXPECT_EQ(j["nonfinite_samples"], 0);
     EXPECT_GT(j["rays"].get<uint64_t>(), 48u * 32u * 4u);
+    EXPECT_EQ(j["features"].get<std::vector<std::string>>(), kCornellFeatures);
+    EXPECT_EQ(j["kernel_variant"], "");  // the CPU runs one generic kernel
+    EXPECT_TRUE(j["kernel_features"].is_array());
+    EXPECT_TRUE(j["kernel_features"].empty());
+}
+
+// AOVs asked for are a feature the backend adds to the scene's.
+TEST(PtRenderCli, StatsFeaturesIncludeTheAovsAskedFor) {
+    PT_REQUIRE_OIIO();  // AOVs are EXR layers
+    const std::string dir = test::tempDir();
+    const std::string stats = dir + "/aov.json";
+    const auto r = runCli("render " + cornell() + " -o " + dir + "/aov.exr --aov albedo --spp 1 --size 8x8 --stats " +
+                          stats + " --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::ifstream in(stats);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    std::vector<std::string> expected = kCornellFeatures;
+    expected.push_back("aovs");
+    EXPECT_EQ(j["features"].get<std::vector<std::string>>(), expected);
 }
 
 TEST(PtRenderCli, ErrorsExitNonZeroWithOneClearLine) {
@@ -111,9 +137,27 @@ TEST(PtRenderCli, InfoReportsCountsAsJson) {
     EXPECT_EQ(j["emissive_triangles"], 2);
     EXPECT_EQ(j["sphere_lights"], 0);
     EXPECT_EQ(j["punctual_lights"], 0);
+    EXPECT_EQ(j["features"].get<std::vector<std::string>>(), kCornellFeatures);
     for (const char* key : {"meshes", "textures", "bounds", "load_seconds", "blas_build_seconds", "tlas_build_seconds"}) {
         EXPECT_TRUE(j.contains(key)) << key;
     }
+}
+
+TEST(PtRenderCli, InfoPrintsTheFeaturesOnOneLine) {
+    const auto r = runCli("info " + cornell() + " --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::string expected = "\nfeatures ";
+    expected.append(20 - 8, ' ');  // the key column is 20 wide
+    for (size_t i = 0; i < kCornellFeatures.size(); ++i) expected += (i ? ", " : "") + kCornellFeatures[i];
+    EXPECT_NE(r.out.find(expected + "\n"), std::string::npos) << r.out;
+
+    // A scene using nothing says so.
+    const std::string empty = test::tempDir() + "/empty.json";
+    std::ofstream(empty) << R"({"version": 1, "materials": [{"name": "m"}],
+        "objects": [{"name": "q", "shape": "quad", "material": "m"}]})";
+    const auto bare = runCli("info '" + empty + "' --quiet");
+    ASSERT_EQ(bare.exitCode, 0) << bare.err;
+    EXPECT_NE(bare.out.find("\nfeatures             none\n"), std::string::npos) << bare.out;
 }
 
 TEST(PtRenderCli, ExportWritesSceneJsonThatLoadsAgain) {

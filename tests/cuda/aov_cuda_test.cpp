@@ -28,6 +28,7 @@ std::vector<Schedule> schedules(bool pixelJitter) {
     IntegratorToggles t;
     t.pixelJitter = pixelJitter;
     std::vector<Schedule> out;
+    t.autoSchedule = false;  // each schedule on its own
     t.megakernel = true;
     out.push_back({"megakernel", t});
     t.megakernel = false;
@@ -138,6 +139,7 @@ TEST(AovCuda, DeviceMemoryGrowsOnlyWithAovs) {
     PT_REQUIRE_CUDA_DEVICE();
     const Scene scene = test::analyticSphereScene(64, 48);
     IntegratorToggles wavefront;
+    wavefront.autoSchedule = false;
     wavefront.megakernel = false;
     wavefront.pixelJitter = false;  // the first-hit cache applies, and with bvh_cost keeps costs
     cuda::CudaBackend gpu;

@@ -237,6 +237,7 @@ TEST(CudaBackend, SchedulingTogglesLeaveTheImageUnchanged) {
     const Scene scene = cornell(64);
     cuda::CudaBackend backend;
     IntegratorToggles base;
+    base.autoSchedule = false;
     base.megakernel = false;   // the wavefront, whose scheduling the toggles change
     base.pixelJitter = false;  // so that the first-hit cache applies
     base.firstHitCache = false;
@@ -412,6 +413,7 @@ TEST(CudaBackend, ReportsWhyTheFirstHitCacheCannotApply) {
     PT_REQUIRE_CUDA_DEVICE();
     cuda::CudaBackend backend;
     IntegratorToggles wavefront;
+    wavefront.autoSchedule = false;
     wavefront.megakernel = false;
     backend.setToggles(wavefront);
     backend.sync(cornell(16), SceneChanges::All, {});

@@ -172,6 +172,8 @@ TEST(EditorSession, AMaterialEditSyncsMaterials) {
     EXPECT_TRUE(latency.complete);
     EXPECT_GT(latency.toFrameSeconds, 0.0);
     EXPECT_GE(latency.toFrameSeconds, latency.syncSeconds);
+    // It counts from the command handed over: its apply, then the sync, then the pass.
+    EXPECT_GE(latency.toFrameSeconds, latency.applySeconds + latency.syncSeconds);
     EXPECT_EQ(latency.label, "Edit material blue");
     // Later frames do not move the measurement.
     const double measured = latency.toFrameSeconds;

@@ -11,6 +11,7 @@
 #include "render/backend/toggle_states.h"
 #include "render/integrator/camera.h"
 #include "render/integrator/path_tracer.h"
+#include "render/scene/scene_features.h"
 #include "render/util/stopwatch.h"
 
 namespace pt {
@@ -43,11 +44,14 @@ SyncReport CpuBackend::sync(const Scene& scene, SceneChangeMask changes, const P
     }
     compiled_->camera = makeRenderCamera(scene.camera, scene.render.width, scene.render.height);
     compiled_->settings = compileSettings(scene.render);
+    // Edits that skip the compile (camera, thin lens, environment, lights) change features too.
+    updateFeatures(scene, *compiled_);
     view_ = compiled_->view();
     applyIntegratorToggles(toggles_, view_.settings);
     width_ = scene.render.width;
     height_ = scene.render.height;
     if (resized || changes != SceneChanges::Display) resetAccumulation();
+    updateStatsFeatures();
     stats_.triangles = compiled_->stats.instancedTriangles;
     stats_.instances = compiled_->stats.instanceCount;
     report.seconds = secondsSince(start);
@@ -85,10 +89,17 @@ void CpuBackend::resetAccumulation() {
     } else {
         std::fill(aovSums_.begin(), aovSums_.end(), 0.0);
     }
+    updateStatsFeatures();  // the AOVs just applied
     stats_.samplesPerPixel = 0;
     stats_.renderSeconds = 0.0;
     stats_.rays = 0;
     stats_.nonfiniteSamples = 0;
+}
+
+void CpuBackend::updateStatsFeatures() {
+    stats_.features = compiled_ ? compiled_->features : 0u;
+    if (aovs_ != 0) stats_.features |= feature::kAovs;
+    if (toggles_.bruteForce) stats_.features |= feature::kBruteForce;
 }
 
 void CpuBackend::render(uint32_t passes) {

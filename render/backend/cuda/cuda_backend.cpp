@@ -1,8 +1,10 @@
 #include "render/backend/cuda/cuda_backend.h"
 #include "render/backend/cuda/display_copy.h"
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
+#include <utility>
 
 #include "render/backend/cuda/cuda_device.h"
 #include "render/backend/mean_image.h"
@@ -28,6 +30,30 @@ double timedStep(cudaStream_t stream, SyncReport& report, const char* name, Step
 }
 
 bool sameBytes(const void* a, const void* b, size_t bytes) { return bytes == 0 || std::memcmp(a, b, bytes) == 0; }
+
+// Where `incoming` differs from `stored` (count elements each): copies that range into
+// `stored` and returns it as {first, count}, count 0 when nothing differs. Compared in blocks
+// from both ends, so an edit of a few vertices copies and uploads only their block range, and
+// an edit of every vertex reads each array once.
+template <class T>
+std::pair<uint32_t, uint32_t> copyChangedRange(T* stored, const T* incoming, uint32_t count) {
+    constexpr uint32_t kBlock = 4096;  // elements per comparison
+    uint32_t first = 0;
+    while (first < count) {
+        const uint32_t n = std::min(kBlock, count - first);
+        if (!sameBytes(stored + first, incoming + first, n * sizeof(T))) break;
+        first += n;
+    }
+    if (first == count) return {count, 0u};
+    uint32_t end = count;
+    while (end - first > kBlock) {
+        const uint32_t n = std::min(kBlock, end - first);
+        if (!sameBytes(stored + end - n, incoming + end - n, n * sizeof(T))) break;
+        end -= n;
+    }
+    std::memcpy(stored + first, incoming + first, size_t(end - first) * sizeof(T));
+    return {first, end - first};
+}
 
 bool emissionChanged(const std::vector<Material>& before, const std::vector<Material>& after) {
     if (before.size() != after.size()) return true;
@@ -68,6 +94,7 @@ SyncReport CudaBackend::sync(const Scene& scene, SceneChangeMask changes, const 
     if (!needsFullBuild && (changes & SceneChanges::Geometry)) {
         if (const char* done = refitChangedMeshes(scene, report, needsFullBuild)) {
             tlasDirty = true;
+            hostTlasStale_ = true;
             // The light table's weights follow emitter areas and the scene's bounds. Stale weights
             // would stay unbiased (NEE and MIS read the same table), but emissive triangles
             // deserve a table that matches their areas; other lights keep theirs.
@@ -77,11 +104,13 @@ SyncReport CudaBackend::sync(const Scene& scene, SceneChangeMask changes, const 
     }
     if (!needsFullBuild && (changes & SceneChanges::Transforms)) {
         const size_t instancesBefore = compiled_->instances.size();
+        // O(instances x slots): transforms, materials of each slot, statistics.
         timedStep(stream_, report, "instances", [&] {
             compileInstances(scene, *compiled_);
             device_.uploadInstances(*compiled_, stream_);
         });
         tlasDirty = true;
+        hostTlasStale_ = true;
         // Emitters name instances by index: a changed instance list needs a new table, and so
         // do moved emissive surfaces (see above).
         lightsDirty |= compiled_->instances.size() != instancesBefore ||
@@ -103,14 +132,21 @@ SyncReport CudaBackend::sync(const Scene& scene, SceneChangeMask changes, const 
         action = "full build";
         lightsDirty = false;
         tlasDirty = false;
+        hostTlasStale_ = false;
     }
     if (tlasDirty) buildTlasOnDevice(report);
     if (lightsDirty) {
+        if (hostTlasStale_) {
+            // The light table weighs the environment and directional lights by the scene's
+            // bounds, the host TLAS's root: O(instances log instances) from the BLAS roots.
+            timedStep(stream_, report, "TLAS (host, scene bounds)", [&] { buildTlas(*compiled_); });
+            hostTlasStale_ = false;
+        }
+        // The environment's sampling tables change only with the environment.
+        const bool environment = (changes & SceneChanges::Environment) != 0;
         timedStep(stream_, report, "lights", [&] {
-            // The light table weighs the environment by the scene's bounds: the host TLAS's root.
-            if (tlasDirty) buildTlas(*compiled_);
-            compileLights(scene, *compiled_);
-            device_.uploadLights(*compiled_, stream_);
+            compileLights(scene, *compiled_, environment ? LightsUpdate::All : LightsUpdate::KeepEnvironment);
+            device_.uploadLights(*compiled_, stream_, environment);
         });
         promote("lights");
     }
@@ -119,6 +155,8 @@ SyncReport CudaBackend::sync(const Scene& scene, SceneChangeMask changes, const 
     compiled_->settings = compileSettings(scene.render);
     width_ = scene.render.width;
     height_ = scene.render.height;
+    // Edits patch the compiled scene; what it uses now decides the next render's kernel variant.
+    updateFeatures(scene, *compiled_);
     updateView();
     if (resized) sum_.resize(size_t(width_) * height_ * 3);
     if (resized || changes != SceneChanges::Display) {
@@ -159,6 +197,21 @@ void CudaBackend::fullBuild(const Scene& scene, const ProgressFn& progress, Sync
     buildTlasOnDevice(report);
 }
 
+bool CudaBackend::uploadChangedVertices(const Mesh& mesh, uint32_t meshIndex) {
+    const uint32_t first = meshVertexOffset_[meshIndex], count = uint32_t(mesh.positions.size());
+    const auto positions = copyChangedRange(compiled_->positions.data() + first, mesh.positions.data(), count);
+    device_.uploadPositions(*compiled_, first + positions.first, positions.second, stream_);
+    if (mesh.normals.size() == count) {
+        const auto normals = copyChangedRange(compiled_->normals.data() + first, mesh.normals.data(), count);
+        device_.uploadNormals(*compiled_, first + normals.first, normals.second, stream_);
+    }
+    if (!compiled_->tangents.empty() && mesh.tangents.size() == count) {
+        const auto tangents = copyChangedRange(compiled_->tangents.data() + first, mesh.tangents.data(), count);
+        device_.uploadTangents(*compiled_, first + tangents.first, tangents.second, stream_);
+    }
+    return positions.second > 0;
+}
+
 const char* CudaBackend::refitChangedMeshes(const Scene& scene, SyncReport& report, bool& needsFullBuild) {
     if (scene.meshes.size() != device_.blasCount()) {
         needsFullBuild = true;
@@ -178,66 +231,55 @@ const char* CudaBackend::refitChangedMeshes(const Scene& scene, SyncReport& repo
                 if (sameBytes(stored, mesh.spheres.data(), mesh.spheres.size() * sizeof(Vec4))) continue;
                 std::memcpy(stored, mesh.spheres.data(), mesh.spheres.size() * sizeof(Vec4));
                 device_.uploadSpheres(*compiled_, i, stream_);
-            } else {
-                const uint32_t first = meshVertexOffset_[i], count = uint32_t(mesh.positions.size());
-                if (first + count > compiled_->positions.size()) {
-                    needsFullBuild = true;
-                    return;
-                }
-                Vec3* stored = compiled_->positions.data() + first;
-                if (sameBytes(stored, mesh.positions.data(), count * sizeof(Vec3))) continue;
-                std::memcpy(stored, mesh.positions.data(), count * sizeof(Vec3));
-                if (mesh.normals.size() == count) {
-                    std::memcpy(compiled_->normals.data() + first, mesh.normals.data(), count * sizeof(Vec3));
-                }
-                if (!compiled_->tangents.empty() && mesh.tangents.size() == count) {
-                    std::memcpy(compiled_->tangents.data() + first, mesh.tangents.data(), count * sizeof(Vec4));
-                }
-                device_.uploadVertices(*compiled_, first, count, stream_);
+                changed.push_back(i);
+                continue;
             }
-            changed.push_back(i);
+            if (size_t(meshVertexOffset_[i]) + mesh.positions.size() > compiled_->positions.size()) {
+                needsFullBuild = true;
+                return;
+            }
+            // Normals or tangents alone change shading, not bounds: uploaded, not refitted.
+            if (uploadChangedVertices(mesh, i)) changed.push_back(i);
         }
     });
     if (needsFullBuild || changed.empty()) return nullptr;
 
-    const RenderScene deviceView = device_.view(*compiled_);
     bool rebuilt = false;
     for (uint32_t i : changed) {
-        const BlasRef& blas = device_.blas(i);
         if (builtSah_[i] == kSahUnknown) builtSah_[i] = blasSahCost(i);  // still as built
-        primBoxes_.resize(blas.primitiveCount);
+        const uint32_t primitives = device_.blas(i).primitiveCount;
+        primBoxes_.resize(primitives);
         refitVisits_.resize(device_.blasNodeCapacity(i));
         timedStep(stream_, report, "refit BLAS", [&] {
-            computePrimitiveBoxes(deviceView, blas, primBoxes_.data(), stream_);
-            refitBvh(device_.blasNodes(i), blas.nodeCount, device_.blasParents(i), device_.blasPrimIndices(i),
-                     primBoxes_.data(), refitVisits_.data(), stream_);
+            device_.prepareRefit(i, stream_);  // parent links, on a BLAS's first refit
+            computePrimitiveBoxes(device_.view(*compiled_), device_.blas(i), primBoxes_.data(), stream_);
+            refitBvh(device_.blasNodes(i), device_.blas(i).nodeCount, device_.blasParents(i),
+                     device_.blasPrimIndices(i), primBoxes_.data(), refitVisits_.data(), stream_);
         });
         const float cost = blasSahCost(i);
         if (cost > toggles_.rebuildSahRatio * builtSah_[i]) {
             timedStep(stream_, report, "rebuild BLAS (GPU LBVH)", [&] {
-                const uint32_t nodes = lbvhNodeCount(blas.primitiveCount);
-                lbvh_.build(primBoxes_.data(), blas.primitiveCount, device_.blasNodes(i), device_.blasPrimIndices(i),
-                            stream_);
+                device_.reserveLbvhNodes(i, stream_);  // room for 2n - 1 nodes, on a first rebuild
+                const uint32_t nodes = lbvhNodeCount(primitives);
+                lbvh_.build(primBoxes_.data(), primitives, device_.blasNodes(i), device_.blasPrimIndices(i), stream_);
                 device_.setBlasNodeCount(i, nodes, stream_);
                 computeParents(device_.blasNodes(i), nodes, device_.blasParents(i), stream_);
             });
             builtSah_[i] = blasSahCost(i);
             rebuilt = true;
         }
+        // The host keeps each BLAS's root box current (32 bytes): the host TLAS, and so the
+        // scene bounds the light table uses, are built from it. Refit and rebuild give the
+        // same root, the union of the primitives' boxes.
+        PT_CUDA_CHECK(cudaMemcpyAsync(compiled_->blasNodes.data() + compiled_->blases[i].nodeOffset,
+                                      device_.blasNodes(i), sizeof(BvhNode), cudaMemcpyDeviceToHost, stream_));
     }
+    PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
     return rebuilt ? "rebuild" : "refit";
 }
 
 void CudaBackend::buildTlasOnDevice(SyncReport& report) {
-    const uint32_t count = device_.instanceCount();
-    timedStep(stream_, report, "build TLAS (GPU LBVH)", [&] {
-        device_.tlasNodes.resize(lbvhNodeCount(count));
-        device_.tlasInstanceIndices.resize(count);
-        primBoxes_.resize(count);
-        computeInstanceBoxes(device_.instances(), count, device_.deviceBlases(), device_.allBlasNodes(),
-                             primBoxes_.data(), stream_);
-        lbvh_.build(primBoxes_.data(), count, device_.tlasNodes.data(), device_.tlasInstanceIndices.data(), stream_);
-    });
+    timedStep(stream_, report, "build TLAS (GPU LBVH)", [&] { device_.buildTlas(lbvh_, primBoxes_, stream_); });
 }
 
 float CudaBackend::blasSahCost(uint32_t blas) const {
@@ -265,7 +307,7 @@ void CudaBackend::setToggles(const IntegratorToggles& toggles) {
 
 bool CudaBackend::firstHitCacheApplies(std::string* why) const {
     const char* reason = nullptr;
-    if (toggles_.megakernel) reason = "the megakernel traces every ray itself";
+    if (runsMegakernel()) reason = "the megakernel traces every ray itself";
     else if (toggles_.pixelJitter) reason = "pixel jitter is on, so camera rays differ per sample";
     else if (compiled_ && compiled_->camera.lensRadius > 0.0f) reason = "the thin lens moves camera rays per sample";
     if (reason && why) *why = reason;
@@ -274,7 +316,7 @@ bool CudaBackend::firstHitCacheApplies(std::string* why) const {
 
 ScheduleOptions CudaBackend::scheduleOptions() const {
     ScheduleOptions o;
-    o.megakernel = toggles_.megakernel;
+    o.megakernel = runsMegakernel();
     o.compaction = toggles_.streamCompaction;
     o.materialSort = toggles_.materialSort;
     o.firstHitCache = toggles_.firstHitCache && firstHitCacheApplies(nullptr);
@@ -298,13 +340,44 @@ void CudaBackend::resetAccumulation() {
     stats_.nonfiniteSamples = 0;
 }
 
+bool CudaBackend::runsMegakernel() const {
+    return toggles_.autoSchedule ? scheduleChooser_.nextIsMegakernel() : toggles_.megakernel;
+}
+
+uint64_t CudaBackend::scheduleKey() const {
+    // What decides which schedule is faster: the kernel's features, the image, the path length
+    // and the toggles that change the work. FNV-1a over them.
+    const IntegratorSettings& s = view_.settings;
+    const uint32_t words[] = {view_.features | (aovs_ != 0 ? feature::kAovs : 0u), s.width, s.height, s.maxDepth,
+                              s.nextEventEstimation, s.russianRoulette, s.pixelJitter, toggles_.streamCompaction,
+                              toggles_.materialSort, toggles_.firstHitCache};
+    uint64_t h = 1469598103934665603ull;
+    for (const uint32_t w : words) h = (h ^ w) * 1099511628211ull;
+    return h;
+}
+
 void CudaBackend::render(uint32_t passes) {
     if (!compiled_ || passes == 0) return;
     const auto start = Clock::now();
     const AovBuffers aovs = aovBuffersIn(aovSums_.data(), aovs_, size_t(width_) * height_);
-    scheduler_.render(view_, stats_.samplesPerPixel, passes, scheduleOptions(), sum_.data(), aovs, stream_);
-    PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
-    stats_.samplesPerPixel += passes;
+    if (toggles_.autoSchedule) {
+        scheduleChooser_.setKey(scheduleKey());
+        // The auto schedule's trial: single timed passes, alternating, until both have run theirs.
+        while (passes > 0 && !scheduleChooser_.decided()) {
+            const bool megakernel = runsMegakernel();
+            const auto passStart = Clock::now();
+            scheduler_.render(view_, stats_.samplesPerPixel, 1, scheduleOptions(), sum_.data(), aovs, stream_);
+            PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
+            scheduleChooser_.record(megakernel, secondsSince(passStart));
+            stats_.samplesPerPixel += 1;
+            passes -= 1;
+        }
+    }
+    if (passes > 0) {
+        scheduler_.render(view_, stats_.samplesPerPixel, passes, scheduleOptions(), sum_.data(), aovs, stream_);
+        PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
+        stats_.samplesPerPixel += passes;
+    }
     stats_.renderSeconds += secondsSince(start);
 }
 
@@ -314,7 +387,7 @@ void CudaBackend::readBeauty(std::vector<float>& rgba) const {
 }
 
 std::vector<uint32_t> CudaBackend::pathsAlivePerBounce() const {
-    return toggles_.megakernel ? std::vector<uint32_t>{} : scheduler_.pathsPerBounce();
+    return runsMegakernel() ? std::vector<uint32_t>{} : scheduler_.pathsPerBounce();
 }
 
 bool CudaBackend::copyBeautyToDevice(void* deviceRgba) const {
@@ -339,6 +412,17 @@ BackendStats CudaBackend::stats() const {
     const RenderCounters counters = scheduler_.counters();
     s.rays = counters.rays;
     s.nonfiniteSamples = counters.nonfinite;
+    s.features = view_.features | (aovs_ != 0 ? feature::kAovs : 0u);
+    const KernelVariant& variant = kKernelVariants[chooseKernelVariant(s.features)];  // as the scheduler chooses
+    s.kernelVariant = variant.name;
+    s.kernelFeatures = variant.features;
+    if (toggles_.autoSchedule) {
+        s.schedule = scheduleChooser_.choice();
+        s.megakernelRate = scheduleChooser_.megakernelRate();
+        s.wavefrontRate = scheduleChooser_.wavefrontRate();
+    } else {
+        s.schedule = toggles_.megakernel ? "megakernel" : "wavefront";
+    }
     return s;
 }
 
@@ -348,7 +432,7 @@ std::vector<ToggleState> CudaBackend::toggleStates() const {
         if (!s.requested) continue;
         if (s.name == "first_hit_cache") {
             s.active = firstHitCacheApplies(&s.note);
-        } else if ((s.name == "compaction" || s.name == "material_sort") && toggles_.megakernel) {
+        } else if ((s.name == "compaction" || s.name == "material_sort") && runsMegakernel()) {
             s.active = false;
             s.note = "wavefront only; the megakernel is on";
         }
@@ -386,9 +470,22 @@ std::vector<double> CudaBackend::traceRays(const std::vector<Ray>& rays, bool an
     return seconds;
 }
 
+std::vector<std::pair<std::string, uint64_t>> CudaBackend::deviceMemoryByBuffer() const {
+    std::vector<std::pair<std::string, uint64_t>> rows = device_.buffers();
+    rows.emplace_back("path scheduler", scheduler_.bytes());
+    rows.emplace_back("accumulation (beauty)", sum_.bytes());
+    rows.emplace_back("accumulation (AOVs)", aovSums_.bytes());
+    rows.emplace_back("BVH scratch (primitive boxes)", primBoxes_.bytes());
+    rows.emplace_back("BVH scratch (refit visits)", refitVisits_.bytes());
+    rows.emplace_back("BVH scratch (LBVH builder)", lbvh_.bytes());
+    rows.emplace_back("ray queries", queryRays_.bytes() + queryHits_.bytes());
+    return rows;
+}
+
 uint64_t CudaBackend::deviceMemoryBytes() const {
-    return device_.bytes() + scheduler_.bytes() + sum_.bytes() + aovSums_.bytes() + primBoxes_.bytes() +
-           refitVisits_.bytes();
+    uint64_t total = 0;
+    for (const auto& row : deviceMemoryByBuffer()) total += row.second;
+    return total;
 }
 
 }  // namespace pt::cuda

@@ -4,12 +4,15 @@
 // sync() does the least work an edit needs (DESIGN.md, "Data flow"): nothing, a reset, new
 // materials or lights, a TLAS rebuilt on the GPU, a BLAS refit on the GPU (rebuilt there
 // with an LBVH once refits have degraded its SAH cost past a ratio), or a full compile on the
-// host for new meshes and textures, whose binned SAH BLASes are uploaded.
+// host for new meshes and textures, whose binned SAH BLASes are uploaded. Edits cost what
+// they change: a transform costs the host O(instances) (never a walk over triangles), a
+// vertex edit uploads the range of vertices that changed.
 #include <cuda_runtime.h>
 
 #include <memory>
 
 #include "render/backend/backend.h"
+#include "render/backend/schedule_chooser.h"
 #include "render/backend/cuda/device_scene.h"
 #include "render/backend/cuda/gpu_bvh.h"
 #include "render/backend/cuda/path_scheduler.h"
@@ -35,7 +38,8 @@ public:
     std::vector<uint32_t> pathsAlivePerBounce() const override;
     BackendStats stats() const override;
     std::vector<ToggleState> toggleStates() const override;
-    uint64_t deviceMemoryBytes() const override;
+    uint64_t deviceMemoryBytes() const override;  // the sum of deviceMemoryByBuffer()
+    std::vector<std::pair<std::string, uint64_t>> deviceMemoryByBuffer() const override;
     std::vector<double> traceRays(const std::vector<Ray>& rays, bool anyHit, uint32_t runs,
                                   std::vector<Hit>* hits) override;
     void setAovs(AovMask aovs) override { aovsRequested_ = aovs; }
@@ -52,13 +56,19 @@ public:
 
 private:
     void fullBuild(const Scene& scene, const ProgressFn& progress, SyncReport& report);
-    // Uploads meshes whose vertices changed and refits (or rebuilds) their BLASes; returns
-    // "refit" or "rebuild", or nullptr when no mesh changed. Sets needsFullBuild when a mesh
-    // changed size (a topology edit).
+    // Uploads the vertices that changed and refits (or rebuilds) the BLASes of meshes whose
+    // positions moved; returns "refit" or "rebuild", or nullptr when no mesh moved. Sets
+    // needsFullBuild when a mesh changed size (a topology edit).
     const char* refitChangedMeshes(const Scene& scene, SyncReport& report, bool& needsFullBuild);
+    // Copies the vertices of triangle mesh `meshIndex` that differ from the host copy into it
+    // and uploads them (the changed range of each array); returns whether its positions changed.
+    bool uploadChangedVertices(const Mesh& mesh, uint32_t meshIndex);
     void buildTlasOnDevice(SyncReport& report);
     void updateView();
     ScheduleOptions scheduleOptions() const;
+    // The schedule of the next pass: the toggle's, or under the auto schedule the chooser's.
+    bool runsMegakernel() const;
+    uint64_t scheduleKey() const;
     bool firstHitCacheApplies(std::string* why) const;
 
     cudaStream_t stream_ = nullptr;
@@ -69,6 +79,7 @@ private:
     DeviceScene device_;
     LbvhBuilder lbvh_;
     PathScheduler scheduler_;
+    ScheduleChooser scheduleChooser_;
     DeviceBuffer<double> sum_;
     AovMask aovsRequested_ = 0, aovs_ = 0;  // as set; as applied at the last reset
     DeviceBuffer<double> aovSums_;          // render/backend/aov.h's layout; none without AOVs
@@ -78,6 +89,9 @@ private:
     DeviceBuffer<Hit> queryHits_;
     std::vector<float> builtSah_;            // per BLAS, after its last build; kSahUnknown until needed
     std::vector<uint32_t> meshVertexOffset_;  // per mesh: its first vertex in compiled_->positions
+    // compiled_->tlasNodes (the host's TLAS, which the light table takes the scene's bounds
+    // from) lags moved instances or refitted BLASes; rebuilt only when the lights need it.
+    bool hostTlasStale_ = false;
     RenderScene view_{};
     IntegratorToggles toggles_;
     uint32_t width_ = 0, height_ = 0;

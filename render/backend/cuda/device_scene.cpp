@@ -2,42 +2,70 @@
 
 #include <algorithm>
 
-#include "render/backend/cuda/gpu_bvh.h"
-
 namespace pt::cuda {
 
-void DeviceScene::uploadAll(const CompiledScene& host, cudaStream_t stream) {
-    positions_.upload(host.positions, stream);
-    normals_.upload(host.normals, stream);
-    uvs_.upload(host.uvs, stream);
-    tangents_.upload(host.tangents, stream);
-    triangles_.upload(host.triangles, stream);
-    spheres_.upload(host.spheres, stream);
-    triangleSlots_.upload(host.triangleSlots, stream);
-    sphereSlots_.upload(host.sphereSlots, stream);
-    textures_.upload(host.textures, stream);
-    texels8_.upload(host.texels8, stream);
-    texelsF_.upload(host.texelsF, stream);
+namespace {
 
-    // Each BLAS region holds its CPU build now and an LBVH of the same primitives later.
+// Uploads `host` into a buffer of exactly its size: a smaller scene gives memory back, and an
+// empty array holds none (DeviceBuffer itself only grows).
+template <class T>
+void uploadFitted(DeviceBuffer<T>& buffer, const T* host, size_t count, cudaStream_t stream) {
+    if (buffer.bytes() != count * sizeof(T)) buffer = DeviceBuffer<T>();
+    buffer.upload(host, count, stream);
+}
+
+template <class T>
+void uploadFitted(DeviceBuffer<T>& buffer, const std::vector<T>& host, cudaStream_t stream) {
+    uploadFitted(buffer, host.data(), host.size(), stream);
+}
+
+template <class T>
+void add(std::vector<BufferBytes>& out, const char* name, const DeviceBuffer<T>& buffer) {
+    out.emplace_back(name, uint64_t(buffer.bytes()));
+}
+
+}  // namespace
+
+void DeviceScene::uploadAll(const CompiledScene& host, cudaStream_t stream) {
+    const auto anyBlas = [&host](uint32_t BlasRef::*flag) {
+        return std::any_of(host.blases.begin(), host.blases.end(), [flag](const BlasRef& b) { return b.*flag != 0; });
+    };
+    uploadFitted(positions_, host.positions, stream);
+    // Kernels read normals and UVs only of meshes whose BlasRef says they have them.
+    if (anyBlas(&BlasRef::hasNormals)) uploadFitted(normals_, host.normals, stream);
+    else normals_ = {};
+    if (anyBlas(&BlasRef::hasUvs)) uploadFitted(uvs_, host.uvs, stream);
+    else uvs_ = {};
+    uploadFitted(tangents_, host.tangents, stream);
+    uploadFitted(triangles_, host.triangles, stream);
+    uploadFitted(spheres_, host.spheres, stream);
+    uploadFitted(triangleSlots_, host.triangleSlots, stream);
+    uploadFitted(sphereSlots_, host.sphereSlots, stream);
+    uploadFitted(textures_, host.textures, stream);
+    uploadFitted(texels8_, host.texels8, stream);
+    uploadFitted(texelsF_, host.texelsF, stream);
+
+    // Each BLAS region holds its CPU build; room for an LBVH comes with its first GPU rebuild
+    // (reserveLbvhNodes), parent links with its first refit (prepareRefit).
     hostBlases_ = host.blases;
     nodeCapacity_.assign(hostBlases_.size(), 0);
+    parentsReady_.assign(hostBlases_.size(), false);
     uint32_t nodeOffset = 0;
     for (size_t i = 0; i < hostBlases_.size(); ++i) {
-        nodeCapacity_[i] = std::max(lbvhNodeCount(hostBlases_[i].primitiveCount), host.blases[i].nodeCount);
+        nodeCapacity_[i] = host.blases[i].nodeCount;
         hostBlases_[i].nodeOffset = nodeOffset;
         nodeOffset += nodeCapacity_[i];
     }
+    blasNodes_ = {};
+    blasParents_ = {};
     blasNodes_.resize(nodeOffset);
-    blasParents_.resize(nodeOffset);
     for (size_t i = 0; i < hostBlases_.size(); ++i) {
         blasNodes_.uploadAt(hostBlases_[i].nodeOffset, host.blasNodes.data() + host.blases[i].nodeOffset,
                             host.blases[i].nodeCount, stream);
-        computeParents(blasNodes(uint32_t(i)), hostBlases_[i].nodeCount, blasParents(uint32_t(i)), stream);
     }
     // Primitive index lists already have one entry per primitive, as an LBVH needs.
-    blasPrimIndices_.upload(host.blasPrimIndices, stream);
-    blases_.upload(hostBlases_, stream);
+    uploadFitted(blasPrimIndices_, host.blasPrimIndices, stream);
+    uploadFitted(blases_, hostBlases_, stream);
 
     uploadMaterials(host, stream);
     uploadInstances(host, stream);
@@ -48,13 +76,14 @@ void DeviceScene::uploadMaterials(const CompiledScene& host, cudaStream_t stream
     materials_.upload(host.materials, stream);
 }
 
-void DeviceScene::uploadLights(const CompiledScene& host, cudaStream_t stream) {
-    emitters_.upload(host.emitters.emitters, stream);
-    emitterAlias_.upload(host.emitters.alias, stream);
-    punctualLights_.upload(host.punctualLights, stream);
-    envPdf_.upload(host.environmentDistribution.pdf, stream);
-    envMarginalCdf_.upload(host.environmentDistribution.marginalCdf, stream);
-    envConditionalCdf_.upload(host.environmentDistribution.conditionalCdf, stream);
+void DeviceScene::uploadLights(const CompiledScene& host, cudaStream_t stream, bool environment) {
+    uploadFitted(emitters_, host.emitters.emitters, stream);
+    uploadFitted(emitterAlias_, host.emitters.alias, stream);
+    uploadFitted(punctualLights_, host.punctualLights, stream);
+    if (!environment) return;
+    uploadFitted(envPdf_, host.environmentDistribution.pdf, stream);
+    uploadFitted(envMarginalCdf_, host.environmentDistribution.marginalCdf, stream);
+    uploadFitted(envConditionalCdf_, host.environmentDistribution.conditionalCdf, stream);
 }
 
 void DeviceScene::uploadInstances(const CompiledScene& host, cudaStream_t stream) {
@@ -62,10 +91,16 @@ void DeviceScene::uploadInstances(const CompiledScene& host, cudaStream_t stream
     instanceMaterials_.upload(host.instanceMaterials, stream);
 }
 
-void DeviceScene::uploadVertices(const CompiledScene& host, uint32_t first, uint32_t count, cudaStream_t stream) {
+void DeviceScene::uploadPositions(const CompiledScene& host, uint32_t first, uint32_t count, cudaStream_t stream) {
     positions_.uploadAt(first, host.positions.data() + first, count, stream);
-    normals_.uploadAt(first, host.normals.data() + first, count, stream);
-    if (!host.tangents.empty()) tangents_.uploadAt(first, host.tangents.data() + first, count, stream);
+}
+
+void DeviceScene::uploadNormals(const CompiledScene& host, uint32_t first, uint32_t count, cudaStream_t stream) {
+    if (normals_.size() != 0) normals_.uploadAt(first, host.normals.data() + first, count, stream);
+}
+
+void DeviceScene::uploadTangents(const CompiledScene& host, uint32_t first, uint32_t count, cudaStream_t stream) {
+    if (tangents_.size() != 0) tangents_.uploadAt(first, host.tangents.data() + first, count, stream);
 }
 
 void DeviceScene::uploadSpheres(const CompiledScene& host, uint32_t blas, cudaStream_t stream) {
@@ -73,9 +108,67 @@ void DeviceScene::uploadSpheres(const CompiledScene& host, uint32_t blas, cudaSt
     spheres_.uploadAt(b.primitiveOffset, host.spheres.data() + b.primitiveOffset, b.primitiveCount, stream);
 }
 
+void DeviceScene::prepareRefit(uint32_t i, cudaStream_t stream) {
+    if (parentsReady_[i]) return;
+    if (blasParents_.size() != blasNodes_.size()) {  // the first refit of this scene
+        blasParents_ = {};
+        blasParents_.resize(blasNodes_.size());
+        std::fill(parentsReady_.begin(), parentsReady_.end(), false);
+    }
+    computeParents(blasNodes(i), hostBlases_[i].nodeCount, blasParents(i), stream);
+    parentsReady_[i] = true;
+}
+
+void DeviceScene::reserveLbvhNodes(uint32_t i, cudaStream_t stream) {
+    const uint32_t needed = lbvhNodeCount(hostBlases_[i].primitiveCount);
+    if (nodeCapacity_[i] >= needed) return;
+    // A new layout with BLAS i's region grown; every region moves to its new offset. Child
+    // indices and parent links are relative to their region, so they move as they are.
+    std::vector<uint32_t> offsets(hostBlases_.size());
+    uint32_t total = 0;
+    for (size_t b = 0; b < hostBlases_.size(); ++b) {
+        offsets[b] = total;
+        total += b == i ? needed : nodeCapacity_[b];
+    }
+    DeviceBuffer<BvhNode> nodes(total);
+    DeviceBuffer<uint32_t> parents(blasParents_.size() != 0 ? total : 0);
+    for (size_t b = 0; b < hostBlases_.size(); ++b) {
+        const size_t count = hostBlases_[b].nodeCount, from = hostBlases_[b].nodeOffset;
+        if (count == 0) continue;
+        PT_CUDA_CHECK(cudaMemcpyAsync(nodes.data() + offsets[b], blasNodes_.data() + from, count * sizeof(BvhNode),
+                                      cudaMemcpyDeviceToDevice, stream));
+        if (parents.size() != 0 && parentsReady_[b]) {
+            PT_CUDA_CHECK(cudaMemcpyAsync(parents.data() + offsets[b], blasParents_.data() + from,
+                                          count * sizeof(uint32_t), cudaMemcpyDeviceToDevice, stream));
+        }
+    }
+    // The old buffers are freed once the copies have read them.
+    PT_CUDA_CHECK(cudaStreamSynchronize(stream));
+    blasNodes_ = std::move(nodes);
+    blasParents_ = std::move(parents);
+    for (size_t b = 0; b < hostBlases_.size(); ++b) hostBlases_[b].nodeOffset = offsets[b];
+    nodeCapacity_[i] = needed;
+    blases_.upload(hostBlases_, stream);
+}
+
 void DeviceScene::setBlasNodeCount(uint32_t i, uint32_t nodeCount, cudaStream_t stream) {
     hostBlases_[i].nodeCount = nodeCount;
     blases_.uploadAt(i, &hostBlases_[i], 1, stream);
+}
+
+void DeviceScene::buildTlas(LbvhBuilder& lbvh, DeviceBuffer<Aabb>& boxes, cudaStream_t stream) {
+    const uint32_t count = instanceCount();
+    if (skipsTlasForOneInstance() && count == 1) {
+        tlasNodes_ = {};
+        const uint32_t only = 0;
+        uploadFitted(tlasInstanceIndices_, &only, 1, stream);
+        return;
+    }
+    tlasNodes_.resize(lbvhNodeCount(count));
+    tlasInstanceIndices_.resize(count);
+    boxes.resize(count);
+    computeInstanceBoxes(instances_.data(), count, blases_.data(), blasNodes_.data(), boxes.data(), stream);
+    lbvh.build(boxes.data(), count, tlasNodes_.data(), tlasInstanceIndices_.data(), stream);
 }
 
 RenderScene DeviceScene::view(const CompiledScene& host) const {
@@ -92,8 +185,8 @@ RenderScene DeviceScene::view(const CompiledScene& host) const {
     s.blasNodes = blasNodes_.span();
     s.blasPrimIndices = blasPrimIndices_.span();
     s.instances = instances_.span();
-    s.tlasNodes = tlasNodes.span();
-    s.tlasInstanceIndices = tlasInstanceIndices.span();
+    s.tlasNodes = tlasNodes_.span();
+    s.tlasInstanceIndices = tlasInstanceIndices_.span();
     s.instanceMaterials = instanceMaterials_.span();
     s.materials = materials_.span();
     s.textures = textures_.span();
@@ -108,14 +201,41 @@ RenderScene DeviceScene::view(const CompiledScene& host) const {
     return s;
 }
 
+std::vector<BufferBytes> DeviceScene::buffers() const {
+    std::vector<BufferBytes> out;
+    add(out, "positions", positions_);
+    add(out, "normals", normals_);
+    add(out, "uvs", uvs_);
+    add(out, "tangents", tangents_);
+    add(out, "triangles", triangles_);
+    add(out, "spheres", spheres_);
+    add(out, "triangle material slots", triangleSlots_);
+    add(out, "sphere material slots", sphereSlots_);
+    add(out, "BLAS refs", blases_);
+    add(out, "BLAS nodes", blasNodes_);
+    add(out, "BLAS primitive indices", blasPrimIndices_);
+    add(out, "BLAS parents (refit)", blasParents_);
+    add(out, "instances", instances_);
+    add(out, "instance materials", instanceMaterials_);
+    add(out, "TLAS nodes", tlasNodes_);
+    add(out, "TLAS instance indices", tlasInstanceIndices_);
+    add(out, "materials", materials_);
+    add(out, "texture views", textures_);
+    add(out, "texels (8-bit)", texels8_);
+    add(out, "texels (float)", texelsF_);
+    add(out, "emitters", emitters_);
+    add(out, "emitter alias table", emitterAlias_);
+    add(out, "punctual lights", punctualLights_);
+    add(out, "environment pdf", envPdf_);
+    add(out, "environment marginal cdf", envMarginalCdf_);
+    add(out, "environment conditional cdf", envConditionalCdf_);
+    return out;
+}
+
 uint64_t DeviceScene::bytes() const {
-    return positions_.bytes() + normals_.bytes() + uvs_.bytes() + tangents_.bytes() + triangles_.bytes() +
-           spheres_.bytes() + triangleSlots_.bytes() + sphereSlots_.bytes() + blases_.bytes() +
-           blasNodes_.bytes() + blasPrimIndices_.bytes() + blasParents_.bytes() + instances_.bytes() +
-           instanceMaterials_.bytes() + materials_.bytes() + textures_.bytes() + texels8_.bytes() +
-           texelsF_.bytes() + emitters_.bytes() + emitterAlias_.bytes() + punctualLights_.bytes() +
-           envPdf_.bytes() + envMarginalCdf_.bytes() + envConditionalCdf_.bytes() + tlasNodes.bytes() +
-           tlasInstanceIndices.bytes();
+    uint64_t total = 0;
+    for (const BufferBytes& b : buffers()) total += b.second;
+    return total;
 }
 
 }  // namespace pt::cuda

@@ -1,49 +1,78 @@
 #pragma once
 // DeviceScene: the CUDA backend's copy of a CompiledScene in device memory, and the
 // RenderScene view of it that kernels read. Uploads come whole (a new scene) or in the parts
-// edits touch (materials, lights, instances, one mesh's vertices). Each BLAS gets room for
-// an LBVH of its primitives (2n - 1 nodes), so a GPU rebuild replaces a CPU-built BLAS in place.
+// edits touch (materials, lights, instances, a range of one mesh's vertices).
+// Buffers a scene does not use are not allocated (DESIGN.md, "Leave out what a scene does not
+// need"): UVs and normals where no mesh has any (kernels read them only where BlasRef says a
+// mesh has them), textures, environment tables, emitters and punctual lights where there are
+// none, BLAS parents until that BLAS is first refitted, the room for an LBVH (2n - 1 nodes)
+// until that BLAS is first rebuilt on the GPU, and the TLAS of a one-instance scene where the
+// traversal walks a lone BLAS (skipsTlasForOneInstance()).
 #include <cuda_runtime.h>
 
 #include <cstdint>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "render/backend/cuda/device_buffer.h"
+#include "render/backend/cuda/gpu_bvh.h"
 #include "render/scene/compile_scene.h"
 
 namespace pt::cuda {
+
+// Whether a scene of exactly one instance leaves its TLAS nodes out, the kernels then walking
+// that instance's BLAS directly (tlasInstanceIndices is then {0}). False while the shared
+// traversal still walks the TLAS in every scene; it flips to true with the traversal change
+// that walks a lone BLAS (scene feature kMultipleInstances off).
+constexpr bool skipsTlasForOneInstance() { return false; }
+
+// One device allocation, by name, for `pt-render bench`'s memory table.
+using BufferBytes = std::pair<std::string, uint64_t>;
 
 class DeviceScene {
 public:
     void uploadAll(const CompiledScene& host, cudaStream_t stream);
     void uploadMaterials(const CompiledScene& host, cudaStream_t stream);
-    void uploadLights(const CompiledScene& host, cudaStream_t stream);
+    // Punctual lights and the light table; the environment's sampling tables too where
+    // `environment` (they change only with the environment image or its intensity).
+    void uploadLights(const CompiledScene& host, cudaStream_t stream, bool environment = true);
     void uploadInstances(const CompiledScene& host, cudaStream_t stream);
-    // Positions, normals and tangents [first, first + count) from `host` (a mesh's vertices).
-    void uploadVertices(const CompiledScene& host, uint32_t first, uint32_t count, cudaStream_t stream);
+    // Vertices [first, first + count) of `host` (a changed range of one mesh). Normals are
+    // skipped where the device holds none (no mesh has them).
+    void uploadPositions(const CompiledScene& host, uint32_t first, uint32_t count, cudaStream_t stream);
+    void uploadNormals(const CompiledScene& host, uint32_t first, uint32_t count, cudaStream_t stream);
+    void uploadTangents(const CompiledScene& host, uint32_t first, uint32_t count, cudaStream_t stream);
     // The spheres of sphere BLAS `blas`.
     void uploadSpheres(const CompiledScene& host, uint32_t blas, cudaStream_t stream);
 
     // Kernels' view: device arrays, with the host's camera, settings and environment scalars.
+    // Valid until the next upload, prepareRefit, reserveLbvhNodes or buildTlas.
     RenderScene view(const CompiledScene& host) const;
 
     uint32_t blasCount() const { return uint32_t(hostBlases_.size()); }
     const BlasRef& blas(uint32_t i) const { return hostBlases_[i]; }  // device offsets
     BvhNode* blasNodes(uint32_t i) const { return blasNodes_.data() + hostBlases_[i].nodeOffset; }
     uint32_t* blasPrimIndices(uint32_t i) const { return blasPrimIndices_.data() + hostBlases_[i].primIndexOffset; }
+    // BLAS i's parent links: valid after prepareRefit(i).
     uint32_t* blasParents(uint32_t i) const { return blasParents_.data() + hostBlases_[i].nodeOffset; }
     uint32_t blasNodeCapacity(uint32_t i) const { return nodeCapacity_[i]; }
+    // Before the first refit of BLAS i: allocates the parent links (for every BLAS's region)
+    // and computes BLAS i's.
+    void prepareRefit(uint32_t i, cudaStream_t stream);
+    // Before the first GPU rebuild of BLAS i: gives its region room for lbvhNodeCount(its
+    // primitives), moving the BLASes' nodes and parents into a larger buffer where it has none.
+    void reserveLbvhNodes(uint32_t i, cudaStream_t stream);
     // After a GPU rebuild wrote `nodeCount` nodes into BLAS i's region.
     void setBlasNodeCount(uint32_t i, uint32_t nodeCount, cudaStream_t stream);
 
-    // The TLAS, built on the device over instanceCount() instances.
-    DeviceBuffer<BvhNode> tlasNodes;
-    DeviceBuffer<uint32_t> tlasInstanceIndices;
-    const RenderInstance* instances() const { return instances_.data(); }
+    // The TLAS over the instances (GPU LBVH over their world boxes, `boxes` its scratch), or
+    // only tlasInstanceIndices = {0} for one instance where skipsTlasForOneInstance().
+    void buildTlas(LbvhBuilder& lbvh, DeviceBuffer<Aabb>& boxes, cudaStream_t stream);
     uint32_t instanceCount() const { return uint32_t(instances_.size()); }
-    const BlasRef* deviceBlases() const { return blases_.data(); }
-    const BvhNode* allBlasNodes() const { return blasNodes_.data(); }
 
+    // Every buffer's allocated bytes, by name, in a fixed order (zero where not allocated).
+    std::vector<BufferBytes> buffers() const;
     uint64_t bytes() const;
 
 private:
@@ -58,6 +87,8 @@ private:
     DeviceBuffer<uint32_t> blasPrimIndices_, blasParents_;
     DeviceBuffer<RenderInstance> instances_;
     DeviceBuffer<uint32_t> instanceMaterials_;
+    DeviceBuffer<BvhNode> tlasNodes_;
+    DeviceBuffer<uint32_t> tlasInstanceIndices_;
     DeviceBuffer<Material> materials_;
     DeviceBuffer<TextureView> textures_;
     DeviceBuffer<uint8_t> texels8_;
@@ -67,8 +98,9 @@ private:
     DeviceBuffer<PunctualLight> punctualLights_;
     DeviceBuffer<float> envPdf_, envMarginalCdf_, envConditionalCdf_;
 
-    std::vector<BlasRef> hostBlases_;      // as on the device: offsets into the padded regions
-    std::vector<uint32_t> nodeCapacity_;
+    std::vector<BlasRef> hostBlases_;      // as on the device: offsets into the node regions
+    std::vector<uint32_t> nodeCapacity_;   // nodes each BLAS's region holds
+    std::vector<bool> parentsReady_;       // per BLAS: its parent links are computed
 };
 
 }  // namespace pt::cuda

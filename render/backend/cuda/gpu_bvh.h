@@ -35,6 +35,11 @@ public:
     // obeys every rule of binned_sah_builder.h's Bvh except the leaf size (always 1) and
     // depth-first order; its depth is at most 62 < kBvhStackSize.
     void build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint32_t* primIndices, cudaStream_t stream);
+    // Device memory the scratch holds (it grows with the largest build so far).
+    uint64_t bytes() const {
+        return keys_.bytes() + sortedKeys_.bytes() + sortScratch_.bytes() + centroidBounds_.bytes() +
+               reduceScratch_.bytes() + leafSlots_.bytes() + internalSlots_.bytes() + visits_.bytes();
+    }
 
 private:
     // Grows the scratch to `count` primitives and asks cub for its temporary storage sizes,

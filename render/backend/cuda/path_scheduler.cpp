@@ -89,11 +89,14 @@ void PathScheduler::render(const RenderScene& scene, uint32_t firstSample, uint3
     const bool cacheCosts = options.firstHitCache && aovs.has(Aov::BvhCost);
     reserve(pixelCount, pixelCount * samplesPerWave, options, cacheCosts);
     const WaveBuffers b = buffers(aovs);
+    // Chosen per render, so an edit that adds a feature runs a variant with it from its first
+    // samples on.
+    variant_ = chooseKernelVariant(scene.features | (aovs.mask != 0 ? feature::kAovs : 0u));
     for (uint32_t done = 0; done < samples;) {
         const uint32_t n = std::min(samplesPerWave, samples - done);
         const WaveShape shape{pixelCount, pixelCount * n, firstSample + done};
         if (options.megakernel) {
-            launchMegakernel(scene, b, shape, stream);
+            launchMegakernel(variant_, scene, b, shape, stream);
         } else {
             runWavefront(scene, b, shape, options, stream);
         }
@@ -104,7 +107,7 @@ void PathScheduler::render(const RenderScene& scene, uint32_t firstSample, uint3
 
 void PathScheduler::runWavefront(const RenderScene& scene, WaveBuffers b, const WaveShape& shape,
                                  const ScheduleOptions& options, cudaStream_t stream) {
-    launchGeneratePaths(scene, b, shape, stream);
+    launchGeneratePaths(variant_, scene, b, shape, stream);
     // Cached hits serve bvh_cost only where their traversal work was cached with them.
     const bool cacheValid = firstHitsValid_ && (b.firstHitCosts == nullptr || firstHitCostsValid_);
     const bool cacheReads = options.firstHitCache && cacheValid;
@@ -123,23 +126,23 @@ void PathScheduler::runWavefront(const RenderScene& scene, WaveBuffers b, const 
     for (uint32_t iteration = 0; count > 0; ++iteration) {
         pathsPerBounce_.push_back(count);
         const bool cameraRays = iteration == 0;
-        launchExtend(scene, b, shape, queue, count, cameraRays && cacheReads, cameraRays && cacheWrites, stream);
+        launchExtend(variant_, scene, b, shape, queue, count, cameraRays && cacheReads, cameraRays && cacheWrites, stream);
         if (options.materialSort) {
             launchSortByMaterial(scene, b, count, queue == nullptr, keyBits, sortScratch_.data(), sortScratch_.size(),
                                  stream);
             queue = b.queue[0];
         }
         PT_CUDA_CHECK(cudaMemsetAsync(countsDevice, 0, kQueueCountsBytes, stream));
-        launchShade(scene, b, queue, count, options.compaction, stream);
+        launchShade(variant_, scene, b, queue, count, options.compaction, stream);
         PT_CUDA_CHECK(cudaMemcpyAsync(countsHost, countsDevice, kQueueCountsBytes, cudaMemcpyDeviceToHost, stream));
         PT_CUDA_CHECK(cudaStreamSynchronize(stream));
         if (options.compaction) {
-            launchShadow(scene, b, b.shadowQueue, hostCounters_->shadowCount, false, stream);
+            launchShadow(variant_, scene, b, b.shadowQueue, hostCounters_->shadowCount, false, stream);
             std::swap(b.queue[0], b.queue[1]);
             queue = b.queue[0];
             count = hostCounters_->queueCount[1];
         } else {
-            launchShadow(scene, b, queue, count, true, stream);
+            launchShadow(variant_, scene, b, queue, count, true, stream);
             queue = nullptr;
             count = hostCounters_->alive > 0 ? shape.pathCount : 0;
         }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "render/backend/cuda/device_buffer.h"
+#include "render/backend/cuda/kernel_variants.h"
 #include "render/backend/cuda/wavefront_kernels.h"
 
 namespace pt::cuda {
@@ -40,6 +41,9 @@ public:
     // Paths alive at the start of each bounce of the last wavefront wave.
     const std::vector<uint32_t>& pathsPerBounce() const { return pathsPerBounce_; }
     uint64_t bytes() const;
+    // The kernel variant (kernel_variants.h) the last render ran: the leanest covering the
+    // scene's features (RenderScene::features) and the AOVs.
+    uint32_t variant() const { return variant_; }
     uint64_t aovBytes() const { return firstHitCosts_.bytes(); }  // within bytes()
 
 private:
@@ -57,6 +61,7 @@ private:
     DeviceBuffer<float> radiance_;
     DeviceBuffer<RenderCounters> counters_;
     RenderCounters* hostCounters_ = nullptr;  // pinned, for the per-bounce queue sizes
+    uint32_t variant_ = kFullVariant;
     bool firstHitsValid_ = false;
     bool firstHitCostsValid_ = false;  // firstHitCosts_ was written with firstHits_
     uint32_t firstHitsPixels_ = 0;

@@ -1,8 +1,10 @@
 // The wavefront stages (wavefront_kernels.h): thin kernels around the shared stage functions of
-// render/integrator/path_tracer.h, so both backends shade with the same code.
+// render/integrator/path_tracer.h, so both backends shade with the same code. Those that run
+// per-ray code are compiled once per kernel variant (kernel_variants.h).
 #include <cub/device/device_radix_sort.cuh>
 
 #include "render/backend/cuda/cuda_check.h"
+#include "render/backend/cuda/variant_dispatch.cuh"
 #include "render/backend/cuda/warp_atomics.cuh"
 #include "render/backend/cuda/wavefront_kernels.h"
 #include "render/integrator/path_tracer.h"
@@ -17,18 +19,19 @@ uint32_t blocksFor(uint32_t count) { return (count + kBlock - 1) / kBlock; }
 
 __device__ __forceinline__ uint32_t threadIndex() { return blockIdx.x * blockDim.x + threadIdx.x; }
 
+template <uint32_t kF>
 __global__ void generateKernel(RenderScene scene, WaveBuffers b, WaveShape shape) {
     const uint32_t i = threadIndex();
     if (i >= shape.pathCount) return;
     const uint32_t pixel = i % shape.pixelCount, sample = i / shape.pixelCount;
     const uint32_t width = scene.settings.width;
-    b.paths[i] = generatePath(scene, pixel % width, pixel / width, shape.firstSample + sample);
+    b.paths[i] = generatePath<kF>(scene, pixel % width, pixel / width, shape.firstSample + sample);
     b.shadows[i].valid = false;  // read in place when compaction is off
 }
 
 // kCost: the bvh_cost AOV is on, so camera segments (depth 0, also past alpha-transparent
 // surfaces) count their traversal work; without, no counter exists.
-template <bool kCost>
+template <uint32_t kF, bool kCost>
 __global__ void extendKernel(RenderScene scene, WaveBuffers b, WaveShape shape, const uint32_t* queue,
                              uint32_t count, bool readCache, bool writeCache) {
     const uint32_t i = threadIndex();
@@ -43,7 +46,7 @@ __global__ void extendKernel(RenderScene scene, WaveBuffers b, WaveShape shape, 
         hit = b.firstHits[pixel];
         if (kCost) cost = b.firstHitCosts[pixel];
     } else {
-        intersectClosest(scene, b.paths[path].ray, hit, counted ? &cost : nullptr);
+        intersectClosest<kF>(scene, b.paths[path].ray, hit, counted ? &cost : nullptr);
         warpAtomicAdd(&b.counters->rays, 1u);
         // Every sample of a pixel shares the camera ray here, so sample 0 speaks for all.
         if (writeCache && path < shape.pixelCount) {
@@ -79,7 +82,7 @@ __global__ void materialKeyKernel(RenderScene scene, WaveBuffers b, uint32_t cou
 }
 
 // kAovs: paths record AOVs; without, the kernel is the one that ran before AOVs existed.
-template <bool kAovs>
+template <uint32_t kF, bool kAovs>
 __global__ void shadeKernel(RenderScene scene, WaveBuffers b, const uint32_t* queue, uint32_t count, bool compaction) {
     const uint32_t i = threadIndex();
     if (i >= count) return;
@@ -91,9 +94,9 @@ __global__ void shadeKernel(RenderScene scene, WaveBuffers b, const uint32_t* qu
     AovSample aov;  // instance stays -1 unless an opaque surface is recorded
     ShadowRay shadow{};
     if (hit.valid()) {
-        shadow = shadeSurface(scene, state, hit, cameraSegment ? &aov : nullptr);
+        shadow = shadeSurface<kF>(scene, state, hit, cameraSegment ? &aov : nullptr);
     } else {
-        shadeMiss(scene, state);
+        shadeMiss<kF>(scene, state);
     }
     // The camera segment ends at its first opaque surface or where it leaves the scene; an
     // alpha-transparent surface only moved it on, and a later shade records it.
@@ -111,6 +114,7 @@ __global__ void shadeKernel(RenderScene scene, WaveBuffers b, const uint32_t* qu
     }
 }
 
+template <uint32_t kF>
 __global__ void shadowKernel(RenderScene scene, WaveBuffers b, const uint32_t* queue, uint32_t count, bool consume) {
     const uint32_t i = threadIndex();
     if (i >= count) return;
@@ -121,7 +125,7 @@ __global__ void shadowKernel(RenderScene scene, WaveBuffers b, const uint32_t* q
     PathState& state = b.paths[path];
     PathCounters counters;
     // state.depth as tracePath passes it (after shading), so both schedules draw the same numbers.
-    if (shadowRayUnoccluded(scene, shadow.ray, state.sampler, state.depth, counters)) {
+    if (shadowRayUnoccluded<kF>(scene, shadow.ray, state.sampler, state.depth, counters)) {
         state.radiance += shadow.contribution;
     }
     warpAtomicAdd(&b.counters->rays, uint32_t(counters.rays));
@@ -160,16 +164,37 @@ __global__ void accumulateKernel(WaveBuffers b, WaveShape shape, double* sum) {
 
 }  // namespace
 
-void launchGeneratePaths(const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape, cudaStream_t stream) {
-    generateKernel<<<blocksFor(shape.pathCount), kBlock, 0, stream>>>(scene, b, shape);
+WavefrontSymbols wavefrontSymbols(uint32_t variant) {
+    WavefrontSymbols s{};
+    forKernelVariant(variant, [&](auto features) {
+        constexpr uint32_t kF = decltype(features)::value;
+        s.extend = reinterpret_cast<const void*>(extendKernel<kF, false>);
+        s.shade = reinterpret_cast<const void*>(shadeKernel<kF, false>);
+        s.shadow = reinterpret_cast<const void*>(shadowKernel<kF>);
+    });
+    return s;
+}
+
+void launchGeneratePaths(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape,
+                         cudaStream_t stream) {
+    forKernelVariant(variant, [&](auto features) {
+        generateKernel<decltype(features)::value><<<blocksFor(shape.pathCount), kBlock, 0, stream>>>(scene, b, shape);
+    });
     PT_CUDA_CHECK_LAUNCH("generateKernel");
 }
 
-void launchExtend(const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape, const uint32_t* queue,
-                  uint32_t count, bool readCache, bool writeCache, cudaStream_t stream) {
+void launchExtend(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape,
+                  const uint32_t* queue, uint32_t count, bool readCache, bool writeCache, cudaStream_t stream) {
     if (count == 0) return;
-    const auto kernel = b.aovs.has(Aov::BvhCost) ? extendKernel<true> : extendKernel<false>;
-    kernel<<<blocksFor(count), kBlock, 0, stream>>>(scene, b, shape, queue, count, readCache, writeCache);
+    if (b.aovs.has(Aov::BvhCost)) {  // AOVs run the generic code (kernel_variants.h)
+        extendKernel<kAllFeatures, true>
+            <<<blocksFor(count), kBlock, 0, stream>>>(scene, b, shape, queue, count, readCache, writeCache);
+    } else {
+        forKernelVariant(variant, [&](auto features) {
+            extendKernel<decltype(features)::value, false>
+                <<<blocksFor(count), kBlock, 0, stream>>>(scene, b, shape, queue, count, readCache, writeCache);
+        });
+    }
     PT_CUDA_CHECK_LAUNCH("extendKernel");
 }
 
@@ -192,18 +217,26 @@ void launchSortByMaterial(const RenderScene& scene, const WaveBuffers& b, uint32
     PT_CUDA_CHECK(cudaMemcpyAsync(b.queue[0], b.queue[1], count * sizeof(uint32_t), cudaMemcpyDeviceToDevice, stream));
 }
 
-void launchShade(const RenderScene& scene, const WaveBuffers& b, const uint32_t* queue, uint32_t count,
-                 bool compaction, cudaStream_t stream) {
+void launchShade(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const uint32_t* queue,
+                 uint32_t count, bool compaction, cudaStream_t stream) {
     if (count == 0) return;
-    const auto kernel = (b.aovs.mask & kPathAovs) ? shadeKernel<true> : shadeKernel<false>;
-    kernel<<<blocksFor(count), kBlock, 0, stream>>>(scene, b, queue, count, compaction);
+    if (b.aovs.mask & kPathAovs) {  // AOVs run the generic code (kernel_variants.h)
+        shadeKernel<kAllFeatures, true><<<blocksFor(count), kBlock, 0, stream>>>(scene, b, queue, count, compaction);
+    } else {
+        forKernelVariant(variant, [&](auto features) {
+            shadeKernel<decltype(features)::value, false>
+                <<<blocksFor(count), kBlock, 0, stream>>>(scene, b, queue, count, compaction);
+        });
+    }
     PT_CUDA_CHECK_LAUNCH("shadeKernel");
 }
 
-void launchShadow(const RenderScene& scene, const WaveBuffers& b, const uint32_t* queue, uint32_t count,
-                  bool consume, cudaStream_t stream) {
+void launchShadow(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const uint32_t* queue,
+                  uint32_t count, bool consume, cudaStream_t stream) {
     if (count == 0) return;
-    shadowKernel<<<blocksFor(count), kBlock, 0, stream>>>(scene, b, queue, count, consume);
+    forKernelVariant(variant, [&](auto features) {
+        shadowKernel<decltype(features)::value><<<blocksFor(count), kBlock, 0, stream>>>(scene, b, queue, count, consume);
+    });
     PT_CUDA_CHECK_LAUNCH("shadowKernel");
 }
 

@@ -43,13 +43,17 @@ struct WaveShape {
     uint32_t firstSample;
 };
 
-void launchGeneratePaths(const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape, cudaStream_t stream);
+// `variant` (every launcher of per-ray code takes one): the kernel variant to run
+// (kernel_variants.h), chosen by the scheduler from the scene's features; with AOVs on, the
+// stages that record them run the generic variant whatever this says.
+void launchGeneratePaths(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape,
+                         cudaStream_t stream);
 
 // Closest hits of the paths in `queue` (count entries; all paths when queue is nullptr).
 // readCache: camera rays whose hits are in b.firstHits; writeCache: store them there. With the
 // bvh_cost AOV, camera segments count their traversal work into it.
-void launchExtend(const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape, const uint32_t* queue,
-                  uint32_t count, bool readCache, bool writeCache, cudaStream_t stream);
+void launchExtend(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape,
+                  const uint32_t* queue, uint32_t count, bool readCache, bool writeCache, cudaStream_t stream);
 
 // Material sort: reorders queue[0] (count entries; with `identity` first set to every path) by
 // the material each path hit, misses and dead paths first, through queue[1] and sortKeys.
@@ -62,21 +66,31 @@ void launchSortByMaterial(const RenderScene& scene, const WaveBuffers& b, uint32
 // appended to b.queue[1] and valid shadow rays to b.shadowQueue; without, shadows are marked
 // valid in place and b.counters->alive counts the live paths. Camera segments that end here
 // add their AOVs to b.aovs.
-void launchShade(const RenderScene& scene, const WaveBuffers& b, const uint32_t* queue, uint32_t count,
-                 bool compaction, cudaStream_t stream);
+void launchShade(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const uint32_t* queue,
+                 uint32_t count, bool compaction, cudaStream_t stream);
 
 // Shadow rays of the paths in `queue` (count entries; all paths when nullptr); invalid ones are
 // skipped, and unoccluded contributions are added to the paths' radiance. `consume` marks
 // each one invalid once traced (in-place shadow rays, compaction off).
-void launchShadow(const RenderScene& scene, const WaveBuffers& b, const uint32_t* queue, uint32_t count,
-                  bool consume, cudaStream_t stream);
+void launchShadow(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const uint32_t* queue,
+                  uint32_t count, bool consume, cudaStream_t stream);
 
 // Finished paths' radiance into b.radiance, non-finite samples counted and zeroed.
 void launchFinishPaths(const WaveBuffers& b, const WaveShape& shape, cudaStream_t stream);
 
 // The megakernel: each thread traces one whole path (tracePath) into b.radiance, and its AOVs
 // into b.aovs.
-void launchMegakernel(const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape, cudaStream_t stream);
+void launchMegakernel(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape,
+                      cudaStream_t stream);
+
+// The kernels of a variant without AOVs, for their resources (kernel_variants.h).
+struct WavefrontSymbols {
+    const void* extend;
+    const void* shade;
+    const void* shadow;
+};
+WavefrontSymbols wavefrontSymbols(uint32_t variant);
+const void* megakernelSymbol(uint32_t variant);
 
 // Traversal alone (Backend::traceRays): closest hits, or with anyHit occlusion as instance 0 /
 // Hit::kNoHit, of `count` world-space rays.

@@ -152,5 +152,53 @@ TEST(CompileScene, HiddenInstancesAndUnmappedSlotsAreHandled) {
     EXPECT_EQ(compiled.instanceMaterials[compiled.instances[1].materialOffset], compiled.materials.size() - 1);
 }
 
+// The light table skips meshes no instance shades with an emissive material (so a scene
+// without emitters never walks its triangles), yet a mesh shared by an emissive and a plain
+// instance, or emissive in one slot only, still gives exactly its emissive triangles.
+TEST(CompileScene, LightTableHoldsEveryEmissiveTriangleAndNoOther) {
+    Scene scene = sceneWithGrid(3, 3);  // 18 triangles a grid
+    Material bright = diffuse({0, 0, 0});
+    bright.emission = {1, 1, 1};
+    const uint32_t light = addMaterial(scene, "light", bright);
+    scene.meshes.push_back(gridMesh(2));  // 8 triangles, two slots: the first 3 in slot 1
+    scene.meshes[1].slotCount = 2;
+    scene.meshes[1].primitiveSlots = {1, 1, 1, 0, 0, 0, 0, 0};
+    Instance twoSlots;
+    twoSlots.mesh = 1;
+    twoSlots.materials = {0, 0};
+    scene.instances.push_back(twoSlots);
+    CompiledScene plain = compileRenderScene(scene);
+    EXPECT_EQ(plain.stats.emitterCount, 0u);
+    EXPECT_EQ(plain.emitters.emitters.size(), 0u);
+
+    scene.instances[1].materials = {light};  // the shared grid's second instance emits
+    scene.instances[3].materials = {0, light};
+    const CompiledScene compiled = compileRenderScene(scene);
+    EXPECT_EQ(compiled.stats.emitterCount, 18u + 3u);
+    for (const Emitter& e : compiled.emitters.emitters) {
+        EXPECT_TRUE(e.instance == 1 || (e.instance == 3 && e.primitive < 3)) << e.instance << " " << e.primitive;
+    }
+    // After an edit, the table is the one a fresh compile gives.
+    compileInstances(scene, plain);
+    compileLights(scene, plain, LightsUpdate::KeepEnvironment);
+    ASSERT_EQ(plain.emitters.emitters.size(), compiled.emitters.emitters.size());
+    for (size_t i = 0; i < plain.emitters.emitters.size(); ++i) {
+        EXPECT_EQ(plain.emitters.emitters[i].instance, compiled.emitters.emitters[i].instance);
+        EXPECT_EQ(plain.emitters.emitters[i].primitive, compiled.emitters.emitters[i].primitive);
+        EXPECT_EQ(plain.emitters.emitters[i].weight, compiled.emitters.emitters[i].weight);
+    }
+}
+
+TEST(CompileScene, ARefusedInstanceEditLeavesTheInstancesAsTheyWere) {
+    Scene scene = sceneWithGrid(2, 3);
+    CompiledScene compiled = compileRenderScene(scene);
+    scene.instances[0].objectToWorld = translationTransform({5.0f, 0.0f, 0.0f});
+    scene.instances[2].materials = {42};
+    EXPECT_THROW(compileInstances(scene, compiled), std::invalid_argument);
+    ASSERT_EQ(compiled.instances.size(), 3u);
+    EXPECT_EQ(compiled.instances[0].objectToWorld.rows[0].w, 0.0f);
+    EXPECT_EQ(compiled.instanceMaterials.size(), 3u);
+}
+
 }  // namespace
 }  // namespace pt

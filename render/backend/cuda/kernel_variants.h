@@ -1,0 +1,61 @@
+#pragma once
+// The feature sets the CUDA kernels are compiled for (scene_features.h; Cycles' kernel
+// features). Each variant is the megakernel and the wavefront stages instantiated with its set
+// as a compile-time constant, so code a scene does not need is not in the kernel that runs.
+// A scene runs the first variant, from the leanest, whose set covers the scene's; "full", the
+// generic code, covers every scene. Precompiling a few sets (rather than compiling one per
+// scene at run time with NVRTC) keeps the first frame of any scene free of compilation, and
+// the build time of the CUDA code within a few variants' worth; the sets are chosen from the
+// scenes users bring: a Cornell-style box (diffuse, metal, glass, area lights), the same with
+// one instance (a scanned or generated mesh), and a textured glTF under an HDR sky.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "render/scene/scene_features.h"
+
+namespace pt::cuda {
+
+struct KernelVariant {
+    const char* name;
+    uint32_t features;  // what its kernels can render
+};
+
+namespace variant_features {
+using namespace feature;
+// Untextured surfaces of every lobe but the coat, every light but the image environment.
+constexpr uint32_t kLeanSingle = kUngated | kTransmission | kSpheres | kSphereLights | kPunctualLights;
+constexpr uint32_t kLean = kLeanSingle | kMultipleInstances;
+// What glTF scenes usually bring on top: textures, normal maps, alpha, an HDR sky, depth of field.
+constexpr uint32_t kTextured = kLean | kTextures | kNormalMap | kTransparency | kImageEnvironment | kThinLens;
+}  // namespace variant_features
+
+inline constexpr KernelVariant kKernelVariants[] = {
+    {"lean-single", variant_features::kLeanSingle},
+    {"lean", variant_features::kLean},
+    {"textured", variant_features::kTextured},
+    {"full", kAllFeatures},
+};
+constexpr uint32_t kKernelVariantCount = sizeof(kKernelVariants) / sizeof(kKernelVariants[0]);
+constexpr uint32_t kFullVariant = kKernelVariantCount - 1;
+
+// The leanest variant whose features cover `features` (always found: the last covers all).
+constexpr uint32_t chooseKernelVariant(uint32_t features) {
+    for (uint32_t i = 0; i < kKernelVariantCount; ++i) {
+        if ((features & ~kKernelVariants[i].features) == 0u) return i;
+    }
+    return kFullVariant;
+}
+
+// Resources of one compiled kernel, read from the module (cudaFuncGetAttributes).
+struct KernelResources {
+    std::string variant;   // kKernelVariants name
+    std::string kernel;    // "megakernel", "extend", "shade", "shadow"
+    std::string symbol;    // the mangled name (cudaFuncGetName), to find it in a disassembly
+    int registers = 0;
+    size_t localBytes = 0;  // per thread: stack frame and spills
+    size_t constantBytes = 0;
+};
+std::vector<KernelResources> kernelResources();
+
+}  // namespace pt::cuda

@@ -1,0 +1,94 @@
+#include "render/scene/scene_features.h"
+
+#include "render/integrator/medium.h"
+#include "render/materials/alpha.h"
+#include "render/materials/ggx.h"
+#include "render/scene/compile_scene.h"
+
+namespace pt {
+
+namespace {
+
+uint32_t materialFeatures(const Material& m) {
+    using namespace feature;
+    uint32_t f = 0;
+    if (m.baseColorTexture.present()) f |= kBaseColorTexture;
+    if (m.metallicRoughnessTexture.present()) f |= kMetallicRoughnessTexture;
+    if (m.emissiveTexture.present() && m.isEmissive()) f |= kEmissiveTexture;
+    if (m.transmissionTexture.present()) f |= kTransmissionTexture;
+    if (m.normalTexture.present()) f |= kNormalMap;
+    if (materialMayBeTransparent(m)) f |= m.alphaMode == AlphaMode::Mask ? kAlphaMask : kAlphaBlend;
+    if (cullsBackFaces(m)) f |= kBackfaceCulling;
+    if (m.metallic > 0.0f) f |= kMetal;  // a texture only scales the factor
+    const bool mayTransmit = (m.transmission > 0.0f || m.transmissionTexture.present()) && m.metallic < 1.0f;
+    if (mayTransmit) {
+        const bool smooth = ggxIsSmooth(ggxAlpha(m.roughness));
+        f |= smooth ? kSmoothTransmission : kRoughTransmission;
+        // A roughness texture can scale any roughness down to smooth.
+        if (m.metallicRoughnessTexture.present()) f |= kSmoothTransmission;
+        if (isVolumeBoundary(m) && maxComponent(absorptionCoefficient(m)) > 0.0f) f |= kVolume;
+    }
+    if (m.clearcoat > 0.0f) f |= kClearcoat;
+    if (m.specular != 1.0f || m.specularColor.x != 1.0f || m.specularColor.y != 1.0f || m.specularColor.z != 1.0f) {
+        f |= kSpecularLayer;
+    }
+    return f;
+}
+
+}  // namespace
+
+uint32_t sceneFeatures(const CompiledScene& scene, bool morphTargets) {
+    using namespace feature;
+    uint32_t f = 0;
+    // Only materials some traced instance uses: a library of unused materials costs nothing.
+    std::vector<bool> used(scene.materials.size(), false);
+    for (const uint32_t m : scene.instanceMaterials) {
+        if (m < used.size() && !used[m]) {
+            used[m] = true;
+            f |= materialFeatures(scene.materials[m]);
+        }
+    }
+    if (scene.stats.emitterCount > 0) f |= kEmissiveTriangles;
+    if (scene.stats.sphereLightCount > 0) f |= kSphereLights;
+    if (!scene.punctualLights.empty()) f |= kPunctualLights;
+    if (scene.environment.texture >= 0) {
+        f |= kImageEnvironment;
+    } else if (maxComponent(scene.environment.color) > 0.0f) {
+        f |= kConstantEnvironment;
+    }
+    if (scene.camera.lensRadius > 0.0f) f |= kThinLens;
+    if (morphTargets) f |= kMorphTargets;
+    if (scene.instances.size() > 1) f |= kMultipleInstances;
+    if (!scene.spheres.empty()) f |= kSpheres;
+    if (scene.bruteForce) f |= kBruteForce;
+    return f;
+}
+
+const char* featureName(uint32_t bit) {
+    static const char* const kNames[feature::kCount] = {
+        "base_color_texture", "metallic_roughness_texture", "emissive_texture", "transmission_texture",
+        "normal_map", "alpha_mask", "alpha_blend", "backface_culling", "smooth_transmission",
+        "rough_transmission", "volume", "clearcoat", "specular_layer", "metal", "emissive_triangles",
+        "sphere_lights", "punctual_lights", "constant_environment", "image_environment", "thin_lens",
+        "morph_targets", "multiple_instances", "spheres", "aovs", "brute_force"};
+    for (uint32_t i = 0; i < feature::kCount; ++i) {
+        if (bit == (1u << i)) return kNames[i];
+    }
+    return "unknown";
+}
+
+std::vector<std::string> featureNames(uint32_t features) {
+    std::vector<std::string> names;
+    for (uint32_t i = 0; i < feature::kCount; ++i) {
+        if (features & (1u << i)) names.push_back(featureName(1u << i));
+    }
+    return names;
+}
+
+std::string describeFeatures(uint32_t features) {
+    std::string s;
+    for (const std::string& name : featureNames(features)) s += (s.empty() ? "" : ", ") + name;
+    return s.empty() ? "none" : s;
+}
+
+}  // namespace pt
