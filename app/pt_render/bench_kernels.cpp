@@ -5,6 +5,8 @@
 #include <regex>
 #include <string>
 
+#include <unistd.h>
+
 #include "render/scene/scene_features.h"
 #if PT_HAVE_CUDA
 #include "render/backend/cuda/kernel_variants.h"
@@ -12,6 +14,7 @@
 
 namespace pt::cli {
 
+#if PT_HAVE_CUDA
 namespace {
 
 // Instruction count of every kernel in this executable's machine code, by mangled name, from
@@ -19,10 +22,15 @@ namespace {
 // place); empty where there is none.
 std::map<std::string, int> sassInstructionCounts() {
     std::map<std::string, int> counts;
-    std::FILE* pipe = popen(
-        "{ command -v cuobjdump >/dev/null && cuobjdump -sass /proc/self/exe ||"
-        " /usr/local/cuda/bin/cuobjdump -sass /proc/self/exe; } 2>/dev/null",
-        "r");
+    // This executable's own path: /proc/self in the shell popen starts would be the shell's.
+    char exe[4096];
+    const ssize_t length = readlink("/proc/self/exe", exe, sizeof(exe) - 1);
+    if (length <= 0) return counts;
+    exe[length] = '\0';
+    const std::string path = "'" + std::string(exe) + "'";
+    const std::string command = "{ command -v cuobjdump >/dev/null && cuobjdump -sass " + path +
+                                " || /usr/local/cuda/bin/cuobjdump -sass " + path + "; } 2>/dev/null";
+    std::FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return counts;
     static const std::regex function(R"(Function\s*:\s*(\S+))");
     static const std::regex instruction(R"(^\s*/\*[0-9a-f]{4,}\*/\s+\S)");
@@ -42,6 +50,7 @@ std::map<std::string, int> sassInstructionCounts() {
 }
 
 }  // namespace
+#endif
 
 void benchKernelVariants(BenchReport& report) {
 #if PT_HAVE_CUDA

@@ -10,7 +10,7 @@ const std::set<std::string>& toggleSwitches() {
 }
 
 const std::set<std::string>& toggleValuedFlags() {
-    static const std::set<std::string> flags = {"--clamp", "--rebuild-ratio"};
+    static const std::set<std::string> flags = {"--clamp", "--rebuild-ratio", "--kernel-variant"};
     return flags;
 }
 
@@ -34,6 +34,7 @@ IntegratorToggles parseToggles(const Options& o) {
     if (o.has("--sort-materials")) t.materialSort = true;
     if (o.has("--no-sort-materials")) t.materialSort = false;
     if (o.has("--no-first-hit-cache")) t.firstHitCache = false;
+    t.kernelVariant = o.value("--kernel-variant").value_or("");
     if (const auto ratio = o.positiveNumber("--rebuild-ratio")) {
         if (*ratio < 1.0) throw UsageError("--rebuild-ratio must be at least 1");
         t.rebuildSahRatio = float(*ratio);

@@ -33,6 +33,10 @@ struct IntegratorToggles {
     bool autoSchedule = true;
     // Without autoSchedule: one thread runs a whole path; else the wavefront stages.
     bool megakernel = true;
+    // The CUDA kernel variant (render/backend/cuda/kernel_variants.h) by name, to compare
+    // variants; "" (the default): the leanest that covers the scene. A variant that does not
+    // cover the scene's features is not used: the leanest covering one runs instead.
+    std::string kernelVariant = "";
     bool streamCompaction = true;   // wavefront: dead paths leave the queues between bounces
     bool materialSort = false;      // wavefront: paths sorted by material before shading
     bool firstHitCache = true;      // reuse camera-ray hits across passes where the camera allows
@@ -75,7 +79,7 @@ struct BackendStats {
     uint32_t features = 0;
     // GPU backends: the kernel variant that runs (render/backend/cuda/kernel_variants.h) and the
     // features it was compiled for; "" and 0 where code is not specialised (the CPU).
-    std::string kernelVariant;
+    std::string kernelVariant = "";
     uint32_t kernelFeatures = 0;
     // GPU backends: the schedule that runs ("megakernel", "wavefront", or "measuring" while the
     // auto schedule times both) and, under auto, the rates it measured (spp/s; 0: not yet).

@@ -162,7 +162,11 @@ TEST(CudaEditCost, MovingAnObjectWithItsLightsRendersLikeAFreshBuild) {
     object.name = "file";
     scene.objects.push_back(object);
     scene.instances[1].object = 0;
+    // One schedule for both (the auto schedule may pick either): the same samples.
+    IntegratorToggles fixed;
+    fixed.autoSchedule = false;
     cuda::CudaBackend edited;
+    edited.setToggles(fixed);
     edited.sync(scene, SceneChanges::All, {});
     scene.instances[1].objectToWorld = translationTransform({0.0f, 0.0f, 3.0f});
     scene.lights[0].direction = {-0.3f, -1.0f, 0.2f};
@@ -170,6 +174,7 @@ TEST(CudaEditCost, MovingAnObjectWithItsLightsRendersLikeAFreshBuild) {
     EXPECT_EQ(report.action, "TLAS");
     edited.render(16);
     cuda::CudaBackend fresh;
+    fresh.setToggles(fixed);
     fresh.sync(scene, SceneChanges::All, {});
     fresh.render(16);
     std::vector<float> a, b;

@@ -321,6 +321,7 @@ ScheduleOptions CudaBackend::scheduleOptions() const {
     o.materialSort = toggles_.materialSort;
     o.firstHitCache = toggles_.firstHitCache && firstHitCacheApplies(nullptr);
     o.materialCount = compiled_ ? uint32_t(compiled_->materials.size()) : 1u;
+    o.kernelVariant = kernelVariantIndex(toggles_.kernelVariant);
     return o;
 }
 
@@ -413,7 +414,8 @@ BackendStats CudaBackend::stats() const {
     s.rays = counters.rays;
     s.nonfiniteSamples = counters.nonfinite;
     s.features = view_.features | (aovs_ != 0 ? feature::kAovs : 0u);
-    const KernelVariant& variant = kKernelVariants[chooseKernelVariant(s.features)];  // as the scheduler chooses
+    // As the scheduler chooses.
+    const KernelVariant& variant = kKernelVariants[chooseKernelVariant(s.features, kernelVariantIndex(toggles_.kernelVariant))];
     s.kernelVariant = variant.name;
     s.kernelFeatures = variant.features;
     if (toggles_.autoSchedule) {

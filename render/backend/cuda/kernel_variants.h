@@ -39,12 +39,28 @@ inline constexpr KernelVariant kKernelVariants[] = {
 constexpr uint32_t kKernelVariantCount = sizeof(kKernelVariants) / sizeof(kKernelVariants[0]);
 constexpr uint32_t kFullVariant = kKernelVariantCount - 1;
 
-// The leanest variant whose features cover `features` (always found: the last covers all).
-constexpr uint32_t chooseKernelVariant(uint32_t features) {
+constexpr bool variantCovers(uint32_t variant, uint32_t features) {
+    return (features & ~kKernelVariants[variant].features) == 0u;
+}
+
+// The variant that renders `features`: `requested` (an index, or -1 for none) where it covers
+// them, else the leanest that does (always found: the last covers all).
+constexpr uint32_t chooseKernelVariant(uint32_t features, int requested = -1) {
+    if (requested >= 0 && uint32_t(requested) < kKernelVariantCount && variantCovers(uint32_t(requested), features)) {
+        return uint32_t(requested);
+    }
     for (uint32_t i = 0; i < kKernelVariantCount; ++i) {
-        if ((features & ~kKernelVariants[i].features) == 0u) return i;
+        if (variantCovers(i, features)) return i;
     }
     return kFullVariant;
+}
+
+// The index of the variant named `name`; -1 for "" or an unknown name.
+inline int kernelVariantIndex(const std::string& name) {
+    for (uint32_t i = 0; i < kKernelVariantCount; ++i) {
+        if (name == kKernelVariants[i].name) return int(i);
+    }
+    return -1;
 }
 
 // Resources of one compiled kernel, read from the module (cudaFuncGetAttributes).

@@ -91,7 +91,7 @@ void PathScheduler::render(const RenderScene& scene, uint32_t firstSample, uint3
     const WaveBuffers b = buffers(aovs);
     // Chosen per render, so an edit that adds a feature runs a variant with it from its first
     // samples on.
-    variant_ = chooseKernelVariant(scene.features | (aovs.mask != 0 ? feature::kAovs : 0u));
+    variant_ = chooseKernelVariant(scene.features | (aovs.mask != 0 ? feature::kAovs : 0u), options.kernelVariant);
     for (uint32_t done = 0; done < samples;) {
         const uint32_t n = std::min(samplesPerWave, samples - done);
         const WaveShape shape{pixelCount, pixelCount * n, firstSample + done};
