@@ -127,7 +127,10 @@ int runBench(const std::vector<std::string>& args) {
     benchEdits(r.backend, scene, r.settings, report);
     phase("image check");
     benchImageCheck(*backend, scene, r.settings, report);
-    if (r.backend == "cuda") benchKernelVariants(report);
+    if (r.backend == "cuda") {
+        benchWavefrontOverhead(*backend, scene, r.settings, report);
+        benchKernelVariants(report);
+    }
     report.add({"memory", "device memory after the benchmark", "", double(backend->deviceMemoryBytes()) / (1 << 20),
                 "MiB", ""});
 

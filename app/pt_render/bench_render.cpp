@@ -5,6 +5,8 @@
 #include <functional>
 
 #include "render/backend/toggle_states.h"
+#include "render/bvh/hit.h"
+#include "render/integrator/path_state.h"
 #include "render/util/stopwatch.h"
 
 namespace pt::cli {
@@ -106,6 +108,33 @@ void benchPathTracing(Backend& backend, const Scene& scene, const BenchSettings&
     }
     backend.setToggles(settings.toggles);
     backend.sync(scene, SceneChanges::Settings, {});
+}
+
+void benchWavefrontOverhead(Backend& backend, Scene scene, const BenchSettings& settings, BenchReport& report) {
+    if (backend.name() == "cpu") return;
+    // What a path carries between the stages: its state, its closest hit, its shadow ray, its
+    // entries in the path and shadow queues, and its finished RGB.
+    const size_t bytes = sizeof(PathState) + sizeof(Hit) + sizeof(ShadowRay) + 3 * sizeof(uint32_t) + 3 * sizeof(float);
+    report.add({"wavefront", "device memory per path", "", double(bytes), "bytes",
+                "PathState " + std::to_string(sizeof(PathState)) + ", Hit " + std::to_string(sizeof(Hit)) +
+                    ", ShadowRay " + std::to_string(sizeof(ShadowRay)) + ", queues 12, radiance 12"});
+    scene.render.width = scene.render.height = 1;
+    IntegratorToggles toggles = settings.toggles;
+    toggles.autoSchedule = false;
+    toggles.megakernel = false;
+    backend.setToggles(toggles);
+    backend.sync(scene, SceneChanges::All, {});
+    backend.render(1);  // warm-up
+    std::vector<double> perBounce;
+    for (uint32_t r = 0; r < 4 * settings.runs; ++r) {
+        const auto start = Clock::now();
+        backend.render(1);
+        const double seconds = secondsSince(start);
+        const size_t bounces = backend.pathsAlivePerBounce().size();
+        if (bounces > 0) perBounce.push_back(seconds / double(bounces));
+    }
+    report.add({"wavefront", "fixed cost of a bounce", "1x1 image", median(perBounce) * 1e3, "ms",
+                "extend, shade and shadow launches, the queue-size read-back and its host sync"});
 }
 
 void benchImageCheck(Backend& backend, Scene scene, const BenchSettings& settings, BenchReport& report) {

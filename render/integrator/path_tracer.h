@@ -198,31 +198,41 @@ PT_HD ShadowRay shadeSurface(const RenderScene& scene, PathState& state, const H
     return shadow;
 }
 
-// tracePath's loop where neither AOVs nor transparent surfaces are in play: each iteration
-// traces one ray, the shadow ray the last shading queued or else the path's next segment, at
-// one call site (intersectScene). A warp whose threads are at different stages then walks the
-// BVH together instead of twice in turn, and the kernel holds one copy of the walk. The rays,
-// their order and the sums are those of the plain loop, so images match it bit for bit.
+// The fused schedule, for code where neither AOVs nor transparent surfaces are in play: each
+// step traces one ray, the shadow ray the last shading queued or else the path's next segment,
+// at one call site (intersectScene). A warp whose threads are at different stages then walks
+// the BVH together instead of twice in turn, and the kernel holds one copy of the walk. The
+// rays, their order and the sums are those of tracePath's plain loop, so images match it bit
+// for bit. The path is done once fusedPathDone() (no shadow ray pending, the path ended).
+PT_HD bool fusedPathDone(const PathState& state, const ShadowRay& shadow) { return !shadow.valid && !state.alive; }
+
+template <uint32_t kF>
+PT_HD void traceFusedStep(const RenderScene& scene, PathState& state, ShadowRay& shadow, PathCounters& counters) {
+    const bool shadowTurn = shadow.valid;
+    Hit hit;
+    ++counters.rays;
+    const bool found = intersectScene<kF>(scene, shadowTurn ? shadow.ray : state.ray, shadowTurn, hit);
+    if (shadowTurn) {
+        if (!found) state.radiance += shadow.contribution;
+        shadow.valid = false;
+    } else if (!found) {
+        shadeMiss<kF>(scene, state);  // ends the path
+    } else {
+        shadow = shadeSurface<kF>(scene, state, hit);
+    }
+}
+
 template <uint32_t kF>
 PT_HD void traceFusedPath(const RenderScene& scene, PathState& state, PathCounters& counters) {
     ShadowRay shadow{};
-    for (;;) {
-        const bool shadowTurn = shadow.valid;
-        if (!shadowTurn && !state.alive) break;
-        Hit hit;
-        ++counters.rays;
-        const bool found = intersectScene<kF>(scene, shadowTurn ? shadow.ray : state.ray, shadowTurn, hit);
-        if (shadowTurn) {
-            if (!found) state.radiance += shadow.contribution;
-            shadow.valid = false;
-            continue;
-        }
-        if (!found) {
-            shadeMiss<kF>(scene, state);
-            break;
-        }
-        shadow = shadeSurface<kF>(scene, state, hit);
-    }
+    while (!fusedPathDone(state, shadow)) traceFusedStep<kF>(scene, state, shadow, counters);
+}
+
+// The radiance a finished path adds to its pixel: non-finite samples are counted and dropped.
+PT_HD Vec3 finishedRadiance(const PathState& state, PathCounters& counters) {
+    if (isFinite(state.radiance)) return state.radiance;
+    ++counters.nonfiniteSamples;
+    return Vec3(0.0f);
 }
 
 // One sample of pixel (x, y): the megakernel schedule of the stages above. With kAovs, `aov`
@@ -251,11 +261,7 @@ PT_HD Vec3 tracePath(const RenderScene& scene, uint32_t x, uint32_t y, uint32_t 
             }
         }
     }
-    if (!isFinite(state.radiance)) {
-        ++counters.nonfiniteSamples;
-        return Vec3(0.0f);
-    }
-    return state.radiance;
+    return finishedRadiance(state, counters);
 }
 
 }  // namespace pt

@@ -22,10 +22,9 @@
 namespace pt::cuda {
 
 // Whether a scene of exactly one instance leaves its TLAS nodes out, the kernels then walking
-// that instance's BLAS directly (tlasInstanceIndices is then {0}). False while the shared
-// traversal still walks the TLAS in every scene; it flips to true with the traversal change
-// that walks a lone BLAS (scene feature kMultipleInstances off).
-constexpr bool skipsTlasForOneInstance() { return false; }
+// that instance's BLAS directly (tlasInstanceIndices is then {0}): the shared traversal walks a
+// lone instance's BLAS without the TLAS (render/bvh/tlas_traversal.h).
+constexpr bool skipsTlasForOneInstance() { return true; }
 
 // One device allocation, by name, for `pt-render bench`'s memory table.
 using BufferBytes = std::pair<std::string, uint64_t>;
