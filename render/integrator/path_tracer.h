@@ -198,9 +198,10 @@ PT_HD ShadowRay shadeSurface(const RenderScene& scene, PathState& state, const H
     return shadow;
 }
 
-// The fused schedule, for code where neither AOVs nor transparent surfaces are in play: each
-// step traces one ray, the shadow ray the last shading queued or else the path's next segment,
-// at one call site (intersectScene). A warp whose threads are at different stages then walks
+// The fused schedule, for paths that record no AOVs: each step traces one ray, the shadow ray
+// the last shading queued or else the path's next segment, at one call site (intersectScene).
+// A shadow ray that meets a surface letting rays through (alpha, culled back faces) walks on
+// past it as shadowRayUnoccluded does. A warp whose threads are at different stages then walks
 // the BVH together instead of twice in turn, and the kernel holds one copy of the walk. The
 // rays, their order and the sums are those of tracePath's plain loop, so images match it bit
 // for bit. The path is done once fusedPathDone() (no shadow ray pending, the path ended).
@@ -213,7 +214,9 @@ PT_HD void traceFusedStep(const RenderScene& scene, PathState& state, ShadowRay&
     ++counters.rays;
     const bool found = intersectScene<kF>(scene, shadowTurn ? shadow.ray : state.ray, shadowTurn, hit);
     if (shadowTurn) {
-        if (!found) state.radiance += shadow.contribution;
+        if (!found || shadowRayPassesBlockers<kF>(scene, shadow.ray, state.sampler, state.depth, counters)) {
+            state.radiance += shadow.contribution;
+        }
         shadow.valid = false;
     } else if (!found) {
         shadeMiss<kF>(scene, state);  // ends the path
@@ -243,7 +246,7 @@ PT_HD Vec3 tracePath(const RenderScene& scene, uint32_t x, uint32_t y, uint32_t 
                      PathCounters& counters, AovSample* aovOut = nullptr) {
     AovSample* const aov = kAovs ? aovOut : nullptr;
     PathState state = generatePath<kF>(scene, x, y, sampleIndex);
-    if constexpr (!kAovs && !hasFeature<kF>(feature::kTransparency)) {
+    if constexpr (!kAovs) {
         traceFusedPath<kF>(scene, state, counters);
     } else {
         if (kAovs) *aovOut = AovSample{};

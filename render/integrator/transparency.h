@@ -31,13 +31,11 @@ PT_HD Ray continuePast(const Ray& ray, const SurfaceHit& surface, float hitT) {
     return next;
 }
 
-// Whether nothing opaque lies on `ray` (0 < t < tMax). `depth` names the bounce the ray
-// leaves from, for the stochastic-transparency numbers.
-template <uint32_t kF = kAllFeatures>
-PT_HD bool shadowRayUnoccluded(const RenderScene& scene, Ray ray, const PathSampler& sampler, uint32_t depth,
-                               PathCounters& counters) {
-    ++counters.rays;
-    if (!intersectAny<kF>(scene, ray)) return true;
+// After an any-hit query found something on the shadow ray `ray`: whether every surface on it
+// lets it through (alpha, culled back faces), walking them in order from the nearest.
+template <uint32_t kF>
+PT_HD bool shadowRayPassesBlockers(const RenderScene& scene, Ray ray, const PathSampler& sampler, uint32_t depth,
+                                   PathCounters& counters) {
     if constexpr (!hasFeature<kF>(feature::kTransparency)) {
         return false;  // no surface lets rays through: the first hit blocks
     } else {
@@ -57,11 +55,24 @@ PT_HD bool shadowRayUnoccluded(const RenderScene& scene, Ray ray, const PathSamp
     }
 }
 
+// Whether nothing opaque lies on `ray` (0 < t < tMax). `depth` names the bounce the ray
+// leaves from, for the stochastic-transparency numbers.
+template <uint32_t kF = kAllFeatures>
+PT_HD bool shadowRayUnoccluded(const RenderScene& scene, Ray ray, const PathSampler& sampler, uint32_t depth,
+                               PathCounters& counters) {
+    ++counters.rays;
+    if (!intersectAny<kF>(scene, ray)) return true;
+    return shadowRayPassesBlockers<kF>(scene, ray, sampler, depth, counters);
+}
+
 // If the surface `state.ray` hit is transparent there, moves the ray past it and returns true.
 template <uint32_t kF = kAllFeatures>
 PT_HD bool passTransparentSurface(const RenderScene& scene, PathState& state, const SurfaceHit& surface,
                                   const Hit& hit) {
-    if (!hasFeature<kF>(feature::kTransparency) || !scene.transparentMaterials || state.transparentHits >= SampleDims::kAlphaLayers) return false;
+    if (!hasFeature<kF>(feature::kTransparency) || !scene.transparentMaterials ||
+        state.transparentHits >= SampleDims::kAlphaLayers) {
+        return false;
+    }
     const Material& m = scene.materials[surface.material];
     const float u = state.sampler.get(SampleDims::alpha(state.depth, state.transparentHits));
     if (!passesThrough<kF>(scene, m, surface.uv, surface.frontFace, u)) return false;

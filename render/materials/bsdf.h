@@ -76,11 +76,14 @@ struct Lobes {
 
 PT_HD bool isZero(Vec3 v) { return !(maxComponent(v) > 0.0f); }
 
+// Without feature::kGlossyReflection (kRoughTransmission) in kF, the scene's reflection (glass)
+// lobes are all smooth, so the rough lobes' code is left out.
+template <uint32_t kF>
 PT_HD bool isDeltaLobe(const Lobes& l, int lobe) {
     switch (lobe) {
         case kCoat: return ggxIsSmooth(l.coatAlpha);
-        case kSpecular: return ggxIsSmooth(l.alpha);
-        case kGlass: return dielectricIsSmooth(l.interface);
+        case kSpecular: return !hasFeature<kF>(feature::kGlossyReflection) || ggxIsSmooth(l.alpha);
+        case kGlass: return !hasFeature<kF>(feature::kRoughTransmission) || dielectricIsSmooth(l.interface);
         default: return false;
     }
 }
@@ -146,13 +149,13 @@ template <uint32_t kF = kAllFeatures>
 PT_HD Vec3 evalLobes(const Lobes& l, Vec3 wo, Vec3 wi) {
     Vec3 f(0.0f);
     if (wo.z > 0.0f && wi.z > 0.0f) {
-        if (hasFeature<kF>(feature::kClearcoat) && l.coat > 0.0f && !isDeltaLobe(l, kCoat)) f += evalClearcoat(wo, wi, l.coatAlpha) * l.coat;
-        if (!isZero(l.specF90 + l.specF0) && !isDeltaLobe(l, kSpecular)) {
+        if (hasFeature<kF>(feature::kClearcoat) && l.coat > 0.0f && !isDeltaLobe<kF>(l, kCoat)) f += evalClearcoat(wo, wi, l.coatAlpha) * l.coat;
+        if (!isZero(l.specF90 + l.specF0) && !isDeltaLobe<kF>(l, kSpecular)) {
             f += evalGgxReflection(wo, wi, l.alpha, l.specF0, l.specF90);
         }
         if (!isZero(l.diffuse)) f += evalLayeredDiffuse(l.layer, l.diffuse, wi);
     }
-    if (hasFeature<kF>(feature::kTransmission) && l.glass > 0.0f && !isDeltaLobe(l, kGlass)) f += evalRoughDielectric(l.interface, wo, wi) * l.glass;
+    if (hasFeature<kF>(feature::kTransmission) && l.glass > 0.0f && !isDeltaLobe<kF>(l, kGlass)) f += evalRoughDielectric(l.interface, wo, wi) * l.glass;
     return f;
 }
 
@@ -160,15 +163,15 @@ template <uint32_t kF = kAllFeatures>
 PT_HD float pdfLobes(const Lobes& l, Vec3 wo, Vec3 wi) {
     float pdf = 0.0f;
     if (wo.z > 0.0f && wi.z > 0.0f) {
-        if (hasFeature<kF>(feature::kClearcoat) && l.probability[kCoat] > 0.0f && !isDeltaLobe(l, kCoat)) {
+        if (hasFeature<kF>(feature::kClearcoat) && l.probability[kCoat] > 0.0f && !isDeltaLobe<kF>(l, kCoat)) {
             pdf += l.probability[kCoat] * pdfGgxReflection(wo, wi, l.coatAlpha);
         }
-        if (l.probability[kSpecular] > 0.0f && !isDeltaLobe(l, kSpecular)) {
+        if (l.probability[kSpecular] > 0.0f && !isDeltaLobe<kF>(l, kSpecular)) {
             pdf += l.probability[kSpecular] * pdfGgxReflection(wo, wi, l.alpha);
         }
         pdf += l.probability[kDiffuse] * cosineHemispherePdf(wi.z);
     }
-    if (hasFeature<kF>(feature::kTransmission) && l.probability[kGlass] > 0.0f && !isDeltaLobe(l, kGlass)) {
+    if (hasFeature<kF>(feature::kTransmission) && l.probability[kGlass] > 0.0f && !isDeltaLobe<kF>(l, kGlass)) {
         pdf += l.probability[kGlass] * pdfRoughDielectric(l.interface, wo, wi);
     }
     return pdf;
@@ -181,12 +184,12 @@ PT_HD LobeSample sampleLobe(const Lobes& l, int lobe, Vec3 wo, float uChoice, Ve
     switch (lobe) {
         case kCoat:
             if (!hasFeature<kF>(feature::kClearcoat)) return s;
-            s = isDeltaLobe(l, kCoat) ? sampleSmoothReflection(wo, Vec3(1.0f), Vec3(1.0f))
+            s = isDeltaLobe<kF>(l, kCoat) ? sampleSmoothReflection(wo, Vec3(1.0f), Vec3(1.0f))
                                       : sampleGgxReflection(wo, l.coatAlpha, Vec3(1.0f), Vec3(1.0f), uDir);
             s.weight *= l.coat;
             return s;
         case kSpecular:
-            if (!isDeltaLobe(l, kSpecular)) return sampleGgxReflection(wo, l.alpha, l.specF0, l.specF90, uDir);
+            if (!isDeltaLobe<kF>(l, kSpecular)) return sampleGgxReflection(wo, l.alpha, l.specF0, l.specF90, uDir);
             return sampleSmoothReflection(wo, l.specF0, l.specF90);
         case kDiffuse:
             s.wi = squareToCosineHemisphere(uDir);
@@ -196,7 +199,7 @@ PT_HD LobeSample sampleLobe(const Lobes& l, int lobe, Vec3 wo, float uChoice, Ve
             return s;
         default:
             if (!hasFeature<kF>(feature::kTransmission)) return s;
-            s = isDeltaLobe(l, kGlass) ? sampleSmoothDielectric(l.interface, wo, uChoice)
+            s = isDeltaLobe<kF>(l, kGlass) ? sampleSmoothDielectric(l.interface, wo, uChoice)
                                        : sampleRoughDielectric(l.interface, wo, uChoice, uDir);
             s.weight *= l.glass;
             return s;
@@ -204,9 +207,10 @@ PT_HD LobeSample sampleLobe(const Lobes& l, int lobe, Vec3 wo, float uChoice, Ve
 }
 
 // How many non-delta lobes can be picked.
+template <uint32_t kF>
 PT_HD int nonDeltaLobeCount(const Lobes& l) {
     int n = 0;
-    for (int i = 0; i < kLobeCount; ++i) n += l.probability[i] > 0.0f && !isDeltaLobe(l, i) ? 1 : 0;
+    for (int i = 0; i < kLobeCount; ++i) n += l.probability[i] > 0.0f && !isDeltaLobe<kF>(l, i) ? 1 : 0;
     return n;
 }
 
@@ -281,7 +285,7 @@ PT_HD BsdfSample sampleBsdf(const BsdfParams& p, const Frame& frame, Vec3 woWorl
         s.weight = ls.weight * (1.0f / l.probability[lobe]);
         return s;
     }
-    if (nonDeltaLobeCount(l) == 1) {  // no other lobe's density to combine with
+    if (nonDeltaLobeCount<kF>(l) == 1) {  // no other lobe's density to combine with
         s.pdf = l.probability[lobe] * ls.pdf;
         s.weight = ls.weight * (1.0f / l.probability[lobe]);
         return s;

@@ -20,6 +20,9 @@ uint32_t materialFeatures(const Material& m) {
     if (materialMayBeTransparent(m)) f |= m.alphaMode == AlphaMode::Mask ? kAlphaMask : kAlphaBlend;
     if (cullsBackFaces(m)) f |= kBackfaceCulling;
     if (m.metallic > 0.0f) f |= kMetal;  // a texture only scales the factor
+    // The reflection lobe has weight (metal or a specular layer) and a roughness the texture can
+    // only scale down: smooth factors stay mirrors.
+    if ((m.metallic > 0.0f || m.specular > 0.0f) && !ggxIsSmooth(ggxAlpha(m.roughness))) f |= kGlossyReflection;
     const bool mayTransmit = (m.transmission > 0.0f || m.transmissionTexture.present()) && m.metallic < 1.0f;
     if (mayTransmit) {
         const bool smooth = ggxIsSmooth(ggxAlpha(m.roughness));
@@ -70,7 +73,7 @@ const char* featureName(uint32_t bit) {
         "normal_map", "alpha_mask", "alpha_blend", "backface_culling", "smooth_transmission",
         "rough_transmission", "volume", "clearcoat", "specular_layer", "metal", "emissive_triangles",
         "sphere_lights", "punctual_lights", "constant_environment", "image_environment", "thin_lens",
-        "morph_targets", "multiple_instances", "spheres", "aovs", "brute_force"};
+        "morph_targets", "multiple_instances", "spheres", "aovs", "brute_force", "glossy_reflection"};
     for (uint32_t i = 0; i < feature::kCount; ++i) {
         if (bit == (1u << i)) return kNames[i];
     }

@@ -44,7 +44,11 @@ constexpr uint32_t kMultipleInstances = 1u << 21;  // else the one instance's BL
 constexpr uint32_t kSpheres = 1u << 22;          // analytic sphere primitives
 constexpr uint32_t kAovs = 1u << 23;             // AOVs asked for (set by the backend)
 constexpr uint32_t kBruteForce = 1u << 24;       // the "BVH off" toggle (set by the backend)
-constexpr uint32_t kCount = 25;
+// A GGX reflection lobe that is not a mirror (rough metal, a rough dielectric specular layer):
+// without it every reflection lobe is a delta lobe, and the GGX sampling and evaluation code of
+// the specular lobe is left out.
+constexpr uint32_t kGlossyReflection = 1u << 25;
+constexpr uint32_t kCount = 26;
 
 // Groups the kernels test.
 constexpr uint32_t kTextures = kBaseColorTexture | kMetallicRoughnessTexture | kEmissiveTexture |

@@ -151,9 +151,9 @@ TEST(PtRenderCli, InfoPrintsTheFeaturesOnOneLine) {
     for (size_t i = 0; i < kCornellFeatures.size(); ++i) expected += (i ? ", " : "") + kCornellFeatures[i];
     EXPECT_NE(r.out.find(expected + "\n"), std::string::npos) << r.out;
 
-    // A scene using nothing says so.
+    // A scene using nothing says so (a smooth material: the default roughness would be glossy).
     const std::string empty = test::tempDir() + "/empty.json";
-    std::ofstream(empty) << R"({"version": 1, "materials": [{"name": "m"}],
+    std::ofstream(empty) << R"({"version": 1, "materials": [{"name": "m", "roughness": 0}],
         "objects": [{"name": "q", "shape": "quad", "material": "m"}]})";
     const auto bare = runCli("info '" + empty + "' --quiet");
     ASSERT_EQ(bare.exitCode, 0) << bare.err;

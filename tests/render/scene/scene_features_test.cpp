@@ -24,6 +24,14 @@ using test::trs;
 
 uint32_t featuresOf(const Scene& scene) { return compileRenderScene(scene).features; }
 
+// The default material made a smooth dielectric (roughness 0): no feature at all, where the
+// default roughness of 0.5 would be a glossy specular layer.
+Material smoothMaterial() {
+    Material m;
+    m.roughness = 0.0f;
+    return m;
+}
+
 // Compares bit sets by name, so a failure says which features differ.
 #define EXPECT_FEATURES(scene, expected) \
     EXPECT_EQ(describeFeatures(featuresOf(scene)), describeFeatures(expected))
@@ -76,8 +84,8 @@ Scene plainQuad() {
     Scene scene;
     scene.camera.position = {0, 2, 0};
     scene.camera.up = {0, 0, -1};
-    const uint32_t used = addMaterial(scene, "used", Material{});
-    addMaterial(scene, "unused", Material{});
+    const uint32_t used = addMaterial(scene, "used", smoothMaterial());
+    addMaterial(scene, "unused", smoothMaterial());
     addShape(scene, ObjectKind::Quad, trs({0, 0, 0}), used, "quad");
     return scene;
 }
@@ -131,8 +139,8 @@ std::vector<MaterialCase> materialCases() {
          },
          kEmissiveTexture | kEmissiveTriangles},
         {"emission", [](Material& m, Scene&) { m.emission = {2, 2, 2}; }, kEmissiveTriangles},
-        {"transmission texture (rough)", [](Material& m, Scene& s) { m.transmissionTexture.texture = addTexture(s); },
-         kTransmissionTexture | kRoughTransmission},
+        {"transmission texture", [](Material& m, Scene& s) { m.transmissionTexture.texture = addTexture(s); },
+         kTransmissionTexture | kSmoothTransmission},
         {"alpha mask", [](Material& m, Scene&) {
              m.alphaMode = AlphaMode::Mask;
              m.alpha = 0.25f;
@@ -155,11 +163,23 @@ std::vector<MaterialCase> materialCases() {
              m.roughness = 0.0f;
          },
          kSmoothTransmission},
-        {"rough transmission", [](Material& m, Scene&) {
+        {"rough transmission (its specular reflection is glossy too)", [](Material& m, Scene&) {
              m.transmission = 1.0f;
              m.roughness = 0.5f;
          },
-         kRoughTransmission},
+         kRoughTransmission | kGlossyReflection},
+        {"rough dielectric", [](Material& m, Scene&) { m.roughness = 0.5f; }, kGlossyReflection},
+        {"rough metal", [](Material& m, Scene&) {
+             m.metallic = 1.0f;
+             m.roughness = 0.3f;
+         },
+         kMetal | kGlossyReflection},
+        {"rough, but no specular layer", [](Material& m, Scene&) {
+             m.roughness = 0.5f;
+             m.specular = 0.0f;
+         },
+         kSpecularLayer},
+        {"nearly smooth (below GGX's smooth alpha)", [](Material& m, Scene&) { m.roughness = 1e-3f; }, 0u},
         {"single-sided glass (never culled)", [](Material& m, Scene&) {
              m.transmission = 1.0f;
              m.roughness = 0.0f;
@@ -237,7 +257,7 @@ TEST(SceneFeatures, LightsOtherThanTriangles) {
     EXPECT_FEATURES(scene, kPunctualLights);
 
     scene = plainQuad();
-    Material glow;
+    Material glow = smoothMaterial();
     glow.emission = {3, 3, 3};
     const uint32_t lamp = addMaterial(scene, "lamp", glow);
     addShape(scene, ObjectKind::Sphere, trs({0, 1, 0}, {0, 0, 0}, {0.1f, 0.1f, 0.1f}), lamp, "lamp");
@@ -253,11 +273,11 @@ TEST(SceneFeatures, OneInstanceOrMore) {
 
 TEST(SceneFeatures, SpheresAreAnalyticPrimitives) {
     Scene scene;
-    addMaterial(scene, "m", Material{});
+    addMaterial(scene, "m", smoothMaterial());
     addShape(scene, ObjectKind::Sphere, trs({0, 0, 0}), 0, "ball");
     EXPECT_FEATURES(scene, kSpheres);
     scene = Scene{};
-    addMaterial(scene, "m", Material{});
+    addMaterial(scene, "m", smoothMaterial());
     addShape(scene, ObjectKind::Box, trs({0, 0, 0}), 0, "box");  // triangles
     EXPECT_FEATURES(scene, 0u);
 }

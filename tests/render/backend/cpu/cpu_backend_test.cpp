@@ -13,13 +13,15 @@ namespace {
 
 using namespace feature;
 
-// A small diffuse quad lit by a point light; materials at their defaults (no features).
+// A small quad lit by a point light; a smooth dielectric (no features).
 Scene litQuad() {
     Scene scene;
     scene.render = {8, 8, 2, 1, 0};
     scene.camera.position = {0, 2, 0};
     scene.camera.up = {0, 0, -1};
-    const uint32_t m = test::addMaterial(scene, "quad", Material{});
+    Material smooth;
+    smooth.roughness = 0.0f;  // the default 0.5 would be a glossy specular layer
+    const uint32_t m = test::addMaterial(scene, "quad", smooth);
     test::addShape(scene, ObjectKind::Quad, test::trs({0, 0, 0}), m, "quad");
     test::addLight(scene, LightType::Point, {1, 1, 1}, 5.0f, {0, 1, 0});
     return scene;
