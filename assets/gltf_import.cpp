@@ -84,7 +84,8 @@ ImportedFile importGltf(const std::string& path, int32_t object, Scene& scene,
     for (const GltfNodeVisit& visit : visits) {
         const int mesh = doc.model.nodes[size_t(visit.node)].mesh;
         if (mesh < 0) continue;
-        const auto& imported = importGltfMesh(ctx, mesh, gltfPath("nodes", size_t(visit.node)));
+        const std::string node = gltfPath("nodes", size_t(visit.node));
+        const auto& imported = importGltfMesh(ctx, mesh, node);
         reportProgress(progress, "load glTF", double(++done) / double(meshNodes));
         if (!imported) continue;
         poseGltfMeshForNode(ctx, visit.node, *imported, posedMeshes.insert(imported->sceneMesh).second);

@@ -83,7 +83,8 @@ std::vector<GltfNodeVisit> walkGltfScene(const GltfContext& ctx) {
         GltfNodeVisit visit = stack.back();
         stack.pop_back();
         const std::string element = gltfPath("nodes", size_t(visit.node));
-        const auto& node = gltfElement(ctx, model.nodes, visit.node, "scene nodes", "node");
+        const std::string sceneNodes = "scene nodes";
+        const auto& node = gltfElement(ctx, model.nodes, visit.node, sceneNodes, "node");
         if (reached[size_t(visit.node)]) {
             ctx.fail(element, "reached twice in the node hierarchy (a cycle, or a node with "
                               "two parents)");
@@ -105,8 +106,8 @@ std::optional<Camera> gltfCamera(const GltfContext& ctx, const std::vector<GltfN
         const int index = model.nodes[size_t(visit.node)].camera;
         if (index < 0) continue;
         const std::string element = gltfPath("cameras", size_t(index));
-        const auto& camera = gltfElement(ctx, model.cameras, index,
-                                         gltfPath("nodes", size_t(visit.node)) + ".camera", "camera");
+        const std::string cameraElement = gltfPath("nodes", size_t(visit.node)) + ".camera";
+        const auto& camera = gltfElement(ctx, model.cameras, index, cameraElement, "camera");
         if (camera.type != "perspective") {
             ctx.warn(element, "'" + camera.type + "' cameras are not supported; ignored");
             continue;

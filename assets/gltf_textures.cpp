@@ -137,8 +137,8 @@ GltfTextureSlot gltfTextureSlot(const tinygltf::Value& info, std::string element
 TextureRef importGltfTexture(GltfContext& ctx, const GltfTextureSlot& slot) {
     TextureRef ref;
     if (slot.index < 0) return ref;
-    const auto& texture = gltfElement(ctx, ctx.model().textures, slot.index,
-                                      slot.element + ".index", "texture");
+    const std::string indexElement = slot.element + ".index";
+    const auto& texture = gltfElement(ctx, ctx.model().textures, slot.index, indexElement, "texture");
     int texCoord = slot.texCoord;
     applyTransform(ctx, slot, ref, texCoord);
     if (texCoord != 0) {
@@ -157,8 +157,8 @@ TextureRef importGltfTexture(GltfContext& ctx, const GltfTextureSlot& slot) {
     WrapMode wrapS = WrapMode::Repeat, wrapT = WrapMode::Repeat;
     bool nearest = false;
     if (texture.sampler >= 0) {
-        const auto& sampler = gltfElement(ctx, ctx.model().samplers, texture.sampler,
-                                          textureElement + ".sampler", "sampler");
+        const std::string samplerIndexElement = textureElement + ".sampler";
+        const auto& sampler = gltfElement(ctx, ctx.model().samplers, texture.sampler, samplerIndexElement, "sampler");
         const std::string samplerElement = gltfPath("samplers", size_t(texture.sampler));
         wrapS = wrapMode(ctx, sampler.wrapS, samplerElement + ".wrapS");
         wrapT = wrapMode(ctx, sampler.wrapT, samplerElement + ".wrapT");

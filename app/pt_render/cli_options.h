@@ -1,6 +1,7 @@
 #pragma once
 // A small command-line parser: positional arguments plus `--flag value` / `--switch`
 // options, each declared up front so unknown flags are an error rather than ignored.
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <set>

@@ -39,24 +39,6 @@ std::vector<float> toRgba(const std::vector<Rgb>& colours) {
     return rgba;
 }
 
-std::vector<float> applied(const DisplayProcessor& p, const std::vector<Rgb>& colours) {
-    std::vector<float> rgba = toRgba(colours);
-    p.applyInPlace(rgba);
-    return rgba;
-}
-
-// The largest difference between two display images over RGB, values clamped to [0, 1] first
-// (what encode8 does), and the colour where it occurs.
-std::pair<float, size_t> largestDifference(const std::vector<float>& a, const std::vector<float>& b) {
-    float worst = 0.0f;
-    size_t where = 0;
-    for (size_t i = 0; i < a.size(); ++i) {
-        if (i % 4 == 3) continue;
-        const float d = std::fabs(std::clamp(a[i], 0.0f, 1.0f) - std::clamp(b[i], 0.0f, 1.0f));
-        if (d > worst) std::tie(worst, where) = std::make_pair(d, i / 4);
-    }
-    return {worst, where};
-}
 
 TEST(DisplayProcessorBuiltin, MatchesEncodeDisplay8ForEveryOperator) {
     const std::vector<float> rgba = toRgba(testColours());
@@ -82,6 +64,25 @@ TEST(DisplayProcessorBuiltin, MatchesEncodeDisplay8ForEveryOperator) {
 }
 
 #if defined(PT_HAS_OCIO)
+
+std::vector<float> applied(const DisplayProcessor& p, const std::vector<Rgb>& colours) {
+    std::vector<float> rgba = toRgba(colours);
+    p.applyInPlace(rgba);
+    return rgba;
+}
+
+// The largest difference between two display images over RGB, values clamped to [0, 1] first
+// (what encode8 does), and the colour where it occurs.
+std::pair<float, size_t> largestDifference(const std::vector<float>& a, const std::vector<float>& b) {
+    float worst = 0.0f;
+    size_t where = 0;
+    for (size_t i = 0; i < a.size(); ++i) {
+        if (i % 4 == 3) continue;
+        const float d = std::fabs(std::clamp(a[i], 0.0f, 1.0f) - std::clamp(b[i], 0.0f, 1.0f));
+        if (d > worst) std::tie(worst, where) = std::make_pair(d, i / 4);
+    }
+    return {worst, where};
+}
 
 class DisplayProcessorOcio : public ::testing::Test {
 protected:

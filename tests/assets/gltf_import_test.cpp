@@ -37,11 +37,12 @@ void expectNear(Vec3 actual, Vec3 expected, float tolerance = 1e-5f) {
     EXPECT_NEAR(actual.z, expected.z, tolerance);
 }
 
-const Placement& placementNamed(const Imported& imported, const std::string& name) {
+// `name` is a plain pointer: see materialNamed in obj_import_test.cpp.
+const Placement& placementNamed(const Imported& imported, const char* name) {
     for (const Placement& p : imported.file.placements) {
         if (p.name == name) return p;
     }
-    throw std::runtime_error("no placement " + name);
+    throw std::runtime_error(std::string("no placement ") + name);
 }
 
 Vec3 triangleNormal(const Mesh& mesh, size_t t) {

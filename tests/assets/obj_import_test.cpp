@@ -45,11 +45,13 @@ void expectNear(Vec3 actual, Vec3 expected, float tolerance = 1e-5f) {
     EXPECT_NEAR(actual.z, expected.z, tolerance);
 }
 
-const Material& materialNamed(const Imported& r, const std::string& name) {
+// `name` is a plain pointer: a std::string temporary would make GCC 13 flag the references
+// bound to the result (-Wdangling-reference).
+const Material& materialNamed(const Imported& r, const char* name) {
     for (uint32_t index : r.file.placements.at(0).materials) {
         if (r.scene.materials.at(index).name == name) return r.scene.materials[index].params;
     }
-    throw std::runtime_error("no material " + name);
+    throw std::runtime_error(std::string("no material ") + name);
 }
 
 TEST(ObjImport, OneMeshOnePlacementOneSlotPerMtlMaterialPlusDefault) {
