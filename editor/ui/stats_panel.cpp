@@ -53,6 +53,14 @@ void drawFeatures(const BackendStats& s) {
     if (!s.kernelVariant.empty()) {
         ImGui::TextWrapped("Kernel: %s (%s)", s.kernelVariant.c_str(), describeFeatures(s.kernelFeatures).c_str());
     }
+    if (s.schedule.empty()) return;
+    // Under the auto schedule, the rates its trial measured on this scene (0: not run yet).
+    if (s.megakernelRate > 0.0 || s.wavefrontRate > 0.0) {
+        ImGui::Text("Schedule: %s (auto: megakernel %.0f, wavefront %.0f spp/s)", s.schedule.c_str(),
+                    s.megakernelRate, s.wavefrontRate);
+    } else {
+        ImGui::Text("Schedule: %s", s.schedule.c_str());
+    }
 }
 
 }  // namespace

@@ -82,15 +82,7 @@ Scene bumpyGridScene(uint32_t n, uint32_t seed) {
 }
 
 std::vector<Ray> randomRays(uint32_t count, uint32_t seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
-    std::vector<Ray> rays(count);
-    for (Ray& r : rays) {
-        r.origin = {1.5f * u(rng), 1.5f + u(rng), 1.5f * u(rng)};
-        r.direction = normalize(Vec3(0.5f * u(rng), -1.0f, 0.5f * u(rng)));
-        r.tMax = kInf;
-    }
-    return rays;
+    return test::downwardRays(count, seed, {1.5f, 1.0f, 1.5f}, 0.5f);
 }
 
 // Hits must agree exactly: both backends run the same float operations without contraction.

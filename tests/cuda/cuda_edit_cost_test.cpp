@@ -59,15 +59,7 @@ Scene twoGridScene(uint32_t n) {
 }
 
 std::vector<Ray> downwardRays(uint32_t count, uint32_t seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
-    std::vector<Ray> rays(count);
-    for (Ray& r : rays) {
-        r.origin = {2.2f * u(rng), 1.5f + u(rng), 1.2f * u(rng)};
-        r.direction = normalize(Vec3(0.3f * u(rng), -1.0f, 0.3f * u(rng)));
-        r.tMax = kInf;
-    }
-    return rays;
+    return test::downwardRays(count, seed, {2.2f, 1.0f, 1.2f}, 0.3f);
 }
 
 // The same closest hit (instance and distance) for every ray; ties between coincident
