@@ -32,9 +32,12 @@ PathScheduler::~PathScheduler() {
 
 void PathScheduler::reserve(uint32_t pixelCount, uint32_t pathCount, const ScheduleOptions& options,
                             bool cacheCosts) {
-    paths_.resize(pathCount);
     radiance_.resize(size_t(pathCount) * 3);
-    if (!options.megakernel) {
+    if (!options.megakernel) {  // the megakernel keeps its paths in registers
+        if (pathCapacity_ < pathCount) {
+            paths_.resize(size_t(SlicedArray<PathState>::kSlices) * pathCount);
+            pathCapacity_ = pathCount;
+        }
         hits_.resize(pathCount);
         shadows_.resize(pathCount);
         queue0_.resize(pathCount);
@@ -64,7 +67,7 @@ void PathScheduler::reserve(uint32_t pixelCount, uint32_t pathCount, const Sched
 
 WaveBuffers PathScheduler::buffers(const AovBuffers& aovs) const {
     WaveBuffers b{};
-    b.paths = paths_.data();
+    b.paths = {paths_.data(), pathCapacity_};
     b.hits = hits_.data();
     b.shadows = shadows_.data();
     b.queue[0] = queue0_.data();

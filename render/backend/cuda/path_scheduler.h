@@ -53,7 +53,8 @@ private:
     void runWavefront(const RenderScene& scene, WaveBuffers b, const WaveShape& shape,
                       const ScheduleOptions& options, cudaStream_t stream);
 
-    DeviceBuffer<PathState> paths_;
+    DeviceBuffer<uint4> paths_;  // SlicedArray<PathState>: kSlices planes of pathCapacity_ slices
+    uint32_t pathCapacity_ = 0;
     DeviceBuffer<Hit> hits_, firstHits_;
     DeviceBuffer<TraversalStats> firstHitCosts_;  // only while bvh_cost and the first-hit cache are on
     DeviceBuffer<ShadowRay> shadows_;

@@ -25,7 +25,7 @@ __global__ void generateKernel(RenderScene scene, WaveBuffers b, WaveShape shape
     if (i >= shape.pathCount) return;
     const uint32_t pixel = i % shape.pixelCount, sample = i / shape.pixelCount;
     const uint32_t width = scene.settings.width;
-    b.paths[i] = generatePath<kF>(scene, pixel % width, pixel / width, shape.firstSample + sample);
+    b.paths.store(i, generatePath<kF>(scene, pixel % width, pixel / width, shape.firstSample + sample));
     b.shadows[i].valid = false;  // read in place when compaction is off
 }
 
@@ -37,16 +37,16 @@ __global__ void extendKernel(RenderScene scene, WaveBuffers b, WaveShape shape, 
     const uint32_t i = threadIndex();
     if (i >= count) return;
     const uint32_t path = queue ? queue[i] : i;
-    if (!queue && !b.paths[path].alive) return;
+    if (!queue && !PT_LOAD_MEMBER(b.paths, path, PathState, alive)) return;
     const uint32_t pixel = path % shape.pixelCount;
-    const bool counted = kCost && b.paths[path].depth == 0;
+    const bool counted = kCost && PT_LOAD_MEMBER(b.paths, path, PathState, depth) == 0;
     Hit hit;
     TraversalStats cost;
     if (readCache) {
         hit = b.firstHits[pixel];
         if (kCost) cost = b.firstHitCosts[pixel];
     } else {
-        intersectClosest<kF>(scene, b.paths[path].ray, hit, counted ? &cost : nullptr);
+        intersectClosest<kF>(scene, PT_LOAD_MEMBER(b.paths, path, PathState, ray), hit, counted ? &cost : nullptr);
         warpAtomicAdd(&b.counters->rays, 1u);
         // Every sample of a pixel shares the camera ray here, so sample 0 speaks for all.
         if (writeCache && path < shape.pixelCount) {
@@ -66,7 +66,7 @@ __global__ void materialKeyKernel(RenderScene scene, WaveBuffers b, uint32_t cou
     if (identity) b.queue[0][i] = i;
     const uint32_t path = b.queue[0][i];
     const Hit hit = b.hits[path];
-    if (!b.paths[path].alive) {
+    if (!PT_LOAD_MEMBER(b.paths, path, PathState, alive)) {
         b.sortKeys[0][i] = 0;
         return;
     }
@@ -87,7 +87,7 @@ __global__ void shadeKernel(RenderScene scene, WaveBuffers b, const uint32_t* qu
     const uint32_t i = threadIndex();
     if (i >= count) return;
     const uint32_t path = queue ? queue[i] : i;
-    PathState state = b.paths[path];
+    PathState state = b.paths.load(path);
     if (!state.alive) return;
     const Hit hit = b.hits[path];
     const bool cameraSegment = kAovs && state.depth == 0;
@@ -103,7 +103,7 @@ __global__ void shadeKernel(RenderScene scene, WaveBuffers b, const uint32_t* qu
     if (cameraSegment && (!hit.valid() || aov.instance >= 0)) {
         addAovSample(b.aovs, state.sampler.pixel, state.sampler.sampleIndex, aov);
     }
-    b.paths[path] = state;
+    b.paths.store(path, state);
     if (compaction) {
         if (shadow.valid) b.shadows[path] = shadow;
         warpAppend(b.shadowQueue, &b.counters->shadowCount, path, shadow.valid);
@@ -122,11 +122,13 @@ __global__ void shadowKernel(RenderScene scene, WaveBuffers b, const uint32_t* q
     const ShadowRay shadow = b.shadows[path];
     if (!shadow.valid) return;
     if (consume) b.shadows[path].valid = false;  // in place: the next bounce starts clean
-    PathState& state = b.paths[path];
     PathCounters counters;
-    // state.depth as tracePath passes it (after shading), so both schedules draw the same numbers.
-    if (shadowRayUnoccluded<kF>(scene, shadow.ray, state.sampler, state.depth, counters)) {
-        state.radiance += shadow.contribution;
+    const PathSampler sampler = PT_LOAD_MEMBER(b.paths, path, PathState, sampler);
+    // The depth as tracePath passes it (after shading), so both schedules draw the same numbers.
+    const uint32_t depth = PT_LOAD_MEMBER(b.paths, path, PathState, depth);
+    if (shadowRayUnoccluded<kF>(scene, shadow.ray, sampler, depth, counters)) {
+        const Vec3 radiance = PT_LOAD_MEMBER(b.paths, path, PathState, radiance) + shadow.contribution;
+        PT_STORE_MEMBER(b.paths, path, PathState, radiance, radiance);
     }
     warpAtomicAdd(&b.counters->rays, uint32_t(counters.rays));
 }
@@ -134,7 +136,7 @@ __global__ void shadowKernel(RenderScene scene, WaveBuffers b, const uint32_t* q
 __global__ void finishKernel(WaveBuffers b, WaveShape shape) {
     const uint32_t i = threadIndex();
     if (i >= shape.pathCount) return;
-    Vec3 radiance = b.paths[i].radiance;
+    Vec3 radiance = PT_LOAD_MEMBER(b.paths, i, PathState, radiance);
     const bool finite = isFinite(radiance);
     if (!finite) radiance = Vec3(0.0f);
     warpAtomicAdd(&b.counters->nonfinite, finite ? 0u : 1u);

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 
+#include "render/backend/cuda/sliced_array.cuh"
 #include "render/bvh/hit.h"
 #include "render/integrator/aov.h"
 #include "render/integrator/path_state.h"
@@ -24,7 +25,7 @@ struct RenderCounters {
 };
 
 struct WaveBuffers {
-    PathState* paths;
+    SlicedArray<PathState> paths;  // structure of 16-byte slices (sliced_array.cuh)
     Hit* hits;
     ShadowRay* shadows;
     uint32_t* queue[2];         // this bounce's paths, the next bounce's
