@@ -4,9 +4,9 @@
 
 #include "assets/atomic_file.h"
 #include "bench_bvh.h"
-#include "bench_rays.h"
 #include "bench_edits.h"
 #include "bench_kernels.h"
+#include "bench_rays.h"
 #include "bench_render.h"
 #include "bench_report.h"
 #include "cli_options.h"

@@ -1,11 +1,11 @@
 #include "bench_kernels.h"
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <map>
 #include <regex>
 #include <string>
-
-#include <unistd.h>
 
 #include "render/scene/scene_features.h"
 #if PT_HAVE_CUDA
@@ -55,17 +55,19 @@ std::map<std::string, int> sassInstructionCounts() {
 void benchKernelVariants(BenchReport& report) {
 #if PT_HAVE_CUDA
     for (const cuda::KernelVariant& v : cuda::kKernelVariants) {
-        report.add({"kernels", "variant features", v.name, double(featureNames(v.features).size()), "features",
-                    v.features == kAllFeatures ? "all" : describeFeatures(v.features)});
+        report.add({"kernels", "variant features", v.name, double(featureNames(v.features).size()),
+                    "features", v.features == kAllFeatures ? "all" : describeFeatures(v.features)});
     }
     const std::map<std::string, int> instructions = sassInstructionCounts();
     for (const cuda::KernelResources& k : cuda::kernelResources()) {
         const std::string variant = k.variant + ", " + k.kernel;
         report.add({"kernels", "registers per thread", variant, double(k.registers), "", ""});
-        report.add({"kernels", "local memory (stack, spills)", variant, double(k.localBytes), "bytes/thread", ""});
+        report.add(
+            {"kernels", "local memory (stack, spills)", variant, double(k.localBytes), "bytes/thread", ""});
         const auto found = instructions.find(k.symbol);
-        report.add({"kernels", "instructions (SASS)", variant, found != instructions.end() ? double(found->second) : 0.0,
-                    "", found != instructions.end() ? "" : "no cuobjdump, or the symbol is not in its output"});
+        report.add({"kernels", "instructions (SASS)", variant,
+                    found != instructions.end() ? double(found->second) : 0.0, "",
+                    found != instructions.end() ? "" : "no cuobjdump, or the symbol is not in its output"});
     }
 #else
     (void)report;

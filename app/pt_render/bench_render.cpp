@@ -110,11 +110,13 @@ void benchPathTracing(Backend& backend, const Scene& scene, const BenchSettings&
     backend.sync(scene, SceneChanges::Settings, {});
 }
 
-void benchWavefrontOverhead(Backend& backend, Scene scene, const BenchSettings& settings, BenchReport& report) {
+void benchWavefrontOverhead(Backend& backend, Scene scene, const BenchSettings& settings,
+                            BenchReport& report) {
     if (backend.name() == "cpu") return;
     // What a path carries between the stages: its state, its closest hit, its shadow ray, its
     // entries in the path and shadow queues, and its finished RGB.
-    const size_t bytes = sizeof(PathState) + sizeof(Hit) + sizeof(ShadowRay) + 3 * sizeof(uint32_t) + 3 * sizeof(float);
+    const size_t bytes =
+        sizeof(PathState) + sizeof(Hit) + sizeof(ShadowRay) + 3 * sizeof(uint32_t) + 3 * sizeof(float);
     report.add({"wavefront", "device memory per path", "", double(bytes), "bytes",
                 "PathState " + std::to_string(sizeof(PathState)) + ", Hit " + std::to_string(sizeof(Hit)) +
                     ", ShadowRay " + std::to_string(sizeof(ShadowRay)) + ", queues 12, radiance 12"});

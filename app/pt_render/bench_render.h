@@ -18,7 +18,8 @@ void benchPathTracing(Backend& backend, const Scene& scene, const BenchSettings&
 // The wavefront's own costs on a GPU backend: the bytes of device memory a path carries between
 // stages, and the fixed cost of a bounce (its launches, the queue-size read-back and the host
 // sync), timed on a one-pixel image where the work itself is nil.
-void benchWavefrontOverhead(Backend& backend, Scene scene, const BenchSettings& settings, BenchReport& report);
+void benchWavefrontOverhead(Backend& backend, Scene scene, const BenchSettings& settings,
+                            BenchReport& report);
 // Renders a reduced-size copy of the scene on `backend` and on the CPU at equal samples.
 void benchImageCheck(Backend& backend, Scene scene, const BenchSettings& settings, BenchReport& report);
 

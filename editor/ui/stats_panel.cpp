@@ -51,7 +51,8 @@ void drawErrorAgainstReference(EditorUi& ui) {
 void drawFeatures(const BackendStats& s) {
     ImGui::TextWrapped("Features: %s", describeFeatures(s.features).c_str());
     if (!s.kernelVariant.empty()) {
-        ImGui::TextWrapped("Kernel: %s (%s)", s.kernelVariant.c_str(), describeFeatures(s.kernelFeatures).c_str());
+        ImGui::TextWrapped("Kernel: %s (%s)", s.kernelVariant.c_str(),
+                           describeFeatures(s.kernelFeatures).c_str());
     }
     if (s.schedule.empty()) return;
     // Under the auto schedule, the rates its trial measured on this scene (0: not run yet).

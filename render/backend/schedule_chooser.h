@@ -21,7 +21,9 @@ public:
     // What the decision holds for (features, image size, depth, toggles that change speed);
     // a new key starts a new trial.
     void setKey(uint64_t key);
-    bool decided() const { return megakernelPasses_ >= kTrialPassesEach && wavefrontPasses_ >= kTrialPassesEach; }
+    bool decided() const {
+        return megakernelPasses_ >= kTrialPassesEach && wavefrontPasses_ >= kTrialPassesEach;
+    }
     // The schedule of the next pass: alternating during the trial, then the faster one.
     bool nextIsMegakernel() const;
     // One timed pass of one sample per pixel.

@@ -28,7 +28,8 @@ void applyIntegratorToggles(const IntegratorToggles& t, IntegratorSettings& s) {
 }
 
 bool isGpuSchedulingToggle(const std::string& name) {
-    return name == "auto_schedule" || name == "megakernel" || name == "compaction" || name == "material_sort" || name == "first_hit_cache";
+    return name == "auto_schedule" || name == "megakernel" || name == "compaction" ||
+           name == "material_sort" || name == "first_hit_cache";
 }
 
 }  // namespace pt

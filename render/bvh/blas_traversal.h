@@ -64,11 +64,11 @@ struct BlasLeaf {
 // t < tMax. On a hit, lowers tMax to it and fills hit.t/u/v/primitive; hit.instance is the
 // caller's business.
 template <uint32_t kF = kAllFeatures, class Count>
-PT_HD bool traverseBlas(const RenderScene& scene, const BlasRef& blas, const TraversalRay& ray,
-                        float& tMax, Hit& hit, Count count, bool anyHit) {
+PT_HD bool traverseBlas(const RenderScene& scene, const BlasRef& blas, const TraversalRay& ray, float& tMax,
+                        Hit& hit, Count count, bool anyHit) {
     if (blas.primitiveCount == 0 || blas.nodeCount == 0) return false;
-    BlasLeaf<kF, Count> leaf{scene, blas, scene.blasPrimIndices.data + blas.primIndexOffset, ray, hit, count,
-                             anyHit};
+    BlasLeaf<kF, Count> leaf{scene, blas,  scene.blasPrimIndices.data + blas.primIndexOffset, ray, hit,
+                             count, anyHit};
     return walkBvh(scene.blasNodes.data + blas.nodeOffset, ray, tMax, leaf, count, anyHit);
 }
 

@@ -16,8 +16,8 @@ PT_HD TraversalRay objectSpaceRay(const RenderInstance& inst, const Ray& worldRa
 
 // Closest (or any) hit of the world ray in instance `index` alone; on a hit sets hit.instance.
 template <uint32_t kF, class Count>
-PT_HD bool traverseInstance(const RenderScene& scene, uint32_t index, const Ray& worldRay, float& tMax, Hit& hit,
-                            Count count, bool anyHit) {
+PT_HD bool traverseInstance(const RenderScene& scene, uint32_t index, const Ray& worldRay, float& tMax,
+                            Hit& hit, Count count, bool anyHit) {
     const RenderInstance& inst = scene.instances[index];
     const TraversalRay ray = objectSpaceRay(inst, worldRay);
     if (!traverseBlas<kF>(scene, scene.blases[inst.blas], ray, tMax, hit, count, anyHit)) return false;
@@ -37,7 +37,8 @@ struct TlasLeaf {
     PT_HD bool operator()(uint32_t first, uint32_t count, float& tMax) {
         bool found = false;
         for (uint32_t i = first; i < first + count; ++i) {
-            if (traverseInstance<kF>(scene, scene.tlasInstanceIndices[i], worldRay, tMax, hit, counter, anyHit)) {
+            if (traverseInstance<kF>(scene, scene.tlasInstanceIndices[i], worldRay, tMax, hit, counter,
+                                     anyHit)) {
                 found = true;
                 if (anyHit) return true;
             }

@@ -108,13 +108,12 @@ PT_HD void addSurfaceEmission(const RenderScene& scene, PathState& state, const 
 // the environment, at full weight for delta (punctual) lights. The shadow ray is traced by
 // the scheduler; `contribution` counts if it is unoccluded.
 template <uint32_t kF = kAllFeatures>
-PT_HD ShadowRay sampleDirectLight(const RenderScene& scene, const PathState& state,
-                                  const SurfaceHit& surface, const BsdfParams& bsdf,
-                                  const Frame& frame, Vec3 wo, uint32_t dims) {
+PT_HD ShadowRay sampleDirectLight(const RenderScene& scene, const PathState& state, const SurfaceHit& surface,
+                                  const BsdfParams& bsdf, const Frame& frame, Vec3 wo, uint32_t dims) {
     ShadowRay shadow{};
     LightSample light;
     if (!sampleLight<kF>(scene, surface.position, state.sampler.get(dims + SampleDims::kLightPick),
-                     state.sampler.get2(dims + SampleDims::kLightPoint), light)) {
+                         state.sampler.get2(dims + SampleDims::kLightPoint), light)) {
         return shadow;
     }
     const BsdfEval eval = evalBsdfWithPdf<kF>(bsdf, frame, wo, light.wi);
@@ -172,7 +171,7 @@ PT_HD ShadowRay shadeSurface(const RenderScene& scene, PathState& state, const H
         shadow = sampleDirectLight<kF>(scene, state, surface, bsdf, frame, wo, dims);
     }
     const BsdfSample s = sampleBsdf<kF>(bsdf, frame, wo, state.sampler.get(dims + SampleDims::kBsdfLobe),
-                                    state.sampler.get2(dims + SampleDims::kBsdfDir));
+                                        state.sampler.get2(dims + SampleDims::kBsdfDir));
     // The sampled direction must leave on the side the BSDF meant (shading normals can
     // disagree with the geometry); otherwise light would leak through the surface.
     const Vec3 arrivalNormal = surface.frontFace ? surface.geometricNormal : -surface.geometricNormal;
@@ -205,10 +204,13 @@ PT_HD ShadowRay shadeSurface(const RenderScene& scene, PathState& state, const H
 // the BVH together instead of twice in turn, and the kernel holds one copy of the walk. The
 // rays, their order and the sums are those of tracePath's plain loop, so images match it bit
 // for bit. The path is done once fusedPathDone() (no shadow ray pending, the path ended).
-PT_HD bool fusedPathDone(const PathState& state, const ShadowRay& shadow) { return !shadow.valid && !state.alive; }
+PT_HD bool fusedPathDone(const PathState& state, const ShadowRay& shadow) {
+    return !shadow.valid && !state.alive;
+}
 
 template <uint32_t kF>
-PT_HD void traceFusedStep(const RenderScene& scene, PathState& state, ShadowRay& shadow, PathCounters& counters) {
+PT_HD void traceFusedStep(const RenderScene& scene, PathState& state, ShadowRay& shadow,
+                          PathCounters& counters) {
     const bool shadowTurn = shadow.valid;
     Hit hit;
     ++counters.rays;
@@ -259,7 +261,8 @@ PT_HD Vec3 tracePath(const RenderScene& scene, uint32_t x, uint32_t y, uint32_t 
                 break;
             }
             const ShadowRay shadow = shadeSurface<kF>(scene, state, hit, aov);
-            if (shadow.valid && shadowRayUnoccluded<kF>(scene, shadow.ray, state.sampler, state.depth, counters)) {
+            if (shadow.valid &&
+                shadowRayUnoccluded<kF>(scene, shadow.ray, state.sampler, state.depth, counters)) {
                 state.radiance += shadow.contribution;
             }
         }

@@ -55,7 +55,8 @@ PT_HD SurfaceHit triangleSurface(const RenderScene& scene, const RenderInstance&
     // UVs feed textures and AOVs alone; kernels with neither never read them.
     constexpr bool kReadsUv = hasFeature<kF>(feature::kTextures | feature::kNormalMap | feature::kAlphaMask |
                                              feature::kAlphaBlend | feature::kAovs);
-    if (kReadsUv && blas.hasUvs) s.uv = scene.uvs[t.v0] * b0 + scene.uvs[t.v1] * hit.u + scene.uvs[t.v2] * hit.v;
+    if (kReadsUv && blas.hasUvs)
+        s.uv = scene.uvs[t.v0] * b0 + scene.uvs[t.v1] * hit.u + scene.uvs[t.v2] * hit.v;
     s.material = scene.instanceMaterials[inst.materialOffset +
                                          scene.triangleSlots[blas.primitiveOffset + hit.primitive]];
     s.kind = GeometryKind::Triangles;

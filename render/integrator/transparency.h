@@ -34,8 +34,8 @@ PT_HD Ray continuePast(const Ray& ray, const SurfaceHit& surface, float hitT) {
 // After an any-hit query found something on the shadow ray `ray`: whether every surface on it
 // lets it through (alpha, culled back faces), walking them in order from the nearest.
 template <uint32_t kF>
-PT_HD bool shadowRayPassesBlockers(const RenderScene& scene, Ray ray, const PathSampler& sampler, uint32_t depth,
-                                   PathCounters& counters) {
+PT_HD bool shadowRayPassesBlockers(const RenderScene& scene, Ray ray, const PathSampler& sampler,
+                                   uint32_t depth, PathCounters& counters) {
     if constexpr (!hasFeature<kF>(feature::kTransparency)) {
         return false;  // no surface lets rays through: the first hit blocks
     } else {

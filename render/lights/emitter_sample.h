@@ -64,7 +64,8 @@ PT_HD float triangleLightWeight(const WorldTriangle& tri, const Material& m) {
 template <uint32_t kF = kAllFeatures>
 PT_HD Vec3 emittedRadiance(const RenderScene& scene, const Material& m, Vec2 uv) {
     Vec3 e = m.emittedRadiance();
-    if (hasFeature<kF>(feature::kEmissiveTexture) && m.emissiveTexture.present()) e *= sampleTexture(scene, m.emissiveTexture, uv, true).xyz();
+    if (hasFeature<kF>(feature::kEmissiveTexture) && m.emissiveTexture.present())
+        e *= sampleTexture(scene, m.emissiveTexture, uv, true).xyz();
     return e;
 }
 

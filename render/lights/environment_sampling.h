@@ -36,7 +36,8 @@ PT_HD float samplePiecewiseConstant(const float* cdf, uint32_t n, float u, uint3
 
 template <uint32_t kF = kAllFeatures>
 PT_HD bool environmentIsImportanceSampled(const RenderScene& scene) {
-    return hasFeature<kF>(feature::kImageEnvironment) && scene.environment.texture >= 0 && scene.environment.distWidth > 0;
+    return hasFeature<kF>(feature::kImageEnvironment) && scene.environment.texture >= 0 &&
+           scene.environment.distWidth > 0;
 }
 
 // Density over solid angle with which sampleEnvironmentDirection() picks `direction` (unit).

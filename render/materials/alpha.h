@@ -26,14 +26,16 @@ PT_HD bool materialMayBeTransparent(const Material& m) {
 template <uint32_t kF = kAllFeatures>
 PT_HD float surfaceAlpha(const RenderScene& scene, const Material& m, Vec2 uv) {
     float alpha = m.alpha;
-    if (hasFeature<kF>(feature::kBaseColorTexture) && m.baseColorTexture.present()) alpha *= sampleTexture(scene, m.baseColorTexture, uv, true).w;
+    if (hasFeature<kF>(feature::kBaseColorTexture) && m.baseColorTexture.present())
+        alpha *= sampleTexture(scene, m.baseColorTexture, uv, true).w;
     return alpha;
 }
 
 // The expected fraction of rays the surface stops at `uv`: 0 or 1 for MASK, alpha for BLEND.
 template <uint32_t kF = kAllFeatures>
 PT_HD float surfaceCoverage(const RenderScene& scene, const Material& m, Vec2 uv) {
-    if (!hasFeature<kF>(feature::kAlphaMask | feature::kAlphaBlend) || !materialMayBeTransparent(m)) return 1.0f;
+    if (!hasFeature<kF>(feature::kAlphaMask | feature::kAlphaBlend) || !materialMayBeTransparent(m))
+        return 1.0f;
     const float alpha = surfaceAlpha<kF>(scene, m, uv);
     if (m.alphaMode == AlphaMode::Mask) return alpha < m.alphaCutoff ? 0.0f : 1.0f;
     return clampf(alpha, 0.0f, 1.0f);
@@ -48,7 +50,8 @@ PT_HD bool materialMayLetRaysThrough(const Material& m) { return materialMayBeTr
 template <uint32_t kF = kAllFeatures>
 PT_HD bool passesThrough(const RenderScene& scene, const Material& m, Vec2 uv, bool frontFace, float u) {
     if (hasFeature<kF>(feature::kBackfaceCulling) && !frontFace && cullsBackFaces(m)) return true;
-    if (!hasFeature<kF>(feature::kAlphaMask | feature::kAlphaBlend) || !materialMayBeTransparent(m)) return false;
+    if (!hasFeature<kF>(feature::kAlphaMask | feature::kAlphaBlend) || !materialMayBeTransparent(m))
+        return false;
     const float alpha = surfaceAlpha<kF>(scene, m, uv);
     return m.alphaMode == AlphaMode::Mask ? alpha < m.alphaCutoff : u >= alpha;
 }

@@ -82,8 +82,10 @@ template <uint32_t kF>
 PT_HD bool isDeltaLobe(const Lobes& l, int lobe) {
     switch (lobe) {
         case kCoat: return ggxIsSmooth(l.coatAlpha);
-        case kSpecular: return !hasFeature<kF>(feature::kGlossyReflection) || ggxIsSmooth(l.alpha);
-        case kGlass: return !hasFeature<kF>(feature::kRoughTransmission) || dielectricIsSmooth(l.interface);
+        case kSpecular:
+            return !hasFeature<kF>(feature::kGlossyReflection) || ggxIsSmooth(l.alpha);
+        case kGlass:
+            return !hasFeature<kF>(feature::kRoughTransmission) || dielectricIsSmooth(l.interface);
         default: return false;
     }
 }
@@ -149,13 +151,15 @@ template <uint32_t kF = kAllFeatures>
 PT_HD Vec3 evalLobes(const Lobes& l, Vec3 wo, Vec3 wi) {
     Vec3 f(0.0f);
     if (wo.z > 0.0f && wi.z > 0.0f) {
-        if (hasFeature<kF>(feature::kClearcoat) && l.coat > 0.0f && !isDeltaLobe<kF>(l, kCoat)) f += evalClearcoat(wo, wi, l.coatAlpha) * l.coat;
+        if (hasFeature<kF>(feature::kClearcoat) && l.coat > 0.0f && !isDeltaLobe<kF>(l, kCoat))
+            f += evalClearcoat(wo, wi, l.coatAlpha) * l.coat;
         if (!isZero(l.specF90 + l.specF0) && !isDeltaLobe<kF>(l, kSpecular)) {
             f += evalGgxReflection(wo, wi, l.alpha, l.specF0, l.specF90);
         }
         if (!isZero(l.diffuse)) f += evalLayeredDiffuse(l.layer, l.diffuse, wi);
     }
-    if (hasFeature<kF>(feature::kTransmission) && l.glass > 0.0f && !isDeltaLobe<kF>(l, kGlass)) f += evalRoughDielectric(l.interface, wo, wi) * l.glass;
+    if (hasFeature<kF>(feature::kTransmission) && l.glass > 0.0f && !isDeltaLobe<kF>(l, kGlass))
+        f += evalRoughDielectric(l.interface, wo, wi) * l.glass;
     return f;
 }
 
@@ -163,7 +167,8 @@ template <uint32_t kF = kAllFeatures>
 PT_HD float pdfLobes(const Lobes& l, Vec3 wo, Vec3 wi) {
     float pdf = 0.0f;
     if (wo.z > 0.0f && wi.z > 0.0f) {
-        if (hasFeature<kF>(feature::kClearcoat) && l.probability[kCoat] > 0.0f && !isDeltaLobe<kF>(l, kCoat)) {
+        if (hasFeature<kF>(feature::kClearcoat) && l.probability[kCoat] > 0.0f &&
+            !isDeltaLobe<kF>(l, kCoat)) {
             pdf += l.probability[kCoat] * pdfGgxReflection(wo, wi, l.coatAlpha);
         }
         if (l.probability[kSpecular] > 0.0f && !isDeltaLobe<kF>(l, kSpecular)) {
@@ -171,7 +176,8 @@ PT_HD float pdfLobes(const Lobes& l, Vec3 wo, Vec3 wi) {
         }
         pdf += l.probability[kDiffuse] * cosineHemispherePdf(wi.z);
     }
-    if (hasFeature<kF>(feature::kTransmission) && l.probability[kGlass] > 0.0f && !isDeltaLobe<kF>(l, kGlass)) {
+    if (hasFeature<kF>(feature::kTransmission) && l.probability[kGlass] > 0.0f &&
+        !isDeltaLobe<kF>(l, kGlass)) {
         pdf += l.probability[kGlass] * pdfRoughDielectric(l.interface, wo, wi);
     }
     return pdf;
@@ -184,12 +190,14 @@ PT_HD LobeSample sampleLobe(const Lobes& l, int lobe, Vec3 wo, float uChoice, Ve
     switch (lobe) {
         case kCoat:
             if (!hasFeature<kF>(feature::kClearcoat)) return s;
-            s = isDeltaLobe<kF>(l, kCoat) ? sampleSmoothReflection(wo, Vec3(1.0f), Vec3(1.0f))
-                                      : sampleGgxReflection(wo, l.coatAlpha, Vec3(1.0f), Vec3(1.0f), uDir);
+            s = isDeltaLobe<kF>(l, kCoat)
+                    ? sampleSmoothReflection(wo, Vec3(1.0f), Vec3(1.0f))
+                    : sampleGgxReflection(wo, l.coatAlpha, Vec3(1.0f), Vec3(1.0f), uDir);
             s.weight *= l.coat;
             return s;
         case kSpecular:
-            if (!isDeltaLobe<kF>(l, kSpecular)) return sampleGgxReflection(wo, l.alpha, l.specF0, l.specF90, uDir);
+            if (!isDeltaLobe<kF>(l, kSpecular))
+                return sampleGgxReflection(wo, l.alpha, l.specF0, l.specF90, uDir);
             return sampleSmoothReflection(wo, l.specF0, l.specF90);
         case kDiffuse:
             s.wi = squareToCosineHemisphere(uDir);
@@ -200,7 +208,7 @@ PT_HD LobeSample sampleLobe(const Lobes& l, int lobe, Vec3 wo, float uChoice, Ve
         default:
             if (!hasFeature<kF>(feature::kTransmission)) return s;
             s = isDeltaLobe<kF>(l, kGlass) ? sampleSmoothDielectric(l.interface, wo, uChoice)
-                                       : sampleRoughDielectric(l.interface, wo, uChoice, uDir);
+                                           : sampleRoughDielectric(l.interface, wo, uChoice, uDir);
             s.weight *= l.glass;
             return s;
     }
@@ -246,11 +254,14 @@ PT_HD BsdfEval evalBsdfWithPdf(const BsdfParams& p, const Frame& frame, Vec3 woW
 template <uint32_t kF = kAllFeatures>
 PT_HD bool hasNonDeltaLobes(const BsdfParams& p) {
     const float metallic = clampf(p.metallic, 0.0f, 1.0f);
-    const float transmission = hasFeature<kF>(feature::kTransmission) ? clampf(p.transmission, 0.0f, 1.0f) : 0.0f;
+    const float transmission =
+        hasFeature<kF>(feature::kTransmission) ? clampf(p.transmission, 0.0f, 1.0f) : 0.0f;
     const float opaque = (1.0f - metallic) * (1.0f - transmission);
     const float alpha = ggxAlpha(p.roughness);
     if (opaque > 0.0f && maxComponent(p.baseColor) > 0.0f) return true;
-    if (hasFeature<kF>(feature::kClearcoat) && p.clearcoat > 0.0f && !ggxIsSmooth(ggxAlpha(p.clearcoatRoughness))) return true;
+    if (hasFeature<kF>(feature::kClearcoat) && p.clearcoat > 0.0f &&
+        !ggxIsSmooth(ggxAlpha(p.clearcoatRoughness)))
+        return true;
     if (ggxIsSmooth(alpha)) return false;
     const float ior = p.ior > 0.0f ? p.ior : 1.0f;
     return metallic > 0.0f || (opaque > 0.0f && p.specular > 0.0f) ||

@@ -6,8 +6,8 @@
 
 #include "render/bvh/binned_sah_builder.h"
 #include "render/bvh/instance_bounds.h"
-#include "render/materials/alpha.h"
 #include "render/integrator/camera.h"
+#include "render/materials/alpha.h"
 #include "render/scene/compile_geometry.h"
 #include "render/scene/scene_features.h"
 #include "render/util/stopwatch.h"
@@ -162,8 +162,8 @@ std::vector<BlasRef> blasesForLightTable(const CompiledScene& out) {
     for (size_t i = 0; i < out.instances.size(); ++i) {
         const RenderInstance& inst = out.instances[i];
         // compileInstances lays the instances' slots out one after the other.
-        const size_t end = i + 1 < out.instances.size() ? out.instances[i + 1].materialOffset
-                                                         : out.instanceMaterials.size();
+        const size_t end =
+            i + 1 < out.instances.size() ? out.instances[i + 1].materialOffset : out.instanceMaterials.size();
         for (size_t slot = inst.materialOffset; slot < end && !emits[inst.blas]; ++slot) {
             emits[inst.blas] = out.materials[out.instanceMaterials[slot]].isEmissive();
         }

@@ -22,7 +22,8 @@ uint32_t materialFeatures(const Material& m) {
     if (m.metallic > 0.0f) f |= kMetal;  // a texture only scales the factor
     // The reflection lobe has weight (metal or a specular layer) and a roughness the texture can
     // only scale down: smooth factors stay mirrors.
-    if ((m.metallic > 0.0f || m.specular > 0.0f) && !ggxIsSmooth(ggxAlpha(m.roughness))) f |= kGlossyReflection;
+    if ((m.metallic > 0.0f || m.specular > 0.0f) && !ggxIsSmooth(ggxAlpha(m.roughness)))
+        f |= kGlossyReflection;
     const bool mayTransmit = (m.transmission > 0.0f || m.transmissionTexture.present()) && m.metallic < 1.0f;
     if (mayTransmit) {
         const bool smooth = ggxIsSmooth(ggxAlpha(m.roughness));
@@ -32,7 +33,8 @@ uint32_t materialFeatures(const Material& m) {
         if (isVolumeBoundary(m) && maxComponent(absorptionCoefficient(m)) > 0.0f) f |= kVolume;
     }
     if (m.clearcoat > 0.0f) f |= kClearcoat;
-    if (m.specular != 1.0f || m.specularColor.x != 1.0f || m.specularColor.y != 1.0f || m.specularColor.z != 1.0f) {
+    if (m.specular != 1.0f || m.specularColor.x != 1.0f || m.specularColor.y != 1.0f ||
+        m.specularColor.z != 1.0f) {
         f |= kSpecularLayer;
     }
     return f;
@@ -68,12 +70,32 @@ uint32_t sceneFeatures(const CompiledScene& scene, bool morphTargets) {
 }
 
 const char* featureName(uint32_t bit) {
-    static const char* const kNames[feature::kCount] = {
-        "base_color_texture", "metallic_roughness_texture", "emissive_texture", "transmission_texture",
-        "normal_map", "alpha_mask", "alpha_blend", "backface_culling", "smooth_transmission",
-        "rough_transmission", "volume", "clearcoat", "specular_layer", "metal", "emissive_triangles",
-        "sphere_lights", "punctual_lights", "constant_environment", "image_environment", "thin_lens",
-        "morph_targets", "multiple_instances", "spheres", "aovs", "brute_force", "glossy_reflection"};
+    static const char* const kNames[feature::kCount] = {"base_color_texture",
+                                                        "metallic_roughness_texture",
+                                                        "emissive_texture",
+                                                        "transmission_texture",
+                                                        "normal_map",
+                                                        "alpha_mask",
+                                                        "alpha_blend",
+                                                        "backface_culling",
+                                                        "smooth_transmission",
+                                                        "rough_transmission",
+                                                        "volume",
+                                                        "clearcoat",
+                                                        "specular_layer",
+                                                        "metal",
+                                                        "emissive_triangles",
+                                                        "sphere_lights",
+                                                        "punctual_lights",
+                                                        "constant_environment",
+                                                        "image_environment",
+                                                        "thin_lens",
+                                                        "morph_targets",
+                                                        "multiple_instances",
+                                                        "spheres",
+                                                        "aovs",
+                                                        "brute_force",
+                                                        "glossy_reflection"};
     for (uint32_t i = 0; i < feature::kCount; ++i) {
         if (bit == (1u << i)) return kNames[i];
     }

@@ -27,9 +27,9 @@ constexpr uint32_t kBackfaceCulling = 1u << 7;
 // Material lobes.
 constexpr uint32_t kSmoothTransmission = 1u << 8;
 constexpr uint32_t kRoughTransmission = 1u << 9;
-constexpr uint32_t kVolume = 1u << 10;           // KHR_materials_volume absorption
+constexpr uint32_t kVolume = 1u << 10;  // KHR_materials_volume absorption
 constexpr uint32_t kClearcoat = 1u << 11;
-constexpr uint32_t kSpecularLayer = 1u << 12;    // KHR_materials_specular away from its defaults
+constexpr uint32_t kSpecularLayer = 1u << 12;  // KHR_materials_specular away from its defaults
 constexpr uint32_t kMetal = 1u << 13;
 // Lights.
 constexpr uint32_t kEmissiveTriangles = 1u << 14;
@@ -39,11 +39,11 @@ constexpr uint32_t kConstantEnvironment = 1u << 17;  // a non-black constant col
 constexpr uint32_t kImageEnvironment = 1u << 18;
 // Camera, geometry, outputs.
 constexpr uint32_t kThinLens = 1u << 19;
-constexpr uint32_t kMorphTargets = 1u << 20;     // host-side only: weights refit BLASes
+constexpr uint32_t kMorphTargets = 1u << 20;       // host-side only: weights refit BLASes
 constexpr uint32_t kMultipleInstances = 1u << 21;  // else the one instance's BLAS is walked alone
-constexpr uint32_t kSpheres = 1u << 22;          // analytic sphere primitives
-constexpr uint32_t kAovs = 1u << 23;             // AOVs asked for (set by the backend)
-constexpr uint32_t kBruteForce = 1u << 24;       // the "BVH off" toggle (set by the backend)
+constexpr uint32_t kSpheres = 1u << 22;            // analytic sphere primitives
+constexpr uint32_t kAovs = 1u << 23;               // AOVs asked for (set by the backend)
+constexpr uint32_t kBruteForce = 1u << 24;         // the "BVH off" toggle (set by the backend)
 // A GGX reflection lobe that is not a mirror (rough metal, a rough dielectric specular layer):
 // without it every reflection lobe is a delta lobe, and the GGX sampling and evaluation code of
 // the specular lobe is left out.
@@ -51,14 +51,14 @@ constexpr uint32_t kGlossyReflection = 1u << 25;
 constexpr uint32_t kCount = 26;
 
 // Groups the kernels test.
-constexpr uint32_t kTextures = kBaseColorTexture | kMetallicRoughnessTexture | kEmissiveTexture |
-                               kTransmissionTexture;
+constexpr uint32_t kTextures =
+    kBaseColorTexture | kMetallicRoughnessTexture | kEmissiveTexture | kTransmissionTexture;
 constexpr uint32_t kTransparency = kAlphaMask | kAlphaBlend | kBackfaceCulling;
 constexpr uint32_t kTransmission = kSmoothTransmission | kRoughTransmission;
 // Features no kernel code depends on: every variant has them. (AOVs select the generic
 // kernels: recording them is a debugging and export path, not worth a variant of its own.)
-constexpr uint32_t kUngated = kSpecularLayer | kMetal | kEmissiveTriangles | kConstantEnvironment |
-                              kMorphTargets;
+constexpr uint32_t kUngated =
+    kSpecularLayer | kMetal | kEmissiveTriangles | kConstantEnvironment | kMorphTargets;
 }  // namespace feature
 
 constexpr uint32_t kAllFeatures = (1u << feature::kCount) - 1u;

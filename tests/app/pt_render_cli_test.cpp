@@ -3,9 +3,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-#include <nlohmann/json.hpp>
 
 #include "assets/image_write.h"
 #include "assets/scene_loader.h"
@@ -22,8 +22,8 @@ std::string cornell() { return "'" + test::projectPath("scenes/cornell.json") + 
 
 // What scenes/cornell.json uses (render/scene/scene_features.h), in bit order: its glass sphere
 // (smooth, analytic), diffuse walls (specular 0), mirror box, lamp and eight instances.
-const std::vector<std::string> kCornellFeatures = {"smooth_transmission", "specular_layer", "metal",
-                                                   "emissive_triangles", "multiple_instances", "spheres"};
+const std::vector<std::string> kCornellFeatures = {"smooth_transmission", "specular_layer",     "metal",
+                                                   "emissive_triangles",  "multiple_instances", "spheres"};
 
 TEST(PtRenderCli, RendersExrPngAndStatsAndPrintsThePaths) {
     PT_REQUIRE_OIIO();  // renders to EXR
@@ -63,8 +63,8 @@ TEST(PtRenderCli, StatsFeaturesIncludeTheAovsAskedFor) {
     PT_REQUIRE_OIIO();  // AOVs are EXR layers
     const std::string dir = test::tempDir();
     const std::string stats = dir + "/aov.json";
-    const auto r = runCli("render " + cornell() + " -o " + dir + "/aov.exr --aov albedo --spp 1 --size 8x8 --stats " +
-                          stats + " --quiet");
+    const auto r = runCli("render " + cornell() + " -o " + dir +
+                          "/aov.exr --aov albedo --spp 1 --size 8x8 --stats " + stats + " --quiet");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     std::ifstream in(stats);
     const nlohmann::json j = nlohmann::json::parse(in);

@@ -39,7 +39,6 @@ std::vector<float> toRgba(const std::vector<Rgb>& colours) {
     return rgba;
 }
 
-
 TEST(DisplayProcessorBuiltin, MatchesEncodeDisplay8ForEveryOperator) {
     const std::vector<float> rgba = toRgba(testColours());
     const uint32_t width = 7;

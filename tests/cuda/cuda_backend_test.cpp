@@ -1,6 +1,9 @@
 // The CUDA backend against the CPU backend: the same first hits, the same beauty at equal
 // samples, refits that trace like rebuilds, and scheduling toggles that leave the image alone.
 // Every test skips with a message where no CUDA device is present.
+#include "render/backend/cuda/cuda_backend.h"
+
+#include <cuda_runtime.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,11 +12,8 @@
 #include <random>
 #include <vector>
 
-#include <cuda_runtime.h>
-
 #include "cuda_test_support.h"
 #include "render/backend/cpu/cpu_backend.h"
-#include "render/backend/cuda/cuda_backend.h"
 #include "render/backend/cuda/kernel_variants.h"
 #include "render/integrator/camera.h"
 #include "support/load_scene.h"
@@ -200,7 +200,8 @@ TEST(CudaBackend, EveryKernelVariantMatchesTheCpu) {
             const bool covers = (features & ~v.features) == 0u;
             covering += covers ? 1 : 0;
             if (!covers) {
-                EXPECT_NE(gpuBackend.stats().kernelVariant, v.name) << "features " << describeFeatures(features);
+                EXPECT_NE(gpuBackend.stats().kernelVariant, v.name)
+                    << "features " << describeFeatures(features);
                 continue;
             }
             EXPECT_EQ(gpuBackend.stats().kernelVariant, v.name);
@@ -217,8 +218,9 @@ TEST(CudaBackend, EveryKernelVariantMatchesTheCpu) {
                 differing += differs ? 1 : 0;
             }
             const double pixels = double(cpu.size() / 4);
-            std::cout << "[ figures  ] variant " << v.name << ", " << scene.instances.size() << " instance(s): "
-                      << differing << " of " << pixels << " pixels differ from the CPU by more than 1e-3\n";
+            std::cout << "[ figures  ] variant " << v.name << ", " << scene.instances.size()
+                      << " instance(s): " << differing << " of " << pixels
+                      << " pixels differ from the CPU by more than 1e-3\n";
             EXPECT_LT(double(differing), 0.02 * pixels) << v.name;
             EXPECT_NEAR(sumGpu / sumCpu, 1.0, 2e-3) << v.name;
         }

@@ -127,7 +127,8 @@ TEST(CudaEditCost, ARebuildOfOneMeshKeepsTheOthersIntact) {
     std::mt19937 rng(5);
     std::shuffle(scene.meshes[0].positions.begin(), scene.meshes[0].positions.end(), rng);
     EXPECT_EQ(backend.sync(scene, SceneChanges::Geometry, {}).action, "rebuild");
-    EXPECT_GT(memoryByBuffer(backend).at("BLAS nodes"), nodesBefore) << "room for the LBVH came with the rebuild";
+    EXPECT_GT(memoryByBuffer(backend).at("BLAS nodes"), nodesBefore)
+        << "room for the LBVH came with the rebuild";
     CpuBackend cpu;
     cpu.sync(scene, SceneChanges::All, {});
     expectSameHits(cpu, backend, "after a rebuild of mesh 0");
@@ -193,8 +194,9 @@ TEST(CudaEditCost, DeviceMemoryByBufferLeavesOutWhatTheSceneDoesNotUse) {
         EXPECT_GT(bytes.at(used), 0u) << used;
     }
     EXPECT_EQ(bytes.at("normals"), 0u) << "the grids have no normals";
-    for (const char* unused : {"uvs", "tangents", "spheres", "texels (8-bit)", "texels (float)", "environment pdf",
-                               "environment conditional cdf", "punctual lights", "BLAS parents (refit)"}) {
+    for (const char* unused :
+         {"uvs", "tangents", "spheres", "texels (8-bit)", "texels (float)", "environment pdf",
+          "environment conditional cdf", "punctual lights", "BLAS parents (refit)"}) {
         EXPECT_EQ(bytes.at(unused), 0u) << unused;
     }
     // The emitters go with the emission; parent links come with a first refit.
@@ -217,7 +219,8 @@ TEST(CudaEditCost, DeviceMemoryByBufferLeavesOutWhatTheSceneDoesNotUse) {
     }
     std::vector<Hit> hits;
     backend.traceRays(downwardRays(1000, 3), false, 1, &hits);
-    EXPECT_TRUE(std::any_of(hits.begin(), hits.end(), [](const Hit& h) { return h.valid() && h.instance == 0; }));
+    EXPECT_TRUE(
+        std::any_of(hits.begin(), hits.end(), [](const Hit& h) { return h.valid() && h.instance == 0; }));
 }
 
 }  // namespace

@@ -1,11 +1,11 @@
 #include "render/backend/cpu/cpu_backend.h"
 
-#include <algorithm>
-
 #include <tbb/blocked_range.h>
 #include <tbb/blocked_range2d.h>
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
+
+#include <algorithm>
 
 #include "render/backend/mean_image.h"
 #include "render/backend/toggle_states.h"

@@ -1,5 +1,4 @@
 #include "render/backend/cuda/cuda_backend.h"
-#include "render/backend/cuda/display_copy.h"
 
 #include <algorithm>
 #include <cstring>
@@ -7,6 +6,7 @@
 #include <utility>
 
 #include "render/backend/cuda/cuda_device.h"
+#include "render/backend/cuda/display_copy.h"
 #include "render/backend/mean_image.h"
 #include "render/backend/toggle_states.h"
 #include "render/integrator/camera.h"
@@ -199,14 +199,16 @@ void CudaBackend::fullBuild(const Scene& scene, const ProgressFn& progress, Sync
 
 bool CudaBackend::uploadChangedVertices(const Mesh& mesh, uint32_t meshIndex) {
     const uint32_t first = meshVertexOffset_[meshIndex], count = uint32_t(mesh.positions.size());
-    const auto positions = copyChangedRange(compiled_->positions.data() + first, mesh.positions.data(), count);
+    const auto positions =
+        copyChangedRange(compiled_->positions.data() + first, mesh.positions.data(), count);
     device_.uploadPositions(*compiled_, first + positions.first, positions.second, stream_);
     if (mesh.normals.size() == count) {
         const auto normals = copyChangedRange(compiled_->normals.data() + first, mesh.normals.data(), count);
         device_.uploadNormals(*compiled_, first + normals.first, normals.second, stream_);
     }
     if (!compiled_->tangents.empty() && mesh.tangents.size() == count) {
-        const auto tangents = copyChangedRange(compiled_->tangents.data() + first, mesh.tangents.data(), count);
+        const auto tangents =
+            copyChangedRange(compiled_->tangents.data() + first, mesh.tangents.data(), count);
         device_.uploadTangents(*compiled_, first + tangents.first, tangents.second, stream_);
     }
     return positions.second > 0;
@@ -261,7 +263,8 @@ const char* CudaBackend::refitChangedMeshes(const Scene& scene, SyncReport& repo
             timedStep(stream_, report, "rebuild BLAS (GPU LBVH)", [&] {
                 device_.reserveLbvhNodes(i, stream_);  // room for 2n - 1 nodes, on a first rebuild
                 const uint32_t nodes = lbvhNodeCount(primitives);
-                lbvh_.build(primBoxes_.data(), primitives, device_.blasNodes(i), device_.blasPrimIndices(i), stream_);
+                lbvh_.build(primBoxes_.data(), primitives, device_.blasNodes(i), device_.blasPrimIndices(i),
+                            stream_);
                 device_.setBlasNodeCount(i, nodes, stream_);
                 computeParents(device_.blasNodes(i), nodes, device_.blasParents(i), stream_);
             });
@@ -272,14 +275,16 @@ const char* CudaBackend::refitChangedMeshes(const Scene& scene, SyncReport& repo
         // scene bounds the light table uses, are built from it. Refit and rebuild give the
         // same root, the union of the primitives' boxes.
         PT_CUDA_CHECK(cudaMemcpyAsync(compiled_->blasNodes.data() + compiled_->blases[i].nodeOffset,
-                                      device_.blasNodes(i), sizeof(BvhNode), cudaMemcpyDeviceToHost, stream_));
+                                      device_.blasNodes(i), sizeof(BvhNode), cudaMemcpyDeviceToHost,
+                                      stream_));
     }
     PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
     return rebuilt ? "rebuild" : "refit";
 }
 
 void CudaBackend::buildTlasOnDevice(SyncReport& report) {
-    timedStep(stream_, report, "build TLAS (GPU LBVH)", [&] { device_.buildTlas(lbvh_, primBoxes_, stream_); });
+    timedStep(stream_, report, "build TLAS (GPU LBVH)",
+              [&] { device_.buildTlas(lbvh_, primBoxes_, stream_); });
 }
 
 float CudaBackend::blasSahCost(uint32_t blas) const {
@@ -307,7 +312,8 @@ void CudaBackend::setToggles(const IntegratorToggles& toggles) {
 
 bool CudaBackend::firstHitCacheApplies(std::string* why) const {
     const char* reason = nullptr;
-    if (runsMegakernel()) reason = "the megakernel traces every ray itself";
+    if (runsMegakernel())
+        reason = "the megakernel traces every ray itself";
     else if (toggles_.pixelJitter) reason = "pixel jitter is on, so camera rays differ per sample";
     else if (compiled_ && compiled_->camera.lensRadius > 0.0f) reason = "the thin lens moves camera rays per sample";
     if (reason && why) *why = reason;
@@ -349,9 +355,16 @@ uint64_t CudaBackend::scheduleKey() const {
     // What decides which schedule is faster: the kernel's features, the image, the path length
     // and the toggles that change the work. FNV-1a over them.
     const IntegratorSettings& s = view_.settings;
-    const uint32_t words[] = {view_.features | (aovs_ != 0 ? feature::kAovs : 0u), s.width, s.height, s.maxDepth,
-                              s.nextEventEstimation, s.russianRoulette, s.pixelJitter, toggles_.streamCompaction,
-                              toggles_.materialSort, toggles_.firstHitCache};
+    const uint32_t words[] = {view_.features | (aovs_ != 0 ? feature::kAovs : 0u),
+                              s.width,
+                              s.height,
+                              s.maxDepth,
+                              s.nextEventEstimation,
+                              s.russianRoulette,
+                              s.pixelJitter,
+                              toggles_.streamCompaction,
+                              toggles_.materialSort,
+                              toggles_.firstHitCache};
     uint64_t h = 1469598103934665603ull;
     for (const uint32_t w : words) h = (h ^ w) * 1099511628211ull;
     return h;
@@ -367,7 +380,8 @@ void CudaBackend::render(uint32_t passes) {
         while (passes > 0 && !scheduleChooser_.decided()) {
             const bool megakernel = runsMegakernel();
             const auto passStart = Clock::now();
-            scheduler_.render(view_, stats_.samplesPerPixel, 1, scheduleOptions(), sum_.data(), aovs, stream_);
+            scheduler_.render(view_, stats_.samplesPerPixel, 1, scheduleOptions(), sum_.data(), aovs,
+                              stream_);
             PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
             scheduleChooser_.record(megakernel, secondsSince(passStart));
             stats_.samplesPerPixel += 1;
@@ -375,7 +389,8 @@ void CudaBackend::render(uint32_t passes) {
         }
     }
     if (passes > 0) {
-        scheduler_.render(view_, stats_.samplesPerPixel, passes, scheduleOptions(), sum_.data(), aovs, stream_);
+        scheduler_.render(view_, stats_.samplesPerPixel, passes, scheduleOptions(), sum_.data(), aovs,
+                          stream_);
         PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
         stats_.samplesPerPixel += passes;
     }
@@ -415,7 +430,8 @@ BackendStats CudaBackend::stats() const {
     s.nonfiniteSamples = counters.nonfinite;
     s.features = view_.features | (aovs_ != 0 ? feature::kAovs : 0u);
     // As the scheduler chooses.
-    const KernelVariant& variant = kKernelVariants[chooseKernelVariant(s.features, kernelVariantIndex(toggles_.kernelVariant))];
+    const KernelVariant& variant =
+        kKernelVariants[chooseKernelVariant(s.features, kernelVariantIndex(toggles_.kernelVariant))];
     s.kernelVariant = variant.name;
     s.kernelFeatures = variant.features;
     if (toggles_.autoSchedule) {

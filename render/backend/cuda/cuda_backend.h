@@ -12,11 +12,11 @@
 #include <memory>
 
 #include "render/backend/backend.h"
-#include "render/backend/schedule_chooser.h"
 #include "render/backend/cuda/device_scene.h"
 #include "render/backend/cuda/gpu_bvh.h"
 #include "render/backend/cuda/path_scheduler.h"
 #include "render/backend/cuda/pinned_range.h"
+#include "render/backend/schedule_chooser.h"
 #include "render/scene/compile_scene.h"
 
 namespace pt::cuda {

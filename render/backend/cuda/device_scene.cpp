@@ -28,14 +28,19 @@ void add(std::vector<BufferBytes>& out, const char* name, const DeviceBuffer<T>&
 
 void DeviceScene::uploadAll(const CompiledScene& host, cudaStream_t stream) {
     const auto anyBlas = [&host](uint32_t BlasRef::*flag) {
-        return std::any_of(host.blases.begin(), host.blases.end(), [flag](const BlasRef& b) { return b.*flag != 0; });
+        return std::any_of(host.blases.begin(), host.blases.end(),
+                           [flag](const BlasRef& b) { return b.*flag != 0; });
     };
     uploadFitted(positions_, host.positions, stream);
     // Kernels read normals and UVs only of meshes whose BlasRef says they have them.
-    if (anyBlas(&BlasRef::hasNormals)) uploadFitted(normals_, host.normals, stream);
-    else normals_ = {};
-    if (anyBlas(&BlasRef::hasUvs)) uploadFitted(uvs_, host.uvs, stream);
-    else uvs_ = {};
+    if (anyBlas(&BlasRef::hasNormals))
+        uploadFitted(normals_, host.normals, stream);
+    else
+        normals_ = {};
+    if (anyBlas(&BlasRef::hasUvs))
+        uploadFitted(uvs_, host.uvs, stream);
+    else
+        uvs_ = {};
     uploadFitted(tangents_, host.tangents, stream);
     uploadFitted(triangles_, host.triangles, stream);
     uploadFitted(spheres_, host.spheres, stream);
@@ -91,15 +96,18 @@ void DeviceScene::uploadInstances(const CompiledScene& host, cudaStream_t stream
     instanceMaterials_.upload(host.instanceMaterials, stream);
 }
 
-void DeviceScene::uploadPositions(const CompiledScene& host, uint32_t first, uint32_t count, cudaStream_t stream) {
+void DeviceScene::uploadPositions(const CompiledScene& host, uint32_t first, uint32_t count,
+                                  cudaStream_t stream) {
     positions_.uploadAt(first, host.positions.data() + first, count, stream);
 }
 
-void DeviceScene::uploadNormals(const CompiledScene& host, uint32_t first, uint32_t count, cudaStream_t stream) {
+void DeviceScene::uploadNormals(const CompiledScene& host, uint32_t first, uint32_t count,
+                                cudaStream_t stream) {
     if (normals_.size() != 0) normals_.uploadAt(first, host.normals.data() + first, count, stream);
 }
 
-void DeviceScene::uploadTangents(const CompiledScene& host, uint32_t first, uint32_t count, cudaStream_t stream) {
+void DeviceScene::uploadTangents(const CompiledScene& host, uint32_t first, uint32_t count,
+                                 cudaStream_t stream) {
     if (tangents_.size() != 0) tangents_.uploadAt(first, host.tangents.data() + first, count, stream);
 }
 
@@ -135,8 +143,8 @@ void DeviceScene::reserveLbvhNodes(uint32_t i, cudaStream_t stream) {
     for (size_t b = 0; b < hostBlases_.size(); ++b) {
         const size_t count = hostBlases_[b].nodeCount, from = hostBlases_[b].nodeOffset;
         if (count == 0) continue;
-        PT_CUDA_CHECK(cudaMemcpyAsync(nodes.data() + offsets[b], blasNodes_.data() + from, count * sizeof(BvhNode),
-                                      cudaMemcpyDeviceToDevice, stream));
+        PT_CUDA_CHECK(cudaMemcpyAsync(nodes.data() + offsets[b], blasNodes_.data() + from,
+                                      count * sizeof(BvhNode), cudaMemcpyDeviceToDevice, stream));
         if (parents.size() != 0 && parentsReady_[b]) {
             PT_CUDA_CHECK(cudaMemcpyAsync(parents.data() + offsets[b], blasParents_.data() + from,
                                           count * sizeof(uint32_t), cudaMemcpyDeviceToDevice, stream));

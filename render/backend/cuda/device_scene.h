@@ -97,9 +97,9 @@ private:
     DeviceBuffer<PunctualLight> punctualLights_;
     DeviceBuffer<float> envPdf_, envMarginalCdf_, envConditionalCdf_;
 
-    std::vector<BlasRef> hostBlases_;      // as on the device: offsets into the node regions
-    std::vector<uint32_t> nodeCapacity_;   // nodes each BLAS's region holds
-    std::vector<bool> parentsReady_;       // per BLAS: its parent links are computed
+    std::vector<BlasRef> hostBlases_;     // as on the device: offsets into the node regions
+    std::vector<uint32_t> nodeCapacity_;  // nodes each BLAS's region holds
+    std::vector<bool> parentsReady_;      // per BLAS: its parent links are computed
 };
 
 }  // namespace pt::cuda

@@ -35,16 +35,14 @@ constexpr uint32_t kLean = kLeanSingle | kMultipleInstances;
 constexpr uint32_t kGlossySingle = kLeanSingle | kGlossyReflection | kRoughTransmission;
 constexpr uint32_t kGlossy = kGlossySingle | kMultipleInstances;
 // What glTF scenes usually bring on top: textures, normal maps, alpha, an HDR sky, depth of field.
-constexpr uint32_t kTextured = kGlossy | kTextures | kNormalMap | kTransparency | kImageEnvironment | kThinLens;
+constexpr uint32_t kTextured =
+    kGlossy | kTextures | kNormalMap | kTransparency | kImageEnvironment | kThinLens;
 }  // namespace variant_features
 
 inline constexpr KernelVariant kKernelVariants[] = {
-    {"lean-single", variant_features::kLeanSingle},
-    {"lean", variant_features::kLean},
-    {"glossy-single", variant_features::kGlossySingle},
-    {"glossy", variant_features::kGlossy},
-    {"textured", variant_features::kTextured},
-    {"full", kAllFeatures},
+    {"lean-single", variant_features::kLeanSingle},     {"lean", variant_features::kLean},
+    {"glossy-single", variant_features::kGlossySingle}, {"glossy", variant_features::kGlossy},
+    {"textured", variant_features::kTextured},          {"full", kAllFeatures},
 };
 constexpr uint32_t kKernelVariantCount = sizeof(kKernelVariants) / sizeof(kKernelVariants[0]);
 constexpr uint32_t kFullVariant = kKernelVariantCount - 1;
@@ -56,7 +54,8 @@ constexpr bool variantCovers(uint32_t variant, uint32_t features) {
 // The variant that renders `features`: `requested` (an index, or -1 for none) where it covers
 // them, else the leanest that does (always found: the last covers all).
 constexpr uint32_t chooseKernelVariant(uint32_t features, int requested = -1) {
-    if (requested >= 0 && uint32_t(requested) < kKernelVariantCount && variantCovers(uint32_t(requested), features)) {
+    if (requested >= 0 && uint32_t(requested) < kKernelVariantCount &&
+        variantCovers(uint32_t(requested), features)) {
         return uint32_t(requested);
     }
     for (uint32_t i = 0; i < kKernelVariantCount; ++i) {
@@ -75,9 +74,9 @@ inline int kernelVariantIndex(const std::string& name) {
 
 // Resources of one compiled kernel, read from the module (cudaFuncGetAttributes).
 struct KernelResources {
-    std::string variant;   // kKernelVariants name
-    std::string kernel;    // "megakernel", "extend", "shade", "shadow"
-    std::string symbol;    // the mangled name (cudaFuncGetName), to find it in a disassembly
+    std::string variant;  // kKernelVariants name
+    std::string kernel;   // "megakernel", "extend", "shade", "shadow"
+    std::string symbol;   // the mangled name (cudaFuncGetName), to find it in a disassembly
     int registers = 0;
     size_t localBytes = 0;  // per thread: stack frame and spills
     size_t constantBytes = 0;

@@ -38,12 +38,14 @@ __global__ void megakernel(RenderScene scene, WaveBuffers b, WaveShape shape) {
 
 const void* megakernelSymbol(uint32_t variant) {
     const void* symbol = nullptr;
-    forKernelVariant(variant, [&](auto features) { symbol = reinterpret_cast<const void*>(megakernel<decltype(features)::value, false>); });
+    forKernelVariant(variant, [&](auto features) {
+        symbol = reinterpret_cast<const void*>(megakernel<decltype(features)::value, false>);
+    });
     return symbol;
 }
 
-void launchMegakernel(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape,
-                      cudaStream_t stream) {
+void launchMegakernel(uint32_t variant, const RenderScene& scene, const WaveBuffers& b,
+                      const WaveShape& shape, cudaStream_t stream) {
     const uint32_t blocks = (shape.pathCount + kBlock - 1) / kBlock;
     if (b.aovs.mask & kPathAovs) {  // AOVs run the generic code (kernel_variants.h)
         megakernel<kAllFeatures, true><<<blocks, kBlock, 0, stream>>>(scene, b, shape);

@@ -94,7 +94,8 @@ void PathScheduler::render(const RenderScene& scene, uint32_t firstSample, uint3
     const WaveBuffers b = buffers(aovs);
     // Chosen per render, so an edit that adds a feature runs a variant with it from its first
     // samples on.
-    variant_ = chooseKernelVariant(scene.features | (aovs.mask != 0 ? feature::kAovs : 0u), options.kernelVariant);
+    variant_ =
+        chooseKernelVariant(scene.features | (aovs.mask != 0 ? feature::kAovs : 0u), options.kernelVariant);
     for (uint32_t done = 0; done < samples;) {
         const uint32_t n = std::min(samplesPerWave, samples - done);
         const WaveShape shape{pixelCount, pixelCount * n, firstSample + done};
@@ -129,7 +130,8 @@ void PathScheduler::runWavefront(const RenderScene& scene, WaveBuffers b, const 
     for (uint32_t iteration = 0; count > 0; ++iteration) {
         pathsPerBounce_.push_back(count);
         const bool cameraRays = iteration == 0;
-        launchExtend(variant_, scene, b, shape, queue, count, cameraRays && cacheReads, cameraRays && cacheWrites, stream);
+        launchExtend(variant_, scene, b, shape, queue, count, cameraRays && cacheReads,
+                     cameraRays && cacheWrites, stream);
         if (options.materialSort) {
             launchSortByMaterial(scene, b, count, queue == nullptr, keyBits, sortScratch_.data(), sortScratch_.size(),
                                  stream);

@@ -19,7 +19,7 @@ struct ScheduleOptions {
     bool materialSort = false;
     bool firstHitCache = false;   // only where camera rays repeat exactly (no jitter, no lens)
     uint32_t materialCount = 1;
-    int kernelVariant = -1;       // a requested variant (kernel_variants.h); -1: the leanest covering
+    int kernelVariant = -1;  // a requested variant (kernel_variants.h); -1: the leanest covering
 };
 
 class PathScheduler {

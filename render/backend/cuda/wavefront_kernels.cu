@@ -46,7 +46,8 @@ __global__ void extendKernel(RenderScene scene, WaveBuffers b, WaveShape shape, 
         hit = b.firstHits[pixel];
         if (kCost) cost = b.firstHitCosts[pixel];
     } else {
-        intersectClosest<kF>(scene, PT_LOAD_MEMBER(b.paths, path, PathState, ray), hit, counted ? &cost : nullptr);
+        intersectClosest<kF>(scene, PT_LOAD_MEMBER(b.paths, path, PathState, ray), hit,
+                             counted ? &cost : nullptr);
         warpAtomicAdd(&b.counters->rays, 1u);
         // Every sample of a pixel shares the camera ray here, so sample 0 speaks for all.
         if (writeCache && path < shape.pixelCount) {
@@ -83,7 +84,8 @@ __global__ void materialKeyKernel(RenderScene scene, WaveBuffers b, uint32_t cou
 
 // kAovs: paths record AOVs; without, the kernel is the one that ran before AOVs existed.
 template <uint32_t kF, bool kAovs>
-__global__ void shadeKernel(RenderScene scene, WaveBuffers b, const uint32_t* queue, uint32_t count, bool compaction) {
+__global__ void shadeKernel(RenderScene scene, WaveBuffers b, const uint32_t* queue, uint32_t count,
+                            bool compaction) {
     const uint32_t i = threadIndex();
     if (i >= count) return;
     const uint32_t path = queue ? queue[i] : i;
@@ -115,7 +117,8 @@ __global__ void shadeKernel(RenderScene scene, WaveBuffers b, const uint32_t* qu
 }
 
 template <uint32_t kF>
-__global__ void shadowKernel(RenderScene scene, WaveBuffers b, const uint32_t* queue, uint32_t count, bool consume) {
+__global__ void shadowKernel(RenderScene scene, WaveBuffers b, const uint32_t* queue, uint32_t count,
+                             bool consume) {
     const uint32_t i = threadIndex();
     if (i >= count) return;
     const uint32_t path = queue ? queue[i] : i;
@@ -177,24 +180,26 @@ WavefrontSymbols wavefrontSymbols(uint32_t variant) {
     return s;
 }
 
-void launchGeneratePaths(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape,
-                         cudaStream_t stream) {
+void launchGeneratePaths(uint32_t variant, const RenderScene& scene, const WaveBuffers& b,
+                         const WaveShape& shape, cudaStream_t stream) {
     forKernelVariant(variant, [&](auto features) {
-        generateKernel<decltype(features)::value><<<blocksFor(shape.pathCount), kBlock, 0, stream>>>(scene, b, shape);
+        generateKernel<decltype(features)::value>
+            <<<blocksFor(shape.pathCount), kBlock, 0, stream>>>(scene, b, shape);
     });
     PT_CUDA_CHECK_LAUNCH("generateKernel");
 }
 
 void launchExtend(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape,
-                  const uint32_t* queue, uint32_t count, bool readCache, bool writeCache, cudaStream_t stream) {
+                  const uint32_t* queue, uint32_t count, bool readCache, bool writeCache,
+                  cudaStream_t stream) {
     if (count == 0) return;
     if (b.aovs.has(Aov::BvhCost)) {  // AOVs run the generic code (kernel_variants.h)
         extendKernel<kAllFeatures, true>
             <<<blocksFor(count), kBlock, 0, stream>>>(scene, b, shape, queue, count, readCache, writeCache);
     } else {
         forKernelVariant(variant, [&](auto features) {
-            extendKernel<decltype(features)::value, false>
-                <<<blocksFor(count), kBlock, 0, stream>>>(scene, b, shape, queue, count, readCache, writeCache);
+            extendKernel<decltype(features)::value, false><<<blocksFor(count), kBlock, 0, stream>>>(
+                scene, b, shape, queue, count, readCache, writeCache);
         });
     }
     PT_CUDA_CHECK_LAUNCH("extendKernel");
@@ -223,7 +228,8 @@ void launchShade(uint32_t variant, const RenderScene& scene, const WaveBuffers& 
                  uint32_t count, bool compaction, cudaStream_t stream) {
     if (count == 0) return;
     if (b.aovs.mask & kPathAovs) {  // AOVs run the generic code (kernel_variants.h)
-        shadeKernel<kAllFeatures, true><<<blocksFor(count), kBlock, 0, stream>>>(scene, b, queue, count, compaction);
+        shadeKernel<kAllFeatures, true>
+            <<<blocksFor(count), kBlock, 0, stream>>>(scene, b, queue, count, compaction);
     } else {
         forKernelVariant(variant, [&](auto features) {
             shadeKernel<decltype(features)::value, false>
@@ -237,7 +243,8 @@ void launchShadow(uint32_t variant, const RenderScene& scene, const WaveBuffers&
                   uint32_t count, bool consume, cudaStream_t stream) {
     if (count == 0) return;
     forKernelVariant(variant, [&](auto features) {
-        shadowKernel<decltype(features)::value><<<blocksFor(count), kBlock, 0, stream>>>(scene, b, queue, count, consume);
+        shadowKernel<decltype(features)::value>
+            <<<blocksFor(count), kBlock, 0, stream>>>(scene, b, queue, count, consume);
     });
     PT_CUDA_CHECK_LAUNCH("shadowKernel");
 }

@@ -47,14 +47,15 @@ struct WaveShape {
 // `variant` (every launcher of per-ray code takes one): the kernel variant to run
 // (kernel_variants.h), chosen by the scheduler from the scene's features; with AOVs on, the
 // stages that record them run the generic variant whatever this says.
-void launchGeneratePaths(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape,
-                         cudaStream_t stream);
+void launchGeneratePaths(uint32_t variant, const RenderScene& scene, const WaveBuffers& b,
+                         const WaveShape& shape, cudaStream_t stream);
 
 // Closest hits of the paths in `queue` (count entries; all paths when queue is nullptr).
 // readCache: camera rays whose hits are in b.firstHits; writeCache: store them there. With the
 // bvh_cost AOV, camera segments count their traversal work into it.
 void launchExtend(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape,
-                  const uint32_t* queue, uint32_t count, bool readCache, bool writeCache, cudaStream_t stream);
+                  const uint32_t* queue, uint32_t count, bool readCache, bool writeCache,
+                  cudaStream_t stream);
 
 // Material sort: reorders queue[0] (count entries; with `identity` first set to every path) by
 // the material each path hit, misses and dead paths first, through queue[1] and sortKeys.
@@ -81,8 +82,8 @@ void launchFinishPaths(const WaveBuffers& b, const WaveShape& shape, cudaStream_
 
 // The megakernel: each thread traces one whole path (tracePath) into b.radiance, and its AOVs
 // into b.aovs.
-void launchMegakernel(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape,
-                      cudaStream_t stream);
+void launchMegakernel(uint32_t variant, const RenderScene& scene, const WaveBuffers& b,
+                      const WaveShape& shape, cudaStream_t stream);
 
 // The kernels of a variant without AOVs, for their resources (kernel_variants.h).
 struct WavefrontSymbols {

@@ -176,7 +176,8 @@ TEST(CompileScene, LightTableHoldsEveryEmissiveTriangleAndNoOther) {
     const CompiledScene compiled = compileRenderScene(scene);
     EXPECT_EQ(compiled.stats.emitterCount, 18u + 3u);
     for (const Emitter& e : compiled.emitters.emitters) {
-        EXPECT_TRUE(e.instance == 1 || (e.instance == 3 && e.primitive < 3)) << e.instance << " " << e.primitive;
+        EXPECT_TRUE(e.instance == 1 || (e.instance == 3 && e.primitive < 3))
+            << e.instance << " " << e.primitive;
     }
     // After an edit, the table is the one a fresh compile gives.
     compileInstances(scene, plain);

@@ -69,7 +69,8 @@ Scene cornellBox() {
     addShape(scene, ObjectKind::Quad, trs({0, 0, -1}, {90, 0, 0}), white, "back wall");
     addShape(scene, ObjectKind::Quad, trs({-1, 0, 0}, {0, 0, -90}), red, "left wall");
     addShape(scene, ObjectKind::Quad, trs({1, 0, 0}, {0, 0, 90}), green, "right wall");
-    addShape(scene, ObjectKind::Quad, trs({0, 0.995f, 0}, {180, 0, 0}, {0.5f, 1, 0.4f}), light, "ceiling light");
+    addShape(scene, ObjectKind::Quad, trs({0, 0.995f, 0}, {180, 0, 0}, {0.5f, 1, 0.4f}), light,
+             "ceiling light");
     addShape(scene, ObjectKind::Box, trs({-0.36f, -0.4f, -0.25f}, {0, -30, 0}, {0.28f, 0.6f, 0.28f}), mirror,
              "mirror box");
     addShape(scene, ObjectKind::Sphere, trs({0.42f, -0.65f, 0.3f}, {0, 0, 0}, {0.35f, 0.35f, 0.35f}), glass,
@@ -100,9 +101,11 @@ TEST(SceneFeatures, CornellBoxUsesGlassMirrorEmittersSpheresAndInstances) {
     const uint32_t f = featuresOf(cornellBox());
     // Diffuse walls are specular 0 (off the KHR_materials_specular default of 1), the box a
     // smooth conductor, the sphere smooth glass and analytic, the lamp two emissive triangles.
-    EXPECT_EQ(describeFeatures(f), "smooth_transmission, specular_layer, metal, emissive_triangles, "
-                                   "multiple_instances, spheres");
-    EXPECT_EQ(f, kSmoothTransmission | kSpecularLayer | kMetal | kEmissiveTriangles | kMultipleInstances | kSpheres);
+    EXPECT_EQ(describeFeatures(f),
+              "smooth_transmission, specular_layer, metal, emissive_triangles, "
+              "multiple_instances, spheres");
+    EXPECT_EQ(f, kSmoothTransmission | kSpecularLayer | kMetal | kEmissiveTriangles | kMultipleInstances |
+                     kSpheres);
     // What a diffuse-and-glass box must not pay for.
     EXPECT_EQ(f & (kTextures | kNormalMap | kTransparency | kRoughTransmission | kVolume | kClearcoat |
                    kImageEnvironment | kConstantEnvironment | kThinLens | kPunctualLights | kSphereLights |
@@ -127,71 +130,86 @@ std::vector<MaterialCase> materialCases() {
     return {
         {"base color texture", [](Material& m, Scene& s) { m.baseColorTexture.texture = addTexture(s); },
          kBaseColorTexture},
-        {"metallic-roughness texture", [](Material& m, Scene& s) { m.metallicRoughnessTexture.texture = addTexture(s); },
+        {"metallic-roughness texture",
+         [](Material& m, Scene& s) { m.metallicRoughnessTexture.texture = addTexture(s); },
          kMetallicRoughnessTexture},
         {"normal map", [](Material& m, Scene& s) { m.normalTexture.texture = addTexture(s); }, kNormalMap},
-        {"emissive texture on a black emission", [](Material& m, Scene& s) { m.emissiveTexture.texture = addTexture(s); },
-         0u},
+        {"emissive texture on a black emission",
+         [](Material& m, Scene& s) { m.emissiveTexture.texture = addTexture(s); }, 0u},
         {"emissive texture",
          [](Material& m, Scene& s) {
              m.emissiveTexture.texture = addTexture(s);
              m.emission = {1, 1, 1};
          },
          kEmissiveTexture | kEmissiveTriangles},
-        {"emission", [](Material& m, Scene&) { m.emission = {2, 2, 2}; }, kEmissiveTriangles},
+        {"emission",
+         [](Material& m, Scene&) {
+             m.emission = {2, 2, 2};
+         },
+         kEmissiveTriangles},
         {"transmission texture", [](Material& m, Scene& s) { m.transmissionTexture.texture = addTexture(s); },
          kTransmissionTexture | kSmoothTransmission},
-        {"alpha mask", [](Material& m, Scene&) {
+        {"alpha mask",
+         [](Material& m, Scene&) {
              m.alphaMode = AlphaMode::Mask;
              m.alpha = 0.25f;
          },
          kAlphaMask},
-        {"alpha mask over its cutoff", [](Material& m, Scene&) {
+        {"alpha mask over its cutoff",
+         [](Material& m, Scene&) {
              m.alphaMode = AlphaMode::Mask;
              m.alpha = 0.75f;
          },
          0u},
-        {"alpha blend", [](Material& m, Scene&) {
+        {"alpha blend",
+         [](Material& m, Scene&) {
              m.alphaMode = AlphaMode::Blend;
              m.alpha = 0.5f;
          },
          kAlphaBlend},
         {"alpha blend, opaque", [](Material& m, Scene&) { m.alphaMode = AlphaMode::Blend; }, 0u},
         {"single-sided", [](Material& m, Scene&) { m.doubleSided = 0; }, kBackfaceCulling},
-        {"smooth transmission", [](Material& m, Scene&) {
+        {"smooth transmission",
+         [](Material& m, Scene&) {
              m.transmission = 1.0f;
              m.roughness = 0.0f;
          },
          kSmoothTransmission},
-        {"rough transmission (its specular reflection is glossy too)", [](Material& m, Scene&) {
+        {"rough transmission (its specular reflection is glossy too)",
+         [](Material& m, Scene&) {
              m.transmission = 1.0f;
              m.roughness = 0.5f;
          },
          kRoughTransmission | kGlossyReflection},
         {"rough dielectric", [](Material& m, Scene&) { m.roughness = 0.5f; }, kGlossyReflection},
-        {"rough metal", [](Material& m, Scene&) {
+        {"rough metal",
+         [](Material& m, Scene&) {
              m.metallic = 1.0f;
              m.roughness = 0.3f;
          },
          kMetal | kGlossyReflection},
-        {"rough, but no specular layer", [](Material& m, Scene&) {
+        {"rough, but no specular layer",
+         [](Material& m, Scene&) {
              m.roughness = 0.5f;
              m.specular = 0.0f;
          },
          kSpecularLayer},
         {"nearly smooth (below GGX's smooth alpha)", [](Material& m, Scene&) { m.roughness = 1e-3f; }, 0u},
-        {"single-sided glass (never culled)", [](Material& m, Scene&) {
+        {"single-sided glass (never culled)",
+         [](Material& m, Scene&) {
              m.transmission = 1.0f;
              m.roughness = 0.0f;
              m.doubleSided = 0;
          },
          kSmoothTransmission},
-        {"transmission on a metal", [](Material& m, Scene&) {
+        {"transmission on a metal",
+         [](Material& m, Scene&) {
              m.transmission = 1.0f;
              m.metallic = 1.0f;
          },
          kMetal},
-        {"volume", [](Material& m, Scene&) {
+        {"volume",
+         [](Material& m, Scene&) {
              m.transmission = 1.0f;
              m.roughness = 0.0f;
              m.thickness = 1.0f;
@@ -199,7 +217,8 @@ std::vector<MaterialCase> materialCases() {
              m.attenuationDistance = 2.0f;
          },
          kSmoothTransmission | kVolume},
-        {"volume without attenuation", [](Material& m, Scene&) {
+        {"volume without attenuation",
+         [](Material& m, Scene&) {
              m.transmission = 1.0f;
              m.roughness = 0.0f;
              m.thickness = 1.0f;
@@ -207,7 +226,11 @@ std::vector<MaterialCase> materialCases() {
          kSmoothTransmission},
         {"clearcoat", [](Material& m, Scene&) { m.clearcoat = 1.0f; }, kClearcoat},
         {"specular 0.5", [](Material& m, Scene&) { m.specular = 0.5f; }, kSpecularLayer},
-        {"specular colour", [](Material& m, Scene&) { m.specularColor = {1.0f, 0.5f, 1.0f}; }, kSpecularLayer},
+        {"specular colour",
+         [](Material& m, Scene&) {
+             m.specularColor = {1.0f, 0.5f, 1.0f};
+         },
+         kSpecularLayer},
         {"metallic 1", [](Material& m, Scene&) { m.metallic = 1.0f; }, kMetal},
     };
 }
@@ -327,7 +350,8 @@ TEST(SceneFeatureNames, OneDistinctSnakeCaseNamePerBitInBitOrder) {
 TEST(SceneFeatureNames, DescribeJoinsTheNamesOrSaysNone) {
     EXPECT_EQ(describeFeatures(0u), "none");
     EXPECT_EQ(describeFeatures(kMetal), "metal");
-    EXPECT_EQ(describeFeatures(kMetal | kClearcoat | kBaseColorTexture), "base_color_texture, clearcoat, metal");
+    EXPECT_EQ(describeFeatures(kMetal | kClearcoat | kBaseColorTexture),
+              "base_color_texture, clearcoat, metal");
     EXPECT_EQ(featureName(kAovs), std::string("aovs"));
     EXPECT_EQ(featureName(kBruteForce), std::string("brute_force"));
     // Every set round-trips: its names, mapped back to bits, give the set again.
