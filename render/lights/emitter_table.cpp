@@ -17,8 +17,23 @@ bool addEmitter(EmitterTable& table, std::vector<float>& weights, Emitter e) {
     return true;
 }
 
+// Whether instance `i` shades any of its mesh slots with an emissive material. compileInstances
+// lays each instance's slots out after the previous one's, so they end where the next begin.
+// The scan below skips the primitives of instances that cannot emit: a table over a scene
+// without emissive surfaces costs O(instances x slots), not O(triangles).
+bool instanceMayEmit(const RenderScene& scene, uint32_t i) {
+    const uint32_t first = scene.instances[i].materialOffset;
+    const uint32_t end =
+        i + 1 < scene.instances.count ? scene.instances[i + 1].materialOffset : scene.instanceMaterials.count;
+    for (uint32_t slot = first; slot < end; ++slot) {
+        if (scene.materials[scene.instanceMaterials[slot]].isEmissive()) return true;
+    }
+    return false;
+}
+
 void addGeometryLights(const RenderScene& scene, EmitterTable& table, std::vector<float>& weights) {
     for (uint32_t i = 0; i < scene.instances.count; ++i) {
+        if (!instanceMayEmit(scene, i)) continue;
         const RenderInstance& inst = scene.instances[i];
         const BlasRef& blas = scene.blases[inst.blas];
         for (uint32_t prim = 0; prim < blas.primitiveCount; ++prim) {

@@ -150,33 +150,6 @@ PunctualLight compilePunctualLight(const Light& light) {
     return p;
 }
 
-namespace {
-
-// The BLASes as the light table should see them: those no instance shades with an emissive
-// material hold no emitter, so their primitive counts read 0 there and the table's scan
-// (buildEmitterTable, one material lookup per primitive of every instance) skips them. That
-// makes the table O(instances x slots) in a scene without emissive surfaces, where it was
-// O(triangles), and leaves what it holds unchanged.
-std::vector<BlasRef> blasesForLightTable(const CompiledScene& out) {
-    std::vector<bool> emits(out.blases.size(), false);
-    for (size_t i = 0; i < out.instances.size(); ++i) {
-        const RenderInstance& inst = out.instances[i];
-        // compileInstances lays the instances' slots out one after the other.
-        const size_t end =
-            i + 1 < out.instances.size() ? out.instances[i + 1].materialOffset : out.instanceMaterials.size();
-        for (size_t slot = inst.materialOffset; slot < end && !emits[inst.blas]; ++slot) {
-            emits[inst.blas] = out.materials[out.instanceMaterials[slot]].isEmissive();
-        }
-    }
-    std::vector<BlasRef> blases = out.blases;
-    for (size_t b = 0; b < blases.size(); ++b) {
-        if (!emits[b]) blases[b].primitiveCount = 0;
-    }
-    return blases;
-}
-
-}  // namespace
-
 void compileLights(const Scene& scene, CompiledScene& out, LightsUpdate update) {
     out.punctualLights.clear();
     for (const Light& light : scene.lights) out.punctualLights.push_back(compilePunctualLight(light));
@@ -194,10 +167,7 @@ void compileLights(const Scene& scene, CompiledScene& out, LightsUpdate update) 
         out.environment.distWidth = out.environmentDistribution.width;
         out.environment.distHeight = out.environmentDistribution.height;
     }
-    const std::vector<BlasRef> lightBlases = blasesForLightTable(out);
-    RenderScene view = out.view();
-    view.blases = spanOf(lightBlases);
-    out.emitters = buildEmitterTable(view, out.environmentDistribution.averageLuminance);
+    out.emitters = buildEmitterTable(out.view(), out.environmentDistribution.averageLuminance);
     out.environment.lightWeight = out.emitters.environmentWeight;
     out.stats.emitterCount = out.emitters.triangles;
     out.stats.sphereLightCount = out.emitters.spheres;

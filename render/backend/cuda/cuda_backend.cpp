@@ -347,6 +347,8 @@ void CudaBackend::resetAccumulation() {
     stats_.nonfiniteSamples = 0;
 }
 
+uint32_t CudaBackend::renderFeatures() const { return view_.features | (aovs_ != 0 ? feature::kAovs : 0u); }
+
 bool CudaBackend::runsMegakernel() const {
     return toggles_.autoSchedule ? scheduleChooser_.nextIsMegakernel() : toggles_.megakernel;
 }
@@ -355,7 +357,7 @@ uint64_t CudaBackend::scheduleKey() const {
     // What decides which schedule is faster: the kernel's features, the image, the path length
     // and the toggles that change the work. FNV-1a over them.
     const IntegratorSettings& s = view_.settings;
-    const uint32_t words[] = {view_.features | (aovs_ != 0 ? feature::kAovs : 0u),
+    const uint32_t words[] = {renderFeatures(),
                               s.width,
                               s.height,
                               s.maxDepth,
@@ -428,7 +430,7 @@ BackendStats CudaBackend::stats() const {
     const RenderCounters counters = scheduler_.counters();
     s.rays = counters.rays;
     s.nonfiniteSamples = counters.nonfinite;
-    s.features = view_.features | (aovs_ != 0 ? feature::kAovs : 0u);
+    s.features = renderFeatures();
     // As the scheduler chooses.
     const KernelVariant& variant =
         kKernelVariants[chooseKernelVariant(s.features, kernelVariantIndex(toggles_.kernelVariant))];

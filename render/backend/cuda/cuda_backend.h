@@ -68,6 +68,8 @@ private:
     ScheduleOptions scheduleOptions() const;
     // The schedule of the next pass: the toggle's, or under the auto schedule the chooser's.
     bool runsMegakernel() const;
+    // The scene's features with the AOVs accumulated now: what picks the kernel variant.
+    uint32_t renderFeatures() const;
     uint64_t scheduleKey() const;
     bool firstHitCacheApplies(std::string* why) const;
 
