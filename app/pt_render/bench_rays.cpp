@@ -38,8 +38,12 @@ BenchRays makeBenchRays(const CompiledScene& compiled, uint32_t width, uint32_t 
         diffuse[i] = {origin, frame.toWorld(squareToCosineHemisphere(sampler.get2(dims + SampleDims::kBsdfDir))), kInf};
         hasDiffuse[i] = 1;
         LightSample light;
+        // Only lights above the surface: an opaque surface's BSDF is zero below it, so a render
+        // traces no shadow ray there (these would cross the mesh's interior, tens of times
+        // slower, and make shadow rays look far costlier than a render's are).
         if (sampleLight(scene, surface.position, sampler.get(dims + SampleDims::kLightPick),
-                        sampler.get2(dims + SampleDims::kLightPoint), light)) {
+                        sampler.get2(dims + SampleDims::kLightPoint), light) &&
+            dot(light.wi, normal) > 0.0f) {
             shadow[i] = shadowRayTo(surface, light);
             hasShadow[i] = 1;
         }

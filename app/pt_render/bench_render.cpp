@@ -136,7 +136,7 @@ void benchWavefrontOverhead(Backend& backend, Scene scene, const BenchSettings& 
         if (bounces > 0) perBounce.push_back(seconds / double(bounces));
     }
     report.add({"wavefront", "fixed cost of a bounce", "1x1 image", median(perBounce) * 1e3, "ms",
-                "extend, shade and shadow launches, the queue-size read-back and its host sync"});
+                "extend, shade and shadow launches and the queue-size read-back, which the host waits for a bounce late"});
 }
 
 void benchImageCheck(Backend& backend, Scene scene, const BenchSettings& settings, BenchReport& report) {

@@ -40,30 +40,45 @@ PT_HD float minFast(float a, float b) { return a < b ? a : b; }
 PT_HD float maxFast(float a, float b) { return a > b ? a : b; }
 
 // A ray in one space (world for the TLAS, object space of one instance for a BLAS), with what
-// the slab and triangle tests precompute. Direction components below kMinDirection in
-// magnitude are "zero axes": 1/d would be infinite and (plane - o) * inf is NaN for an origin
-// on a box face, so those axes get an inclusive interval test (lo <= o <= hi) instead of a
-// slab. Primitive tests use the unmodified direction, so box tests stay conservative for the
-// very ray the primitives see, in world and object space alike.
+// the slab and triangle tests precompute.
+//
+// Zero axes: a direction component below kMinDirection in magnitude (zero, or NaN) would make
+// 1/d infinite, and (plane - o) * inf is NaN for an origin on a box face. Such an axis gets the
+// finite inverse +-1e30 instead, and the slab test measures its planes from the origin moved
+// out by a pad (slabOriginLo = o + pad for the lower planes, slabOriginHi = o - pad for the
+// upper), so that an origin inside the slab or on either face gives t in (-huge, +huge), never
+// NaN, and an origin outside it by more than the pad gives only huge or negative t: the box
+// test stays inclusive on faces, as an axis-aligned ray needs, and at worst admits a box the
+// ray misses at t ~ 1e24, which a finite tMax culls. On every other axis the pad is zero and
+// both origins are the origin, so ordinary rays compute exactly what a plain slab test does.
+// This keeps the box test one branch-free sequence: a separate zero-axis test doubled its code
+// at every call site and cost the Cornell-box megakernel 15% (issue 13). Primitive tests use
+// the unmodified direction, so box tests stay conservative for the very ray the primitives
+// see, in world and object space alike.
 struct TraversalRay {
     WatertightRay watertight;  // origin and shear of the triangle test
     Vec3 direction;
-    Vec3 invDirection;         // finite; 0 on zero axes
-    uint32_t zeroAxes;         // bit a set: |direction[a]| < kMinDirection
+    Vec3 invDirection;         // finite and nonzero
+    Vec3 slabOriginLo;         // where lower box planes are measured from (see above)
+    Vec3 slabOriginHi;         // where upper box planes are measured from
 };
-static_assert(sizeof(TraversalRay) == 64, "TraversalRay: 64 bytes of registers per level");
+static_assert(sizeof(TraversalRay) == 84, "TraversalRay: 84 bytes of registers per level");
 
 constexpr float kMinDirection = 1e-30f;
+// The zero-axis pad, relative to the origin's magnitude (at least 1): 8 ulps, so o +- pad
+// differs from o, and pad * 1e30 is far beyond any distance in a scene.
+constexpr float kZeroAxisPad = 1.0f / (1 << 20);
 
 PT_HD TraversalRay makeTraversalRay(Vec3 origin, Vec3 direction) {
     TraversalRay r;
     r.watertight = makeWatertightRay(origin, direction);
     r.direction = direction;
-    r.zeroAxes = 0;
     for (int a = 0; a < 3; ++a) {
         const bool zero = !(fabsf(direction[a]) >= kMinDirection);
-        r.invDirection[a] = zero ? 0.0f : 1.0f / direction[a];
-        r.zeroAxes |= zero ? (1u << a) : 0u;
+        r.invDirection[a] = 1.0f / (zero ? copysignf(kMinDirection, direction[a]) : direction[a]);
+        const float pad = zero ? fmaxf(fabsf(origin[a]), 1.0f) * kZeroAxisPad : 0.0f;
+        r.slabOriginLo[a] = origin[a] + pad;
+        r.slabOriginHi[a] = origin[a] - pad;
     }
     return r;
 }
@@ -73,32 +88,14 @@ PT_HD TraversalRay makeTraversalRay(Vec3 origin, Vec3 direction) {
 // (Ize, "Robust BVH Ray Traversal", JCGT 2(2), 2013; pbrt-v3 section 3.9.2).
 constexpr float kSlabExitScale = 1.0f + 2.0f * gammaBound(3);
 
-// The slab test for rays with zero axes (rare: axis-aligned rays); see TraversalRay.
-PT_HD bool intersectBoxWithZeroAxes(const TraversalRay& ray, Vec3 lo, Vec3 hi, float tMax, float& tEntry) {
-    float tNear = 0.0f, tFar = kInf;
-    for (int a = 0; a < 3; ++a) {
-        const float o = ray.watertight.origin[a];
-        if (ray.zeroAxes & (1u << a)) {
-            if (!(lo[a] <= o && o <= hi[a])) return false;
-            continue;
-        }
-        const float t0 = (lo[a] - o) * ray.invDirection[a], t1 = (hi[a] - o) * ray.invDirection[a];
-        tNear = maxFast(tNear, minFast(t0, t1));
-        tFar = minFast(tFar, maxFast(t0, t1));
-    }
-    tEntry = tNear;
-    return tNear <= minFast(tFar * kSlabExitScale, tMax * kSlabExitScale);
-}
-
 // Slab test against [0, tMax]; on a hit, tEntry is where the ray enters the box (>= 0). Never
-// produces NaN (finite inverse direction); an empty box (lo > hi, e.g. the root of an empty
-// BVH) always misses.
+// produces NaN (finite, nonzero inverse direction); an empty box (lo > hi, e.g. the root of an
+// empty BVH) always misses.
 PT_HD bool intersectBox(const TraversalRay& ray, Vec3 lo, Vec3 hi, float tMax, float& tEntry) {
-    if (ray.zeroAxes != 0) return intersectBoxWithZeroAxes(ray, lo, hi, tMax, tEntry);
-    const Vec3 o = ray.watertight.origin, inv = ray.invDirection;
-    const float x0 = (lo.x - o.x) * inv.x, x1 = (hi.x - o.x) * inv.x;
-    const float y0 = (lo.y - o.y) * inv.y, y1 = (hi.y - o.y) * inv.y;
-    const float z0 = (lo.z - o.z) * inv.z, z1 = (hi.z - o.z) * inv.z;
+    const Vec3 oLo = ray.slabOriginLo, oHi = ray.slabOriginHi, inv = ray.invDirection;
+    const float x0 = (lo.x - oLo.x) * inv.x, x1 = (hi.x - oHi.x) * inv.x;
+    const float y0 = (lo.y - oLo.y) * inv.y, y1 = (hi.y - oHi.y) * inv.y;
+    const float z0 = (lo.z - oLo.z) * inv.z, z1 = (hi.z - oHi.z) * inv.z;
     const float tNear = maxFast(maxFast(minFast(x0, x1), minFast(y0, y1)), maxFast(minFast(z0, z1), 0.0f));
     const float tFar = minFast(maxFast(x0, x1), minFast(maxFast(y0, y1), maxFast(z0, z1))) * kSlabExitScale;
     tEntry = tNear;

@@ -34,27 +34,35 @@ PT_HD int wrapTexel(int i, int size, WrapMode mode) {
     }
 }
 
-PT_HD Vec4 fetchTexel(const RenderScene& scene, const TextureView& tex, int x, int y, bool srgb) {
+// Where a texture's texels live: the scene's two texel arrays, passed as plain pointers so the
+// out-of-line sampler below takes no reference to the scene.
+struct TexelArrays {
+    const uint8_t* texels8;
+    const float* texelsF;
+};
+
+PT_HD Vec4 fetchTexel(const TexelArrays& texels, const TextureView& tex, int x, int y, bool srgb) {
     const uint32_t index = tex.texelOffset + uint32_t(y) * tex.width + uint32_t(x);
     if (tex.format == TexelFormat::RGBA32F) {
-        const float* t = scene.texelsF.data + size_t(index) * 4;
+        const float* t = texels.texelsF + size_t(index) * 4;
         return {t[0], t[1], t[2], t[3]};
     }
-    const uint8_t* t = scene.texels8.data + size_t(index) * 4;
+    const uint8_t* t = texels.texels8 + size_t(index) * 4;
     const float k = 1.0f / 255.0f;
     Vec4 c{t[0] * k, t[1] * k, t[2] * k, t[3] * k};
     if (srgb) c = {srgbToLinear(c.x), srgbToLinear(c.y), srgbToLinear(c.z), c.w};
     return c;
 }
 
-// Linear RGBA at `uv` (glTF convention: v = 0 is the top row of the image).
-PT_HD Vec4 sampleTexture(const RenderScene& scene, const TextureRef& ref, Vec2 uv, bool srgb) {
-    const TextureView& tex = scene.textures[uint32_t(ref.texture)];
+// Linear RGBA of texture `tex` at `uv` (glTF convention: v = 0 is the top row of the image).
+// Out of line on the GPU (PT_HD_OUTLINED): material, alpha, normal-map, emission and
+// environment lookups all call this one copy.
+PT_HD_OUTLINED Vec4 sampleTextureView(TexelArrays texels, TextureView tex, TextureRef ref, Vec2 uv, bool srgb) {
     const Vec2 st = applyTextureTransform(ref, uv);
     const float fx = st.x * float(tex.width) - 0.5f, fy = st.y * float(tex.height) - 0.5f;
     const int w = int(tex.width), h = int(tex.height);
     if (tex.nearest) {
-        return fetchTexel(scene, tex, wrapTexel(int(floorf(fx + 0.5f)), w, tex.wrapS),
+        return fetchTexel(texels, tex, wrapTexel(int(floorf(fx + 0.5f)), w, tex.wrapS),
                           wrapTexel(int(floorf(fy + 0.5f)), h, tex.wrapT), srgb);
     }
     const float x0f = floorf(fx), y0f = floorf(fy);
@@ -63,13 +71,19 @@ PT_HD Vec4 sampleTexture(const RenderScene& scene, const TextureRef& ref, Vec2 u
     const int xa = wrapTexel(x0, w, tex.wrapS), xb = wrapTexel(x0 + 1, w, tex.wrapS);
     const int ya = wrapTexel(y0, h, tex.wrapT), yb = wrapTexel(y0 + 1, h, tex.wrapT);
     // Decode before filtering: filtering sRGB-encoded values would darken edges.
-    const Vec4 c00 = fetchTexel(scene, tex, xa, ya, srgb), c10 = fetchTexel(scene, tex, xb, ya, srgb);
-    const Vec4 c01 = fetchTexel(scene, tex, xa, yb, srgb), c11 = fetchTexel(scene, tex, xb, yb, srgb);
+    const Vec4 c00 = fetchTexel(texels, tex, xa, ya, srgb), c10 = fetchTexel(texels, tex, xb, ya, srgb);
+    const Vec4 c01 = fetchTexel(texels, tex, xa, yb, srgb), c11 = fetchTexel(texels, tex, xb, yb, srgb);
     auto mix = [](Vec4 a, Vec4 b, float t) {
         return Vec4{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t,
                     a.w + (b.w - a.w) * t};
     };
     return mix(mix(c00, c10, ax), mix(c01, c11, ax), ay);
+}
+
+// Linear RGBA of the scene texture `ref` names at `uv`.
+PT_HD Vec4 sampleTexture(const RenderScene& scene, const TextureRef& ref, Vec2 uv, bool srgb) {
+    return sampleTextureView({scene.texels8.data, scene.texelsF.data}, scene.textures[uint32_t(ref.texture)], ref,
+                             uv, srgb);
 }
 
 }  // namespace pt

@@ -99,7 +99,11 @@ void buildTlas(CompiledScene& out) {
         const RenderInstance& inst = out.instances[i];
         bounds[i] = instanceBounds(out.blasNodes[out.blases[inst.blas].nodeOffset], inst.objectToWorld);
     }
-    Bvh tlas = buildBinnedSahBvh(bounds.data(), uint32_t(bounds.size()));
+    // One instance a leaf, as the GPU APIs' instance BVHs have it: testing an instance costs an
+    // object-space ray and a BLAS walk, far more than the box test a leaf of its own adds.
+    BvhBuildOptions options;
+    options.maxLeafSize = 1;
+    Bvh tlas = buildBinnedSahBvh(bounds.data(), uint32_t(bounds.size()), options);
     out.tlasNodes = std::move(tlas.nodes);
     out.tlasInstanceIndices = std::move(tlas.primIndices);
 }

@@ -282,7 +282,24 @@ const char* CudaBackend::refitChangedMeshes(const Scene& scene, SyncReport& repo
     return rebuilt ? "rebuild" : "refit";
 }
 
+// Up to this many instances, the TLAS is built on the host with binned SAH (a few microseconds
+// for a room of objects) and uploaded; beyond, on the GPU as an LBVH, whose cost stays in
+// proportion to the instances on any scale. SAH places few, unevenly sized instances (walls
+// around small objects) better than Morton order does, and CPU and GPU then walk one tree.
+// Measured on the H100 at 1080p (spp/s, LBVH / host SAH TLAS): Cornell box wavefront 216 / 221,
+// megakernel 99 / 102; Balloon megakernel 327 / 345.
+constexpr size_t kHostTlasMaxInstances = 256;
+
 void CudaBackend::buildTlasOnDevice(SyncReport& report) {
+    const size_t instances = compiled_->instances.size();
+    if (instances > 1 && instances <= kHostTlasMaxInstances) {
+        timedStep(stream_, report, "build TLAS (host SAH)", [&] {
+            buildTlas(*compiled_);
+            hostTlasStale_ = false;
+            device_.uploadTlas(*compiled_, stream_);
+        });
+        return;
+    }
     timedStep(stream_, report, "build TLAS (GPU LBVH)",
               [&] { device_.buildTlas(lbvh_, primBoxes_, stream_); });
 }

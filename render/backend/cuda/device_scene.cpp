@@ -179,6 +179,11 @@ void DeviceScene::buildTlas(LbvhBuilder& lbvh, DeviceBuffer<Aabb>& boxes, cudaSt
     lbvh.build(boxes.data(), count, tlasNodes_.data(), tlasInstanceIndices_.data(), stream);
 }
 
+void DeviceScene::uploadTlas(const CompiledScene& host, cudaStream_t stream) {
+    uploadFitted(tlasNodes_, host.tlasNodes, stream);
+    uploadFitted(tlasInstanceIndices_, host.tlasInstanceIndices, stream);
+}
+
 RenderScene DeviceScene::view(const CompiledScene& host) const {
     RenderScene s = host.view();  // scalars: counts of lights, environment, camera, settings
     s.positions = positions_.span();

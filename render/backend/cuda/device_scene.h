@@ -68,6 +68,8 @@ public:
     // The TLAS over the instances (GPU LBVH over their world boxes, `boxes` its scratch), or
     // only tlasInstanceIndices = {0} for one instance where skipsTlasForOneInstance().
     void buildTlas(LbvhBuilder& lbvh, DeviceBuffer<Aabb>& boxes, cudaStream_t stream);
+    // The host's TLAS (CompiledScene::tlasNodes, binned SAH), uploaded in place of a GPU build.
+    void uploadTlas(const CompiledScene& host, cudaStream_t stream);
     uint32_t instanceCount() const { return uint32_t(instances_.size()); }
 
     // Every buffer's allocated bytes, by name, in a fixed order (zero where not allocated).

@@ -14,8 +14,21 @@ constexpr uint32_t kBlock = 128;
 
 // kF: the variant's feature set. kAovs: whether the path records AOVs; without, the kernel has
 // no AOV code.
+// Registers are capped so that 8 blocks of 128 threads fit an SM (64 registers, 50% theoretical
+// occupancy instead of 25% or less): the spills this causes (local memory, cached in L1) cost
+// less than the latency the extra warps hide, in a kernel that mostly waits on BVH loads and
+// instruction fetch. Measured on the H100, render --megakernel at 1080p, spp/s with no cap
+// and with 4 / 5 / 6 / 7 / 8 / 10 / 12 blocks:
+//   Cornell box     66.1 | 67.3  73.4  89.6  92.4  99.2  99.0  85.1
+//   Balloon         304  | 313   314   320   325   327   326   308
+//   1M-tri sphere   395  | 396   432   471   497   510   481   459
+//   10M-tri sphere  -    | -     278   295   313   325   304   274
+// PT_MEGAKERNEL_MIN_BLOCKS overrides it for such experiments.
+#ifndef PT_MEGAKERNEL_MIN_BLOCKS
+#define PT_MEGAKERNEL_MIN_BLOCKS 8
+#endif
 template <uint32_t kF, bool kAovs>
-__global__ void megakernel(RenderScene scene, WaveBuffers b, WaveShape shape) {
+__global__ void __launch_bounds__(kBlock, PT_MEGAKERNEL_MIN_BLOCKS) megakernel(RenderScene scene, WaveBuffers b, WaveShape shape) {
     const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i >= shape.pathCount) return;
     const uint32_t pixel = i % shape.pixelCount, sample = shape.firstSample + i / shape.pixelCount;

@@ -21,13 +21,15 @@ uint32_t bitsFor(uint32_t maxValue) {
 }  // namespace
 
 PathScheduler::PathScheduler() {
-    PT_CUDA_CHECK(cudaMallocHost(&hostCounters_, sizeof(RenderCounters)));
+    PT_CUDA_CHECK(cudaMallocHost(&hostBounces_, 2 * sizeof(BounceCounts)));
+    for (cudaEvent_t& e : bounceDone_) PT_CUDA_CHECK(cudaEventCreateWithFlags(&e, cudaEventDisableTiming));
     counters_.resize(1);
     counters_.fillZero();
 }
 
 PathScheduler::~PathScheduler() {
-    if (hostCounters_) cudaFreeHost(hostCounters_);
+    for (cudaEvent_t e : bounceDone_) cudaEventDestroy(e);
+    if (hostBounces_) cudaFreeHost(hostBounces_);
 }
 
 void PathScheduler::reserve(uint32_t pixelCount, uint32_t pathCount, const ScheduleOptions& options,
@@ -109,6 +111,12 @@ void PathScheduler::render(const RenderScene& scene, uint32_t firstSample, uint3
     }
 }
 
+// The host launches bounce k + 1 before it knows how many paths bounce k left alive: the
+// stages read that count on the device (QueueLength), and the grid is sized for its bound, the
+// count of bounce k - 1's survivors, which the host learns while bounce k runs. So the GPU never
+// idles between bounces waiting for the host to read a count back (0.05 ms a bounce, measured
+// by bench's wavefront-overhead row), at the price of one empty bounce at the end. The material
+// sort needs its count on the host (the radix sort's length), so it waits for each count.
 void PathScheduler::runWavefront(const RenderScene& scene, WaveBuffers b, const WaveShape& shape,
                                  const ScheduleOptions& options, cudaStream_t stream) {
     launchGeneratePaths(variant_, scene, b, shape, stream);
@@ -117,40 +125,56 @@ void PathScheduler::runWavefront(const RenderScene& scene, WaveBuffers b, const 
     const bool cacheReads = options.firstHitCache && cacheValid;
     const bool cacheWrites = options.firstHitCache && !cacheValid;
     const uint32_t keyBits = bitsFor(options.materialCount + 1);
-    // Per-bounce queue sizes live at a fixed offset of the counters; they are reset before
-    // each shade and read back after it.
-    constexpr size_t kQueueCountsOffset = offsetof(RenderCounters, queueCount);
-    constexpr size_t kQueueCountsBytes = sizeof(RenderCounters) - kQueueCountsOffset;
-    auto* countsDevice = reinterpret_cast<uint8_t*>(b.counters) + kQueueCountsOffset;
-    auto* countsHost = reinterpret_cast<uint8_t*>(hostCounters_) + kQueueCountsOffset;
+    const bool waitForCounts = options.materialSort;
+    // Paths that bounce k leaves for bounce k + 1, as the host reads them back.
+    auto survivors = [&](const BounceCounts& c) {
+        return options.compaction ? c.queue : (c.alive > 0 ? shape.pathCount : 0u);
+    };
 
-    pathsPerBounce_.clear();
+    pathsPerBounce_.assign(1, shape.pathCount);
     const uint32_t* queue = nullptr;  // nullptr: every path of the wave, in order
-    uint32_t count = shape.pathCount;
-    for (uint32_t iteration = 0; count > 0; ++iteration) {
-        pathsPerBounce_.push_back(count);
-        const bool cameraRays = iteration == 0;
-        launchExtend(variant_, scene, b, shape, queue, count, cameraRays && cacheReads,
-                     cameraRays && cacheWrites, stream);
+    QueueLength length{shape.pathCount, nullptr};
+    for (uint32_t k = 0;; ++k) {
+        BounceCounts* out = &b.counters->bounce[k % 2];
+        const bool cameraRays = k == 0;
+        launchExtend(variant_, scene, b, shape, queue, length, cameraRays && cacheReads, cameraRays && cacheWrites,
+                     stream);
         if (options.materialSort) {
-            launchSortByMaterial(scene, b, count, queue == nullptr, keyBits, sortScratch_.data(), sortScratch_.size(),
-                                 stream);
+            launchSortByMaterial(scene, b, length.bound, queue == nullptr, keyBits, sortScratch_.data(),
+                                 sortScratch_.size(), stream);
             queue = b.queue[0];
         }
-        PT_CUDA_CHECK(cudaMemsetAsync(countsDevice, 0, kQueueCountsBytes, stream));
-        launchShade(variant_, scene, b, queue, count, options.compaction, stream);
-        PT_CUDA_CHECK(cudaMemcpyAsync(countsHost, countsDevice, kQueueCountsBytes, cudaMemcpyDeviceToHost, stream));
-        PT_CUDA_CHECK(cudaStreamSynchronize(stream));
+        PT_CUDA_CHECK(cudaMemsetAsync(out, 0, sizeof(BounceCounts), stream));
+        launchShade(variant_, scene, b, queue, length, options.compaction, out, stream);
+        PT_CUDA_CHECK(cudaMemcpyAsync(&hostBounces_[k % 2], out, sizeof(BounceCounts), cudaMemcpyDeviceToHost, stream));
+        PT_CUDA_CHECK(cudaEventRecord(bounceDone_[k % 2], stream));
+        QueueLength next{length.bound, options.compaction ? &out->queue : nullptr};
+        QueueLength shadows{length.bound, options.compaction ? &out->shadow : nullptr};
+        if (waitForCounts) {
+            PT_CUDA_CHECK(cudaEventSynchronize(bounceDone_[k % 2]));
+            next = {survivors(hostBounces_[k % 2]), nullptr};
+            shadows = {options.compaction ? hostBounces_[k % 2].shadow : length.bound, nullptr};
+        }
         if (options.compaction) {
-            launchShadow(variant_, scene, b, b.shadowQueue, hostCounters_->shadowCount, false, stream);
+            launchShadow(variant_, scene, b, b.shadowQueue, shadows, false, stream);
             std::swap(b.queue[0], b.queue[1]);
             queue = b.queue[0];
-            count = hostCounters_->queueCount[1];
         } else {
-            launchShadow(variant_, scene, b, queue, count, true, stream);
+            launchShadow(variant_, scene, b, nullptr, shadows, true, stream);
             queue = nullptr;
-            count = hostCounters_->alive > 0 ? shape.pathCount : 0;
         }
+        if (waitForCounts) {
+            if (next.bound == 0) break;
+            pathsPerBounce_.push_back(next.bound);
+        } else if (k > 0) {
+            // Bounce k - 1's survivors: exactly the paths bounce k had, a bound on bounce k + 1's.
+            PT_CUDA_CHECK(cudaEventSynchronize(bounceDone_[(k - 1) % 2]));
+            const uint32_t bounceK = survivors(hostBounces_[(k - 1) % 2]);
+            if (bounceK == 0) break;  // bounce k ran empty, and so would every later one
+            pathsPerBounce_.push_back(bounceK);
+            next.bound = bounceK;
+        }
+        length = next;
     }
     if (cacheWrites) {
         firstHitsValid_ = true;

@@ -62,7 +62,8 @@ private:
     DeviceBuffer<uint8_t> sortScratch_;
     DeviceBuffer<float> radiance_;
     DeviceBuffer<RenderCounters> counters_;
-    RenderCounters* hostCounters_ = nullptr;  // pinned, for the per-bounce queue sizes
+    BounceCounts* hostBounces_ = nullptr;  // pinned, two: the counts of the last two bounces
+    cudaEvent_t bounceDone_[2] = {};       // recorded once bounce k's counts reach hostBounces_[k % 2]
     uint32_t variant_ = kFullVariant;
     bool firstHitsValid_ = false;
     bool firstHitCostsValid_ = false;  // firstHitCosts_ was written with firstHits_

@@ -31,11 +31,30 @@ __global__ void generateKernel(RenderScene scene, WaveBuffers b, WaveShape shape
 
 // kCost: the bvh_cost AOV is on, so camera segments (depth 0, also past alpha-transparent
 // surfaces) count their traversal work; without, no counter exists.
+// Register caps (blocks of kBlock threads an SM the registers must allow), as for the
+// megakernel (megakernel.cu). The traversal kernels (extend, shadow) wait on BVH loads, and 8
+// blocks (64 registers) hide that best; the shade kernel is arithmetic, and 4 blocks (128
+// registers; uncapped, the glossy and textured variants took 131-136 and fitted 3) suit it.
+// Measured on the H100, render --wavefront at 1080p, spp/s:
+//   extend and shadow uncapped / 8 / 12 blocks: Cornell 209 / 216 / 201, 1M-triangle sphere
+//   356 / 376 / 358, 10M 243 / 256 / 233;
+//   shade uncapped / 4 / 5 blocks: Cornell 201 / 202 / 191.
+// The PT_*_MIN_BLOCKS macros override them for such experiments.
+#ifndef PT_EXTEND_MIN_BLOCKS
+#define PT_EXTEND_MIN_BLOCKS 8
+#endif
+#ifndef PT_SHADOW_MIN_BLOCKS
+#define PT_SHADOW_MIN_BLOCKS 8
+#endif
+#ifndef PT_SHADE_MIN_BLOCKS
+#define PT_SHADE_MIN_BLOCKS 4
+#endif
+
 template <uint32_t kF, bool kCost>
-__global__ void extendKernel(RenderScene scene, WaveBuffers b, WaveShape shape, const uint32_t* queue,
-                             uint32_t count, bool readCache, bool writeCache) {
+__global__ void __launch_bounds__(kBlock, PT_EXTEND_MIN_BLOCKS) extendKernel(RenderScene scene, WaveBuffers b, WaveShape shape, const uint32_t* queue,
+                             QueueLength length, bool readCache, bool writeCache) {
     const uint32_t i = threadIndex();
-    if (i >= count) return;
+    if (i >= length.value()) return;
     const uint32_t path = queue ? queue[i] : i;
     if (!queue && !PT_LOAD_MEMBER(b.paths, path, PathState, alive)) return;
     const uint32_t pixel = path % shape.pixelCount;
@@ -84,10 +103,10 @@ __global__ void materialKeyKernel(RenderScene scene, WaveBuffers b, uint32_t cou
 
 // kAovs: paths record AOVs; without, the kernel is the one that ran before AOVs existed.
 template <uint32_t kF, bool kAovs>
-__global__ void shadeKernel(RenderScene scene, WaveBuffers b, const uint32_t* queue, uint32_t count,
-                            bool compaction) {
+__global__ void __launch_bounds__(kBlock, PT_SHADE_MIN_BLOCKS) shadeKernel(RenderScene scene, WaveBuffers b, const uint32_t* queue, QueueLength length,
+                            bool compaction, BounceCounts* out) {
     const uint32_t i = threadIndex();
-    if (i >= count) return;
+    if (i >= length.value()) return;
     const uint32_t path = queue ? queue[i] : i;
     PathState state = b.paths.load(path);
     if (!state.alive) return;
@@ -108,19 +127,19 @@ __global__ void shadeKernel(RenderScene scene, WaveBuffers b, const uint32_t* qu
     b.paths.store(path, state);
     if (compaction) {
         if (shadow.valid) b.shadows[path] = shadow;
-        warpAppend(b.shadowQueue, &b.counters->shadowCount, path, shadow.valid);
-        warpAppend(b.queue[1], &b.counters->queueCount[1], path, state.alive);
+        warpAppend(b.shadowQueue, &out->shadow, path, shadow.valid);
+        warpAppend(b.queue[1], &out->queue, path, state.alive);
     } else {
         b.shadows[path] = shadow;
-        warpAtomicAdd(&b.counters->alive, state.alive ? 1u : 0u);
+        warpAtomicAdd(&out->alive, state.alive ? 1u : 0u);
     }
 }
 
 template <uint32_t kF>
-__global__ void shadowKernel(RenderScene scene, WaveBuffers b, const uint32_t* queue, uint32_t count,
+__global__ void __launch_bounds__(kBlock, PT_SHADOW_MIN_BLOCKS) shadowKernel(RenderScene scene, WaveBuffers b, const uint32_t* queue, QueueLength length,
                              bool consume) {
     const uint32_t i = threadIndex();
-    if (i >= count) return;
+    if (i >= length.value()) return;
     const uint32_t path = queue ? queue[i] : i;
     const ShadowRay shadow = b.shadows[path];
     if (!shadow.valid) return;
@@ -190,16 +209,17 @@ void launchGeneratePaths(uint32_t variant, const RenderScene& scene, const WaveB
 }
 
 void launchExtend(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape,
-                  const uint32_t* queue, uint32_t count, bool readCache, bool writeCache,
+                  const uint32_t* queue, QueueLength length, bool readCache, bool writeCache,
                   cudaStream_t stream) {
-    if (count == 0) return;
+    if (length.bound == 0) return;
+    const uint32_t blocks = blocksFor(length.bound);
     if (b.aovs.has(Aov::BvhCost)) {  // AOVs run the generic code (kernel_variants.h)
         extendKernel<kAllFeatures, true>
-            <<<blocksFor(count), kBlock, 0, stream>>>(scene, b, shape, queue, count, readCache, writeCache);
+            <<<blocks, kBlock, 0, stream>>>(scene, b, shape, queue, length, readCache, writeCache);
     } else {
         forKernelVariant(variant, [&](auto features) {
-            extendKernel<decltype(features)::value, false><<<blocksFor(count), kBlock, 0, stream>>>(
-                scene, b, shape, queue, count, readCache, writeCache);
+            extendKernel<decltype(features)::value, false>
+                <<<blocks, kBlock, 0, stream>>>(scene, b, shape, queue, length, readCache, writeCache);
         });
     }
     PT_CUDA_CHECK_LAUNCH("extendKernel");
@@ -225,26 +245,26 @@ void launchSortByMaterial(const RenderScene& scene, const WaveBuffers& b, uint32
 }
 
 void launchShade(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const uint32_t* queue,
-                 uint32_t count, bool compaction, cudaStream_t stream) {
-    if (count == 0) return;
+                 QueueLength length, bool compaction, BounceCounts* out, cudaStream_t stream) {
+    if (length.bound == 0) return;
+    const uint32_t blocks = blocksFor(length.bound);
     if (b.aovs.mask & kPathAovs) {  // AOVs run the generic code (kernel_variants.h)
-        shadeKernel<kAllFeatures, true>
-            <<<blocksFor(count), kBlock, 0, stream>>>(scene, b, queue, count, compaction);
+        shadeKernel<kAllFeatures, true><<<blocks, kBlock, 0, stream>>>(scene, b, queue, length, compaction, out);
     } else {
         forKernelVariant(variant, [&](auto features) {
             shadeKernel<decltype(features)::value, false>
-                <<<blocksFor(count), kBlock, 0, stream>>>(scene, b, queue, count, compaction);
+                <<<blocks, kBlock, 0, stream>>>(scene, b, queue, length, compaction, out);
         });
     }
     PT_CUDA_CHECK_LAUNCH("shadeKernel");
 }
 
 void launchShadow(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const uint32_t* queue,
-                  uint32_t count, bool consume, cudaStream_t stream) {
-    if (count == 0) return;
+                  QueueLength length, bool consume, cudaStream_t stream) {
+    if (length.bound == 0) return;
     forKernelVariant(variant, [&](auto features) {
         shadowKernel<decltype(features)::value>
-            <<<blocksFor(count), kBlock, 0, stream>>>(scene, b, queue, count, consume);
+            <<<blocksFor(length.bound), kBlock, 0, stream>>>(scene, b, queue, length, consume);
     });
     PT_CUDA_CHECK_LAUNCH("shadowKernel");
 }

@@ -15,13 +15,32 @@
 
 namespace pt::cuda {
 
+// What one wavefront bounce's shade stage counts on the device.
+struct BounceCounts {
+    uint32_t queue;   // paths appended to the next bounce's queue (compaction)
+    uint32_t shadow;  // shadow rays appended to the shadow queue (compaction)
+    uint32_t alive;   // without compaction: paths still alive
+    uint32_t pad;
+};
+
 // Device counters of a render, summed over kernels.
 struct RenderCounters {
     unsigned long long rays;          // closest-hit and shadow rays traced
     unsigned long long nonfinite;     // samples dropped for NaN or Inf
-    uint32_t queueCount[2];           // wavefront: paths appended to the next queue (compaction)
-    uint32_t shadowCount;             // wavefront: shadow rays appended to the shadow queue
-    uint32_t alive;                   // wavefront without compaction: paths still alive
+    // Wavefront: bounce k counts into bounce[k % 2] while bounce k + 1's stages read how many
+    // paths they have from it, so the host need not wait for a count before it launches them.
+    BounceCounts bounce[2];
+};
+
+// How many entries of a queue a stage processes: at most `bound`, which the host knows and
+// sizes the grid for, and exactly *exact where the count is only known on the device (written
+// by an earlier stage in the same stream; nullptr: bound is exact). Threads past the count
+// return at once.
+struct QueueLength {
+    uint32_t bound;
+    const uint32_t* exact;
+
+    __device__ uint32_t value() const { return exact ? *exact : bound; }
 };
 
 struct WaveBuffers {
@@ -50,11 +69,11 @@ struct WaveShape {
 void launchGeneratePaths(uint32_t variant, const RenderScene& scene, const WaveBuffers& b,
                          const WaveShape& shape, cudaStream_t stream);
 
-// Closest hits of the paths in `queue` (count entries; all paths when queue is nullptr).
+// Closest hits of the paths in `queue` (`length` entries; all paths when queue is nullptr).
 // readCache: camera rays whose hits are in b.firstHits; writeCache: store them there. With the
 // bvh_cost AOV, camera segments count their traversal work into it.
 void launchExtend(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const WaveShape& shape,
-                  const uint32_t* queue, uint32_t count, bool readCache, bool writeCache,
+                  const uint32_t* queue, QueueLength length, bool readCache, bool writeCache,
                   cudaStream_t stream);
 
 // Material sort: reorders queue[0] (count entries; with `identity` first set to every path) by
@@ -64,18 +83,18 @@ size_t sortScratchBytes(uint32_t pathCount);
 void launchSortByMaterial(const RenderScene& scene, const WaveBuffers& b, uint32_t count, bool identity,
                           uint32_t keyBits, void* scratch, size_t scratchBytes, cudaStream_t stream);
 
-// Shading of the paths in `queue` (all paths when nullptr). With compaction, live paths are
-// appended to b.queue[1] and valid shadow rays to b.shadowQueue; without, shadows are marked
-// valid in place and b.counters->alive counts the live paths. Camera segments that end here
-// add their AOVs to b.aovs.
+// Shading of the paths in `queue` (`length` entries; all paths when nullptr). With compaction,
+// live paths are appended to b.queue[1] and valid shadow rays to b.shadowQueue, counted in
+// `out` (device memory, zeroed by the caller); without, shadows are marked valid in place and
+// out->alive counts the live paths. Camera segments that end here add their AOVs to b.aovs.
 void launchShade(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const uint32_t* queue,
-                 uint32_t count, bool compaction, cudaStream_t stream);
+                 QueueLength length, bool compaction, BounceCounts* out, cudaStream_t stream);
 
-// Shadow rays of the paths in `queue` (count entries; all paths when nullptr); invalid ones are
-// skipped, and unoccluded contributions are added to the paths' radiance. `consume` marks
+// Shadow rays of the paths in `queue` (`length` entries; all paths when nullptr); invalid ones
+// are skipped, and unoccluded contributions are added to the paths' radiance. `consume` marks
 // each one invalid once traced (in-place shadow rays, compaction off).
 void launchShadow(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const uint32_t* queue,
-                  uint32_t count, bool consume, cudaStream_t stream);
+                  QueueLength length, bool consume, cudaStream_t stream);
 
 // Finished paths' radiance into b.radiance, non-finite samples counted and zeroed.
 void launchFinishPaths(const WaveBuffers& b, const WaveShape& shape, cudaStream_t stream);
