@@ -173,19 +173,36 @@ TEST(CudaBackend, BeautyMatchesTheCpuAtEqualSamples) {
     EXPECT_NEAR(sumGpu / sumCpu, 1.0, 2e-3);
 }
 
+// An 8-bit texture of `size` x `size` texels of pseudo-random RGBA, bilinear and repeating.
+int32_t addNoiseTexture(Scene& scene, uint32_t size, uint32_t seed) {
+    Texture t;
+    t.name = "noise " + std::to_string(seed);
+    t.width = t.height = size;
+    std::mt19937 rng(seed);
+    for (uint32_t i = 0; i < size * size * 4; ++i) t.texels8.push_back(uint8_t(rng() & 0xffu));
+    scene.textures.push_back(t);
+    return int32_t(scene.textures.size() - 1);
+}
+
 // Every kernel variant that can render the scene renders what the CPU renders, at equal
 // samples: the specialised code leaves out only what the scene does not use. The Cornell box
 // (smooth glass, mirror, area light, eight instances) runs every variant with instances, and
-// a glossy grid of one instance under a sky every variant with glossy lobes. A variant that
-// leaves out a feature the scene has is refused: the leanest covering one runs, as the stats say.
+// a glossy grid of one instance under a sky, with base-colour (sRGB) and metallic-roughness
+// textures tiled over it, every variant with glossy lobes. A variant that leaves out a feature
+// the scene has is refused: the leanest covering one runs, as the stats say.
 TEST(CudaBackend, EveryKernelVariantMatchesTheCpu) {
     PT_REQUIRE_CUDA_DEVICE();
     Scene oneInstance = bumpyGridScene(16, 3);
     oneInstance.instances.resize(1);
+    Mesh& grid = oneInstance.meshes[0];
+    for (const Vec3& p : grid.positions) grid.uvs.push_back({1.5f * p.x, 1.5f * p.z});
+    const int32_t baseColor = addNoiseTexture(oneInstance, 8, 5), metallicRoughness = addNoiseTexture(oneInstance, 4, 6);
     for (NamedMaterial& m : oneInstance.materials) {  // glossy: half metal, rough
         m.params.metallic = 0.5f;
         m.params.roughness = 0.4f;
         m.params.specular = 1.0f;
+        m.params.baseColorTexture.texture = baseColor;
+        m.params.metallicRoughnessTexture.texture = metallicRoughness;
     }
     for (const Scene& scene : {cornell(48), oneInstance}) {
         CpuBackend cpuBackend;

@@ -8,7 +8,8 @@
 // the build time of the CUDA code within a few variants' worth; the sets are chosen from the
 // scenes users bring: a Cornell-style box (diffuse, mirrors, smooth glass, area lights), the
 // same with glossy and rough materials, each also as one instance (a scanned or generated
-// mesh: its BLAS is walked without a TLAS), and a textured glTF under an HDR sky. The GGX code
+// mesh: its BLAS is walked without a TLAS), the glossy ones also with base-colour and
+// metallic-roughness textures, and a textured glTF with normal maps and alpha under an HDR sky. The GGX code
 // of rough lobes is the largest part of the shading code (a third of the "lean" megakernel's
 // instructions, measured with nvdisasm line info), so "lean" leaves it out.
 #include <cstdint>
@@ -31,8 +32,11 @@ using namespace feature;
 constexpr uint32_t kLeanSingle =
     kUngated | kSmoothTransmission | kBackfaceCulling | kSpheres | kSphereLights | kPunctualLights;
 constexpr uint32_t kLean = kLeanSingle | kMultipleInstances;
-// Rough metals, specular layers and glass on top.
-constexpr uint32_t kGlossySingle = kLeanSingle | kGlossyReflection | kRoughTransmission;
+// Rough metals, specular layers and glass on top, and the two texture slots glTF materials use
+// most (base colour, metallic-roughness): all texture lookups call one out-of-line sampler
+// (texture_sample.h), so a slot adds a call, not a copy of the sampler.
+constexpr uint32_t kGlossySingle =
+    kLeanSingle | kGlossyReflection | kRoughTransmission | kBaseColorTexture | kMetallicRoughnessTexture;
 constexpr uint32_t kGlossy = kGlossySingle | kMultipleInstances;
 // What glTF scenes usually bring on top: textures, normal maps, alpha, an HDR sky, depth of field.
 constexpr uint32_t kTextured =
