@@ -4,6 +4,7 @@
 #include <cub/device/device_radix_sort.cuh>
 
 #include "render/backend/cuda/cuda_check.h"
+#include "render/backend/cuda/register_cap.cuh"
 #include "render/backend/cuda/variant_dispatch.cuh"
 #include "render/backend/cuda/warp_atomics.cuh"
 #include "render/backend/cuda/wavefront_kernels.h"
@@ -13,6 +14,9 @@ namespace pt::cuda {
 
 namespace {
 
+// Threads a block. With the register caps held, 64 and 256 measured no better on the H100
+// (render --wavefront at 1080p, spp/s, 128 / 256 / 64: Cornell 221.1 / 220.2 / 221.3, 1M-triangle
+// sphere 374 / 363 / 371).
 constexpr uint32_t kBlock = 128;
 
 uint32_t blocksFor(uint32_t count) { return (count + kBlock - 1) / kBlock; }
@@ -31,27 +35,27 @@ __global__ void generateKernel(RenderScene scene, WaveBuffers b, WaveShape shape
 
 // kCost: the bvh_cost AOV is on, so camera segments (depth 0, also past alpha-transparent
 // surfaces) count their traversal work; without, no counter exists.
-// Register caps (blocks of kBlock threads an SM the registers must allow), as for the
-// megakernel (megakernel.cu). The traversal kernels (extend, shadow) wait on BVH loads, and 8
-// blocks (64 registers) hide that best; the shade kernel is arithmetic, and 4 blocks (128
-// registers; uncapped, the glossy and textured variants took 131-136 and fitted 3) suit it.
-// Measured on the H100, render --wavefront at 1080p, spp/s:
-//   extend and shadow uncapped / 8 / 12 blocks: Cornell 209 / 216 / 201, 1M-triangle sphere
+// Register caps a thread (register_cap.cuh), as for the megakernel (megakernel.cu). The
+// traversal kernels (extend, shadow) wait on BVH loads, and 64 registers (8 blocks of 128 an SM)
+// hide that best; the shade kernel is arithmetic, and 128 (4 blocks; uncapped, the glossy and
+// textured variants took 131-136 and fitted 3) suits it. Measured on the H100, render
+// --wavefront at 1080p, spp/s:
+//   extend and shadow uncapped / 64 / 40 registers: Cornell 209 / 216 / 201, 1M-triangle sphere
 //   356 / 376 / 358, 10M 243 / 256 / 233;
-//   shade uncapped / 4 / 5 blocks: Cornell 201 / 202 / 191.
-// The PT_*_MIN_BLOCKS macros override them for such experiments.
-#ifndef PT_EXTEND_MIN_BLOCKS
-#define PT_EXTEND_MIN_BLOCKS 8
+//   shade uncapped / 128 / 96 registers: Cornell 201 / 202 / 191.
+// The PT_*_REGISTERS macros override them for such experiments.
+#ifndef PT_EXTEND_REGISTERS
+#define PT_EXTEND_REGISTERS 64
 #endif
-#ifndef PT_SHADOW_MIN_BLOCKS
-#define PT_SHADOW_MIN_BLOCKS 8
+#ifndef PT_SHADOW_REGISTERS
+#define PT_SHADOW_REGISTERS 64
 #endif
-#ifndef PT_SHADE_MIN_BLOCKS
-#define PT_SHADE_MIN_BLOCKS 4
+#ifndef PT_SHADE_REGISTERS
+#define PT_SHADE_REGISTERS 128
 #endif
 
 template <uint32_t kF, bool kCost>
-__global__ void __launch_bounds__(kBlock, PT_EXTEND_MIN_BLOCKS) extendKernel(RenderScene scene, WaveBuffers b, WaveShape shape, const uint32_t* queue,
+__global__ void __launch_bounds__(kBlock, blocksPerSmFor(kBlock, PT_EXTEND_REGISTERS)) extendKernel(RenderScene scene, WaveBuffers b, WaveShape shape, const uint32_t* queue,
                              QueueLength length, bool readCache, bool writeCache) {
     const uint32_t i = threadIndex();
     if (i >= length.value()) return;
@@ -103,7 +107,7 @@ __global__ void materialKeyKernel(RenderScene scene, WaveBuffers b, uint32_t cou
 
 // kAovs: paths record AOVs; without, the kernel is the one that ran before AOVs existed.
 template <uint32_t kF, bool kAovs>
-__global__ void __launch_bounds__(kBlock, PT_SHADE_MIN_BLOCKS) shadeKernel(RenderScene scene, WaveBuffers b, const uint32_t* queue, QueueLength length,
+__global__ void __launch_bounds__(kBlock, blocksPerSmFor(kBlock, PT_SHADE_REGISTERS)) shadeKernel(RenderScene scene, WaveBuffers b, const uint32_t* queue, QueueLength length,
                             bool compaction, BounceCounts* out) {
     const uint32_t i = threadIndex();
     if (i >= length.value()) return;
@@ -136,7 +140,7 @@ __global__ void __launch_bounds__(kBlock, PT_SHADE_MIN_BLOCKS) shadeKernel(Rende
 }
 
 template <uint32_t kF>
-__global__ void __launch_bounds__(kBlock, PT_SHADOW_MIN_BLOCKS) shadowKernel(RenderScene scene, WaveBuffers b, const uint32_t* queue, QueueLength length,
+__global__ void __launch_bounds__(kBlock, blocksPerSmFor(kBlock, PT_SHADOW_REGISTERS)) shadowKernel(RenderScene scene, WaveBuffers b, const uint32_t* queue, QueueLength length,
                              bool consume) {
     const uint32_t i = threadIndex();
     if (i >= length.value()) return;
