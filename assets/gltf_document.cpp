@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "assets/gltf_json_check.h"
+#include "assets/json_depth.h"
 
 namespace pt {
 namespace {
@@ -113,6 +114,7 @@ GltfDocument loadGltfDocument(const std::string& path) {
     const std::string jsonText =
         binary ? glb->json : std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
 
+    checkJsonDepth(jsonText, doc.label);  // before nlohmann and tinygltf recurse over it
     nlohmann::json root;
     try {
         root = nlohmann::json::parse(jsonText);

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "assets/input_error.h"
+#include "assets/json_depth.h"
 
 namespace pt {
 
@@ -173,6 +174,7 @@ std::string prettyJson(const Json& value) {
 }
 
 Json parseJsonText(const std::string& text, const std::string& fileName) {
+    checkJsonDepth(text, fileName);  // before the parser and the value's destructor recurse
     DuplicateKeyCheck check(fileName);
     try {
         return Json::parse(
