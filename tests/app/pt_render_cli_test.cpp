@@ -180,3 +180,43 @@ TEST(PtRenderCli, ExportsAGltfModelAsSceneJson) {
 
 }  // namespace
 }  // namespace pt
+
+namespace pt {
+namespace {
+
+// `pt-render COMMAND --help` (or -h, anywhere among its arguments) prints that command's usage
+// and the option groups it takes, and exits 0 without running it (issue 17: each said "see
+// --help" and exited 2).
+TEST(PtRenderCli, EachCommandAnswersHelpWithItsOwnUsage) {
+    const struct {
+        const char* command;
+        bool toggles, display;
+    } commands[] = {{"render", true, true},     {"bench", true, false},  {"reference", true, false},
+                    {"converge", false, false}, {"stress", false, false}, {"export", false, false},
+                    {"info", false, false},     {"gen", false, false}};
+    for (const auto& c : commands) {
+        const std::string name = c.command;
+        for (const std::string& flag : {std::string(" --help"), std::string(" scene.json -h")}) {
+            const auto r = runCli(name + flag);
+            EXPECT_EQ(r.exitCode, 0) << name << flag << ": " << r.err;
+            EXPECT_EQ(r.out.rfind("usage: pt-render " + name + " [options]\n\n  " + name + " ", 0), 0u) << r.out;
+            EXPECT_EQ(r.out.find("TOGGLES:") != std::string::npos, c.toggles) << name;
+            EXPECT_EQ(r.out.find("DISPLAY (") != std::string::npos, c.display) << name;
+            for (const auto& other : commands) {  // no other command's usage line
+                if (std::string(other.command) != name) {
+                    EXPECT_EQ(r.out.find("\n  " + std::string(other.command) + " "), std::string::npos)
+                        << name << " prints " << other.command;
+                }
+            }
+        }
+    }
+    const auto unknown = runCli("frobnicate --help");
+    EXPECT_EQ(unknown.exitCode, 2);
+    EXPECT_NE(unknown.err.find("unknown command \"frobnicate\""), std::string::npos) << unknown.err;
+    const auto usageError = runCli("info");
+    EXPECT_EQ(usageError.exitCode, 2);
+    EXPECT_NE(usageError.err.find("(see pt-render info --help)"), std::string::npos) << usageError.err;
+}
+
+}  // namespace
+}  // namespace pt

@@ -1,0 +1,104 @@
+#include "usage.h"
+
+namespace pt::cli {
+
+namespace {
+
+enum Footnotes : unsigned { kNone = 0, kToggles = 1, kDisplay = 2 };
+
+struct CommandUsage {
+    const char* name;
+    const char* text;  // its lines of the usage, as `pt-render --help` lists them
+    unsigned footnotes;
+};
+
+constexpr CommandUsage kCommands[] = {
+    {"render", R"(  render SCENE -o OUT.exr [--png OUT.png] [--spp N | --time SECONDS] [--size WxH]
+                [--seed N] [--threads N] [--backend cpu|cuda] [--stats STATS.json] [--quiet]
+                [--max-depth N] [--aov NAME,...|all] [--half] [TOGGLES] [DISPLAY]
+      Render SCENE (.json, .gltf, .glb or .obj) progressively; write a linear EXR and/or a
+      display-referred PNG (or .jpg, .tif; DISPLAY says how). Prints the paths it wrote. --aov adds AOV layers to the EXR
+      (albedo, shading_normal, geometric_normal, depth, position, uv, roughness, metallic,
+      emission, instance_id, material_id, bvh_cost, sample_count, variance; only these are
+      accumulated); --half writes 16-bit channels (ids, sample_count, depth, position stay float).
+)", kToggles | kDisplay},
+    {"bench", R"(  bench SCENE [--backend cpu|cuda] [--size WxH] [--max-depth N] [--runs N] [--spp N]
+                [--json OUT.json] [--quiet] [TOGGLES]
+      Medians of several runs: traversal Mrays/s (primary, diffuse, shadow; BVH on and off),
+      path tracing spp/s and Mpaths/s with each toggle flipped, BLAS/TLAS build and refit
+      times (CPU binned SAH; GPU LBVH with the cuda backend), edit-to-first-frame latency, and
+      the largest deviation of the backend's image from the CPU's.
+)", kToggles},
+    {"reference", R"(  reference SCENE -o REF.exr --spp N [--batches K] [--backend cpu|cuda] [--size WxH] [--seed N]
+                [--threads N] [--max-depth N] [--quiet] [TOGGLES]
+      A high-spp reference as a float EXR, rendered as K (default 8) independent batches whose
+      spread gives the noise of the mean, stored as attributes pt:noise_relmse, pt:noise_rmse.
+)", kToggles},
+    {"converge", R"(  converge SCENE (--reference REF.exr | --reference-constant R,G,B) [--time SECONDS]
+                [--variant NAME[:KEY=VALUE,...]]... [--csv OUT.csv] [--plot OUT.svg]
+                [--backend cpu|cuda] [--size WxH] [--seed N] [--threads N] [--max-depth N] [--quiet]
+      Render each variant (default: full, and naive:nee=off,mis=off,rr=off) for SECONDS (default
+      10), measuring relMSE, RMSE and MAPE against the reference at log-spaced times; print the
+      errors at equal time and flag variants whose error stops falling. Keys: nee, mis, rr, bvh,
+      pixel_jitter, megakernel, compaction, material_sort, first_hit_cache (on|off), clamp,
+      rebuild_ratio (a number).
+)", kNone},
+    {"stress", R"(  stress [--backend cpu|cuda|all] [--quick] [--only NAME,...] [--csv OUT.csv]
+      The robustness suite (scenes/stress/, docs/robustness.md): extreme scales, degenerate
+      geometry, materials, lights, accumulation and cameras, each against a stated expectation.
+      Exits 1 when a case fails.
+)", kNone},
+    {"export", R"(  export SCENE -o OUT.json
+      Write any loadable scene as scene JSON (atomically; defaults left out).
+)", kNone},
+    {"info", R"(  info SCENE [--json]
+      Triangles, meshes, instances, materials, textures, lights, bounds, load and BVH times.
+)", kNone},
+    {"gen", R"(  gen sphere -o OUT.gltf --triangles N [--displace A] [--seed S] [--quiet]
+  gen field -o OUT.gltf --count N [--mesh IN.gltf|.glb|.obj] [--spacing D] [--seed S] [--quiet]
+      Write a synthetic glTF (OUT.gltf + OUT.bin) for scale tests: a displaced sphere of about
+      N triangles (up to 10,000,000), or N instances (up to 1,000,000) of one mesh on a grid.
+)", kNone},
+};
+
+constexpr const char* kToggleText = R"(TOGGLES: --no-nee --no-mis --no-rr --clamp X --bvh-off (brute force) --no-jitter
+  --megakernel | --wavefront, --no-compaction, --sort-materials | --no-sort-materials,
+  --no-first-hit-cache, --rebuild-ratio R (refit until SAH cost exceeds R x the built one)
+)";
+
+constexpr const char* kDisplayText = R"(DISPLAY (the --png image; default: the scene's "color" setting, else the config's default,
+  sRGB / Standard in the shipped scenes/ocio/config.ocio):
+  --ocio CONFIG (else the scene's config, $OCIO, the shipped one) --display NAME --view NAME
+  --look NAME: an OpenColorIO view (shipped: displays sRGB, Rec.1886; views Standard, AgX,
+  ACES 1.0 SDR, Raw; looks "Exposure +1", "Exposure -1").
+  --tonemap standard|reinhard|aces-fitted|agx [--white-point W]: a built-in operator instead.
+  --exposure STOPS (before either), --no-dither (plain rounding to 8 bits).
+)";
+
+}  // namespace
+
+std::string fullUsage() {
+    std::string text = "usage: pt-render <command> [options]\n\ncommands:\n";
+    for (const CommandUsage& c : kCommands) text += c.text;
+    return text + "\n" + kToggleText + "\n" + kDisplayText;
+}
+
+std::optional<std::string> commandUsage(const std::string& command) {
+    for (const CommandUsage& c : kCommands) {
+        if (command != c.name) continue;
+        std::string text = std::string("usage: pt-render ") + c.name + " [options]\n\n" + c.text;
+        if (c.footnotes & kToggles) text += std::string("\n") + kToggleText;
+        if (c.footnotes & kDisplay) text += std::string("\n") + kDisplayText;
+        return text;
+    }
+    return std::nullopt;
+}
+
+bool asksForHelp(const std::vector<std::string>& args) {
+    for (const std::string& a : args) {
+        if (a == "--help" || a == "-h") return true;
+    }
+    return false;
+}
+
+}  // namespace pt::cli
