@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "assets/file_state.h"
 #include "assets/gltf_json_check.h"
 #include "assets/json_depth.h"
 
@@ -86,6 +87,24 @@ bool keepEncodedImage(tinygltf::Image* image, const int, std::string*, std::stri
     return true;
 }
 
+// tinygltf's file reader, replaced (FsCallbacks::ReadWholeFile): its own opened a folder as a
+// stream, took its size as -1 and died of std::bad_alloc. This one reads regular files of up
+// to 4 GiB and otherwise says why not; tinygltf then warns (images) or fails (buffers).
+bool readFileForTinygltf(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+    const FileState state = fileState(path);
+    if (state != FileState::Readable && state != FileState::Empty) {
+        if (err) *err += path + ": " + fileStateWords(state) + "\n";
+        return false;
+    }
+    try {
+        *out = readWholeFile(path, path);
+    } catch (const InputError& e) {
+        if (err) *err += std::string(e.what()) + "\n";
+        return false;
+    }
+    return true;
+}
+
 // tinygltf's error text, one line per problem; data URIs can make lines very long.
 std::string summarize(const std::string& text) {
     std::istringstream lines(text);
@@ -126,6 +145,8 @@ GltfDocument loadGltfDocument(const std::string& path) {
 
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&keepEncodedImage, nullptr);
+    loader.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readFileForTinygltf,
+                           &tinygltf::WriteWholeFile, nullptr});
     std::string err, warn;
     const bool ok =
         binary ? loader.LoadBinaryFromMemory(&doc.model, &err, &warn, bytes.data(),

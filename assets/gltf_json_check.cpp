@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "assets/input_error.h"
+#include "assets/message_text.h"
 #include "assets/gltf_uri.h"
 
 // Sections: the document's shape; index references; byte counts; bufferView extents;
@@ -160,10 +161,10 @@ void checkReferences(const json& root, const GltfJsonSource& source) {
         walk(root, parsePattern(ref.pattern), 0, "", [&](const json& v, const std::string& path) {
             if (!v.is_number_integer() || v.get<int64_t>() < 0) {
                 fail(source, path, std::string("expected the index of a ") + ref.kind + ", got " +
-                                       v.dump());
+                                       shortened(v.dump()));
             }
             if (v.get<uint64_t>() >= count) {
-                fail(source, path, std::string(ref.kind) + " " + v.dump() + " does not exist (" +
+                fail(source, path, std::string(ref.kind) + " " + shortened(v.dump()) + " does not exist (" +
                                        std::to_string(count) + " in the file)");
             }
         });
@@ -184,11 +185,11 @@ uint64_t wholeNumber(const json& object, const char* key, const std::string& pat
     }
     if (!it->is_number_integer() || it->get<int64_t>() < 0 ||
         it->get<uint64_t>() > kMaxByteCount) {
-        fail(source, where, "expected a whole number, got " + it->dump());
+        fail(source, where, "expected a whole number, got " + shortened(it->dump()));
     }
     const uint64_t value = it->get<uint64_t>();
     if (value < min) {
-        fail(source, where, "must be at least " + std::to_string(min) + ", got " + it->dump());
+        fail(source, where, "must be at least " + std::to_string(min) + ", got " + shortened(it->dump()));
     }
     return value;
 }
@@ -215,7 +216,7 @@ void checkAccessorFields(const json& accessor, const std::string& path,
     if (!known) {
         fail(source, path + ".type", type == accessor.end()
                                          ? std::string("missing")
-                                         : type->dump() + " is not a glTF accessor type");
+                                         : shortened(type->dump()) + " is not a glTF accessor type");
     }
     auto sparse = accessor.find("sparse");
     if (sparse == accessor.end()) return;

@@ -1,5 +1,6 @@
 #include "assets/gltf_primitive.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -223,10 +224,16 @@ std::optional<PrimitiveGeometry> readGltfPrimitive(const GltfContext& ctx, size_
     const auto& primitive = ctx.model().meshes[meshIndex].primitives[primitiveIndex];
     const std::string element = gltfPath("meshes", meshIndex) + ".primitives[" +
                                 std::to_string(primitiveIndex) + "]";
-    if (!primitive.extensions.empty()) {
-        ctx.warn(element, "uses extension " + primitive.extensions.begin()->first +
-                              ", which is not supported; primitive skipped");
-        return std::nullopt;
+    // No primitive extension is supported. An optional one (KHR_materials_variants, or Draco
+    // with uncompressed fallback data) is ignored, as the glTF specification asks, and the
+    // primitive is read as it stands, with its default material; the file-level warning names
+    // it. Only one the file requires is a reason to skip: its data is not readable without it.
+    const auto& required = ctx.model().extensionsRequired;
+    for (const auto& extension : primitive.extensions) {
+        if (std::find(required.begin(), required.end(), extension.first) != required.end()) {
+            ctx.warn(element, "requires extension " + extension.first + ", which is not supported; primitive skipped");
+            return std::nullopt;
+        }
     }
     const char* mode = modeName(primitive.mode);
     if (!mode) ctx.fail(element, "mode " + std::to_string(primitive.mode) + " is not a glTF mode");

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "assets/file_state.h"
 #include "assets/gltf_accessors.h"
 #include "assets/gltf_uri.h"
 #include "assets/gltf_values.h"
@@ -38,8 +39,11 @@ std::vector<uint8_t> encodedImage(const GltfContext& ctx, const tinygltf::Image&
     if (image.as_is) return image.image;  // kept by keepEncodedImage (data URI or file)
     if (image.bufferView >= 0) return readGltfBufferView(ctx, image.bufferView, label);
     if (!image.uri.empty()) {
-        // tinygltf could not read the file; it only warns, and so do we.
-        throw InputError(ctx.doc.label + ": " + label + ": image file not found");
+        // tinygltf could not read the file (or it was empty); it only warns, and so do we.
+        const std::string path = (std::filesystem::path(ctx.doc.baseDir) / decodeGltfUri(image.uri)).string();
+        const FileState state = fileState(path);
+        throw InputError(ctx.doc.label + ": " + label + ": image " +
+                         (state == FileState::Readable ? "file could not be read" : fileStateWords(state)));
     }
     throw InputError(ctx.doc.label + ": " + label + ": has neither bytes nor a file");
 }

@@ -10,6 +10,7 @@
 
 #include "assets/input_error.h"
 #include "assets/json_depth.h"
+#include "assets/message_text.h"
 
 namespace pt {
 
@@ -195,9 +196,7 @@ void JsonValue::fail(const std::string& what) const {
 std::string JsonValue::describe() const {
     if (json().is_object()) return "an object";
     if (json().is_array()) return "an array";
-    std::string text = json().dump();
-    if (text.size() > 40) text = text.substr(0, 37) + "...";
-    return text;
+    return shortened(json().dump(), 40);
 }
 
 float JsonValue::asFloat(NumberRange range) const {
@@ -292,7 +291,7 @@ void ObjectReader::finish() const {
     for (const auto& item : object_.json().items()) {
         const std::string& key = item.key();
         if (std::find(known_.begin(), known_.end(), key) != known_.end()) continue;
-        std::string message = "unknown key \"" + key + "\"";
+        std::string message = "unknown key " + shortened(Json(key).dump());
         // Suggest the nearest allowed key when it is plausibly a typo of it.
         const size_t plausible = std::max<size_t>(1, key.size() / 4);
         size_t best = plausible + 1;

@@ -6,7 +6,9 @@
 #include <filesystem>
 #include <map>
 
+#include "assets/file_state.h"
 #include "assets/input_error.h"
+#include "assets/message_text.h"
 #include "assets/scene_json.h"
 
 namespace pt {
@@ -53,8 +55,8 @@ std::map<uint32_t, uint32_t> resolveOverrides(const ImportedFile& file, int32_t 
 LoadResult loadScene(const std::string& path, const ProgressFn& progress) {
     LoadResult result;
     try {
-        std::error_code error;
-        if (!fs::is_regular_file(path, error)) throw InputError(path + ": no such file");
+        const FileState state = fileState(path);
+        if (state != FileState::Readable) throw InputError(path + ": " + fileStateWords(state));
         if (lowerExtension(path) == ".json") {
             result.scene = readSceneJson(path, progress);
         } else if (isModelFile(path)) {
@@ -65,11 +67,11 @@ LoadResult loadScene(const std::string& path, const ProgressFn& progress) {
         }
     } catch (const InputError& e) {
         result.scene.reset();
-        result.error = e.what();
+        result.error = oneLineMessage(e.what());
     } catch (const std::exception& e) {
         // Not an input error we foresaw (e.g. out of memory): still name the file.
         result.scene.reset();
-        result.error = fs::path(path).filename().string() + ": " + e.what();
+        result.error = oneLineMessage(fs::path(path).filename().string() + ": " + e.what());
     }
     return result;
 }

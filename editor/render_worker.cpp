@@ -4,6 +4,8 @@
 #include <chrono>
 #include <thread>
 
+#include "assets/message_text.h"
+
 namespace pt::editor {
 
 RenderWorker::RenderWorker(EditorSession& session) : session_(session), thread_([this] { run(); }) {}
@@ -122,7 +124,7 @@ bool RenderWorker::step() {
             syncRefused_ = true;
             changed = true;
             std::lock_guard<std::mutex> status(statusMutex_);
-            status_.error = e.what();
+            status_.error = oneLineMessage(e.what());
         }
         setStage("", 0.0);
     }

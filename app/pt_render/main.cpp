@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "assets/message_text.h"
 #include "cli_options.h"
 #include "commands.h"
 #include "usage.h"
@@ -36,11 +37,11 @@ int main(int argc, char** argv) {
                      command.c_str());
         return 2;
     } catch (const pt::cli::UsageError& e) {
-        std::fprintf(stderr, "pt-render %s: %s (see pt-render %s --help)\n", command.c_str(), e.what(),
-                     command.c_str());
+        std::fprintf(stderr, "pt-render %s: %s (see pt-render %s --help)\n", command.c_str(),
+                     pt::oneLineMessage(e.what()).c_str(), command.c_str());
         return 2;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "pt-render %s: %s\n", command.c_str(), e.what());
+        std::fprintf(stderr, "pt-render %s: %s\n", command.c_str(), pt::oneLineMessage(e.what()).c_str());
         return 1;
     }
 }

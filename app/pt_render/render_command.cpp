@@ -14,6 +14,7 @@
 #include "assets/input_error.h"
 #include "cli_options.h"
 #include "commands.h"
+#include "interrupt.h"
 #include "display_options.h"
 #include "progress_bar.h"
 #include "render/backend/backend.h"
@@ -80,15 +81,18 @@ RenderRequest parseRequest(const std::vector<std::string>& args) {
     return r;
 }
 
-// Renders until the sample or time budget is met, in batches of about a quarter second so
-// the progress bar moves; with --time no batch is planned past the budget.
-void accumulate(Backend& backend, const RenderRequest& r, uint32_t targetSpp, ProgressBar& bar) {
+// Renders until the sample or time budget is met, or Ctrl-C, in batches of about a quarter
+// second so the progress bar moves and an interrupt is answered within one; with --time no
+// batch is planned past the budget.
+void accumulate(Backend& backend, const RenderRequest& r, uint32_t targetSpp, ProgressBar& bar,
+                const InterruptCatcher& interrupt) {
     const auto start = Clock::now();
     double secondsPerPass = 0.0;  // unknown until the first batch
     for (;;) {
         const double elapsed = secondsSince(start);
         const uint32_t done = backend.stats().samplesPerPixel;
         if (r.seconds ? elapsed >= *r.seconds : done >= targetSpp) break;
+        if (interrupt.interrupted()) break;
         bar.update("render", r.seconds ? elapsed / *r.seconds : double(done) / targetSpp);
         uint32_t passes = 1;
         if (secondsPerPass > 0.0) {
@@ -164,6 +168,7 @@ int runRender(const std::vector<std::string>& args) {
         threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, *r.threads);
     }
     std::unique_ptr<Backend> backend = createBackend(r.backend);
+    const InterruptCatcher interrupt;  // Ctrl-C from here on writes what was rendered
     ProgressBar bar(!r.quiet);
     SceneInput input = loadSceneInput(r.scenePath, bar);
     Scene& scene = input.scene;
@@ -179,7 +184,11 @@ int runRender(const std::vector<std::string>& args) {
     backend->setAovs(r.aovs);  // before the sync, whose reset allocates them
     const SyncReport sync = backend->sync(scene, SceneChanges::All, bar.callback());
     bar.finish();
-    accumulate(*backend, r, targetSpp, bar);
+    accumulate(*backend, r, targetSpp, bar, interrupt);
+    if (interrupt.interrupted() && backend->stats().samplesPerPixel == 0) {
+        std::fprintf(stderr, "interrupted before the first sample: nothing written\n");
+        return kInterruptedExitCode;
+    }
 
     std::vector<float> beauty;
     backend->readBeauty(beauty);
@@ -210,6 +219,10 @@ int runRender(const std::vector<std::string>& args) {
                      input.loadSeconds, sync.bvhSeconds,
                      stats.renderSeconds > 0 ? double(stats.rays) / stats.renderSeconds / 1e6 : 0.0,
                      static_cast<unsigned long long>(stats.nonfiniteSamples));
+    }
+    if (interrupt.interrupted()) {
+        std::fprintf(stderr, "interrupted: wrote the %u spp rendered so far\n", stats.samplesPerPixel);
+        return kInterruptedExitCode;
     }
     return 0;
 }

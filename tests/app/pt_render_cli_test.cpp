@@ -1,16 +1,23 @@
 // End-to-end tests of the pt-render command line: real process, real files.
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "assets/image_write.h"
 #include "assets/scene_loader.h"
 #include "cli_runner.h"
 #include "support/test_paths.h"
+
+extern char** environ;
 
 namespace pt {
 namespace {
@@ -216,6 +223,44 @@ TEST(PtRenderCli, EachCommandAnswersHelpWithItsOwnUsage) {
     const auto usageError = runCli("info");
     EXPECT_EQ(usageError.exitCode, 2);
     EXPECT_NE(usageError.err.find("(see pt-render info --help)"), std::string::npos) << usageError.err;
+}
+
+}  // namespace
+}  // namespace pt
+
+namespace pt {
+namespace {
+
+// Ctrl-C during a long render stops it between batches, writes the samples taken so far (the
+// stats give their count) and exits 130, the shell's code for SIGINT (issue 17: every sample
+// was thrown away).
+TEST(PtRenderCli, CtrlCWritesTheSamplesRenderedSoFar) {
+    const std::string dir = test::tempDir();
+    const std::string png = dir + "/interrupted.png", stats = dir + "/interrupted.json";
+    std::vector<std::string> words = {PT_RENDER_CLI, "render", test::projectPath("scenes/cornell.json"),
+                                      "--png",       png,      "--stats",
+                                      stats,         "--time", "120",
+                                      "--size",      "32x32",  "--quiet"};
+    std::vector<char*> argv;
+    for (std::string& w : words) argv.push_back(w.data());
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    ASSERT_EQ(posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ), 0);
+    std::this_thread::sleep_for(std::chrono::seconds(3));  // loaded and rendering by then
+    const auto signalled = std::chrono::steady_clock::now();
+    ASSERT_EQ(kill(pid, SIGINT), 0);
+    int status = 0;
+    ASSERT_EQ(waitpid(pid, &status, 0), pid);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - signalled).count();
+    ASSERT_TRUE(WIFEXITED(status)) << "ended by a signal, not by its own exit";
+    EXPECT_EQ(WEXITSTATUS(status), 130);
+    EXPECT_LT(seconds, 30.0) << "the render ran on after Ctrl-C";
+    std::ifstream in(stats);
+    ASSERT_TRUE(in.good()) << "no stats written";
+    const nlohmann::json j = nlohmann::json::parse(in);
+    EXPECT_GT(j["spp"].get<int>(), 0);
+    EXPECT_TRUE(fs::exists(png));
+    EXPECT_GT(fs::file_size(png), 100u);
 }
 
 }  // namespace

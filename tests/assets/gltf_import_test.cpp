@@ -276,6 +276,25 @@ TEST(GltfImport, UnsupportedExtensionsWarnAndStillLoad) {
     EXPECT_EQ(warningsContaining(r.scene, "KHR_texture_transform"), 0u);
 }
 
+// An optional primitive extension never drops geometry (issue 17: KHR_materials_variants
+// primitives were skipped, and a chair lost its fabric and wood): the primitive keeps its
+// default material. Only a required one the importer cannot read skips its primitive.
+TEST(GltfImport, OptionalPrimitiveExtensionsKeepTheGeometryAndRequiredOnesSkipIt) {
+    const Imported r = importFixture("primitive_extensions.gltf");
+    ASSERT_EQ(r.scene.meshes.size(), 1u);
+    const Mesh& mesh = r.scene.meshes[0];
+    EXPECT_EQ(mesh.primitiveCount(), 2u);  // the variants quad's two triangles, not the Draco one's
+    ASSERT_EQ(r.file.placements.size(), 1u);
+    const std::vector<uint32_t>& materials = r.file.placements[0].materials;
+    ASSERT_FALSE(materials.empty());
+    EXPECT_EQ(r.scene.materials[materials[0]].name, "default");
+    EXPECT_EQ(warningsContaining(r.scene, "extension KHR_materials_variants is not supported; ignored"), 1u);
+    EXPECT_EQ(warningsContaining(r.scene, "KHR_materials_variants, which is not supported; primitive skipped"), 0u);
+    EXPECT_EQ(warningsContaining(r.scene, "meshes[0].primitives[1]: requires extension KHR_draco_mesh_compression, "
+                                          "which is not supported; primitive skipped"),
+              1u);
+}
+
 TEST(GltfImport, WithoutScenesEveryRootNodeIsShown) {
     const Imported r = importFixture("no_scenes.gltf");
     EXPECT_EQ(r.file.placements.size(), 3u);

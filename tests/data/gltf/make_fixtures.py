@@ -339,6 +339,24 @@ def unsupported_extensions():
     doc.save_gltf("unsupported_extensions.gltf")
 
 
+def primitive_extensions():
+    """A mesh of two quads: the first maps a material variant through KHR_materials_variants,
+    an optional extension (so the quad keeps its default material, 0); the second is
+    compressed with KHR_draco_mesh_compression, which the file requires (so it is skipped)."""
+    doc = Doc()
+    doc.json["materials"] = [{"name": "default"}, {"name": "variant red"}]
+    variant = doc.quad_primitive(material=0)
+    variant["extensions"] = {"KHR_materials_variants": {"mappings": [{"material": 1, "variants": [0]}]}}
+    draco = doc.quad_primitive(material=0)
+    draco["extensions"] = {"KHR_draco_mesh_compression": {"bufferView": 0, "attributes": {"POSITION": 0}}}
+    doc.mesh([variant, draco])
+    doc.scene([doc.node(mesh=0)])
+    doc.json["extensions"] = {"KHR_materials_variants": {"variants": [{"name": "red"}]}}
+    doc.json["extensionsUsed"] = ["KHR_materials_variants", "KHR_draco_mesh_compression"]
+    doc.json["extensionsRequired"] = ["KHR_draco_mesh_compression"]
+    doc.save_gltf("primitive_extensions.gltf")
+
+
 def lights_fixture():
     """KHR_lights_punctual: a point light on a moved node, a spot under a parent turned to
     shine down (-90 degrees about X), a directional light turned 90 degrees about Y (shining
@@ -484,6 +502,7 @@ if __name__ == "__main__":
     sparse_positions()
     missing_image()
     unsupported_extensions()
+    primitive_extensions()
     lights_fixture()
     no_scenes()
     malformed()
