@@ -4,6 +4,7 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -261,6 +262,25 @@ TEST(PtRenderCli, CtrlCWritesTheSamplesRenderedSoFar) {
     EXPECT_GT(j["spp"].get<int>(), 0);
     EXPECT_TRUE(fs::exists(png));
     EXPECT_GT(fs::file_size(png), 100u);
+}
+
+}  // namespace
+}  // namespace pt
+
+namespace pt {
+namespace {
+
+// Where the CUDA backend cannot run, the error says why without quoting where the binary was
+// built (issue 17: it named a source path of the build machine). Skips where a GPU renders.
+TEST(PtRenderCli, ACudaFailureNamesNoBuildPath) {
+    const std::string png = test::tempDir() + "/cuda.png";
+    const auto r = runCli("render " + cornell() + " --backend cuda --png " + png + " --spp 1 --size 8x8 --quiet");
+    if (r.exitCode == 0) GTEST_SKIP() << "a usable GPU rendered the scene";
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    const std::string sourceDir = fs::path(test::projectPath("render")).parent_path().string();
+    EXPECT_EQ(r.err.find(sourceDir + "/"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.rfind("pt-render render: ", 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
 }
 
 }  // namespace

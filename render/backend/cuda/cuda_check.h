@@ -9,9 +9,18 @@
 
 namespace pt::cuda {
 
+// The source file as the project names it (render/backend/cuda/...): __FILE__ holds the path
+// of the tree the binary was built in, which means nothing to a user and should not reach them.
+inline std::string projectSourceName(const char* file) {
+    const std::string path(file);
+    const size_t render = path.rfind("/render/");
+    return render != std::string::npos ? path.substr(render + 1) : path.substr(path.rfind('/') + 1);
+}
+
 [[noreturn]] inline void throwCudaError(cudaError_t error, const char* what, const char* file, int line) {
-    throw std::runtime_error(std::string("CUDA error in ") + what + " (" + file + ":" + std::to_string(line) +
-                             "): " + cudaGetErrorName(error) + ": " + cudaGetErrorString(error));
+    throw std::runtime_error(std::string("CUDA error in ") + what + " (" + projectSourceName(file) + ":" +
+                             std::to_string(line) + "): " + cudaGetErrorName(error) + ": " +
+                             cudaGetErrorString(error));
 }
 
 }  // namespace pt::cuda
