@@ -7,10 +7,13 @@ namespace pt::cli {
 
 namespace {
 
-// Adds passes in chunks of about a quarter of a second so that progress moves.
-void renderBatch(Backend& backend, uint32_t spp, uint32_t batch, uint32_t batches, const ProgressFn& progress) {
+// Adds passes in chunks of about a quarter of a second so that progress moves and a stop is
+// answered; returns whether the batch was finished.
+bool renderBatch(Backend& backend, uint32_t spp, uint32_t batch, uint32_t batches, const ProgressFn& progress,
+                 const std::function<bool()>& stop) {
     uint32_t chunk = 1;
     while (backend.stats().samplesPerPixel < spp) {
+        if (stop && stop()) return false;
         const BackendStats before = backend.stats();
         const uint32_t passes = std::min(chunk, spp - before.samplesPerPixel);
         backend.render(passes);
@@ -19,21 +22,26 @@ void renderBatch(Backend& backend, uint32_t spp, uint32_t batch, uint32_t batche
         reportProgress(progress, "render",
                        (batch + double(backend.stats().samplesPerPixel) / spp) / double(batches));
     }
+    return true;
 }
 
 }  // namespace
 
 BatchedImage renderBatches(Backend& backend, Scene& scene, uint32_t sppPerBatch, uint32_t batches,
-                           const ProgressFn& progress) {
+                           const ProgressFn& progress, const std::function<bool()>& stop) {
     if (batches < 2 || sppPerBatch == 0) throw std::invalid_argument("renderBatches: needs 2 or more batches");
     const uint32_t firstSeed = scene.render.seed;
     std::vector<double> sum, sumSquares;
     std::vector<float> batchMean;
     BatchedImage result;
-    for (uint32_t b = 0; b < batches; ++b) {
-        scene.render.seed = firstSeed + b;
+    uint32_t finished = 0;
+    for (; finished < batches; ++finished) {
+        scene.render.seed = firstSeed + finished;
         backend.sync(scene, SceneChanges::Settings);
-        renderBatch(backend, sppPerBatch, b, batches, progress);
+        if (!renderBatch(backend, sppPerBatch, finished, batches, progress, stop)) {
+            result.interrupted = true;
+            break;
+        }
         backend.readBeauty(batchMean);
         sum.resize(batchMean.size(), 0.0);
         sumSquares.resize(batchMean.size(), 0.0);
@@ -46,11 +54,12 @@ BatchedImage renderBatches(Backend& backend, Scene& scene, uint32_t sppPerBatch,
         result.renderSeconds += stats.renderSeconds;
     }
     scene.render.seed = firstSeed;
-    result.spp = sppPerBatch * batches;
-    result.batches = batches;
+    result.spp = sppPerBatch * finished;
+    result.batches = finished;
+    if (finished < 2) return result;  // no image, or no spread to estimate its noise from
     result.mean.resize(sum.size());
     result.varianceOfMean.resize(sum.size());
-    const double n = batches;
+    const double n = finished;
     for (size_t i = 0; i < sum.size(); ++i) {
         const double mean = sum[i] / n;
         // Sample variance of the batch means (n - 1 in the denominator), over n for the mean's.

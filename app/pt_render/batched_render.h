@@ -5,6 +5,7 @@
 // are not independent across sample ranges, so each batch is a fresh accumulation with its
 // own seed (independent randomisations, as randomised quasi-Monte Carlo requires).
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "render/backend/backend.h"
@@ -20,12 +21,15 @@ struct BatchedImage {
     uint32_t batches = 0;
     uint64_t nonfiniteSamples = 0;      // dropped by the backend, over all batches
     double renderSeconds = 0.0;
+    bool interrupted = false;           // stopped early: only the batches finished before count
 };
 
 // Renders `batches` (>= 2) batches of `sppPerBatch` samples with seeds scene.render.seed,
 // +1, ...; `backend` must have been synced with `scene` (the batches only reset it). Reports
-// the fraction done as stage "render".
+// the fraction done as stage "render". Where `stop` (polled about every quarter second) says
+// so, the batch under way is dropped and the image is made of those finished (`batches` says
+// how many; with fewer than 2 there is no noise estimate, and the caller should not use it).
 BatchedImage renderBatches(Backend& backend, Scene& scene, uint32_t sppPerBatch, uint32_t batches,
-                           const ProgressFn& progress = {});
+                           const ProgressFn& progress = {}, const std::function<bool()>& stop = {});
 
 }  // namespace pt::cli

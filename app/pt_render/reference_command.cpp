@@ -6,6 +6,7 @@
 #include "assets/image_write.h"
 #include "assets/pfm_file.h"
 #include "batched_render.h"
+#include "interrupt.h"
 #include "cli_options.h"
 #include "commands.h"
 #include "output_paths.h"
@@ -59,9 +60,16 @@ int runReference(const std::vector<std::string>& args) {
     const auto backend = syncedBackend(r.setup, r.toggles, input.scene, bar);
 
     // Equal batches keep the variance estimate simple; the count rounds up to a multiple.
+    // Ctrl-C drops the batch under way and writes the finished ones (at least two).
+    const InterruptCatcher interrupt;
     const uint32_t sppPerBatch = (r.spp + r.batches - 1) / r.batches;
-    const BatchedImage image = renderBatches(*backend, input.scene, sppPerBatch, r.batches, bar.callback());
+    const BatchedImage image = renderBatches(*backend, input.scene, sppPerBatch, r.batches, bar.callback(),
+                                             [&] { return interrupt.interrupted(); });
     bar.finish();
+    if (image.interrupted && image.batches < 2) {
+        std::fprintf(stderr, "interrupted before two batches were finished: nothing written\n");
+        return kInterruptedExitCode;
+    }
     const NoiseLevel noise = noiseLevel(image.varianceOfMean, image.mean);
     ImageMetadata metadata =
         renderMetadata(image.spp, formatFigure(image.renderSeconds), backend->name(), r.scenePath, "pt-render 0.1");
@@ -80,6 +88,10 @@ int runReference(const std::vector<std::string>& args) {
         std::fprintf(stderr, "%ux%u, %u spp in %u batches, %.2f s; estimated noise of the mean: relMSE %.3g, RMSE %.3g\n",
                      backend->width(), backend->height(), image.spp, image.batches, image.renderSeconds,
                      noise.relMse, noise.rmse);
+    }
+    if (image.interrupted) {
+        std::fprintf(stderr, "interrupted: wrote the %u finished batches (%u spp)\n", image.batches, image.spp);
+        return kInterruptedExitCode;
     }
     return 0;
 }

@@ -1,4 +1,5 @@
 // End-to-end tests of the pt-render command line: real process, real files.
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <spawn.h>
@@ -8,6 +9,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
@@ -232,36 +234,75 @@ TEST(PtRenderCli, EachCommandAnswersHelpWithItsOwnUsage) {
 namespace pt {
 namespace {
 
+// Runs pt-render with `args` (no shell), sends it SIGINT after `seconds`, and returns its exit
+// code (-1 where a signal ended it); stderr goes to `errPath`. `seconds` after the signal ends
+// it regardless, which fails the caller's checks.
+int interruptedExitCode(std::vector<std::string> args, double seconds, const std::string& errPath) {
+    args.insert(args.begin(), PT_RENDER_CLI);
+    std::vector<char*> argv;
+    for (std::string& w : args) argv.push_back(w.data());
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t files;
+    posix_spawn_file_actions_init(&files);
+    posix_spawn_file_actions_addopen(&files, 2, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    pid_t pid = 0;
+    const int spawned = posix_spawn(&pid, argv[0], &files, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&files);
+    if (spawned != 0) return -2;
+    std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
+    kill(pid, SIGINT);
+    for (int waited = 0; waited < 300; ++waited) {  // up to 30 s for it to write and exit
+        int status = 0;
+        if (waitpid(pid, &status, WNOHANG) == pid) return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    kill(pid, SIGKILL);
+    waitpid(pid, nullptr, 0);
+    return -1;
+}
+
+std::string slurpFile(const std::string& path) {
+    std::ifstream in(path);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
 // Ctrl-C during a long render stops it between batches, writes the samples taken so far (the
 // stats give their count) and exits 130, the shell's code for SIGINT (issue 17: every sample
 // was thrown away).
 TEST(PtRenderCli, CtrlCWritesTheSamplesRenderedSoFar) {
     const std::string dir = test::tempDir();
-    const std::string png = dir + "/interrupted.png", stats = dir + "/interrupted.json";
-    std::vector<std::string> words = {PT_RENDER_CLI, "render", test::projectPath("scenes/cornell.json"),
-                                      "--png",       png,      "--stats",
-                                      stats,         "--time", "120",
-                                      "--size",      "32x32",  "--quiet"};
-    std::vector<char*> argv;
-    for (std::string& w : words) argv.push_back(w.data());
-    argv.push_back(nullptr);
-    pid_t pid = 0;
-    ASSERT_EQ(posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ), 0);
-    std::this_thread::sleep_for(std::chrono::seconds(3));  // loaded and rendering by then
-    const auto signalled = std::chrono::steady_clock::now();
-    ASSERT_EQ(kill(pid, SIGINT), 0);
-    int status = 0;
-    ASSERT_EQ(waitpid(pid, &status, 0), pid);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - signalled).count();
-    ASSERT_TRUE(WIFEXITED(status)) << "ended by a signal, not by its own exit";
-    EXPECT_EQ(WEXITSTATUS(status), 130);
-    EXPECT_LT(seconds, 30.0) << "the render ran on after Ctrl-C";
+    const std::string png = dir + "/interrupted.png", stats = dir + "/interrupted.json", err = dir + "/render.err";
+    EXPECT_EQ(interruptedExitCode({"render", test::projectPath("scenes/cornell.json"), "--png", png, "--stats", stats,
+                                   "--time", "120", "--size", "32x32", "--quiet"},
+                                  3.0, err),
+              130)
+        << slurpFile(err);
     std::ifstream in(stats);
     ASSERT_TRUE(in.good()) << "no stats written";
     const nlohmann::json j = nlohmann::json::parse(in);
     EXPECT_GT(j["spp"].get<int>(), 0);
     EXPECT_TRUE(fs::exists(png));
     EXPECT_GT(fs::file_size(png), 100u);
+}
+
+// Ctrl-C during `reference` drops the batch under way and writes the finished ones, whose
+// count it reports; the image is their mean.
+TEST(PtRenderCli, CtrlCDuringAReferenceWritesTheFinishedBatches) {
+    const std::string dir = test::tempDir();
+    const std::string pfm = dir + "/interrupted.pfm", err = dir + "/reference.err";
+    EXPECT_EQ(interruptedExitCode({"reference", test::projectPath("scenes/cornell.json"), "-o", pfm, "--spp",
+                                   "200000", "--batches", "1000", "--size", "16x16", "--quiet"},
+                                  3.0, err),
+              130);
+    const std::string message = slurpFile(err);
+    const size_t at = message.find("interrupted: wrote the ");
+    ASSERT_NE(at, std::string::npos) << message;
+    const int batches = std::stoi(message.substr(at + std::string("interrupted: wrote the ").size()));
+    EXPECT_GE(batches, 2);
+    EXPECT_LT(batches, 1000);
+    EXPECT_NE(message.find("(" + std::to_string(batches * 200) + " spp)"), std::string::npos) << message;
+    EXPECT_TRUE(fs::exists(pfm));
+    EXPECT_GT(fs::file_size(pfm), 16u * 16u * 3u * 4u);  // 16x16 RGB floats and a header
 }
 
 }  // namespace
