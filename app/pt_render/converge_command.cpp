@@ -2,6 +2,7 @@
 // set of toggles, compared at equal time (DESIGN.md, "Error against run time").
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "assets/atomic_file.h"
 #include "cli_options.h"
@@ -9,6 +10,7 @@
 #include "converge_reference.h"
 #include "converge_report.h"
 #include "converge_variant.h"
+#include "interrupt.h"
 #include "output_paths.h"
 #include "progress_bar.h"
 #include "render_setup.h"
@@ -101,23 +103,38 @@ int runConverge(const std::vector<std::string>& args) {
                                             ? constantReference(r.referenceConstant, width, height)
                                             : readReferenceImage(r.referencePath, width, height);
 
+    // Ctrl-C ends the variant under way with the points it has and skips the rest; what was
+    // measured is written and summarised, and the exit code says it was cut short.
+    const InterruptCatcher interrupt;
+    const auto stop = [&] { return interrupt.interrupted(); };
     std::vector<VariantCurve> curves;
     for (const ConvergeVariant& variant : r.variants) {
+        if (interrupt.interrupted()) break;
         const auto backend = syncedBackend(r.setup, variant.toggles, input.scene, bar);
         backend->render(1);  // warm-up (thread pools, first-touch pages), not charged to the variant
         backend->resetAccumulation();
         const ProgressFn progress = [&](const std::string&, double f) { bar.update(variant.name, f); };
-        curves.push_back({variant.name, measureConvergence(*backend, reference.rgba, r.seconds, progress)});
+        std::vector<ErrorPoint> points = measureConvergence(*backend, reference.rgba, r.seconds, progress, stop);
         bar.finish();
+        if (points.empty()) break;  // interrupted before its first point
+        curves.push_back({variant.name, std::move(points)});
         if (!r.setup.quiet) {
             const ErrorPoint& last = curves.back().points.back();
             std::fprintf(stderr, "%s: %u spp in %.2f s, relMSE %.4g\n", variant.name.c_str(), last.spp, last.seconds,
                          last.error.relMse);
         }
     }
+    if (curves.empty()) {
+        std::fprintf(stderr, "interrupted before any error was measured: nothing written\n");
+        return kInterruptedExitCode;
+    }
     if (!r.csvPath.empty()) writeTextAtomically(r.csvPath, convergeCsv(curves));
     if (!r.plotPath.empty()) writeTextAtomically(r.plotPath, svgLogLogPlot(plotOf(curves, r.scenePath)));
     printConvergeSummary(stdout, curves, reference.noiseRelMse);
+    if (interrupt.interrupted()) {
+        std::fprintf(stderr, "interrupted: measured %zu of %zu variants\n", curves.size(), r.variants.size());
+        return kInterruptedExitCode;
+    }
     return 0;
 }
 

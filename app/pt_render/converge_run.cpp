@@ -19,13 +19,13 @@ std::vector<double> logSpacedTimes(double budget) {
 }
 
 std::vector<ErrorPoint> measureConvergence(Backend& backend, const std::vector<float>& reference, double budget,
-                                              const ProgressFn& progress) {
+                                              const ProgressFn& progress, const std::function<bool()>& stop) {
     const std::vector<double> times = logSpacedTimes(budget);
     std::vector<ErrorPoint> points;
     std::vector<float> image;
     double secondsPerPass = 0.0;  // unknown until the first pass
     size_t next = 0;
-    while (next < times.size()) {
+    while (next < times.size() && !(stop && stop())) {
         const BackendStats stats = backend.stats();
         if (stats.samplesPerPixel > 0 && stats.renderSeconds >= times[next]) {
             backend.readBeauty(image);

@@ -3,6 +3,7 @@
 // log-spaced times. Time is the backend's render time (BackendStats::renderSeconds): the
 // readbacks and error sums in between are not charged to the variant.
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "render/backend/backend.h"
@@ -15,8 +16,9 @@ namespace pt::cli {
 std::vector<double> logSpacedTimes(double budget);
 
 // Renders on `backend` (synced, with the variant's toggles) until `budget` seconds, recording
-// a point at the first pass that ends at or past each of logSpacedTimes(budget).
+// a point at the first pass that ends at or past each of logSpacedTimes(budget). Where `stop`
+// (polled between batches of passes) says so, it returns the points recorded so far.
 std::vector<ErrorPoint> measureConvergence(Backend& backend, const std::vector<float>& reference, double budget,
-                                              const ProgressFn& progress);
+                                              const ProgressFn& progress, const std::function<bool()>& stop = {});
 
 }  // namespace pt::cli

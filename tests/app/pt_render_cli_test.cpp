@@ -305,6 +305,23 @@ TEST(PtRenderCli, CtrlCDuringAReferenceWritesTheFinishedBatches) {
     EXPECT_GT(fs::file_size(pfm), 16u * 16u * 3u * 4u);  // 16x16 RGB floats and a header
 }
 
+// Ctrl-C during `converge` ends the variant under way with the points it has, skips the rest,
+// and still writes the CSV and prints the summary of what was measured.
+TEST(PtRenderCli, CtrlCDuringConvergeKeepsWhatWasMeasured) {
+    const std::string dir = test::tempDir();
+    const std::string csv = dir + "/interrupted.csv", err = dir + "/converge.err";
+    EXPECT_EQ(interruptedExitCode({"converge", test::projectPath("scenes/cornell.json"), "--reference-constant",
+                                   "0.5,0.5,0.5", "--time", "60", "--size", "16x16", "--variant", "first",
+                                   "--variant", "second:nee=off", "--csv", csv, "--quiet"},
+                                  3.0, err),
+              130);
+    EXPECT_NE(slurpFile(err).find("interrupted: measured 1 of 2 variants"), std::string::npos) << slurpFile(err);
+    const std::string table = slurpFile(csv);
+    EXPECT_EQ(table.rfind("variant,seconds,spp,relmse,rmse,mape\n", 0), 0u) << table.substr(0, 200);
+    EXPECT_NE(table.find("\nfirst,"), std::string::npos) << table.substr(0, 200);
+    EXPECT_EQ(table.find("\nsecond,"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace pt
 
