@@ -4,23 +4,10 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 
 #include "support/test_paths.h"
 
 namespace pt::test {
-
-namespace {
-
-std::string slurp(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-}  // namespace
 
 CliResult runCli(const std::string& args) {
     static int counter = 0;
@@ -30,8 +17,8 @@ CliResult runCli(const std::string& args) {
     const int status = std::system(command.c_str());
     CliResult r;
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = slurp(base + ".out");
-    r.err = slurp(base + ".err");
+    r.out = readTextFile(base + ".out");
+    r.err = readTextFile(base + ".err");
     return r;
 }
 

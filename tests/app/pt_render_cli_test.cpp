@@ -9,7 +9,6 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
@@ -261,11 +260,6 @@ int interruptedExitCode(std::vector<std::string> args, double seconds, const std
     return -1;
 }
 
-std::string slurpFile(const std::string& path) {
-    std::ifstream in(path);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
 // Ctrl-C during a long render stops it between batches, writes the samples taken so far (the
 // stats give their count) and exits 130, the shell's code for SIGINT (issue 17: every sample
 // was thrown away).
@@ -276,7 +270,7 @@ TEST(PtRenderCli, CtrlCWritesTheSamplesRenderedSoFar) {
                                    "--time", "120", "--size", "32x32", "--quiet"},
                                   3.0, err),
               130)
-        << slurpFile(err);
+        << test::readTextFile(err);
     std::ifstream in(stats);
     ASSERT_TRUE(in.good()) << "no stats written";
     const nlohmann::json j = nlohmann::json::parse(in);
@@ -294,7 +288,7 @@ TEST(PtRenderCli, CtrlCDuringAReferenceWritesTheFinishedBatches) {
                                    "200000", "--batches", "1000", "--size", "16x16", "--quiet"},
                                   3.0, err),
               130);
-    const std::string message = slurpFile(err);
+    const std::string message = test::readTextFile(err);
     const size_t at = message.find("interrupted: wrote the ");
     ASSERT_NE(at, std::string::npos) << message;
     const int batches = std::stoi(message.substr(at + std::string("interrupted: wrote the ").size()));
@@ -315,8 +309,8 @@ TEST(PtRenderCli, CtrlCDuringConvergeKeepsWhatWasMeasured) {
                                    "--variant", "second:nee=off", "--csv", csv, "--quiet"},
                                   3.0, err),
               130);
-    EXPECT_NE(slurpFile(err).find("interrupted: measured 1 of 2 variants"), std::string::npos) << slurpFile(err);
-    const std::string table = slurpFile(csv);
+    EXPECT_NE(test::readTextFile(err).find("interrupted: measured 1 of 2 variants"), std::string::npos) << test::readTextFile(err);
+    const std::string table = test::readTextFile(csv);
     EXPECT_EQ(table.rfind("variant,seconds,spp,relmse,rmse,mape\n", 0), 0u) << table.substr(0, 200);
     EXPECT_NE(table.find("\nfirst,"), std::string::npos) << table.substr(0, 200);
     EXPECT_EQ(table.find("\nsecond,"), std::string::npos);

@@ -17,27 +17,18 @@
 
 #include "assets/input_error.h"
 #include "scene_test_helpers.h"
+#include "support/input_error_of.h"
 #include "support/test_paths.h"
 
 namespace pt {
 namespace {
 
+using test::inputErrorOf;
+
 namespace OCIO = OCIO_NAMESPACE;
 using Names = std::vector<std::string>;
 
 std::string shippedConfig() { return test::projectPath("scenes/ocio/config.ocio"); }
-
-// The InputError message of `f`, or "" (and a failure) when it does not throw one.
-template <typename F>
-std::string inputErrorOf(F&& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "no InputError";
-    return "";
-}
 
 // Sets an environment variable for the life of the object, then restores it.
 class ScopedEnv {

@@ -19,10 +19,13 @@
 #include "assets/image_write_stb.h"
 #include "assets/input_error.h"
 #include "scene_test_helpers.h"
+#include "support/input_error_of.h"
 #include "support/test_paths.h"
 
 namespace pt {
 namespace {
+
+using test::inputErrorOf;
 
 std::vector<uint8_t> fileBytes(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -37,18 +40,6 @@ void writeBytes(const std::string& path, const std::vector<uint8_t>& bytes) {
 std::string imagePath(const std::string& name) { return test::testDataPath("images/" + name); }
 
 Texture stbDecodeFile(const std::string& path) { return decodeTextureWithStb(fileBytes(path), path); }
-
-// The message of the InputError `decode` throws ("" and a failure when it throws none).
-template <class F>
-std::string inputErrorOf(F decode) {
-    try {
-        decode();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "no InputError";
-    return "";
-}
 
 // Same size, format and texels, bit for bit; a failure names the first differing texel.
 void expectIdentical(const Texture& oiio, const Texture& stb, const std::string& what) {

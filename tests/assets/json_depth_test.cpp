@@ -5,12 +5,12 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <string>
 
 #include "assets/input_error.h"
 #include "assets/model_import.h"
 #include "assets/scene_json.h"
+#include "support/input_error_of.h"
 #include "support/test_paths.h"
 
 namespace pt {
@@ -47,43 +47,27 @@ TEST(JsonDepth, BracketsInStringsDoNotCount) {
     EXPECT_NE(depthError("[\"\\\\\"" + brackets + "\"]", 2), "");
 }
 
-std::string writeFile(const std::string& name, const std::string& text) {
-    const std::string path = test::tempDir() + "/" + name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-}
-
-template <class Load>
-std::string loadError(Load load) {
-    try {
-        load();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "no error";
-}
-
 TEST(JsonDepth, DeepGltfExtrasEndInAnErrorNamingTheFile) {
     const std::string path =
-        writeFile("deep_extras.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"extras\": " + nested(20000) + "}");
+        test::writeTempFile("deep_extras.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"extras\": " + nested(20000) + "}");
     Scene scene;
-    const std::string message = loadError([&] { importGltf(path, 0, scene); });
+    const std::string message = test::inputErrorOf([&] { importGltf(path, 0, scene); });
     EXPECT_EQ(message.rfind("deep_extras.gltf: JSON nested deeper than 256 levels", 0), 0u) << message;
 }
 
 TEST(JsonDepth, ADeepGltfValueIsNeverQuoted) {
-    const std::string path = writeFile(
+    const std::string path = test::writeTempFile(
         "deep_value.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"nodes\": [{\"mesh\": " + nested(100000) + "}]}");
     Scene scene;
-    const std::string message = loadError([&] { importGltf(path, 0, scene); });
+    const std::string message = test::inputErrorOf([&] { importGltf(path, 0, scene); });
     EXPECT_EQ(message.rfind("deep_value.gltf: JSON nested deeper than 256 levels", 0), 0u) << message;
     EXPECT_LT(message.size(), 200u);
 }
 
 TEST(JsonDepth, ADeepSceneJsonValueFollowedByAKeyEndsInAnError) {
-    const std::string path = writeFile(
+    const std::string path = test::writeTempFile(
         "deep_scene.json", "{\"version\": 1, \"camera\": {\"position\": " + nested(74000) + "}, \"objects\": []}");
-    const std::string message = loadError([&] { readSceneJson(path); });
+    const std::string message = test::inputErrorOf([&] { readSceneJson(path); });
     EXPECT_EQ(message.rfind("deep_scene.json: JSON nested deeper than 256 levels", 0), 0u) << message;
 }
 

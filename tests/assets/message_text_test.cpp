@@ -5,14 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <utility>
 #include <string>
 
-#include "assets/input_error.h"
 #include "assets/model_import.h"
 #include "assets/scene_loader.h"
+#include "support/input_error_of.h"
 #include "support/test_paths.h"
 
 namespace pt {
@@ -38,23 +36,12 @@ TEST(MessageText, ControlCharactersAreEscapedAndMessagesBounded) {
     EXPECT_EQ(line.rfind("f.json: \\n\\n", 0), 0u);
 }
 
-std::string writeFile(const std::string& name, const std::string& text) {
-    const std::string path = test::tempDir() + "/" + name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-}
-
 TEST(MessageText, AHugeGltfValueIsQuotedShortened) {
-    const std::string path = writeFile(
+    const std::string path = test::writeTempFile(
         "huge_type.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"accessors\": [{\"count\": 1, \"componentType\": 5126, "
                           "\"type\": \"" + std::string(10'000'000, 'V') + "\"}]}");
     Scene scene;
-    std::string message;
-    try {
-        importGltf(path, 0, scene);
-    } catch (const InputError& e) {
-        message = e.what();
-    }
+    const std::string message = test::inputErrorOf([&] { importGltf(path, 0, scene); });
     EXPECT_EQ(message.rfind("huge_type.gltf: accessors[0].type: \"VVV", 0), 0u) << message.substr(0, 200);
     EXPECT_NE(message.find("VVV... is not a glTF accessor type"), std::string::npos) << message.substr(0, 200);
     EXPECT_LT(message.size(), 200u);
@@ -63,7 +50,7 @@ TEST(MessageText, AHugeGltfValueIsQuotedShortened) {
 TEST(MessageText, LoadSceneEscapesAndBoundsWhatTheFileHolds) {
     // JSON escapes in the file: the key itself holds ESC and a newline.
     const std::string key = "\\u001b[2J\\n" + std::string(5000, 'k');
-    const std::string path = writeFile("escape.json", "{\"version\": 1, \"" + key + "\": 0, \"objects\": []}");
+    const std::string path = test::writeTempFile("escape.json", "{\"version\": 1, \"" + key + "\": 0, \"objects\": []}");
     const LoadResult r = loadScene(path);
     ASSERT_FALSE(r.ok());
     EXPECT_NE(r.error.find("unknown key \"\\u001b[2J\\n"), std::string::npos) << r.error.substr(0, 200);
@@ -75,7 +62,7 @@ TEST(MessageText, FoldersAndEmptyFilesAreCalledWhatTheyAre) {
     const std::string folder = test::tempDir() + "/a_folder.json";
     std::filesystem::create_directories(folder);
     EXPECT_EQ(loadScene(folder).error, folder + ": a folder, not a file");
-    const std::string empty = writeFile("empty.gltf", "");
+    const std::string empty = test::writeTempFile("empty.gltf", "");
     EXPECT_EQ(loadScene(empty).error, empty + ": empty file");
     const std::string missing = test::tempDir() + "/missing.json";
     EXPECT_EQ(loadScene(missing).error, missing + ": no such file");
@@ -84,18 +71,17 @@ TEST(MessageText, FoldersAndEmptyFilesAreCalledWhatTheyAre) {
 // A glTF whose image is a folder or an empty file still loads, with a warning in the right
 // words (a folder crashed tinygltf's own file reader with std::bad_alloc).
 TEST(MessageText, GltfImagesThatAreFoldersOrEmptyWarnInTheRightWords) {
-    std::ifstream in(test::testDataPath("gltf/missing_image.gltf"));
-    const std::string fixture((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string fixture = test::readTextFile(test::testDataPath("gltf/missing_image.gltf"));
     const std::string missing = "does_not_exist.png";
     ASSERT_NE(fixture.find(missing), std::string::npos);
     std::filesystem::create_directories(test::tempDir() + "/folder.png");
-    writeFile("empty.png", "");
+    test::writeTempFile("empty.png", "");
     for (const auto& [image, words] : {std::pair<std::string, std::string>{"folder.png", "image a folder, not a file"},
                                        {"empty.png", "image empty file"},
                                        {"absent.png", "image no such file"}}) {
         std::string text = fixture;
         text.replace(text.find(missing), missing.size(), image);
-        const std::string path = writeFile("uses_" + image + ".gltf", text);
+        const std::string path = test::writeTempFile("uses_" + image + ".gltf", text);
         Scene scene;
         EXPECT_NO_THROW(importGltf(path, 0, scene)) << image;
         ASSERT_EQ(scene.warnings.size(), 1u) << image;

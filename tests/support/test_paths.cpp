@@ -4,6 +4,8 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 namespace pt::test {
 
@@ -41,6 +43,17 @@ std::string tempDir() {
         return base.string();
     }();
     return dir;
+}
+
+std::string writeTempFile(const std::string& name, const std::string& bytes) {
+    const std::string path = tempDir() + "/" + name;
+    std::ofstream(path, std::ios::binary) << bytes;
+    return path;
+}
+
+std::string readTextFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 }  // namespace pt::test

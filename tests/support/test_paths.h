@@ -12,6 +12,9 @@ std::string sharedAsset(const std::string& relativePath);
 std::string projectPath(const std::string& relativePath);  // under the source tree
 std::string testDataPath(const std::string& relativePath);  // under tests/data
 std::string tempDir();                                      // fresh, per test process
+// Writes `bytes` to tempDir()/name and returns the path.
+std::string writeTempFile(const std::string& name, const std::string& bytes);
+std::string readTextFile(const std::string& path);          // "" where it cannot be read
 
 }  // namespace pt::test
 
