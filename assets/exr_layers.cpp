@@ -6,7 +6,7 @@
 #include "assets/input_error.h"
 #include "render/backend/backend.h"
 #if PT_HAVE_OIIO
-#include "assets/image_write_oiio.h"
+#include "assets/oiio_image_io.h"
 #endif
 
 namespace pt {
@@ -75,7 +75,7 @@ void writeExrChannels(const std::string& path, uint32_t width, uint32_t height,
                       const std::vector<ExrChannelSource>& channels, const ImageMetadata& metadata) {
 #if PT_HAVE_OIIO
     writeFileAtomically(path, [&](const std::string& temp) {
-        writeExrChannelsWithOiio(temp, path, width, height, channels, metadata);
+        oiioImageIo().writeExrChannels(temp, path, width, height, channels, metadata);
     });
 #else
     (void)width, (void)height, (void)channels, (void)metadata;
@@ -160,7 +160,7 @@ std::string ExrImage::attribute(const std::string& key) const {
 
 ExrImage readExrChannels(const std::string& path) {
 #if PT_HAVE_OIIO
-    return readExrChannelsWithOiio(path);
+    return oiioImageIo().readExrChannels(path);
 #else
     throw InputError(needsOpenImageIoMessage(path, "exr"));
 #endif

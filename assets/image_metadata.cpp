@@ -7,7 +7,7 @@
 #include "assets/pfm_file.h"
 #include "render/integrator/camera.h"
 #if PT_HAVE_OIIO
-#include "assets/image_write_oiio.h"
+#include "assets/oiio_image_io.h"
 #endif
 
 namespace pt {
@@ -30,7 +30,7 @@ std::string vec3Text(Vec3 v) { return numbers({v.x, v.y, v.z}); }
 ImageMetadata readImageMetadata(const std::string& path) {
     if (isPfmPath(path)) return {};  // the format has none
 #if PT_HAVE_OIIO
-    return readImageMetadataWithOiio(path);
+    return oiioImageIo().readImageMetadata(path);
 #else
     throw InputError(needsOpenImageIoMessage(path, lowercaseExtension(path)));
 #endif

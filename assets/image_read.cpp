@@ -8,7 +8,7 @@
 #include "assets/image_read_stb.h"
 #include "assets/input_error.h"
 #if PT_HAVE_OIIO
-#include "assets/image_read_oiio.h"
+#include "assets/oiio_image_io.h"
 #endif
 
 namespace pt {
@@ -24,7 +24,7 @@ Texture decodeBytes(const std::vector<uint8_t>& bytes, std::string extension,
     if (extension.empty()) throw InputError(name + ": not an image format we can decode");
     if (sniffed == "png") checkPngChunks(bytes, name);
 #if PT_HAVE_OIIO
-    return decodeTextureWithOiio(bytes, extension, name, filePath);
+    return oiioImageIo().decodeTexture(bytes, extension, name, filePath);
 #else
     if (!stbDecodesExtension(extension)) {
         throw InputError(needsOpenImageIoMessage(name, extension));

@@ -9,7 +9,7 @@
 #include "assets/image_read_format.h"
 #include "assets/input_error.h"
 
-namespace pt {
+namespace pt::oiio {
 namespace {
 
 // OIIO premultiplies alpha on read unless told not to; glTF and OBJ textures are straight
@@ -89,8 +89,8 @@ std::unique_ptr<OIIO::ImageInput> openInMemory(const std::string& extension,
 
 }  // namespace
 
-Texture decodeTextureWithOiio(const std::vector<uint8_t>& bytes, const std::string& extension,
-                              const std::string& name, const std::string& filePath) {
+Texture decodeTexture(const std::vector<uint8_t>& bytes, const std::string& extension,
+                      const std::string& name, const std::string& filePath) {
     OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
     const OIIO::ImageSpec config = readConfig();
     std::unique_ptr<OIIO::ImageInput> in = openInMemory(extension, memory, config, name);
@@ -102,4 +102,4 @@ Texture decodeTextureWithOiio(const std::vector<uint8_t>& bytes, const std::stri
     return decodeOpened(*in, name);
 }
 
-}  // namespace pt
+}  // namespace pt::oiio

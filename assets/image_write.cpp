@@ -8,7 +8,7 @@
 #include "assets/input_error.h"
 #include "assets/pfm_file.h"
 #if PT_HAVE_OIIO
-#include "assets/image_write_oiio.h"
+#include "assets/oiio_image_io.h"
 #else
 #include "assets/image_read.h"
 #include "assets/image_write_stb.h"
@@ -51,7 +51,7 @@ void writeDisplayImage(const std::string& path, uint32_t width, uint32_t height,
     checkPixelCount(path, width, height, 3, rgb.size());
 #if PT_HAVE_OIIO
     writeFileAtomically(path, [&](const std::string& temp) {
-        writeDisplayImageWithOiio(temp, path, width, height, rgb.data(), metadata);
+        oiioImageIo().writeDisplayImage(temp, path, width, height, rgb.data(), metadata);
     });
 #else
     const std::string extension = lowercaseExtension(path);
@@ -71,7 +71,7 @@ void writeDisplayImage(const std::string& path, uint32_t width, uint32_t height,
 std::vector<float> readImageRgba(const std::string& path, uint32_t& width, uint32_t& height) {
     if (isPfmPath(path)) return readPfm(path, width, height);  // the same exact floats in every build
 #if PT_HAVE_OIIO
-    return readImageRgbaWithOiio(path, width, height);
+    return oiioImageIo().readImageRgba(path, width, height);
 #else
     // Through the texture reader: alpha stays straight (OIIO premultiplies it here) and 16-bit
     // PNGs come back rounded to 8 bits.

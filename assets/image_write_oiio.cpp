@@ -9,13 +9,12 @@
 
 #include "assets/input_error.h"
 
-namespace pt {
+namespace pt::oiio {
 namespace {
 
 // `writePixels` sends the pixels to the opened file; false when OIIO refused them.
-void writeWithOiio(const std::string& file, const std::string& path, OIIO::ImageSpec spec,
-                   const ImageMetadata& metadata,
-                   const std::function<bool(OIIO::ImageOutput&)>& writePixels) {
+void writeImage(const std::string& file, const std::string& path, OIIO::ImageSpec spec,
+                const ImageMetadata& metadata, const std::function<bool(OIIO::ImageOutput&)>& writePixels) {
     for (const auto& [key, value] : metadata) spec.attribute(key, value);
     auto out = OIIO::ImageOutput::create(file);
     if (!out) throw InputError(path + ": no image writer for this extension: " + OIIO::geterror());
@@ -120,23 +119,22 @@ std::array<int, 4> rgbaSources(const OIIO::ImageSpec& spec) {
 
 }  // namespace
 
-void writeExrChannelsWithOiio(const std::string& file, const std::string& path, uint32_t width,
-                              uint32_t height, const std::vector<ExrChannelSource>& channels,
-                              const ImageMetadata& metadata) {
+void writeExrChannels(const std::string& file, const std::string& path, uint32_t width, uint32_t height,
+                      const std::vector<ExrChannelSource>& channels, const ImageMetadata& metadata) {
     if (channels.empty()) throw InputError(path + ": an EXR needs at least one channel");
-    writeWithOiio(file, path, exrSpec(width, height, channels), metadata,
-                  [&](OIIO::ImageOutput& out) { return writeChannelRows(out, width, height, channels); });
+    writeImage(file, path, exrSpec(width, height, channels), metadata,
+               [&](OIIO::ImageOutput& out) { return writeChannelRows(out, width, height, channels); });
 }
 
-void writeDisplayImageWithOiio(const std::string& file, const std::string& path, uint32_t width,
-                               uint32_t height, const uint8_t* rgb, const ImageMetadata& metadata) {
+void writeDisplayImage(const std::string& file, const std::string& path, uint32_t width, uint32_t height,
+                       const uint8_t* rgb, const ImageMetadata& metadata) {
     OIIO::ImageSpec spec(int(width), int(height), 3, OIIO::TypeDesc::UINT8);
     spec.attribute("oiio:ColorSpace", "sRGB");
-    writeWithOiio(file, path, spec, metadata,
-                  [&](OIIO::ImageOutput& out) { return out.write_image(OIIO::TypeDesc::UINT8, rgb); });
+    writeImage(file, path, spec, metadata,
+               [&](OIIO::ImageOutput& out) { return out.write_image(OIIO::TypeDesc::UINT8, rgb); });
 }
 
-std::vector<float> readImageRgbaWithOiio(const std::string& path, uint32_t& width, uint32_t& height) {
+std::vector<float> readImageRgba(const std::string& path, uint32_t& width, uint32_t& height) {
     auto in = openForReading(path);
     const OIIO::ImageSpec& spec = in->spec();
     width = uint32_t(spec.width);
@@ -153,7 +151,7 @@ std::vector<float> readImageRgbaWithOiio(const std::string& path, uint32_t& widt
     return rgba;
 }
 
-ExrImage readExrChannelsWithOiio(const std::string& path) {
+ExrImage readExrChannels(const std::string& path) {
     auto in = openForReading(path);
     const OIIO::ImageSpec& spec = in->spec();
     const std::vector<float> pixels = readAllChannels(*in, path);
@@ -173,6 +171,8 @@ ExrImage readExrChannelsWithOiio(const std::string& path) {
     return image;
 }
 
-ImageMetadata readImageMetadataWithOiio(const std::string& path) { return stringAttributes(openForReading(path)->spec()); }
+ImageMetadata readImageMetadata(const std::string& path) {
+    return stringAttributes(openForReading(path)->spec());
+}
 
-}  // namespace pt
+}  // namespace pt::oiio

@@ -227,6 +227,25 @@ TEST(PtRenderCli, EachCommandAnswersHelpWithItsOwnUsage) {
     EXPECT_NE(usageError.err.find("(see pt-render info --help)"), std::string::npos) << usageError.err;
 }
 
+// OpenImageIO (about 260 shared libraries) is loaded on the first image read or written, not at
+// start-up (issue 17: every start took 0.2-0.75 s, --help included). The dynamic loader's own
+// log (LD_DEBUG=files) says which libraries a run opened.
+TEST(PtRenderCli, OpenImageIoIsLoadedOnlyByRunsThatTouchImages) {
+    if (!PT_TEST_HAVE_OIIO) GTEST_SKIP() << "built without OpenImageIO (PT_OIIO=OFF)";
+    setenv("LD_DEBUG", "files", 1);
+    const auto help = runCli("--help");
+    const auto info = runCli("info " + cornell());
+    const std::string exr = test::tempDir() + "/lazy_oiio.exr";
+    const auto render = runCli("render " + cornell() + " --size 8x8 --spp 1 -o '" + exr + "'");
+    unsetenv("LD_DEBUG");
+    for (const auto* r : {&help, &info, &render}) EXPECT_EQ(r->exitCode, 0) << r->err.substr(0, 2000);
+    EXPECT_EQ(help.err.find("libOpenImageIO"), std::string::npos);
+    EXPECT_EQ(info.err.find("libOpenImageIO"), std::string::npos);
+    EXPECT_NE(render.err.find("libOpenImageIO"), std::string::npos)
+        << "the EXR writer ran without OpenImageIO?";
+    EXPECT_TRUE(fs::file_size(exr) > 0);
+}
+
 }  // namespace
 }  // namespace pt
 
