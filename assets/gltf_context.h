@@ -26,16 +26,19 @@ struct GltfDocument {
 };
 
 // One glTF mesh as it landed in the Scene: the Scene mesh and, per mesh slot, the glTF
-// material of the primitive that owns the slot (-1: the glTF default material).
+// material of the primitive that owns the slot (-1: the glTF default material) and the one
+// each material variant gives it (gltf_variants.h; kUnmappedVariant: its default).
 struct ImportedMesh {
     uint32_t sceneMesh = 0;
     std::vector<int> slotMaterials;
+    std::vector<std::vector<int>> slotVariantMaterials;  // [slot][variant]
 };
 
 struct GltfContext {
     const GltfDocument& doc;
     Scene& scene;
     int32_t object = -1;
+    std::vector<std::string> variants;  // KHR_materials_variants names (gltf_variants.h)
 
     std::map<int, std::optional<ImportedMesh>> meshes;  // nullopt: no triangles, not placed
     std::map<int, uint32_t> materials;                   // -1 is the default material

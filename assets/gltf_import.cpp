@@ -10,6 +10,7 @@
 #include "assets/gltf_materials.h"
 #include "assets/gltf_mesh.h"
 #include "assets/gltf_nodes.h"
+#include "assets/gltf_variants.h"
 #include "assets/model_import.h"
 #include "assets/scene_append_guard.h"
 
@@ -19,9 +20,16 @@ namespace {
 // Extensions whose data this importer reads (KHR_mesh_quantization: the accessor reader
 // converts every component type).
 const std::set<std::string> kSupportedExtensions = {
-    "KHR_materials_emissive_strength", "KHR_materials_ior",      "KHR_materials_transmission",
-    "KHR_materials_volume",            "KHR_materials_clearcoat", "KHR_materials_specular",
-    "KHR_texture_transform",           "KHR_mesh_quantization",   "KHR_lights_punctual",
+    "KHR_materials_emissive_strength",
+    "KHR_materials_ior",
+    "KHR_materials_transmission",
+    "KHR_materials_volume",
+    "KHR_materials_clearcoat",
+    "KHR_materials_specular",
+    "KHR_texture_transform",
+    "KHR_mesh_quantization",
+    "KHR_lights_punctual",
+    "KHR_materials_variants",
 };
 
 // One warning per unsupported extension the file declares, and per feature it uses that is
@@ -43,6 +51,27 @@ void warnAboutUnsupported(const GltfContext& ctx) {
     }
 }
 
+// Per variant, the Scene material of each slot of `mesh` (`defaults` where the variant maps
+// none); empty when no variant maps any slot.
+std::vector<std::vector<uint32_t>> placedVariantMaterials(GltfContext& ctx, const ImportedMesh& mesh,
+                                                          const std::vector<uint32_t>& defaults,
+                                                          const std::string& element) {
+    bool mapped = false;
+    for (const auto& slot : mesh.slotVariantMaterials) {
+        for (int material : slot) mapped |= material != kUnmappedVariant;
+    }
+    if (!mapped) return {};
+    std::vector<std::vector<uint32_t>> rows(ctx.variants.size(), defaults);
+    for (size_t slot = 0; slot < mesh.slotVariantMaterials.size(); ++slot) {
+        for (size_t variant = 0; variant < rows.size(); ++variant) {
+            const int material = mesh.slotVariantMaterials[slot][variant];
+            if (material != kUnmappedVariant)
+                rows[variant][slot] = importGltfMaterial(ctx, material, element);
+        }
+    }
+    return rows;
+}
+
 // The placement of `visit`'s mesh, or nullopt (with a warning) when it cannot be drawn.
 std::optional<Placement> placeNode(GltfContext& ctx, const GltfNodeVisit& visit,
                                    const ImportedMesh& mesh) {
@@ -61,6 +90,7 @@ std::optional<Placement> placeNode(GltfContext& ctx, const GltfNodeVisit& visit,
     for (int material : mesh.slotMaterials) {
         placement.materials.push_back(importGltfMaterial(ctx, material, element + ".mesh"));
     }
+    placement.variantMaterials = placedVariantMaterials(ctx, mesh, placement.materials, element + ".mesh");
     return placement;
 }
 
@@ -71,13 +101,15 @@ ImportedFile importGltf(const std::string& path, int32_t object, Scene& scene,
     reportProgress(progress, "load glTF", 0.0);
     SceneAppendGuard guard(scene);
     const GltfDocument doc = loadGltfDocument(path);
-    GltfContext ctx{doc, scene, object, {}, {}, {}, {}, {}};
+    GltfContext ctx{doc, scene, object, {}, {}, {}, {}, {}, {}};
     warnAboutUnsupported(ctx);
+    ctx.variants = gltfVariantNames(ctx);
     const std::vector<GltfNodeVisit> visits = walkGltfScene(ctx);
 
     ImportedFile file;
     file.camera = gltfCamera(ctx, visits);
     file.lights = gltfLights(ctx, visits);
+    file.variants = ctx.variants;
     std::set<uint32_t> posedMeshes;  // Scene meshes whose first node has set their morph pose
     size_t meshNodes = 0, done = 0;
     for (const GltfNodeVisit& visit : visits) meshNodes += doc.model.nodes[size_t(visit.node)].mesh >= 0;

@@ -4,6 +4,7 @@
 
 #include "assets/gltf_primitive.h"
 #include "assets/gltf_values.h"
+#include "assets/gltf_variants.h"
 #include "render/scene/morph.h"
 
 namespace pt {
@@ -144,6 +145,8 @@ const std::optional<ImportedMesh>& importGltfMesh(GltfContext& ctx, int meshInde
         }
         appendPrimitive(ctx, *g, uint32_t(imported.slotMaterials.size()), mesh, slots, meshElement);
         imported.slotMaterials.push_back(material);
+        imported.slotVariantMaterials.push_back(
+            gltfPrimitiveVariantMaterials(ctx, size_t(meshIndex), p, ctx.variants.size()));
     }
     if (imported.slotMaterials.empty()) {
         ctx.warn(meshElement, "has no triangles to render; nodes using it are not placed");

@@ -224,10 +224,11 @@ std::optional<PrimitiveGeometry> readGltfPrimitive(const GltfContext& ctx, size_
     const auto& primitive = ctx.model().meshes[meshIndex].primitives[primitiveIndex];
     const std::string element = gltfPath("meshes", meshIndex) + ".primitives[" +
                                 std::to_string(primitiveIndex) + "]";
-    // No primitive extension is supported. An optional one (KHR_materials_variants, or Draco
-    // with uncompressed fallback data) is ignored, as the glTF specification asks, and the
-    // primitive is read as it stands, with its default material; the file-level warning names
-    // it. Only one the file requires is a reason to skip: its data is not readable without it.
+    // No primitive extension changes how geometry is read (KHR_materials_variants maps
+    // materials; gltf_variants reads it). Any other optional one (Draco with uncompressed
+    // fallback data) is ignored, as the glTF specification asks, and the primitive is read as
+    // it stands; the file-level warning names it. Only one the file requires is a reason to
+    // skip: its data is not readable without it.
     const auto& required = ctx.model().extensionsRequired;
     for (const auto& extension : primitive.extensions) {
         if (std::find(required.begin(), required.end(), extension.first) != required.end()) {

@@ -17,12 +17,16 @@ struct Placement {
     uint32_t mesh = 0;                // Scene::meshes index
     Affine3 fileToNode;               // node-to-file-root transform (glTF node hierarchy)
     std::vector<uint32_t> materials;  // Scene::materials index per mesh slot
+    // Per variant of the file (ImportedFile::variants), the Scene material of each slot; empty
+    // when no variant maps a material of this mesh.
+    std::vector<std::vector<uint32_t>> variantMaterials;
 };
 
 struct ImportedFile {
     std::vector<Placement> placements;
     std::optional<Camera> camera;     // the file's first camera, in file space
     std::vector<Light> lights;        // punctual lights (glTF KHR_lights_punctual), in file space
+    std::vector<std::string> variants;  // material variants (glTF KHR_materials_variants), by name
 };
 
 // Throws InputError naming the file and the element for malformed or unsupported-fatal input;

@@ -13,6 +13,7 @@
 #include "assets/json_value.h"
 #include "assets/light_json.h"
 #include "assets/material_json.h"
+#include "assets/message_text.h"
 #include "assets/model_import.h"
 #include "assets/scene_json.h"
 #include "assets/scene_loader.h"
@@ -239,18 +240,39 @@ private:
         const std::optional<JsonValue> material = reader.get("material");
         const std::optional<JsonValue> overrides = reader.get("materialOverrides");
         const std::optional<JsonValue> morphWeights = reader.get("morphWeights");
+        const std::optional<JsonValue> variant = reader.get("variant");
         if (file && material) material->fail("applies to shapes; a file object takes \"materialOverrides\"");
         if (shape && overrides) overrides->fail("applies to file objects; a shape takes \"material\"");
         if (shape && morphWeights) morphWeights->fail("applies to file objects; shapes have no morph targets");
+        if (shape && variant) variant->fail("applies to file objects; shapes have no material variants");
         reader.finish();
         if (file) {
             if (overrides) object.materialOverrides = readOverrides(*overrides);
             if (morphWeights) object.morphWeights = readMorphWeights(*morphWeights);
             addFileObject(*file, morphWeights, std::move(object), index);
+            if (variant) selectVariant(*variant, index);
         } else {
             object.material = material ? material->asString() : kDefaultMaterialName;
             addShapeObject(*shape, material ? *material : value, std::move(object), index);
         }
+    }
+
+    // "variant": one of the file's material variants (KHR_materials_variants), by name.
+    void selectVariant(const JsonValue& value, int32_t index) {
+        const std::string name = value.asString();
+        const SceneObject& object = scene_.objects[size_t(index)];
+        const auto found = std::find(object.variants.begin(), object.variants.end(), name);
+        if (found == object.variants.end()) {
+            const std::string file = fs::path(object.path).filename().string();
+            if (object.variants.empty()) value.fail(file + " has no material variants");
+            std::string known;
+            for (const std::string& v : object.variants)
+                known += (known.empty() ? "\"" : ", \"") + shortened(v) + "\"";
+            value.fail("\"" + shortened(name) + "\" is not a variant of " + file +
+                       " (its variants: " + shortened(known, 4 * kMaxQuotedChars) + ")");
+        }
+        selectObjectVariant(scene_.objects, scene_.instances, uint32_t(index),
+                            int32_t(found - object.variants.begin()));
     }
 
     std::map<std::string, std::string> readOverrides(const JsonValue& value) const {

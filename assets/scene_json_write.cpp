@@ -147,6 +147,9 @@ Json objectToJson(const Scene& scene, size_t objectIndex, const fs::path& folder
         Json morphWeights = morphWeightsToJson(scene, objectIndex);
         if (!morphWeights.empty()) out["morphWeights"] = std::move(morphWeights);
     }
+    if (object.variant >= 0 && size_t(object.variant) < object.variants.size()) {
+        out["variant"] = object.variants[size_t(object.variant)];
+    }
     Json transform = transformToJson(object.transform);
     if (!transform.empty()) out["transform"] = std::move(transform);
     return out;

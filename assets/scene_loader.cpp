@@ -35,12 +35,18 @@ std::map<uint32_t, uint32_t> resolveOverrides(const ImportedFile& file, int32_t 
         const int32_t target = findSceneMaterial(scene, sceneMaterial);
         if (target < 0) throw InputError(where + ": unknown material \"" + sceneMaterial + "\"");
         bool found = false;
-        for (const Placement& placement : file.placements) {
-            for (uint32_t material : placement.materials) {
-                if (scene.materials[material].name != fileMaterial) continue;
+        const std::string& fileName = fileMaterial;  // a lambda may not capture a structured binding (C++17)
+        const auto remapNamed = [&](const std::vector<uint32_t>& materials) {
+            for (uint32_t material : materials) {
+                if (scene.materials[material].name != fileName) continue;
                 remap[material] = uint32_t(target);
                 found = true;
             }
+        };
+        for (const Placement& placement : file.placements) {
+            remapNamed(placement.materials);
+            for (const auto& variant : placement.variantMaterials)
+                remapNamed(variant);  // variants' materials too
         }
         if (!found) {
             throw InputError(where + ": " + fs::path(object.path).filename().string() +
@@ -116,7 +122,17 @@ void lightUnlitModel(Scene& scene) {
 
 void instantiateImportedFile(const ImportedFile& file, int32_t objectIndex, Scene& scene) {
     const std::map<uint32_t, uint32_t> remap = resolveOverrides(file, objectIndex, scene);
-    const SceneObject& object = scene.objects[size_t(objectIndex)];
+    SceneObject& object = scene.objects[size_t(objectIndex)];
+    object.variants = file.variants;
+    object.variant = -1;
+    const auto placedMaterials = [&remap](const std::vector<uint32_t>& fileMaterials) {
+        std::vector<uint32_t> materials;
+        for (uint32_t material : fileMaterials) {
+            const auto replaced = remap.find(material);
+            materials.push_back(replaced == remap.end() ? material : replaced->second);
+        }
+        return materials;
+    };
     const Affine3 objectToWorld = object.transform.toAffine();
     const std::string objectName = objectDisplayName(object);
     for (size_t i = 0; i < file.placements.size(); ++i) {
@@ -126,10 +142,10 @@ void instantiateImportedFile(const ImportedFile& file, int32_t objectIndex, Scen
         instance.mesh = placement.mesh;
         instance.objectToWorld = objectToWorld * placement.fileToNode;
         instance.object = objectIndex;
-        for (uint32_t material : placement.materials) {
-            const auto replaced = remap.find(material);
-            instance.materials.push_back(replaced == remap.end() ? material : replaced->second);
-        }
+        instance.materials = placedMaterials(placement.materials);
+        for (const auto& row : placement.variantMaterials)
+            instance.variantMaterials.push_back(placedMaterials(row));
+        if (!instance.variantMaterials.empty()) instance.defaultMaterials = instance.materials;
         scene.instances.push_back(std::move(instance));
     }
     for (const Light& fileLight : file.lights) {

@@ -88,6 +88,17 @@ std::unique_ptr<EditCommand> setObjectHidden(const Document& doc, uint32_t objec
     return layoutCommand(doc, label, SceneChanges::Transforms, std::move(after));
 }
 
+std::unique_ptr<EditCommand> setObjectVariant(const Document& doc, uint32_t object, int32_t variant) {
+    SceneLayout after = layoutOf(doc.scene);
+    selectObjectVariant(after.objects, after.instances, object, variant);
+    const SceneObject& o = after.objects.at(object);
+    const std::string shown = o.variant >= 0 ? o.variants[size_t(o.variant)] : "default materials";
+    // The instances' slot materials change (the instance table), and a variant may make a
+    // surface emit or stop emitting (the light table).
+    return layoutCommand(doc, "Variant " + shown + " of " + o.name,
+                         SceneChanges::Transforms | SceneChanges::Lights, std::move(after));
+}
+
 std::unique_ptr<EditCommand> deleteObject(const Document& doc, uint32_t object) {
     const SceneLayout before = layoutOf(doc.scene);
     SceneLayout after;

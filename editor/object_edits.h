@@ -15,6 +15,9 @@ std::unique_ptr<EditCommand> setObjectHidden(const Document& doc, uint32_t objec
 std::unique_ptr<EditCommand> deleteObject(const Document& doc, uint32_t object);
 // The copy sits where the original is, named "<name> copy", sharing its meshes and materials.
 std::unique_ptr<EditCommand> duplicateObject(const Document& doc, uint32_t object);
+// Shows material variant `variant` of a glTF object (KHR_materials_variants; -1: the file's
+// default materials); saved with the scene.
+std::unique_ptr<EditCommand> setObjectVariant(const Document& doc, uint32_t object, int32_t variant);
 
 std::unique_ptr<EditCommand> renameLight(const Document& doc, uint32_t light, const std::string& name);
 std::unique_ptr<EditCommand> deleteLight(const Document& doc, uint32_t light);

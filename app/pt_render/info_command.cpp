@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "assets/scene_loader.h"
 #include "cli_options.h"
 #include "commands.h"
 #include "render/scene/compile_scene.h"
@@ -29,6 +30,12 @@ nlohmann::ordered_json describe(const Scene& scene, const CompiledScene& compile
     j["sphere_lights"] = s.sphereLightCount;
     j["punctual_lights"] = s.punctualLightCount;
     j["environment"] = scene.environment.texture >= 0 ? "image" : "color";
+    // glTF KHR_materials_variants, per object that has them: {"chair": ["Red", "Blue"]}.
+    nlohmann::ordered_json variants = nlohmann::ordered_json::object();
+    for (const SceneObject& object : scene.objects) {
+        if (!object.variants.empty()) variants[objectDisplayName(object)] = object.variants;
+    }
+    if (!variants.empty()) j["material_variants"] = std::move(variants);
     // What the scene uses (scene_features.h); the CUDA backend picks its kernel variant by it.
     j["features"] = featureNames(compiled.features);
     j["bounds"] = {{"min", {lo.x, lo.y, lo.z}}, {"max", {hi.x, hi.y, hi.z}}};

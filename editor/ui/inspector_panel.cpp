@@ -108,6 +108,25 @@ void morphEditor(EditorUi& ui, uint32_t mesh) {
     if (changed) ui.apply(setMorphWeights(ui.doc(), mesh, weights));
 }
 
+// glTF KHR_materials_variants: the file's variants, and its default materials first.
+void variantEditor(EditorUi& ui, uint32_t object) {
+    const SceneObject& o = ui.doc().scene.objects[object];
+    if (o.variants.empty()) return;
+    const char* shown = o.variant >= 0 ? o.variants[size_t(o.variant)].c_str() : "(default materials)";
+    if (!ImGui::BeginCombo("Material variant", shown)) return;
+    int32_t chosen = o.variant;
+    for (int32_t v = -1; v < int32_t(o.variants.size()); ++v) {
+        ImGui::PushID(v);
+        if (ImGui::Selectable(v >= 0 ? o.variants[size_t(v)].c_str() : "(default materials)",
+                              v == o.variant)) {
+            chosen = v;
+        }
+        ImGui::PopID();
+    }
+    ImGui::EndCombo();
+    if (chosen != o.variant) ui.apply(setObjectVariant(ui.doc(), object, chosen));  // invalidates `o`
+}
+
 void objectInspector(EditorUi& ui) {
     const Scene& scene = ui.doc().scene;
     const uint32_t object = uint32_t(ui.selection.index);
@@ -117,6 +136,7 @@ void objectInspector(EditorUi& ui) {
     bool hidden = objectHidden(scene, object);
     if (ImGui::Checkbox("Hidden", &hidden)) ui.apply(setObjectHidden(ui.doc(), object, hidden));
     transformEditor(ui, object);
+    variantEditor(ui, object);
     const int32_t instance = ui.selection.instance;
     if (instance < 0 || size_t(instance) >= scene.instances.size()) return;
     const Instance& inst = scene.instances[size_t(instance)];

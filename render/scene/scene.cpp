@@ -31,6 +31,17 @@ Affine3 ObjectTransform::toAffine() const {
     return translationTransform(translate) * rotation * scaleTransform(scale);
 }
 
+void selectObjectVariant(std::vector<SceneObject>& objects, std::vector<Instance>& instances, uint32_t object,
+                         int32_t variant) {
+    SceneObject& owner = objects.at(object);
+    owner.variant = variant >= 0 && size_t(variant) < owner.variants.size() ? variant : -1;
+    for (Instance& instance : instances) {
+        if (instance.object != int32_t(object) || instance.variantMaterials.empty()) continue;
+        instance.materials = owner.variant >= 0 ? instance.variantMaterials.at(size_t(owner.variant))
+                                                : instance.defaultMaterials;
+    }
+}
+
 int32_t Scene::findMaterial(const std::string& name) const {
     for (size_t i = 0; i < materials.size(); ++i) {
         if (materials[i].name == name) return int32_t(i);

@@ -60,6 +60,11 @@ struct Instance {
     std::vector<uint32_t> materials;    // one Scene::materials index per mesh slot
     int32_t object = -1;                // the SceneObject that created it (-1: none)
     bool visible = true;
+    // glTF KHR_materials_variants, when its object's file has variants: the slots' materials
+    // under each variant (SceneObject::variants order; every row complete, a slot the variant
+    // does not map keeping its default) and under none (the file's defaults).
+    std::vector<std::vector<uint32_t>> variantMaterials;
+    std::vector<uint32_t> defaultMaterials;
 };
 
 struct NamedMaterial {
@@ -135,7 +140,17 @@ struct SceneObject {
     std::map<std::string, std::string> materialOverrides;  // File: file material -> scene material
     // File: mesh name -> morph weights replacing the file's defaults (Mesh::defaultMorphWeights).
     std::map<std::string, std::vector<float>> morphWeights;
+    // File: the glTF's material variants (KHR_materials_variants), by name in file order, and
+    // the one its instances show (-1: none, the file's default materials).
+    std::vector<std::string> variants;
+    int32_t variant = -1;
 };
+
+// Shows variant `variant` of objects[object] (-1: the file's default materials) on every
+// instance it placed (those placed without variant rows keep their materials). Takes the
+// lists rather than a Scene so that editor commands can apply it to a copy of the layout.
+void selectObjectVariant(std::vector<SceneObject>& objects, std::vector<Instance>& instances, uint32_t object,
+                         int32_t variant);
 
 enum class LightType : uint32_t { Point = 0, Spot = 1, Directional = 2 };
 

@@ -227,6 +227,18 @@ TEST(PtRenderCli, EachCommandAnswersHelpWithItsOwnUsage) {
     EXPECT_NE(usageError.err.find("(see pt-render info --help)"), std::string::npos) << usageError.err;
 }
 
+// info lists each object's material variants (glTF KHR_materials_variants), so a user knows
+// the names scene JSON's "variant" takes.
+TEST(PtRenderCli, InfoListsMaterialVariants) {
+    const auto r = runCli("info --json '" + test::testDataPath("gltf/variants.gltf") + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto info = nlohmann::json::parse(r.out);
+    ASSERT_TRUE(info.contains("material_variants")) << r.out;
+    EXPECT_EQ(info["material_variants"].size(), 1u);
+    EXPECT_EQ(info["material_variants"].begin().value(),
+              (std::vector<std::string>{"Leather", "Linen", "variant 2"}));
+}
+
 // OpenImageIO (about 260 shared libraries) is loaded on the first image read or written, not at
 // start-up (issue 17: every start took 0.2-0.75 s, --help included). The dynamic loader's own
 // log (LD_DEBUG=files) says which libraries a run opened.

@@ -288,11 +288,48 @@ TEST(GltfImport, OptionalPrimitiveExtensionsKeepTheGeometryAndRequiredOnesSkipIt
     const std::vector<uint32_t>& materials = r.file.placements[0].materials;
     ASSERT_FALSE(materials.empty());
     EXPECT_EQ(r.scene.materials[materials[0]].name, "default");
-    EXPECT_EQ(warningsContaining(r.scene, "extension KHR_materials_variants is not supported; ignored"), 1u);
+    ASSERT_EQ(r.file.placements[0].variantMaterials.size(), 1u);  // read, not shown until chosen
+    EXPECT_EQ(r.scene.materials[r.file.placements[0].variantMaterials[0][0]].name, "variant red");
+    EXPECT_EQ(warningsContaining(r.scene, "KHR_materials_variants is not supported"), 0u);
     EXPECT_EQ(warningsContaining(r.scene, "KHR_materials_variants, which is not supported; primitive skipped"), 0u);
     EXPECT_EQ(warningsContaining(r.scene, "meshes[0].primitives[1]: requires extension KHR_draco_mesh_compression, "
                                           "which is not supported; primitive skipped"),
               1u);
+}
+
+// KHR_materials_variants (variants.gltf, see make_fixtures.py): per placement and variant, the
+// material of each slot, a slot the variant does not map keeping its default; malformed
+// mappings are ignored with one warning each, never failing the file or dropping geometry.
+TEST(GltfImport, MaterialVariantsGiveEachSlotItsMaterialPerVariant) {
+    const Imported r = importFixture("variants.gltf");
+    EXPECT_EQ(r.file.variants, (std::vector<std::string>{"Leather", "Linen", "variant 2"}));
+    ASSERT_EQ(r.file.placements.size(), 3u);
+    const auto names = [&](const std::vector<uint32_t>& materials) {
+        std::vector<std::string> out;
+        for (uint32_t m : materials) out.push_back(r.scene.materials.at(m).name);
+        return out;
+    };
+    using Names = std::vector<std::string>;
+    for (size_t chair : {0u, 1u}) {
+        const Placement& p = r.file.placements[chair];
+        EXPECT_EQ(names(p.materials), (Names{"seat", "frame"}));
+        ASSERT_EQ(p.variantMaterials.size(), 3u);
+        EXPECT_EQ(names(p.variantMaterials[0]), (Names{"leather", "frame"}));
+        EXPECT_EQ(names(p.variantMaterials[1]), (Names{"linen", "gilt"}));
+        EXPECT_EQ(names(p.variantMaterials[2]), (Names{"seat", "glow"}));
+    }
+    EXPECT_EQ(r.file.placements[0].variantMaterials,
+              r.file.placements[1].variantMaterials);            // one mesh, shared
+    EXPECT_TRUE(r.file.placements[2].variantMaterials.empty());  // the cushion maps nothing
+    const std::string mappings = "meshes[0].primitives[0].extensions.KHR_materials_variants.mappings";
+    EXPECT_EQ(
+        warningsContaining(r.scene, mappings + "[1].variants[1]: is not a variant of the file (3 in it)"),
+        1u);
+    EXPECT_EQ(warningsContaining(r.scene, mappings + "[2]: material 9 does not exist (6 in the file)"), 1u);
+    EXPECT_EQ(
+        warningsContaining(r.scene, mappings + "[3]: needs an integer material and an array of variants"),
+        1u);
+    EXPECT_EQ(r.scene.warnings.size(), 3u) << "no other warning (the extension is supported)";
 }
 
 TEST(GltfImport, WithoutScenesEveryRootNodeIsShown) {

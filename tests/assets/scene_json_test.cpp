@@ -449,6 +449,63 @@ TEST(SceneJsonErrors, UnknownOverrideKeyAndUnknownOverrideTarget) {
     EXPECT_EQ(result.error, R"(b.json: objects[0].materialOverrides.paint: unknown material "blue")");
 }
 
+// "variant" names one of a glTF's KHR_materials_variants: every instance of the object shows
+// it (overrides applied to the variant's materials too), the other objects keep their
+// defaults, and saving writes it back.
+TEST(SceneJson, MaterialVariantIsChosenByNameAndSaved) {
+    const std::string folder = testFolder();
+    const std::string model = testDataPath("gltf/variants.gltf");
+    const Scene scene = test::loadSceneOrFail(writeFile(folder, "in.json", R"({"version": 1,
+        "materials": [{"name": "brass", "baseColor": [0.9, 0.7, 0.3]}],
+        "objects": [{"name": "shown", "file": ")" + model + R"(", "variant": "Linen",
+                     "materialOverrides": {"gilt": "brass"}},
+                    {"name": "default", "file": ")" + model + R"("}]})"));
+    ASSERT_EQ(scene.objects.size(), 2u);
+    EXPECT_EQ(scene.objects[0].variant, 1);
+    EXPECT_EQ(scene.objects[1].variant, -1);
+    EXPECT_EQ(scene.objects[1].variants, (std::vector<std::string>{"Leather", "Linen", "variant 2"}));
+    const auto slotNames = [&](const Instance& instance) {
+        std::vector<std::string> out;
+        for (uint32_t m : instance.materials) out.push_back(scene.materials.at(m).name);
+        return out;
+    };
+    using Names = std::vector<std::string>;
+    size_t chairs = 0;
+    for (const Instance& instance : scene.instances) {
+        if (instance.name == "cushion") {
+            EXPECT_EQ(slotNames(instance), (Names{"seat"}));
+            continue;
+        }
+        ++chairs;
+        EXPECT_EQ(slotNames(instance),
+                  instance.object == 0 ? (Names{"linen", "brass"}) : (Names{"seat", "frame"}))
+            << instance.name;
+    }
+    EXPECT_EQ(chairs, 4u);
+    const Scene again = saveAndReload(scene, folder + "/out.json");
+    EXPECT_NE(readFile(folder + "/out.json").find("\"variant\": \"Linen\""), std::string::npos);
+    EXPECT_EQ(again.objects[0].variant, 1);
+}
+
+TEST(SceneJsonErrors, UnknownVariantNamesTheFilesVariants) {
+    const std::string folder = testFolder();
+    LoadResult result = loadScene(writeFile(folder, "a.json",
+                                            R"({"version": 1,
+        "objects": [{"file": ")" + testDataPath("gltf/variants.gltf") +
+                                                R"(", "variant": "Velvet"}]})"));
+    EXPECT_EQ(result.error, R"(a.json: objects[0].variant: "Velvet" is not a variant of variants.gltf )"
+                            R"((its variants: "Leather", "Linen", "variant 2"))");
+    result = loadScene(writeFile(folder, "b.json",
+                                 R"({"version": 1,
+        "objects": [{"file": ")" + testDataPath("gltf/shared_mesh.gltf") +
+                                     R"(", "variant": "Linen"}]})"));
+    EXPECT_EQ(result.error, "b.json: objects[0].variant: shared_mesh.gltf has no material variants");
+    result = loadScene(writeFile(folder, "c.json", R"({"version": 1,
+        "objects": [{"shape": "box", "variant": "Linen"}]})"));
+    EXPECT_EQ(result.error,
+              "c.json: objects[0].variant: applies to file objects; shapes have no material variants");
+}
+
 TEST(SceneJsonErrors, UnreadableImageKeepsTheReadersMessage) {
     const std::string folder = testFolder();
     writeFile(folder, "fake.png", "not a png");

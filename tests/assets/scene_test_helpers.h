@@ -153,6 +153,8 @@ inline void compareGeometry(Differences& d, const Scene& a, const Scene& b) {
         d.check(at + ".materials", x.materials, y.materials);
         d.check(at + ".object", x.object, y.object);
         d.check(at + ".visible", x.visible, y.visible);
+        d.check(at + ".variantMaterials", x.variantMaterials, y.variantMaterials);
+        d.check(at + ".defaultMaterials", x.defaultMaterials, y.defaultMaterials);
     }
 }
 
@@ -231,6 +233,8 @@ inline void compareObjects(Differences& d, const Scene& a, const Scene& b) {
         d.check(at + ".transform.useMatrix", x.transform.useMatrix, y.transform.useMatrix);
         d.check(at + ".material", x.material, y.material);
         d.check(at + ".materialOverrides", x.materialOverrides, y.materialOverrides);
+        d.check(at + ".variants", x.variants, y.variants);
+        d.check(at + ".variant", x.variant, y.variant);
     }
 }
 

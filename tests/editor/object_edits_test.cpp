@@ -8,6 +8,7 @@
 #include <functional>
 #include <string>
 
+#include "assets/scene_loader.h"
 #include "assets/scene_test_helpers.h"
 #include "editor/command_stack.h"
 #include "editor/scene_equality.h"
@@ -280,6 +281,38 @@ TEST(ObjectEdits, DuplicateAFileLightMakesASceneLight) {
         copy.object = -1;
         s.lights.push_back(copy);
     });
+}
+
+// A glTF's material variants (variants.gltf: "Leather", "Linen", "variant 2"), switched from
+// the Inspector: every instance of the object takes the variant's materials, the object records
+// the choice for saving, and the backend is told to rebuild its instance and light tables (the
+// third variant makes the frame emit).
+TEST(ObjectEdits, ChoosingAMaterialVariantSwitchesEveryInstanceOfTheObject) {
+    Document doc;
+    doc.scene = test::loadSceneOrFail(test::writeFile(test::testFolder(), "scene.json",
+                                                      R"({"version": 1,
+        "objects": [{"name": "chairs", "file": ")" + test::testDataPath("gltf/variants.gltf") +
+                                                          R"("}]})"));
+    const auto show = [](int32_t variant) {
+        return [variant](Scene& s) {
+            s.objects[0].variant = variant;
+            for (Instance& instance : s.instances) {
+                if (instance.variantMaterials.empty()) continue;
+                instance.materials =
+                    variant < 0 ? instance.defaultMaterials : instance.variantMaterials[size_t(variant)];
+            }
+        };
+    };
+    const SceneChangeMask changes = SceneChanges::Transforms | SceneChanges::Lights;
+    EXPECT_EQ(setObjectVariant(doc, 0, 1)->label(), "Variant Linen of chairs");
+    checkEdit(doc, setObjectVariant(doc, 0, 1), changes, show(1));
+    EXPECT_EQ(doc.scene.materials[doc.scene.instances[0].materials[0]].name, "linen");
+    EXPECT_FALSE(sceneHasEmitters(doc.scene));
+    checkEdit(doc, setObjectVariant(doc, 0, 2), changes, show(2));
+    EXPECT_TRUE(sceneHasEmitters(doc.scene)) << "the glow variant's frame emits";
+    EXPECT_EQ(setObjectVariant(doc, 0, -1)->label(), "Variant default materials of chairs");
+    checkEdit(doc, setObjectVariant(doc, 0, -1), changes, show(-1));
+    EXPECT_EQ(doc.scene.materials[doc.scene.instances[0].materials[0]].name, "seat");
 }
 
 }  // namespace

@@ -67,6 +67,8 @@ inline void expectObjectsEqual(const SceneObject& a, const SceneObject& b, const
     expectTransformsEqual(a.transform, b.transform, where + ".transform");
     EXPECT_EQ(a.material, b.material) << where << ".material";
     EXPECT_EQ(a.materialOverrides, b.materialOverrides) << where << ".materialOverrides";
+    EXPECT_EQ(a.variants, b.variants) << where << ".variants";
+    EXPECT_EQ(a.variant, b.variant) << where << ".variant";
     EXPECT_EQ(a.morphWeights.size(), b.morphWeights.size()) << where << ".morphWeights";
     for (const auto& [mesh, weights] : a.morphWeights) {
         const auto other = b.morphWeights.find(mesh);
@@ -85,6 +87,8 @@ inline void expectInstancesEqual(const Instance& a, const Instance& b, const std
     EXPECT_EQ(a.materials, b.materials) << where << ".materials";
     EXPECT_EQ(a.object, b.object) << where << ".object";
     EXPECT_EQ(a.visible, b.visible) << where << ".visible";
+    EXPECT_EQ(a.variantMaterials, b.variantMaterials) << where << ".variantMaterials";
+    EXPECT_EQ(a.defaultMaterials, b.defaultMaterials) << where << ".defaultMaterials";
 }
 
 inline void expectLightsEqual(const Light& a, const Light& b, const std::string& where) {

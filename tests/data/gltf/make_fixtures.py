@@ -357,6 +357,39 @@ def primitive_extensions():
     doc.save_gltf("primitive_extensions.gltf")
 
 
+def material_variants():
+    """KHR_materials_variants: variants "Leather" and "Linen" (and an unnamed third). Mesh 0
+    has a seat (default material "seat", "leather" under Leather, "linen" under Linen) and a
+    frame (default "frame", "gilt" under Linen; unmapped under Leather); two nodes place it.
+    Mesh 1 (a second node) has no mapping. Broken mappings that must be ignored with a warning:
+    a material index past the end, a variant index past the end, a mapping without variants.
+    The emissive "glow" is what the third variant gives the frame."""
+    doc = Doc()
+    doc.json["materials"] = [
+        {"name": "seat", "pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.5, 0.5, 1]}},
+        {"name": "leather", "pbrMetallicRoughness": {"baseColorFactor": [0.4, 0.2, 0.1, 1]}},
+        {"name": "linen", "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.85, 0.7, 1]}},
+        {"name": "frame", "pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.2, 0.2, 1]}},
+        {"name": "gilt", "pbrMetallicRoughness": {"baseColorFactor": [1, 0.8, 0.3, 1], "metallicFactor": 1}},
+        {"name": "glow", "emissiveFactor": [1, 1, 1]},
+    ]
+    seat = doc.quad_primitive(material=0)
+    seat["extensions"] = {"KHR_materials_variants": {"mappings": [
+        {"material": 1, "variants": [0]}, {"material": 2, "variants": [1, 7]},
+        {"material": 9, "variants": [0]}, {"material": 4}]}}
+    frame = doc.quad_primitive(material=3)
+    frame["extensions"] = {"KHR_materials_variants": {"mappings": [
+        {"material": 4, "variants": [1]}, {"material": 5, "variants": [2]}]}}
+    doc.mesh([seat, frame], name="chair")
+    doc.mesh([doc.quad_primitive(material=0)], name="cushion")
+    doc.scene([doc.node(mesh=0, name="chair A"), doc.node(mesh=0, name="chair B", translation=[2, 0, 0]),
+               doc.node(mesh=1, name="cushion")])
+    doc.json["extensions"] = {"KHR_materials_variants": {"variants": [
+        {"name": "Leather"}, {"name": "Linen"}, {"name": ""}]}}
+    doc.json["extensionsUsed"] = ["KHR_materials_variants"]
+    doc.save_gltf("variants.gltf")
+
+
 def lights_fixture():
     """KHR_lights_punctual: a point light on a moved node, a spot under a parent turned to
     shine down (-90 degrees about X), a directional light turned 90 degrees about Y (shining
@@ -503,6 +536,7 @@ if __name__ == "__main__":
     missing_image()
     unsupported_extensions()
     primitive_extensions()
+    material_variants()
     lights_fixture()
     no_scenes()
     malformed()
