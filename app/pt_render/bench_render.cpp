@@ -63,6 +63,8 @@ std::vector<Variant> variantsOf(const Backend& backend, const IntegratorToggles&
          [](IntegratorToggles& t) { t.russianRoulette = !t.russianRoulette; });
     flip(base.nextEventEstimation ? "NEE off" : "NEE on",
          [](IntegratorToggles& t) { t.nextEventEstimation = !t.nextEventEstimation; });
+    flip(base.mergeInstances ? "merge off" : "merge on",
+         [](IntegratorToggles& t) { t.mergeInstances = !t.mergeInstances; });
     flip("BVH off", [](IntegratorToggles& t) { t.bruteForce = true; });
     return v;
 }

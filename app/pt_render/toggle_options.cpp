@@ -3,9 +3,18 @@
 namespace pt::cli {
 
 const std::set<std::string>& toggleSwitches() {
-    static const std::set<std::string> switches = {
-        "--no-nee",     "--no-mis",        "--no-rr",          "--bvh-off",           "--no-jitter", "--megakernel",
-        "--wavefront",  "--no-compaction", "--sort-materials", "--no-sort-materials", "--no-first-hit-cache"};
+    static const std::set<std::string> switches = {"--no-nee",
+                                                   "--no-mis",
+                                                   "--no-rr",
+                                                   "--bvh-off",
+                                                   "--no-merge",
+                                                   "--no-jitter",
+                                                   "--megakernel",
+                                                   "--wavefront",
+                                                   "--no-compaction",
+                                                   "--sort-materials",
+                                                   "--no-sort-materials",
+                                                   "--no-first-hit-cache"};
     return switches;
 }
 
@@ -20,6 +29,7 @@ IntegratorToggles parseToggles(const Options& o) {
     t.multipleImportance = !o.has("--no-mis");
     t.russianRoulette = !o.has("--no-rr");
     t.bruteForce = o.has("--bvh-off");
+    t.mergeInstances = !o.has("--no-merge");
     t.clampRadiance = float(o.positiveNumber("--clamp").value_or(0.0));
     t.pixelJitter = !o.has("--no-jitter");
     if (o.has("--megakernel") && o.has("--wavefront")) throw UsageError("--megakernel and --wavefront exclude each other");

@@ -61,7 +61,9 @@ constexpr CommandUsage kCommands[] = {
 )", kNone},
 };
 
-constexpr const char* kToggleText = R"(TOGGLES: --no-nee --no-mis --no-rr --clamp X --bvh-off (brute force) --no-jitter
+constexpr const char* kToggleText =
+    R"(TOGGLES: --no-nee --no-mis --no-rr --clamp X --bvh-off (brute force) --no-jitter
+  --no-merge (small instances keep a BLAS each, instead of one world-space BLAS)
   --megakernel | --wavefront, --no-compaction, --sort-materials | --no-sort-materials,
   --no-first-hit-cache, --rebuild-ratio R (refit until SAH cost exceeds R x the built one)
 )";

@@ -23,6 +23,7 @@ void integratorSwitches(EditorUi& ui) {
     changed |= ImGui::Checkbox("Russian roulette", &t.russianRoulette);
     changed |= ImGui::Checkbox("Pixel jitter (antialiasing)", &t.pixelJitter);
     changed |= ImGui::Checkbox("BVH off (brute force)", &t.bruteForce);
+    changed |= ImGui::Checkbox("Merge small instances (one world-space BLAS)", &t.mergeInstances);
     changed |= sliderFloat(ui, "Firefly clamp (0 = off)", &t.clampRadiance, 0.0f, 100.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
     if (ui.backendName == "cuda") {
         ImGui::Separator();

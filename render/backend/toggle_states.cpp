@@ -10,6 +10,7 @@ std::vector<ToggleState> integratorToggleStates(const IntegratorToggles& t) {
         state("rr", t.russianRoulette),
         // "bvh" is on when the BVH is used, i.e. when brute force is off.
         state("bvh", !t.bruteForce),
+        state("merge_instances", t.mergeInstances),
         state("pixel_jitter", t.pixelJitter),
         state("auto_schedule", t.autoSchedule),
         state("megakernel", t.megakernel),

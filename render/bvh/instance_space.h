@@ -49,7 +49,12 @@ PT_HD Vec3 surfacePointError(const RenderInstance& inst, Vec3 objectMagnitude) {
         size * gammaBound(kSpawnRoundings) + Vec3(maxComponent(size)) * gammaBound(kIntersectionRoundings);
     // The world coordinate itself (at most |t| + local) is rounded once, by transformPoint.
     const Vec3 world = vabs(inst.objectToWorld.translation()) + local;
-    return inst.objectToWorld.transformMagnitude(objectError) + world * gammaBound(1);
+    const Vec3 error = inst.objectToWorld.transformMagnitude(objectError) + world * gammaBound(1);
+    if (!inst.tracedInWorldSpace) return error;
+    // Traced as world-space copies (merged_geometry.h): the copies' vertices are rounded world
+    // coordinates, and the intersection test's error is relative to the world magnitude.
+    return error + world * gammaBound(kSpawnRoundings) +
+           Vec3(maxComponent(world)) * gammaBound(kIntersectionRoundings);
 }
 
 // The same for a sphere (xyz centre, w radius, in object space).

@@ -25,11 +25,27 @@ PT_HD bool traverseInstance(const RenderScene& scene, uint32_t index, const Ray&
     return true;
 }
 
-// Leaf functor of walkBvh for the TLAS: each entry of a leaf is an instance.
+// Closest (or any) hit in the merged BLAS (merged_geometry.h), whose triangles are world-space
+// copies: the world ray walks it as it is, and a hit is reported as the instance triangle it
+// copies, so what follows never sees the merge.
+template <uint32_t kF, class Count>
+PT_HD bool traverseMerged(const RenderScene& scene, const TraversalRay& worldRay, float& tMax, Hit& hit,
+                          Count count, bool anyHit) {
+    if (!traverseBlas<kF>(scene, scene.blases[scene.mergedBlas], worldRay, tMax, hit, count, anyHit))
+        return false;
+    const MergedTriangle copied = scene.mergedTriangles[hit.primitive];
+    hit.instance = copied.instance;
+    hit.primitive = copied.primitive;
+    return true;
+}
+
+// Leaf functor of walkBvh for the TLAS: each entry of a leaf is an instance, or (numbered
+// instances.count) the merged BLAS.
 template <uint32_t kF, class Count>
 struct TlasLeaf {
     const RenderScene& scene;
     const Ray& worldRay;
+    const TraversalRay& worldTraversalRay;
     Hit& hit;
     Count counter;
     bool anyHit;
@@ -37,8 +53,12 @@ struct TlasLeaf {
     PT_HD bool operator()(uint32_t first, uint32_t count, float& tMax) {
         bool found = false;
         for (uint32_t i = first; i < first + count; ++i) {
-            if (traverseInstance<kF>(scene, scene.tlasInstanceIndices[i], worldRay, tMax, hit, counter,
-                                     anyHit)) {
+            const uint32_t entry = scene.tlasInstanceIndices[i];
+            const bool hitHere =
+                entry == scene.instances.count
+                    ? traverseMerged<kF>(scene, worldTraversalRay, tMax, hit, counter, anyHit)
+                    : traverseInstance<kF>(scene, entry, worldRay, tMax, hit, counter, anyHit);
+            if (hitHere) {
                 found = true;
                 if (anyHit) return true;
             }
@@ -59,7 +79,7 @@ PT_HD bool traverseTlas(const RenderScene& scene, const Ray& worldRay, float& tM
     }
     if (scene.tlasNodes.empty()) return false;
     const TraversalRay ray = makeTraversalRay(worldRay.origin, worldRay.direction);
-    TlasLeaf<kF, Count> leaf{scene, worldRay, hit, count, anyHit};
+    TlasLeaf<kF, Count> leaf{scene, worldRay, ray, hit, count, anyHit};
     return walkBvh(scene.tlasNodes.data, ray, tMax, leaf, count, anyHit);
 }
 

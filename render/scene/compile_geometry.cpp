@@ -103,8 +103,8 @@ void flattenGeometry(const Scene& scene, CompiledScene& out) {
     out.stats.blasCount = uint32_t(out.blases.size());
 }
 
-void buildBlases(const Scene& scene, CompiledScene& out, const ProgressFn& progress) {
-    const size_t meshCount = scene.meshes.size();
+void buildBlases(CompiledScene& out, const ProgressFn& progress) {
+    const size_t meshCount = out.blases.size();  // the meshes', then the merged BLAS
     std::vector<Bvh> bvhs(meshCount);
     // Leaves are made on every builder thread; reports go out at most every 1% of the
     // primitives, one at a time (ProgressFn need not be thread-safe).

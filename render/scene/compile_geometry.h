@@ -9,7 +9,8 @@ namespace pt {
 // left for buildBlases). Throws std::invalid_argument on an index past its mesh's vertices.
 void flattenGeometry(const Scene& scene, CompiledScene& out);
 
-// Builds the BLASes (binned SAH, meshes in parallel) and fills the BlasRef BVH fields.
-void buildBlases(const Scene& scene, CompiledScene& out, const ProgressFn& progress);
+// Builds the BLASes (binned SAH, meshes in parallel) and fills the BlasRef BVH fields: one
+// per mesh, and the merged BLAS (merged_geometry.h) where there is one.
+void buildBlases(CompiledScene& out, const ProgressFn& progress);
 
 }  // namespace pt

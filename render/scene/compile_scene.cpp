@@ -49,7 +49,7 @@ bool isTracedInstance(const Scene& scene, size_t i) {
            scene.meshes[instance.mesh].primitiveCount() > 0;
 }
 
-void compileInstances(const Scene& scene, CompiledScene& out) {
+bool compileInstances(const Scene& scene, CompiledScene& out) {
     const std::vector<Material>& materials = out.materials;
     // Built aside and swapped in, so that a refused instance leaves `out` as it was.
     std::vector<RenderInstance> instances;
@@ -69,6 +69,8 @@ void compileInstances(const Scene& scene, CompiledScene& out) {
         inst.worldToObject = inverse(src.objectToWorld);
         inst.blas = src.mesh;
         inst.flipsWinding = src.objectToWorld.determinant() < 0.0f ? 1u : 0u;
+        inst.tracedInWorldSpace =
+            i < out.merged.sceneInstanceMerged.size() && out.merged.sceneInstanceMerged[i];
         inst.materialOffset = uint32_t(instanceMaterials.size());
         // The last material is the fallback for slots an instance leaves unmapped.
         const uint32_t fallback = uint32_t(materials.size() - 1);
@@ -91,13 +93,23 @@ void compileInstances(const Scene& scene, CompiledScene& out) {
             out.stats.instancedTriangles += out.blases[inst.blas].primitiveCount;
         }
     }
+    return bakeMergedGeometry(scene, out);
 }
 
 void buildTlas(CompiledScene& out) {
-    std::vector<Aabb> bounds(out.instances.size());
+    // The entries: instances traced through their own BLAS, then the merged BLAS.
+    std::vector<Aabb> bounds;
+    std::vector<uint32_t> entries;
     for (size_t i = 0; i < out.instances.size(); ++i) {
         const RenderInstance& inst = out.instances[i];
-        bounds[i] = instanceBounds(out.blasNodes[out.blases[inst.blas].nodeOffset], inst.objectToWorld);
+        if (inst.tracedInWorldSpace) continue;
+        bounds.push_back(instanceBounds(out.blasNodes[out.blases[inst.blas].nodeOffset], inst.objectToWorld));
+        entries.push_back(uint32_t(i));
+    }
+    if (out.merged.active()) {
+        bounds.push_back(
+            instanceBounds(out.blasNodes[out.blases[out.merged.blas].nodeOffset], Affine3{}));  // identity
+        entries.push_back(uint32_t(out.instances.size()));
     }
     // One instance a leaf, as the GPU APIs' instance BVHs have it: testing an instance costs an
     // object-space ray and a BLAS walk, far more than the box test a leaf of its own adds.
@@ -106,6 +118,7 @@ void buildTlas(CompiledScene& out) {
     Bvh tlas = buildBinnedSahBvh(bounds.data(), uint32_t(bounds.size()), options);
     out.tlasNodes = std::move(tlas.nodes);
     out.tlasInstanceIndices = std::move(tlas.primIndices);
+    for (uint32_t& index : out.tlasInstanceIndices) index = entries[index];
 }
 
 std::vector<Material> compileMaterials(const Scene& scene) {
@@ -185,6 +198,7 @@ CompiledScene compileRenderScene(const Scene& scene, const CompileOptions& optio
     auto start = Clock::now();
     out.materials = compileMaterials(scene);
     flattenGeometry(scene, out);
+    if (options.mergeSmallInstances && !options.bruteForce) planMergedGeometry(scene, out);
     compileTextures(scene, out);
     compileInstances(scene, out);
     out.stats.flattenSeconds = secondsSince(start);
@@ -198,7 +212,7 @@ CompiledScene compileRenderScene(const Scene& scene, const CompileOptions& optio
     out.bruteForce = options.bruteForce;
 
     start = Clock::now();
-    buildBlases(scene, out, progress);
+    buildBlases(out, progress);
     out.stats.blasSeconds = secondsSince(start);
 
     start = Clock::now();
@@ -239,6 +253,8 @@ RenderScene CompiledScene::view() const {
     s.instances = spanOf(instances);
     s.tlasNodes = spanOf(tlasNodes);
     s.tlasInstanceIndices = spanOf(tlasInstanceIndices);
+    s.mergedBlas = merged.active() ? merged.blas : kNoMergedBlas;
+    s.mergedTriangles = spanOf(mergedTriangles);
     s.instanceMaterials = spanOf(instanceMaterials);
     s.materials = spanOf(materials);
     s.textures = spanOf(textures);

@@ -8,6 +8,7 @@
 
 #include "render/lights/emitter_table.h"
 #include "render/lights/environment_distribution.h"
+#include "render/scene/merged_geometry.h"
 #include "render/scene/render_scene.h"
 #include "render/scene/scene.h"
 #include "render/util/progress.h"
@@ -16,6 +17,7 @@ namespace pt {
 
 struct CompileOptions {
     bool bruteForce = false;               // no BVH: validation only
+    bool mergeSmallInstances = true;       // merged_geometry.h (never with bruteForce)
     uint64_t bruteForceBudget = 100000;    // triangles x instances above which bruteForce is refused
 };
 
@@ -44,6 +46,8 @@ struct CompiledScene {
     std::vector<RenderInstance> instances;
     std::vector<BvhNode> tlasNodes;
     std::vector<uint32_t> tlasInstanceIndices;
+    MergedGeometry merged;                        // which instances the merged BLAS holds
+    std::vector<MergedTriangle> mergedTriangles;  // its hit map, per merged triangle
     std::vector<uint32_t> instanceMaterials;
     std::vector<Material> materials;
     std::vector<TextureView> textures;
@@ -86,14 +90,17 @@ void compileLights(const Scene& scene, CompiledScene& out, LightsUpdate update =
 PunctualLight compilePunctualLight(const Light& light);
 // The visible instances with their material slots, and the instance statistics, for a
 // CompiledScene whose geometry and materials are compiled (after a transform or visibility
-// edit). O(instances x slots). Throws std::invalid_argument for an instance naming a missing
-// mesh or material, and then leaves `out` as it was.
-void compileInstances(const Scene& scene, CompiledScene& out);
+// edit); the merged instances' world-space copies are rewritten (bakeMergedGeometry). Returns
+// whether those changed (the merged BLAS then needs a refit). O(instances x slots + merged
+// vertices). Throws std::invalid_argument for an instance naming a missing mesh or material,
+// and then leaves `out` as it was.
+bool compileInstances(const Scene& scene, CompiledScene& out);
 // Whether compileInstances gives scene instance `i` a RenderInstance (visible, not empty):
 // the traced instances are these, in scene order, so a Hit's instance maps back through it.
 bool isTracedInstance(const Scene& scene, size_t i);
 // The TLAS (binned SAH over instance world boxes, from each BLAS's root box) for compiled
-// instances and BLASes. O(instances log instances).
+// instances and BLASes: merged instances have no entry of their own, the merged BLAS one
+// (index instances.size()). O(instances log instances).
 void buildTlas(CompiledScene& out);
 // CompiledScene::features (scene_features.h) from the compiled scene; after every edit.
 void updateFeatures(const Scene& scene, CompiledScene& out);

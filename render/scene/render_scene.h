@@ -38,9 +38,22 @@ struct RenderInstance {
     uint32_t blas;
     uint32_t materialOffset;   // into RenderScene::instanceMaterials: one entry per mesh slot
     uint32_t flipsWinding;     // objectToWorld mirrors (negative determinant)
-    uint32_t pad = 0;
+    // Its triangles are traced in world space, in the merged BLAS (merged_geometry.h), so its
+    // hits carry world-space rounding (instance_space.h widens their spawn offsets).
+    uint32_t tracedInWorldSpace = 0;
 };
 static_assert(sizeof(RenderInstance) == 112, "RenderInstance: 112 bytes");
+
+// A triangle of the merged BLAS (merged_geometry.h), as a hit reports it: the instance and
+// the mesh-local triangle it is a world-space copy of.
+struct MergedTriangle {
+    uint32_t instance;   // RenderScene::instances index
+    uint32_t primitive;  // triangle of that instance's mesh
+};
+static_assert(sizeof(MergedTriangle) == 8, "MergedTriangle: 8 bytes");
+
+// RenderScene::mergedBlas when nothing is merged.
+constexpr uint32_t kNoMergedBlas = 0xffffffffu;
 
 struct TextureView {
     uint32_t width, height;
@@ -144,7 +157,12 @@ struct RenderScene {
     Span<const uint32_t> blasPrimIndices;
     Span<const RenderInstance> instances;
     Span<const BvhNode> tlasNodes;
+    // TLAS leaf entries are instance indices, and instances.count for the merged BLAS: small
+    // instances' triangles copied into world space (merged_geometry.h), traced with no
+    // instance transform; each of its hits maps back through mergedTriangles.
     Span<const uint32_t> tlasInstanceIndices;
+    uint32_t mergedBlas = kNoMergedBlas;
+    Span<const MergedTriangle> mergedTriangles;
 
     // Shading.
     Span<const uint32_t> instanceMaterials;

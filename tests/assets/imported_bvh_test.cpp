@@ -2,6 +2,9 @@
 // for random rays and for rays aimed exactly at vertices and edge midpoints.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "assets/scene_loader.h"
@@ -48,11 +51,21 @@ RayBatch makeRays(const RenderScene& scene, Vec3 lo, Vec3 hi, size_t count, uint
     return batch;
 }
 
-void expectBvhMatchesBruteForce(const std::string& asset, size_t rayCount) {
+// Whether `hit` lies within a rounding error of its triangle's edges (barycentrics).
+bool nearAnEdge(const Hit& hit) { return std::min(std::min(hit.u, hit.v), 1.0f - hit.u - hit.v) < 1e-3f; }
+
+// Merged small instances (render/scene/merged_geometry.h) are intersected in world space, so
+// a ray aimed exactly at an edge or a vertex (two in three of makeRays' rays) may land on the
+// other side of it than in object space: with `merge`, a difference is allowed where one of
+// the two hits lies on an edge, and t within 1e-6 of the scene's largest coordinate, or 1e-4 of t on the same
+// triangle.
+void expectBvhMatchesBruteForce(const std::string& asset, size_t rayCount, bool merge) {
     PT_REQUIRE_SHARED_ASSET(asset);
     const LoadResult loaded = loadScene(test::sharedAsset(asset));
     ASSERT_TRUE(loaded.ok()) << loaded.error;
-    const CompiledScene bvh = compileRenderScene(*loaded.scene);
+    CompileOptions bvhOptions;
+    bvhOptions.mergeSmallInstances = merge;
+    const CompiledScene bvh = compileRenderScene(*loaded.scene, bvhOptions);
     CompileOptions bruteOptions;
     bruteOptions.bruteForce = true;
     bruteOptions.bruteForceBudget = ~0ull;
@@ -61,15 +74,25 @@ void expectBvhMatchesBruteForce(const std::string& asset, size_t rayCount) {
     loaded.scene->worldBounds(lo, hi);
     const RenderScene bvhView = bvh.view(), bruteView = brute.view();
     const RayBatch batch = makeRays(bvhView, lo, hi, rayCount, 1234);
-    size_t hits = 0, mismatches = 0;
+    size_t hits = 0, mismatches = 0, edgeDifferences = 0;
+    const float magnitude = std::max(maxComponent(vabs(lo)), maxComponent(vabs(hi)));
     for (const Ray& ray : batch.rays) {
         Hit a{}, b{};
         const bool hitA = intersectClosest(bvhView, ray, a);
         const bool hitB = intersectClosest(bruteView, ray, b);
-        EXPECT_EQ(intersectAny(bvhView, ray), hitB);
-        if (hitA != hitB || (hitA && a.t != b.t)) {
+        if (!merge) {
+            EXPECT_EQ(intersectAny(bvhView, ray), hitB);
+        }
+        // World-space rounding is relative to the scene's coordinates, not to t.
+        const float tolerance = merge ? 1e-6f * magnitude : 0.0f;
+        const bool differ = hitA != hitB || (hitA && std::abs(a.t - b.t) > tolerance);
+        const bool sameTriangle = hitA && hitB && a.instance == b.instance && a.primitive == b.primitive &&
+                                  std::abs(a.t - b.t) <= 1e-4f * b.t;  // rays grazing it round t the most
+        if (differ && merge && (sameTriangle || (hitA && nearAnEdge(a)) || (hitB && nearAnEdge(b)))) {
+            ++edgeDifferences;
+        } else if (differ) {
             // Equal t on two primitives (shared edges) may pick either; any other difference is a bug.
-            if (++mismatches <= 5) {
+            if (++mismatches <= 5 && !merge) {
                 ADD_FAILURE() << asset << ": BVH " << hitA << " t=" << a.t << " (instance " << a.instance
                               << ", primitive " << a.primitive << ") vs brute force " << hitB << " t=" << b.t
                               << " (instance " << b.instance << ", primitive " << b.primitive << ")";
@@ -77,17 +100,32 @@ void expectBvhMatchesBruteForce(const std::string& asset, size_t rayCount) {
         }
         hits += hitB;
     }
-    EXPECT_EQ(mismatches, 0u) << asset;
+    // Merged: besides edges, a ray grazing a surface (t far more sensitive than the point) may
+    // round either way; at most 1 in 2000 such rays, where a wrong hit map would fail most.
+    EXPECT_LE(mismatches, merge ? batch.rays.size() / 2000 : 0u) << asset << (merge ? " (merged)" : "");
+    if (merge)
+        std::printf("%s (merged): %zu of %zu rays land across an edge\n", asset.c_str(), edgeDifferences,
+                    batch.rays.size());
     EXPECT_GT(hits, batch.rays.size() / 4) << asset << ": too few rays hit to test anything";
 }
 
-TEST(ImportedBvh, CornellBoxGlbMatchesBruteForce) { expectBvhMatchesBruteForce("CornellBox/CornellBox.glb", 200000); }
-TEST(ImportedBvh, CornellBoxObjMatchesBruteForce) { expectBvhMatchesBruteForce("CornellBoxObj/cornell_box.obj", 30000); }
-TEST(ImportedBvh, DepthOfFieldExampleMatchesBruteForce) {
-    expectBvhMatchesBruteForce("DepthOfFieldExample/DepthOfFieldExample.glb", 20000);
+// Each asset instanced (every instance its own BLAS) and with small instances merged.
+void expectBothBvhsMatchBruteForce(const std::string& asset, size_t rayCount) {
+    expectBvhMatchesBruteForce(asset, rayCount, false);
+    expectBvhMatchesBruteForce(asset, rayCount, true);
 }
-TEST(ImportedBvh, FoxMatchesBruteForce) { expectBvhMatchesBruteForce("Fox/Fox.glb", 50000); }
-TEST(ImportedBvh, BalloonMatchesBruteForce) { expectBvhMatchesBruteForce("Balloon/scene.gltf", 10000); }
+
+TEST(ImportedBvh, CornellBoxGlbMatchesBruteForce) {
+    expectBothBvhsMatchBruteForce("CornellBox/CornellBox.glb", 200000);
+}
+TEST(ImportedBvh, CornellBoxObjMatchesBruteForce) {
+    expectBothBvhsMatchBruteForce("CornellBoxObj/cornell_box.obj", 30000);
+}
+TEST(ImportedBvh, DepthOfFieldExampleMatchesBruteForce) {
+    expectBothBvhsMatchBruteForce("DepthOfFieldExample/DepthOfFieldExample.glb", 20000);
+}
+TEST(ImportedBvh, FoxMatchesBruteForce) { expectBothBvhsMatchBruteForce("Fox/Fox.glb", 50000); }
+TEST(ImportedBvh, BalloonMatchesBruteForce) { expectBothBvhsMatchBruteForce("Balloon/scene.gltf", 10000); }
 
 }  // namespace
 }  // namespace pt

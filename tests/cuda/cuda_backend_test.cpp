@@ -421,15 +421,21 @@ TEST(CudaBackend, DegradedRefitRebuildsOnTheGpu) {
     EXPECT_EQ(mismatches, 0u);
 }
 
-TEST(CudaBackend, SyncDoesTheLeastWorkAnEditNeeds) {
-    PT_REQUIRE_CUDA_DEVICE();
+// Instanced (each grid its own BLAS) a move rebuilds the TLAS; merged (render/scene/
+// merged_geometry.h) the moved grid's world-space copies are rewritten and the merged BLAS
+// refitted. Either way the rays see what a fresh build shows them.
+void expectLeastWorkForEachEdit(bool merge) {
+    SCOPED_TRACE(merge ? "merged" : "instanced");
     Scene scene = bumpyGridScene(20, 3);
+    IntegratorToggles toggles;
+    toggles.mergeInstances = merge;
     cuda::CudaBackend backend;
+    backend.setToggles(toggles);
     EXPECT_EQ(backend.sync(scene, SceneChanges::All, {}).action, "full build");
     scene.materials[0].params.roughness = 0.9f;
     EXPECT_EQ(backend.sync(scene, SceneChanges::Materials, {}).action, "materials");
     scene.instances[1].objectToWorld = trs({0.5f, 0.0f, 0.0f}).toAffine();
-    EXPECT_EQ(backend.sync(scene, SceneChanges::Transforms, {}).action, "TLAS");
+    EXPECT_EQ(backend.sync(scene, SceneChanges::Transforms, {}).action, merge ? "refit" : "TLAS");
     scene.camera.position.x += 0.1f;
     EXPECT_EQ(backend.sync(scene, SceneChanges::Camera, {}).action, "reset");
     backend.render(2);
@@ -437,12 +443,34 @@ TEST(CudaBackend, SyncDoesTheLeastWorkAnEditNeeds) {
     EXPECT_EQ(backend.stats().samplesPerPixel, 2u) << "a display change keeps the accumulation";
     // Moving an instance must move what the rays see, exactly as a fresh build does.
     cuda::CudaBackend fresh;
+    fresh.setToggles(toggles);
     fresh.sync(scene, SceneChanges::All, {});
     const std::vector<Ray> rays = randomRays(50000, 5);
     std::vector<Hit> a, b;
     backend.traceRays(rays, false, 1, &a);
     fresh.traceRays(rays, false, 1, &b);
-    expectSameHits(b, a, "TLAS rebuild vs fresh build");
+    expectSameHits(b, a, "edit vs fresh build");
+    // Hiding a merged instance collapses its copies; deleting one makes a new plan.
+    const auto expectLikeAFreshBuild = [&](const char* what) {
+        cuda::CudaBackend again;
+        again.setToggles(toggles);
+        again.sync(scene, SceneChanges::All, {});
+        backend.traceRays(rays, false, 1, &a);
+        again.traceRays(rays, false, 1, &b);
+        expectSameHits(b, a, what);
+    };
+    scene.instances[0].visible = false;
+    EXPECT_EQ(backend.sync(scene, SceneChanges::Transforms, {}).action, merge ? "refit" : "TLAS");
+    expectLikeAFreshBuild("hide vs fresh build");
+    scene.instances.pop_back();
+    EXPECT_EQ(backend.sync(scene, SceneChanges::Transforms, {}).action, merge ? "full build" : "TLAS");
+    expectLikeAFreshBuild("delete vs fresh build");
+}
+
+TEST(CudaBackend, SyncDoesTheLeastWorkAnEditNeeds) {
+    PT_REQUIRE_CUDA_DEVICE();
+    expectLeastWorkForEachEdit(false);
+    expectLeastWorkForEachEdit(true);
 }
 
 TEST(CudaBackend, AMillionSamplesOfAConstantStayThatConstant) {
@@ -463,9 +491,11 @@ TEST(CudaBackend, BruteForceFindsTheSameHits) {
     PT_REQUIRE_CUDA_DEVICE();
     const Scene scene = bumpyGridScene(60, 4);
     cuda::CudaBackend bvh, brute;
-    IntegratorToggles off;
+    IntegratorToggles off, instanced;
     off.bruteForce = true;
     brute.setToggles(off);
+    instanced.mergeInstances = false;  // both in object space: bit-identical hits
+    bvh.setToggles(instanced);
     bvh.sync(scene, SceneChanges::All, {});
     brute.sync(scene, SceneChanges::All, {});
     const std::vector<Ray> rays = randomRays(20000, 6);

@@ -33,6 +33,7 @@ SyncReport CpuBackend::sync(const Scene& scene, SceneChangeMask changes, const P
         // a full compile is the simple, correct answer on the CPU.
         CompileOptions options;
         options.bruteForce = toggles_.bruteForce;
+        options.mergeSmallInstances = toggles_.mergeInstances;
         auto compiled = std::make_unique<CompiledScene>(compileRenderScene(scene, options, progress));
         compiled_ = std::move(compiled);
         report.action = "compile scene";
@@ -59,7 +60,8 @@ SyncReport CpuBackend::sync(const Scene& scene, SceneChangeMask changes, const P
 }
 
 void CpuBackend::setToggles(const IntegratorToggles& toggles) {
-    const bool bvhChanged = toggles.bruteForce != toggles_.bruteForce;
+    const bool bvhChanged =
+        toggles.bruteForce != toggles_.bruteForce || toggles.mergeInstances != toggles_.mergeInstances;
     toggles_ = toggles;
     if (bvhChanged) compiled_.reset();  // the next sync recompiles (and checks the budget)
     if (compiled_) {

@@ -102,13 +102,19 @@ SyncReport CudaBackend::sync(const Scene& scene, SceneChangeMask changes, const 
             action = done;
         }
     }
+    // Instances added, removed or re-meshed: the merged BLAS needs a new plan (merged_geometry.h).
+    if (!needsFullBuild && (changes & SceneChanges::Transforms) && !mergedPlanHolds(scene, *compiled_)) {
+        needsFullBuild = true;
+    }
     if (!needsFullBuild && (changes & SceneChanges::Transforms)) {
         const size_t instancesBefore = compiled_->instances.size();
         // O(instances x slots): transforms, materials of each slot, statistics.
+        bool mergedMoved = false;
         timedStep(stream_, report, "instances", [&] {
-            compileInstances(scene, *compiled_);
+            mergedMoved = compileInstances(scene, *compiled_);
             device_.uploadInstances(*compiled_, stream_);
         });
+        if (mergedMoved) action = refitMergedBlas(report);
         tlasDirty = true;
         hostTlasStale_ = true;
         // Emitters name instances by index: a changed instance list needs a new table, and so
@@ -177,6 +183,7 @@ SyncReport CudaBackend::sync(const Scene& scene, SceneChangeMask changes, const 
 void CudaBackend::fullBuild(const Scene& scene, const ProgressFn& progress, SyncReport& report) {
     CompileOptions options;
     options.bruteForce = toggles_.bruteForce;
+    options.mergeSmallInstances = toggles_.mergeInstances;
     auto compiled = std::make_unique<CompiledScene>(compileRenderScene(scene, options, progress));
     report.steps.push_back({"compile scene (host)", compiled->stats.flattenSeconds + compiled->stats.lightSeconds});
     report.steps.push_back({"build BLAS (host, binned SAH)", compiled->stats.blasSeconds});
@@ -215,13 +222,14 @@ bool CudaBackend::uploadChangedVertices(const Mesh& mesh, uint32_t meshIndex) {
 }
 
 const char* CudaBackend::refitChangedMeshes(const Scene& scene, SyncReport& report, bool& needsFullBuild) {
-    if (scene.meshes.size() != device_.blasCount()) {
+    const uint32_t meshBlases = device_.blasCount() - (compiled_->merged.active() ? 1u : 0u);
+    if (scene.meshes.size() != meshBlases) {
         needsFullBuild = true;
         return nullptr;
     }
     std::vector<uint32_t> changed;
     timedStep(stream_, report, "upload vertices", [&] {
-        for (uint32_t i = 0; i < device_.blasCount(); ++i) {
+        for (uint32_t i = 0; i < meshBlases; ++i) {
             const Mesh& mesh = scene.meshes[i];
             const BlasRef& blas = device_.blas(i);
             if (mesh.primitiveCount() != blas.primitiveCount) {
@@ -247,37 +255,58 @@ const char* CudaBackend::refitChangedMeshes(const Scene& scene, SyncReport& repo
     if (needsFullBuild || changed.empty()) return nullptr;
 
     bool rebuilt = false;
+    bool mergedCopiesChanged = false;  // a merged instance's mesh moved: its copies follow
     for (uint32_t i : changed) {
-        if (builtSah_[i] == kSahUnknown) builtSah_[i] = blasSahCost(i);  // still as built
-        const uint32_t primitives = device_.blas(i).primitiveCount;
-        primBoxes_.resize(primitives);
-        refitVisits_.resize(device_.blasNodeCapacity(i));
-        timedStep(stream_, report, "refit BLAS", [&] {
-            device_.prepareRefit(i, stream_);  // parent links, on a BLAS's first refit
-            computePrimitiveBoxes(device_.view(*compiled_), device_.blas(i), primBoxes_.data(), stream_);
-            refitBvh(device_.blasNodes(i), device_.blas(i).nodeCount, device_.blasParents(i),
-                     device_.blasPrimIndices(i), primBoxes_.data(), refitVisits_.data(), stream_);
-        });
-        const float cost = blasSahCost(i);
-        if (cost > toggles_.rebuildSahRatio * builtSah_[i]) {
-            timedStep(stream_, report, "rebuild BLAS (GPU LBVH)", [&] {
-                device_.reserveLbvhNodes(i, stream_);  // room for 2n - 1 nodes, on a first rebuild
-                const uint32_t nodes = lbvhNodeCount(primitives);
-                lbvh_.build(primBoxes_.data(), primitives, device_.blasNodes(i), device_.blasPrimIndices(i),
-                            stream_);
-                device_.setBlasNodeCount(i, nodes, stream_);
-                computeParents(device_.blasNodes(i), nodes, device_.blasParents(i), stream_);
-            });
-            builtSah_[i] = blasSahCost(i);
-            rebuilt = true;
-        }
-        // The host keeps each BLAS's root box current (32 bytes): the host TLAS, and so the
-        // scene bounds the light table uses, are built from it. Refit and rebuild give the
-        // same root, the union of the primitives' boxes.
-        PT_CUDA_CHECK(cudaMemcpyAsync(compiled_->blasNodes.data() + compiled_->blases[i].nodeOffset,
-                                      device_.blasNodes(i), sizeof(BvhNode), cudaMemcpyDeviceToHost,
-                                      stream_));
+        rebuilt |= refitBlas(i, report);
+        for (const MergedPiece& piece : compiled_->merged.pieces) mergedCopiesChanged |= piece.mesh == i;
     }
+    PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
+    if (mergedCopiesChanged && bakeMergedGeometry(scene, *compiled_)) {
+        rebuilt |= std::string(refitMergedBlas(report)) == "rebuild";
+    }
+    return rebuilt ? "rebuild" : "refit";
+}
+
+bool CudaBackend::refitBlas(uint32_t i, SyncReport& report) {
+    if (builtSah_[i] == kSahUnknown) builtSah_[i] = blasSahCost(i);  // still as built
+    const uint32_t primitives = device_.blas(i).primitiveCount;
+    primBoxes_.resize(primitives);
+    refitVisits_.resize(device_.blasNodeCapacity(i));
+    timedStep(stream_, report, "refit BLAS", [&] {
+        device_.prepareRefit(i, stream_);  // parent links, on a BLAS's first refit
+        computePrimitiveBoxes(device_.view(*compiled_), device_.blas(i), primBoxes_.data(), stream_);
+        refitBvh(device_.blasNodes(i), device_.blas(i).nodeCount, device_.blasParents(i),
+                 device_.blasPrimIndices(i), primBoxes_.data(), refitVisits_.data(), stream_);
+    });
+    bool rebuilt = false;
+    const float cost = blasSahCost(i);
+    if (cost > toggles_.rebuildSahRatio * builtSah_[i]) {
+        timedStep(stream_, report, "rebuild BLAS (GPU LBVH)", [&] {
+            device_.reserveLbvhNodes(i, stream_);  // room for 2n - 1 nodes, on a first rebuild
+            const uint32_t nodes = lbvhNodeCount(primitives);
+            lbvh_.build(primBoxes_.data(), primitives, device_.blasNodes(i), device_.blasPrimIndices(i),
+                        stream_);
+            device_.setBlasNodeCount(i, nodes, stream_);
+            computeParents(device_.blasNodes(i), nodes, device_.blasParents(i), stream_);
+        });
+        builtSah_[i] = blasSahCost(i);
+        rebuilt = true;
+    }
+    // The host keeps each BLAS's root box current (32 bytes): the host TLAS, and so the
+    // scene bounds the light table uses, are built from it. Refit and rebuild give the
+    // same root, the union of the primitives' boxes.
+    PT_CUDA_CHECK(cudaMemcpyAsync(compiled_->blasNodes.data() + compiled_->blases[i].nodeOffset,
+                                  device_.blasNodes(i), sizeof(BvhNode), cudaMemcpyDeviceToHost, stream_));
+    return rebuilt;
+}
+
+const char* CudaBackend::refitMergedBlas(SyncReport& report) {
+    const MergedGeometry& merged = compiled_->merged;
+    const uint32_t first = merged.pieces.front().firstVertex;
+    timedStep(stream_, report, "upload merged vertices", [&] {
+        device_.uploadPositions(*compiled_, first, uint32_t(compiled_->positions.size()) - first, stream_);
+    });
+    const bool rebuilt = refitBlas(merged.blas, report);
     PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
     return rebuilt ? "rebuild" : "refit";
 }
@@ -292,7 +321,8 @@ constexpr size_t kHostTlasMaxInstances = 256;
 
 void CudaBackend::buildTlasOnDevice(SyncReport& report) {
     const size_t instances = compiled_->instances.size();
-    if (instances > 1 && instances <= kHostTlasMaxInstances) {
+    // The GPU build boxes every instance; with a merged BLAS the TLAS holds other entries.
+    if (compiled_->merged.active() || (instances > 1 && instances <= kHostTlasMaxInstances)) {
         timedStep(stream_, report, "build TLAS (host SAH)", [&] {
             buildTlas(*compiled_);
             hostTlasStale_ = false;
@@ -314,7 +344,8 @@ void CudaBackend::updateView() {
 }
 
 void CudaBackend::setToggles(const IntegratorToggles& toggles) {
-    const bool bvhChanged = toggles.bruteForce != toggles_.bruteForce;
+    const bool bvhChanged =
+        toggles.bruteForce != toggles_.bruteForce || toggles.mergeInstances != toggles_.mergeInstances;
     toggles_ = toggles;
     if (bvhChanged) {  // the next sync recompiles (and checks the budget)
         pinnedVertices_.clear();

@@ -63,6 +63,12 @@ private:
     // Copies the vertices of triangle mesh `meshIndex` that differ from the host copy into it
     // and uploads them (the changed range of each array); returns whether its positions changed.
     bool uploadChangedVertices(const Mesh& mesh, uint32_t meshIndex);
+    // Refits BLAS i to its uploaded primitives, rebuilding it on the GPU when its SAH cost has
+    // drifted past toggles_.rebuildSahRatio; returns whether it was rebuilt.
+    bool refitBlas(uint32_t i, SyncReport& report);
+    // Uploads the merged BLAS's vertices (merged_geometry.h, rewritten by compileInstances) and
+    // refits it; returns "refit" or "rebuild".
+    const char* refitMergedBlas(SyncReport& report);
     void buildTlasOnDevice(SyncReport& report);
     void updateView();
     ScheduleOptions scheduleOptions() const;

@@ -94,6 +94,7 @@ void DeviceScene::uploadLights(const CompiledScene& host, cudaStream_t stream, b
 void DeviceScene::uploadInstances(const CompiledScene& host, cudaStream_t stream) {
     instances_.upload(host.instances, stream);
     instanceMaterials_.upload(host.instanceMaterials, stream);
+    uploadFitted(mergedTriangles_, host.mergedTriangles, stream);  // indices follow the instance list
 }
 
 void DeviceScene::uploadPositions(const CompiledScene& host, uint32_t first, uint32_t count,
@@ -200,6 +201,7 @@ RenderScene DeviceScene::view(const CompiledScene& host) const {
     s.instances = instances_.span();
     s.tlasNodes = tlasNodes_.span();
     s.tlasInstanceIndices = tlasInstanceIndices_.span();
+    s.mergedTriangles = mergedTriangles_.span();
     s.instanceMaterials = instanceMaterials_.span();
     s.materials = materials_.span();
     s.textures = textures_.span();
@@ -232,6 +234,7 @@ std::vector<BufferBytes> DeviceScene::buffers() const {
     add(out, "instance materials", instanceMaterials_);
     add(out, "TLAS nodes", tlasNodes_);
     add(out, "TLAS instance indices", tlasInstanceIndices_);
+    add(out, "merged triangles (hit map)", mergedTriangles_);
     add(out, "materials", materials_);
     add(out, "texture views", textures_);
     add(out, "texels (8-bit)", texels8_);

@@ -90,6 +90,7 @@ private:
     DeviceBuffer<uint32_t> instanceMaterials_;
     DeviceBuffer<BvhNode> tlasNodes_;
     DeviceBuffer<uint32_t> tlasInstanceIndices_;
+    DeviceBuffer<MergedTriangle> mergedTriangles_;
     DeviceBuffer<Material> materials_;
     DeviceBuffer<TextureView> textures_;
     DeviceBuffer<uint8_t> texels8_;

@@ -129,7 +129,8 @@ struct InstanceSpec {
     uint32_t mesh;
     Affine3 objectToWorld;
 };
-inline CompiledScene compileTestScene(std::vector<Mesh> meshes, const std::vector<InstanceSpec>& instances) {
+inline CompiledScene compileTestScene(std::vector<Mesh> meshes, const std::vector<InstanceSpec>& instances,
+                                      const CompileOptions& options = {}) {
     Scene scene;
     scene.meshes = std::move(meshes);
     for (const InstanceSpec& spec : instances) {
@@ -138,7 +139,7 @@ inline CompiledScene compileTestScene(std::vector<Mesh> meshes, const std::vecto
         inst.objectToWorld = spec.objectToWorld;
         scene.instances.push_back(inst);
     }
-    return compileRenderScene(scene);
+    return compileRenderScene(scene, options);
 }
 inline CompiledScene compileSingleMesh(Mesh mesh) {
     std::vector<Mesh> meshes;

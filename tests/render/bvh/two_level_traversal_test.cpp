@@ -21,7 +21,7 @@ Vec4 randomRotation(Rng& rng) {
 
 // Meshes: a soup, an icosphere, a sphere BLAS of many spheres, one unit sphere.
 // Instances: each mesh several times, randomly rotated, scaled (some negative) and placed.
-CompiledScene makeScene(Rng& rng, std::vector<test::InstanceSpec>& specs) {
+CompiledScene makeScene(Rng& rng, std::vector<test::InstanceSpec>& specs, bool merge = false) {
     std::vector<Mesh> meshes;
     meshes.push_back(test::makeSoup(SoupKind::Clustered, 1000, rng));
     meshes.push_back(test::makeIcosphere(2));
@@ -40,7 +40,9 @@ CompiledScene makeScene(Rng& rng, std::vector<test::InstanceSpec>& specs) {
                                 rotationTransform(randomRotation(rng)) * scaleTransform(scale);
         specs.push_back({i % 4, toWorld});
     }
-    return test::compileTestScene(std::move(meshes), specs);
+    CompileOptions options;
+    options.mergeSmallInstances = merge;  // the two-level walk on its own; merging is tested below
+    return test::compileTestScene(std::move(meshes), specs, options);
 }
 
 TEST(TwoLevelTraversal, MatchesBruteForceOverInstances) {
@@ -98,6 +100,39 @@ TEST(TwoLevelTraversal, SharedEdgesAcrossMirroredInstancesStayWatertight) {
         if (!intersectClosest(scene, ray, hit)) ++slipped;
     }
     EXPECT_EQ(slipped, 0u);
+}
+
+// Merged small instances (render/scene/merged_geometry.h): the same scene with its triangle
+// instances copied into one world-space BLAS hits what the two-level walk hits. Hits come back
+// as the instance and mesh-local triangle they copy; t differs by the rounding of a world-space
+// test (relative 1e-5 allowed); grazing rays along shared edges may go either way (a few).
+TEST(TwoLevelTraversal, MergedInstancesHitWhatTheirInstancesHit) {
+    Rng rng(41), sameRng(41);
+    std::vector<test::InstanceSpec> specs, sameSpecs;
+    const CompiledScene instanced = makeScene(rng, specs);
+    const CompiledScene merged = makeScene(sameRng, sameSpecs, true);
+    ASSERT_TRUE(merged.merged.active());
+    size_t mergedInstances = 0;
+    for (const RenderInstance& inst : merged.instances) mergedInstances += inst.tracedInWorldSpace;
+    EXPECT_GE(mergedInstances, 6u) << "the soup and the icosphere instances";
+    EXPECT_LT(merged.tlasInstanceIndices.size(), instanced.tlasInstanceIndices.size());
+    const RenderScene a = instanced.view(), b = merged.view();
+    int disagreements = 0, hits = 0, mergedHits = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Ray ray = test::randomRay(rng, Vec3(-6.0f), Vec3(6.0f));
+        Hit ha, hb;
+        const bool hitA = intersectClosest(a, ray, ha), hitB = intersectClosest(b, ray, hb);
+        EXPECT_EQ(intersectAny(b, ray), hitB);
+        hits += hitA;
+        if (hitB) mergedHits += b.instances[hb.instance].tracedInWorldSpace;
+        const bool same =
+            hitA == hitB && (!hitA || (std::abs(ha.t - hb.t) <= 1e-5f * ha.t && ha.instance == hb.instance &&
+                                       ha.primitive == hb.primitive));
+        disagreements += !same;
+    }
+    EXPECT_GT(hits, 4000);
+    EXPECT_GT(mergedHits, 1000) << "rays reach the merged BLAS";
+    EXPECT_LE(disagreements, 10) << "of 20000 rays";
 }
 
 }  // namespace

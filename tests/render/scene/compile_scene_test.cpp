@@ -58,12 +58,52 @@ TEST(CompileScene, BvhBuildReportsMonotoneProgressFromZeroToOne) {
 }
 
 TEST(CompileScene, OneMeshInstancedManyTimesIsOneBlas) {
-    const CompiledScene compiled = compileRenderScene(sceneWithGrid(10, 25));
+    CompileOptions instanced;
+    instanced.mergeSmallInstances = false;
+    const CompiledScene compiled = compileRenderScene(sceneWithGrid(10, 25), instanced);
     EXPECT_EQ(compiled.stats.blasCount, 1u);
     EXPECT_EQ(compiled.stats.instanceCount, 25u);
     EXPECT_EQ(compiled.stats.meshTriangles, 200u);
     EXPECT_EQ(compiled.stats.instancedTriangles, 25u * 200u);
     EXPECT_EQ(compiled.triangles.size(), 200u);
+}
+
+// Merged small instances (render/scene/merged_geometry.h): 25 instances of a 200-triangle
+// grid become 5000 world-space copies in one BLAS, which the TLAS holds as its one entry; each
+// copy maps back to its instance and triangle. A moved instance's copies follow it, a hidden
+// one's collapse to a point.
+TEST(CompileScene, SmallInstancesMergeIntoOneWorldSpaceBlas) {
+    Scene scene = sceneWithGrid(10, 25);
+    CompiledScene compiled = compileRenderScene(scene);
+    ASSERT_TRUE(compiled.merged.active());
+    EXPECT_EQ(compiled.blases.size(), 2u);
+    EXPECT_EQ(compiled.blases[compiled.merged.blas].primitiveCount, 5000u);
+    EXPECT_EQ(compiled.instances.size(), 25u) << "instances keep their place for shading";
+    EXPECT_EQ(compiled.tlasInstanceIndices, std::vector<uint32_t>{25u});
+    ASSERT_EQ(compiled.mergedTriangles.size(), 5000u);
+    EXPECT_EQ(compiled.mergedTriangles[200 * 7 + 13].instance, 7u);
+    EXPECT_EQ(compiled.mergedTriangles[200 * 7 + 13].primitive, 13u);
+    const Mesh& grid = scene.meshes[0];
+    const auto copyOf = [&](uint32_t piece, uint32_t vertex) {
+        return compiled.positions[compiled.merged.pieces[piece].firstVertex + vertex];
+    };
+    EXPECT_EQ(copyOf(7, 5).y, grid.positions[5].y + 7.0f);
+
+    scene.instances[7].objectToWorld = translationTransform({3.0f, 0.0f, 0.0f});
+    scene.instances[8].visible = false;
+    EXPECT_TRUE(compileInstances(scene, compiled)) << "the copies changed";
+    EXPECT_EQ(copyOf(7, 5).x, grid.positions[5].x + 3.0f);
+    EXPECT_EQ(copyOf(8, 0), copyOf(8, 5)) << "hidden: collapsed to one point";
+    EXPECT_EQ(compiled.instances.size(), 24u);
+    EXPECT_EQ(compiled.mergedTriangles[200 * 9].instance, 8u) << "indices follow the shorter instance list";
+    EXPECT_FALSE(compileInstances(scene, compiled)) << "nothing moved since";
+
+    CompileOptions far;
+    scene = sceneWithGrid(10, 25);
+    for (Instance& inst : scene.instances)
+        inst.objectToWorld = translationTransform({1e5f, 0.0f, 0.0f}) * inst.objectToWorld;
+    EXPECT_FALSE(compileRenderScene(scene, far).merged.active())
+        << "far from the origin for their size: instanced";
 }
 
 TEST(CompileScene, BruteForceIsRefusedAboveItsBudgetWithAClearMessage) {
