@@ -75,12 +75,21 @@ std::vector<float> readPfm(const std::string& path, uint32_t& width, uint32_t& h
     if (scale == 0.0 || !std::isfinite(scale)) throw InputError(path + ": PFM scale must be a non-zero number");
     in.get();  // the single whitespace character that ends the header
     const size_t channels = magic == "PF" ? 3 : 1;
-    std::vector<float> data(size_t(w) * size_t(h) * channels);
-    in.read(reinterpret_cast<char*>(data.data()), std::streamsize(data.size() * sizeof(float)));
-    if (in.gcount() != std::streamsize(data.size() * sizeof(float))) {
-        throw InputError(path + ": PFM pixel data is truncated (" + std::to_string(in.gcount()) + " of " +
-                         std::to_string(data.size() * sizeof(float)) + " bytes)");
-    }
+    const size_t bytes = size_t(w) * size_t(h) * channels * sizeof(float);
+    const auto truncated = [&](std::streamoff got) {
+        return InputError(path + ": PFM pixel data is truncated (" + std::to_string(got) + " of " +
+                          std::to_string(bytes) + " bytes)");
+    };
+    // The pixels must be in the file before memory is taken for them: a header of a few bytes
+    // may claim 65536 x 65536 (48 GiB; found by fuzzing, issue 17).
+    const std::streamoff pixelsStart = in.tellg();
+    in.seekg(0, std::ios::end);
+    const std::streamoff available = std::max<std::streamoff>(in.tellg() - pixelsStart, 0);
+    in.seekg(pixelsStart);
+    if (!in || uint64_t(available) < bytes) throw truncated(available);
+    std::vector<float> data(bytes / sizeof(float));
+    in.read(reinterpret_cast<char*>(data.data()), std::streamsize(bytes));
+    if (in.gcount() != std::streamsize(bytes)) throw truncated(in.gcount());
     const bool swap = (scale < 0.0) != hostIsLittleEndian();
     width = uint32_t(w);
     height = uint32_t(h);

@@ -236,6 +236,53 @@ TEST(ImageReadStb, CorruptImagesGiveInputErrorsNamingThem) {
     EXPECT_EQ(inputErrorOf([&] { readTextureFile(broken); }).rfind(broken + ": ", 0), 0u);
 }
 
+// Found by fuzzing (tests/fuzz, issue 17): Debian's stb_image 2.27 never returned from a run-length
+// encoded Radiance row that the file ends inside of (CVE-2021-42715).
+TEST(ImageReadStb, CutOffRunLengthHdrRowIsAnErrorNotAHang) {
+    const std::string header = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 8\n";
+    // An encoded row of width 8: per channel a run of 8 (128 + 8) of one value. R = G = B = 128
+    // with exponent 129 is 1.0.
+    std::vector<uint8_t> row = {2, 2, 0, 8};
+    for (uint8_t value : {128, 128, 128, 129}) row.insert(row.end(), {128 + 8, value});
+    std::vector<uint8_t> whole(header.begin(), header.end());
+    whole.insert(whole.end(), row.begin(), row.end());
+    whole.insert(whole.end(), row.begin(), row.end());
+    const Texture t = decodeTextureWithStb(whole, "whole.hdr");
+    EXPECT_EQ(t.texelsF, std::vector<float>(8 * 2 * 4, 1.0f));
+
+    // Row 1 cut off after a literal of 3 in its red channel; then a count of 0 inside a row.
+    std::vector<uint8_t> cut(whole.begin(), whole.end() - 8);
+    cut.insert(cut.end(), {3, 128, 128, 128});
+    EXPECT_EQ(inputErrorOf([&] { decodeTextureWithStb(cut, "cut.hdr"); }),
+              "cut.hdr: cannot decode: bad run-length data in row 1 (cut off, or a count of 0)");
+    std::vector<uint8_t> zero = whole;
+    zero[header.size() + 4] = 0;  // row 0's red run
+    EXPECT_EQ(inputErrorOf([&] { decodeTextureWithStb(zero, "zero.hdr"); }),
+              "zero.hdr: cannot decode: bad run-length data in row 0 (cut off, or a count of 0)");
+}
+
+// Debian's stb_image 2.27 decodes a 16-bit PGM into a buffer of half the size its 16-bit result
+// has (CVE-2021-42716); under a name stb is asked for (here .tga, which has no signature) it
+// was read past its end. Formats we do not ask stb for never reach it.
+TEST(ImageReadStb, FormatsNotAskedForAreRefusedBeforeStb) {
+    const std::string pgm16 = "P5\n3 1\n65535\n\x12\x34\x56\x78\x9a\xbc";
+    const std::string refused = ": cannot decode: not a PNG, JPEG, BMP, TGA or Radiance HDR image";
+    for (const std::string& bytes : {pgm16, std::string("P6\n1 1\n255\nabc"), std::string("8BPS"),
+                                     std::string("GIF89a"), std::string("\x53\x80\xf6\x34PICT")}) {
+        EXPECT_EQ(inputErrorOf([&] {
+                      decodeTextureWithStb({bytes.begin(), bytes.end()}, "image.tga");
+                  }),
+                  "image.tga" + refused)
+            << bytes.substr(0, 2);
+    }
+    // The same through the reader of a build without OpenImageIO (with it, OpenImageIO reads
+    // the PGM, whatever the file is called, and stb is not asked).
+    if (!PT_TEST_HAVE_OIIO) {
+        const std::string path = test::writeTempFile("pgm16.tga", pgm16);
+        EXPECT_EQ(inputErrorOf([&] { readTextureFile(path); }), path + refused);
+    }
+}
+
 TEST(ImageReadStb, HugeHeaderIsRefusedBeforeDecoding) {
     std::vector<uint8_t> bytes = fileBytes(test::testDataPath("images/rgb24.bmp"));
     const uint8_t size[8] = {0x00, 0x00, 0x01, 0x00, 0x00, 0x10, 0x00, 0x00};  // 65536 x 4096

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "assets/input_error.h"
+#include "support/input_error_of.h"
 
 namespace pt {
 namespace {
@@ -67,6 +68,16 @@ TEST(PfmFile, BrokenFilesNameThemselvesAndTheProblem) {
             EXPECT_NE(std::string(e.what()).find(problem), std::string::npos) << e.what();
         }
     }
+}
+
+// Found by fuzzing (tests/fuzz, issue 17): a header of a few bytes claiming 33273 x 33332 made
+// readPfm take 13 GB before it found the pixels missing.
+TEST(PfmFile, SizeInTheHeaderIsCheckedAgainstTheFileBeforeAllocating) {
+    const std::string path = (tempDir() / "claims_huge.pfm").string();
+    std::ofstream(path, std::ios::binary) << "PF\n65536 65536\n-1.0\n" << std::string(12, 'x');
+    uint32_t w, h;
+    EXPECT_EQ(test::inputErrorOf([&] { readPfm(path, w, h); }),
+              path + ": PFM pixel data is truncated (12 of 51539607552 bytes)");
 }
 
 }  // namespace

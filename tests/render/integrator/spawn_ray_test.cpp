@@ -206,7 +206,8 @@ TEST(SpawnRay, AClosedBoxLetsNoLightInAnywhere) {
         scene.render = {24, 24, 6, 0, 0};
         const uint32_t white = test::addMaterial(scene, "white", test::diffuse(Vec3(0.9f)));
         const Vec3 o(offset);
-        const auto at = [&](Vec3 p) { return o + p * scale; };
+        // An init-capture: C++17 lambdas cannot capture a structured binding (clang refuses).
+        const auto at = [&o, scale = scale](Vec3 p) { return o + p * scale; };
         const Vec3 s(scale);
         test::addShape(scene, ObjectKind::Quad, test::trs(at({0, -1, 0}), {0, 0, 0}, s), white);
         test::addShape(scene, ObjectKind::Quad, test::trs(at({0, 1, 0}), {180, 0, 0}, s), white);
