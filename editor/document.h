@@ -14,7 +14,8 @@ struct ViewerSettings {
     // compare the two, or where no config loads.
     bool builtinDisplay = false;
     int32_t aov = -1;                 // -1: the beauty; else a pt::Aov value
-    uint32_t samplesPerFrame = 1;     // passes per render step (more: fewer syncs, slower UI)
+    // Passes per render step (more: fewer syncs, slower UI); 0: automatic (step_passes.h).
+    uint32_t samplesPerFrame = 0;
     uint32_t targetSpp = 0;           // stop accumulating here; 0 = never stop
     // Export: AOV layers for the EXR. They are accumulated beside the displayed AOV from the
     // next reset on (changing them restarts accumulation); exportRender writes those that are.

@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "assets/message_text.h"
+#include "editor/step_passes.h"
 
 namespace pt::editor {
 
@@ -100,7 +101,7 @@ bool RenderWorker::step() {
         std::shared_lock<std::shared_mutex> lock(sceneMutex_);
         pending = session_.pendingChanges();
         const ViewerSettings& viewer = session_.document().viewer;
-        passes = std::max(viewer.samplesPerFrame, 1u);
+        passes = viewer.samplesPerFrame;  // 0: automatic, decided once the sync has run
         target = viewer.targetSpp;
         aov = viewer.aov;
     }
@@ -129,15 +130,17 @@ bool RenderWorker::step() {
         setStage("", 0.0);
     }
     if (syncRefused_) return false;
+    if (passes == 0) passes = autoPassesPerStep(secondsPerPass_, session_.backend().stats().samplesPerPixel);
     const auto start = Clock::now();
     const uint32_t rendered = session_.render(passes, target);
     if (rendered > 0 || changed || aov != publishedAov_) publishFrame(aov);
     if (rendered > 0) measureError();  // after publishing, so the frame is not delayed by it
     const double seconds = secondsSince(start);
+    if (rendered > 0) secondsPerPass_ = seconds / rendered;
     std::vector<uint32_t> alive = rendered > 0 ? session_.backend().pathsAlivePerBounce() : std::vector<uint32_t>{};
     std::lock_guard<std::mutex> status(statusMutex_);
     if (rendered > 0) {
-        status_.secondsPerPass = seconds / rendered;
+        status_.secondsPerPass = secondsPerPass_;
         status_.pathsAlivePerBounce = std::move(alive);
     }
     status_.converged = session_.converged(target);

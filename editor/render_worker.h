@@ -88,6 +88,7 @@ private:
     std::atomic<bool> stop_{false};
     std::atomic<bool> hostFrames_{true};
     bool syncRefused_ = false;  // render thread only: wait for the next edit before retrying
+    double secondsPerPass_ = 0.0;  // render thread only: of the last step, for automatic passes
 
     mutable std::mutex frameMutex_;
     DisplayFrame frame_;

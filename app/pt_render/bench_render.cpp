@@ -37,6 +37,12 @@ std::vector<Variant> variantsOf(const Backend& backend, const IntegratorToggles&
             t.autoSchedule = false;
             t.megakernel = false;
         });
+        flip(base.pathRegeneration ? "megakernel, regeneration off" : "megakernel, regeneration on",
+             [](IntegratorToggles& t) {
+                 t.autoSchedule = false;
+                 t.megakernel = true;
+                 t.pathRegeneration = !t.pathRegeneration;
+             });
         // The wavefront's own toggles, each against the plain wavefront above.
         const auto wavefront = [&](const char* name, const std::function<void(IntegratorToggles&)>& change) {
             flip(name, [&](IntegratorToggles& t) {

@@ -22,6 +22,7 @@ const std::map<std::string, SwitchFlags>& switchKeys() {
         {"bvh", {"", "--bvh-off"}},
         {"pixel_jitter", {"", "--no-jitter"}},
         {"megakernel", {"--megakernel", "--wavefront"}},
+        {"path_regeneration", {"--regeneration", ""}},
         {"compaction", {"", "--no-compaction"}},
         {"material_sort", {"--sort-materials", "--no-sort-materials"}},
         {"first_hit_cache", {"", "--no-first-hit-cache"}},

@@ -11,6 +11,7 @@ const std::set<std::string>& toggleSwitches() {
                                                    "--no-jitter",
                                                    "--megakernel",
                                                    "--wavefront",
+                                                   "--regeneration",
                                                    "--no-compaction",
                                                    "--sort-materials",
                                                    "--no-sort-materials",
@@ -37,6 +38,7 @@ IntegratorToggles parseToggles(const Options& o) {
     t.autoSchedule = !o.has("--megakernel") && !o.has("--wavefront");
     if (o.has("--megakernel")) t.megakernel = true;
     if (o.has("--wavefront")) t.megakernel = false;
+    if (o.has("--regeneration")) t.pathRegeneration = true;
     if (o.has("--no-compaction")) t.streamCompaction = false;
     if (o.has("--sort-materials") && o.has("--no-sort-materials")) {
         throw UsageError("--sort-materials and --no-sort-materials exclude each other");

@@ -21,50 +21,61 @@ constexpr CommandUsage kCommands[] = {
       (albedo, shading_normal, geometric_normal, depth, position, uv, roughness, metallic,
       emission, instance_id, material_id, bvh_cost, sample_count, variance; only these are
       accumulated); --half writes 16-bit channels (ids, sample_count, depth, position stay float).
-)", kToggles | kDisplay},
+)",
+     kToggles | kDisplay},
     {"bench", R"(  bench SCENE [--backend cpu|cuda] [--size WxH] [--max-depth N] [--runs N] [--spp N]
                 [--json OUT.json] [--quiet] [TOGGLES]
       Medians of several runs: traversal Mrays/s (primary, diffuse, shadow; BVH on and off),
       path tracing spp/s and Mpaths/s with each toggle flipped, BLAS/TLAS build and refit
       times (CPU binned SAH; GPU LBVH with the cuda backend), edit-to-first-frame latency, and
       the largest deviation of the backend's image from the CPU's.
-)", kToggles},
-    {"reference", R"(  reference SCENE -o REF.exr --spp N [--batches K] [--backend cpu|cuda] [--size WxH] [--seed N]
+)",
+     kToggles},
+    {"reference",
+     R"(  reference SCENE -o REF.exr --spp N [--batches K] [--backend cpu|cuda] [--size WxH] [--seed N]
                 [--threads N] [--max-depth N] [--quiet] [TOGGLES]
       A high-spp reference as a float EXR, rendered as K (default 8) independent batches whose
       spread gives the noise of the mean, stored as attributes pt:noise_relmse, pt:noise_rmse.
-)", kToggles},
+)",
+     kToggles},
     {"converge", R"(  converge SCENE (--reference REF.exr | --reference-constant R,G,B) [--time SECONDS]
                 [--variant NAME[:KEY=VALUE,...]]... [--csv OUT.csv] [--plot OUT.svg]
                 [--backend cpu|cuda] [--size WxH] [--seed N] [--threads N] [--max-depth N] [--quiet]
       Render each variant (default: full, and naive:nee=off,mis=off,rr=off) for SECONDS (default
       10), measuring relMSE, RMSE and MAPE against the reference at log-spaced times; print the
       errors at equal time and flag variants whose error stops falling. Keys: nee, mis, rr, bvh,
-      pixel_jitter, megakernel, compaction, material_sort, first_hit_cache (on|off), clamp,
+      pixel_jitter, megakernel, path_regeneration, compaction, material_sort, first_hit_cache
+      (on|off), clamp,
       rebuild_ratio (a number).
-)", kNone},
+)",
+     kNone},
     {"stress", R"(  stress [--backend cpu|cuda|all] [--quick] [--only NAME,...] [--csv OUT.csv]
       The robustness suite (scenes/stress/, docs/robustness.md): extreme scales, degenerate
       geometry, materials, lights, accumulation and cameras, each against a stated expectation.
       Exits 1 when a case fails.
-)", kNone},
+)",
+     kNone},
     {"export", R"(  export SCENE -o OUT.json
       Write any loadable scene as scene JSON (atomically; defaults left out).
-)", kNone},
+)",
+     kNone},
     {"info", R"(  info SCENE [--json]
       Triangles, meshes, instances, materials, textures, lights, bounds, load and BVH times.
-)", kNone},
+)",
+     kNone},
     {"gen", R"(  gen sphere -o OUT.gltf --triangles N [--displace A] [--seed S] [--quiet]
   gen field -o OUT.gltf --count N [--mesh IN.gltf|.glb|.obj] [--spacing D] [--seed S] [--quiet]
       Write a synthetic glTF (OUT.gltf + OUT.bin) for scale tests: a displaced sphere of about
       N triangles (up to 10,000,000), or N instances (up to 1,000,000) of one mesh on a grid.
-)", kNone},
+)",
+     kNone},
 };
 
 constexpr const char* kToggleText =
     R"(TOGGLES: --no-nee --no-mis --no-rr --clamp X --bvh-off (brute force) --no-jitter
   --no-merge (small instances keep a BLAS each, instead of one world-space BLAS)
-  --megakernel | --wavefront, --no-compaction, --sort-materials | --no-sort-materials,
+  --megakernel | --wavefront, --regeneration (megakernel: a thread whose path ends starts the
+  next at once), --no-compaction, --sort-materials | --no-sort-materials,
   --no-first-hit-cache, --rebuild-ratio R (refit until SAH cost exceeds R x the built one)
 )";
 

@@ -32,6 +32,7 @@ void integratorSwitches(EditorUi& ui) {
         ImGui::BeginDisabled(t.autoSchedule);
         changed |= ImGui::Checkbox("Megakernel (else wavefront)", &t.megakernel);
         ImGui::EndDisabled();
+        changed |= ImGui::Checkbox("Path regeneration (megakernel)", &t.pathRegeneration);
         changed |= ImGui::Checkbox("Stream compaction", &t.streamCompaction);
         changed |= ImGui::Checkbox("Material sort", &t.materialSort);
         changed |= ImGui::Checkbox("First-hit cache", &t.firstHitCache);
@@ -67,13 +68,17 @@ void drawRenderPanel(EditorUi& ui) {
     closeStepIfReleased(ui);
     if (changed) ui.apply(setRenderSettings(ui.doc(), r));
     ViewerSettings v = ui.doc().viewer;
-    int perFrame = int(v.samplesPerFrame), target = int(v.targetSpp);
-    bool viewerChanged = ImGui::SliderInt("Samples per frame", &perFrame, 1, 64);
+    int perFrame = int(std::max(v.samplesPerFrame, 1u)), target = int(v.targetSpp);
+    bool autoPasses = v.samplesPerFrame == 0;
+    bool viewerChanged = ImGui::Checkbox("Automatic samples per frame", &autoPasses);
+    ImGui::BeginDisabled(autoPasses);
+    viewerChanged |= ImGui::SliderInt("Samples per frame", &perFrame, 1, 64);
+    ImGui::EndDisabled();
     closeStepIfReleased(ui);
     viewerChanged |= ImGui::InputInt("Stop at spp (0 = never)", &target);
     closeStepIfReleased(ui);
     if (viewerChanged) {
-        v.samplesPerFrame = uint32_t(std::max(perFrame, 1));
+        v.samplesPerFrame = autoPasses ? 0u : uint32_t(std::max(perFrame, 1));
         v.targetSpp = uint32_t(std::max(target, 0));
         ui.apply(setViewer(ui.doc(), v));
     }

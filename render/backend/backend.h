@@ -35,6 +35,12 @@ struct IntegratorToggles {
     bool autoSchedule = true;
     // Without autoSchedule: one thread runs a whole path; else the wavefront stages.
     bool megakernel = true;
+    // Megakernel: a thread whose path ends starts the next path of the pass at once (path
+    // regeneration), rather than idling until the other 31 of its warp end theirs. Off by
+    // default: it helps where lanes idle most (H100, 1080p: the Cornell box 132.6 against 94.7
+    // spp/s) but there the wavefront is faster still (321), and where the megakernel wins it
+    // costs coherence (Balloon 774.5 against 784.6, a 1M-triangle sphere 542.8 against 588.1).
+    bool pathRegeneration = false;
     // The CUDA kernel variant (render/backend/cuda/kernel_variants.h) by name, to compare
     // variants; "" (the default): the leanest that covers the scene. A variant that does not
     // cover the scene's features is not used: the leanest covering one runs instead.

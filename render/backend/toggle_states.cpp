@@ -14,6 +14,7 @@ std::vector<ToggleState> integratorToggleStates(const IntegratorToggles& t) {
         state("pixel_jitter", t.pixelJitter),
         state("auto_schedule", t.autoSchedule),
         state("megakernel", t.megakernel),
+        state("path_regeneration", t.pathRegeneration),
         state("compaction", t.streamCompaction),
         state("material_sort", t.materialSort),
         state("first_hit_cache", t.firstHitCache),
@@ -29,8 +30,8 @@ void applyIntegratorToggles(const IntegratorToggles& t, IntegratorSettings& s) {
 }
 
 bool isGpuSchedulingToggle(const std::string& name) {
-    return name == "auto_schedule" || name == "megakernel" || name == "compaction" ||
-           name == "material_sort" || name == "first_hit_cache";
+    return name == "auto_schedule" || name == "megakernel" || name == "path_regeneration" ||
+           name == "compaction" || name == "material_sort" || name == "first_hit_cache";
 }
 
 }  // namespace pt

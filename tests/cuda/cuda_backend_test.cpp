@@ -297,14 +297,20 @@ TEST(CudaBackend, BeautyAgreesWithTheCpuStatistically) {
     EXPECT_LE(outliers, 1u);
 }
 
+// The wavefront schedule, named (not chosen by the auto schedule).
+IntegratorToggles wavefrontToggles() {
+    IntegratorToggles t;
+    t.autoSchedule = false;
+    t.megakernel = false;
+    return t;
+}
+
 // Scheduling toggles change the order of work, never a path's arithmetic: images stay equal.
 TEST(CudaBackend, SchedulingTogglesLeaveTheImageUnchanged) {
     PT_REQUIRE_CUDA_DEVICE();
     const Scene scene = cornell(64);
     cuda::CudaBackend backend;
-    IntegratorToggles base;
-    base.autoSchedule = false;
-    base.megakernel = false;   // the wavefront, whose scheduling the toggles change
+    IntegratorToggles base = wavefrontToggles();  // the wavefront, whose scheduling the toggles change
     base.pixelJitter = false;  // so that the first-hit cache applies
     base.firstHitCache = false;
     const std::vector<float> reference = renderWith(backend, scene, 16, base, 2);
@@ -316,6 +322,10 @@ TEST(CudaBackend, SchedulingTogglesLeaveTheImageUnchanged) {
     IntegratorToggles t = base;
     t.megakernel = true;
     variants.push_back({"megakernel", t});
+    t.pathRegeneration = !t.pathRegeneration;
+    variants.push_back(
+        {t.pathRegeneration ? "megakernel with path regeneration" : "megakernel without path regeneration",
+         t});
     t = base;
     t.streamCompaction = false;
     variants.push_back({"no compaction", t});
@@ -351,6 +361,31 @@ TEST(CudaBackend, SchedulingTogglesLeaveTheImageUnchanged) {
     backend.render(4);
     backend.render(4);
     EXPECT_LT(raysCached, backend.stats().rays) << "a cached first hit traces fewer rays";
+}
+
+// The megakernel's threads stay resident and take paths from a counter; with regeneration a
+// thread takes its next path as soon as one ends. Enough paths that each thread takes many
+// (256x256 at 16 samples a pass, against about 135,000 resident threads on an H100), so a lost,
+// doubled or misplaced path would change the image: both orders equal the wavefront's.
+TEST(CudaBackend, PathRegenerationTracesEveryPathOnce) {
+    PT_REQUIRE_CUDA_DEVICE();
+    const Scene scene = cornell(256);
+    cuda::CudaBackend backend;
+    const IntegratorToggles wavefront = wavefrontToggles();
+    const std::vector<float> reference = renderWith(backend, scene, 16, wavefront);
+    std::vector<uint64_t> rays;
+    for (const bool regeneration : {true, false}) {
+        IntegratorToggles t = wavefront;
+        t.megakernel = true;
+        t.pathRegeneration = regeneration;
+        const std::vector<float> image = renderWith(backend, scene, 16, t);
+        const float worst = maxAbsDifference(reference, image);
+        rays.push_back(backend.stats().rays);
+        std::cout << "[ figures  ] megakernel, regeneration " << (regeneration ? "on" : "off")
+                  << ": largest deviation from the wavefront " << worst << ", " << rays.back() << " rays\n";
+        EXPECT_LE(worst, 1e-5f) << "regeneration " << regeneration;
+    }
+    EXPECT_EQ(rays[0], rays[1]);
 }
 
 TEST(CudaBackend, RussianRouletteKeepsTheMean) {

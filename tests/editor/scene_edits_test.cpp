@@ -35,6 +35,7 @@ void expectTogglesEqual(const IntegratorToggles& a, const IntegratorToggles& b) 
     EXPECT_EQ(a.clampRadiance, b.clampRadiance);
     EXPECT_EQ(a.pixelJitter, b.pixelJitter);
     EXPECT_EQ(a.megakernel, b.megakernel);
+    EXPECT_EQ(a.pathRegeneration, b.pathRegeneration);
     EXPECT_EQ(a.streamCompaction, b.streamCompaction);
     EXPECT_EQ(a.materialSort, b.materialSort);
     EXPECT_EQ(a.firstHitCache, b.firstHitCache);

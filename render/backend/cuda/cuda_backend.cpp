@@ -371,6 +371,7 @@ bool CudaBackend::firstHitCacheApplies(std::string* why) const {
 ScheduleOptions CudaBackend::scheduleOptions() const {
     ScheduleOptions o;
     o.megakernel = runsMegakernel();
+    o.regeneration = toggles_.pathRegeneration;
     o.compaction = toggles_.streamCompaction;
     o.materialSort = toggles_.materialSort;
     o.firstHitCache = toggles_.firstHitCache && firstHitCacheApplies(nullptr);
@@ -503,6 +504,12 @@ std::vector<ToggleState> CudaBackend::toggleStates() const {
         } else if ((s.name == "compaction" || s.name == "material_sort") && runsMegakernel()) {
             s.active = false;
             s.note = "wavefront only; the megakernel is on";
+        } else if (s.name == "path_regeneration" && !runsMegakernel()) {
+            s.active = false;
+            s.note = "megakernel only; the wavefront is on";
+        } else if (s.name == "path_regeneration" && (aovsRequested_ & kPathAovs) != 0) {
+            s.active = false;
+            s.note = "path AOVs run one path a thread";
         }
     }
     return states;

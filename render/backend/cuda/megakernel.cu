@@ -1,5 +1,7 @@
-// The megakernel schedule: one thread runs tracePath, the same loop the CPU backend runs, for
-// one sample of one pixel, compiled once per kernel variant (kernel_variants.h).
+// The megakernel schedule: one thread runs whole paths, the loop the CPU backend runs (tracePath's
+// fused steps), compiled once per kernel variant (kernel_variants.h).
+#include <algorithm>
+
 #include "render/backend/cuda/cuda_check.h"
 #include "render/backend/cuda/register_cap.cuh"
 #include "render/backend/cuda/variant_dispatch.cuh"
@@ -16,8 +18,6 @@ namespace {
 // 362.5 / 363.4 / 360.0, 1M-triangle sphere 503 / 487 / 501, 10M 322 / 305 / 323).
 constexpr uint32_t kBlock = 128;
 
-// kF: the variant's feature set. kAovs: whether the path records AOVs; without, the kernel has
-// no AOV code.
 // Registers are capped at 64 a thread (with blocks of 128, 8 blocks an SM and 50% theoretical
 // occupancy, against 25% or less uncapped): the spills this causes (local memory, cached in
 // L1) cost less than the latency the extra warps hide, in a kernel that mostly waits on BVH
@@ -33,19 +33,24 @@ constexpr uint32_t kBlock = 128;
 #endif
 constexpr uint32_t kMinBlocks = blocksPerSmFor(kBlock, PT_MEGAKERNEL_REGISTERS);
 
-template <uint32_t kF, bool kAovs>
-__global__ void __launch_bounds__(kBlock, kMinBlocks) megakernel(RenderScene scene, WaveBuffers b, WaveShape shape) {
+constexpr unsigned kFullWarp = 0xffffffffu;
+constexpr uint32_t kNoPath = ~0u;
+
+// kF (below): the variant's feature set; the AOV kernel alone has AOV code.
+
+// One thread a path, for paths that record AOVs (tracePath's plain loop, with the AOV code).
+__global__ void __launch_bounds__(kBlock, kMinBlocks)
+    aovMegakernel(RenderScene scene, WaveBuffers b, WaveShape shape) {
     const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i >= shape.pathCount) return;
     const uint32_t pixel = i % shape.pixelCount, sample = shape.firstSample + i / shape.pixelCount;
     const uint32_t width = scene.settings.width;
     PathCounters counters;
     AovSample aov;
-    const Vec3 radiance = tracePath<kAovs, kF>(scene, pixel % width, pixel / width, sample, counters, &aov);
-    if (kAovs) {
-        addAovSample(b.aovs, pixel, sample, aov);
-        addAovCost(b.aovs, pixel, aov.cost);
-    }
+    const Vec3 radiance =
+        tracePath<true, kAllFeatures>(scene, pixel % width, pixel / width, sample, counters, &aov);
+    addAovSample(b.aovs, pixel, sample, aov);
+    addAovCost(b.aovs, pixel, aov.cost);
     b.radiance[3 * i + 0] = radiance.x;
     b.radiance[3 * i + 1] = radiance.y;
     b.radiance[3 * i + 2] = radiance.z;
@@ -53,26 +58,91 @@ __global__ void __launch_bounds__(kBlock, kMinBlocks) megakernel(RenderScene sce
     warpAtomicAdd(&b.counters->nonfinite, uint32_t(counters.nonfiniteSamples));
 }
 
+// Persistent threads with path regeneration. The grid holds as many threads as the GPU keeps
+// resident, and each takes paths of the wave from a counter (RenderCounters::claimedPaths), as
+// the persistent traversal kernels of Aila and Laine 2009 ("Understanding the efficiency of ray
+// traversal on GPUs") take rays. Each iteration traces one ray of each lane's path (the fused
+// step of path_tracer.h, so the images are those of tracePath bit for bit). With
+// `regeneration`, a lane whose path ended generates the next one in the same iteration (Novak,
+// Havran and Dachsbacher 2010, "Path regeneration for interactive path tracing"), so a warp no
+// longer runs with ever fewer lanes until its longest path ends; without, lanes wait for the
+// whole warp, as with one path a thread.
+template <uint32_t kF>
+__global__ void __launch_bounds__(kBlock, kMinBlocks)
+    megakernel(RenderScene scene, WaveBuffers b, WaveShape shape, bool regeneration) {
+    const uint32_t width = scene.settings.width;
+    PathCounters counters;
+    PathState state;
+    ShadowRay shadow{};
+    uint32_t path = kNoPath;
+    bool exhausted = false;  // the wave has no paths left to take
+    // Every lane runs every iteration (whole warps, no early exit), so the votes take all 32.
+    for (;;) {
+        const bool idle = path == kNoPath;
+        const bool warpIdle = __all_sync(kFullWarp, idle);
+        if (idle && !exhausted && (regeneration || warpIdle)) {
+            const uint32_t claimed = warpReserve(&b.counters->claimedPaths, true);
+            if (claimed < shape.pathCount) {
+                path = claimed;
+                const uint32_t pixel = path % shape.pixelCount;
+                state = generatePath<kF>(scene, pixel % width, pixel / width,
+                                         shape.firstSample + path / shape.pixelCount);
+                shadow.valid = false;
+            } else {
+                exhausted = true;
+            }
+        }
+        if (__all_sync(kFullWarp, path == kNoPath)) break;
+        if (path != kNoPath) {
+            traceFusedStep<kF>(scene, state, shadow, counters);
+            if (fusedPathDone(state, shadow)) {
+                const Vec3 radiance = finishedRadiance(state, counters);
+                b.radiance[3 * path + 0] = radiance.x;
+                b.radiance[3 * path + 1] = radiance.y;
+                b.radiance[3 * path + 2] = radiance.z;
+                path = kNoPath;
+            }
+        }
+    }
+    warpAtomicAdd(&b.counters->rays, uint32_t(counters.rays));
+    warpAtomicAdd(&b.counters->nonfinite, uint32_t(counters.nonfiniteSamples));
+}
+
+// Blocks of `kernel` the whole GPU keeps resident at once: the persistent grid.
+uint32_t residentBlocks(const void* kernel) {
+    int device = 0, sms = 0, perSm = 0;
+    PT_CUDA_CHECK(cudaGetDevice(&device));
+    PT_CUDA_CHECK(cudaDeviceGetAttribute(&sms, cudaDevAttrMultiProcessorCount, device));
+    PT_CUDA_CHECK(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&perSm, kernel, int(kBlock), 0));
+    return uint32_t(std::max(sms * perSm, 1));
+}
+
 }  // namespace
 
 const void* megakernelSymbol(uint32_t variant) {
     const void* symbol = nullptr;
     forKernelVariant(variant, [&](auto features) {
-        symbol = reinterpret_cast<const void*>(megakernel<decltype(features)::value, false>);
+        symbol = reinterpret_cast<const void*>(megakernel<decltype(features)::value>);
     });
     return symbol;
 }
 
 void launchMegakernel(uint32_t variant, const RenderScene& scene, const WaveBuffers& b,
-                      const WaveShape& shape, cudaStream_t stream) {
+                      const WaveShape& shape, bool regeneration, cudaStream_t stream) {
     const uint32_t blocks = (shape.pathCount + kBlock - 1) / kBlock;
     if (b.aovs.mask & kPathAovs) {  // AOVs run the generic code (kernel_variants.h)
-        megakernel<kAllFeatures, true><<<blocks, kBlock, 0, stream>>>(scene, b, shape);
-    } else {
-        forKernelVariant(variant, [&](auto features) {
-            megakernel<decltype(features)::value, false><<<blocks, kBlock, 0, stream>>>(scene, b, shape);
-        });
+        aovMegakernel<<<blocks, kBlock, 0, stream>>>(scene, b, shape);
+        PT_CUDA_CHECK_LAUNCH("aovMegakernel");
+        return;
     }
+    // Looked up once a variant: the occupancy query walks the kernel's attributes.
+    static uint32_t resident[kKernelVariantCount] = {};
+    if (resident[variant] == 0) resident[variant] = residentBlocks(megakernelSymbol(variant));
+    PT_CUDA_CHECK(cudaMemsetAsync(&b.counters->claimedPaths, 0, sizeof(uint32_t), stream));
+    forKernelVariant(variant, [&](auto features) {
+        megakernel<decltype(features)::value>
+            <<<std::min(blocks, resident[variant]), kBlock, 0, stream>>>(scene, b, shape, regeneration);
+    });
     PT_CUDA_CHECK_LAUNCH("megakernel");
 }
 

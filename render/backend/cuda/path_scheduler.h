@@ -15,6 +15,7 @@ namespace pt::cuda {
 
 struct ScheduleOptions {
     bool megakernel = false;
+    bool regeneration = false;  // megakernel: a lane whose path ends takes the next at once
     bool compaction = true;
     bool materialSort = false;
     bool firstHitCache = false;   // only where camera rays repeat exactly (no jitter, no lens)
@@ -64,6 +65,7 @@ private:
     DeviceBuffer<RenderCounters> counters_;
     BounceCounts* hostBounces_ = nullptr;  // pinned, two: the counts of the last two bounces
     cudaEvent_t bounceDone_[2] = {};       // recorded once bounce k's counts reach hostBounces_[k % 2]
+    const uint32_t maxWavePaths_;          // paths a wave holds at most, from the device's memory
     uint32_t variant_ = kFullVariant;
     bool firstHitsValid_ = false;
     bool firstHitCostsValid_ = false;  // firstHitCosts_ was written with firstHits_

@@ -22,17 +22,25 @@ __device__ __forceinline__ void warpAtomicAdd(uint32_t* counter, uint32_t value)
     if (laneId() == uint32_t(__ffs(mask) - 1) && total != 0) atomicAdd(counter, total);
 }
 
-// Appends `value` to queue (count at *size) for every active lane whose `push` is true; the
-// lanes of a warp land in consecutive slots.
-__device__ __forceinline__ void warpAppend(uint32_t* queue, uint32_t* size, uint32_t value, bool push) {
+// Reserves one slot of a counted array (count at *size) for every active lane whose `take` is
+// true, with one atomic per warp; the lanes of a warp get consecutive slots. Returns this lane's
+// slot (meaningless where `take` is false).
+__device__ __forceinline__ uint32_t warpReserve(uint32_t* size, bool take) {
     const unsigned mask = __activemask();
-    const unsigned ballot = __ballot_sync(mask, push);
-    if (ballot == 0) return;
+    const unsigned ballot = __ballot_sync(mask, take);
+    if (ballot == 0) return 0;
     const uint32_t leader = uint32_t(__ffs(mask) - 1);
     uint32_t base = 0;
     if (laneId() == leader) base = atomicAdd(size, uint32_t(__popc(ballot)));
     base = __shfl_sync(mask, base, int(leader));
-    if (push) queue[base + uint32_t(__popc(ballot & ((1u << laneId()) - 1u)))] = value;
+    return base + uint32_t(__popc(ballot & ((1u << laneId()) - 1u)));
+}
+
+// Appends `value` to queue (count at *size) for every active lane whose `push` is true; the
+// lanes of a warp land in consecutive slots.
+__device__ __forceinline__ void warpAppend(uint32_t* queue, uint32_t* size, uint32_t value, bool push) {
+    const uint32_t slot = warpReserve(size, push);
+    if (push) queue[slot] = value;
 }
 
 }  // namespace pt::cuda

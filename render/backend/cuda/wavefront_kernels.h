@@ -30,6 +30,9 @@ struct RenderCounters {
     // Wavefront: bounce k counts into bounce[k % 2] while bounce k + 1's stages read how many
     // paths they have from it, so the host need not wait for a count before it launches them.
     BounceCounts bounce[2];
+    // Megakernel: paths of the wave handed out so far (launchMegakernel zeroes it).
+    uint32_t claimedPaths;
+    uint32_t pad;
 };
 
 // How many entries of a queue a stage processes: at most `bound`, which the host knows and
@@ -99,10 +102,12 @@ void launchShadow(uint32_t variant, const RenderScene& scene, const WaveBuffers&
 // Finished paths' radiance into b.radiance, non-finite samples counted and zeroed.
 void launchFinishPaths(const WaveBuffers& b, const WaveShape& shape, cudaStream_t stream);
 
-// The megakernel: each thread traces one whole path (tracePath) into b.radiance, and its AOVs
-// into b.aovs.
+// The megakernel: each thread traces whole paths (tracePath) into b.radiance, and their AOVs
+// into b.aovs. With `regeneration` (and no path AOVs), a thread whose path ends takes the next
+// path of the wave at once, so its warp keeps all its lanes busy (megakernel.cu); without, a
+// warp takes new paths only when all 32 of its paths have ended.
 void launchMegakernel(uint32_t variant, const RenderScene& scene, const WaveBuffers& b,
-                      const WaveShape& shape, cudaStream_t stream);
+                      const WaveShape& shape, bool regeneration, cudaStream_t stream);
 
 // The kernels of a variant without AOVs, for their resources (kernel_variants.h).
 struct WavefrontSymbols {
