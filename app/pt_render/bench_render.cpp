@@ -87,7 +87,10 @@ void benchPathTracing(Backend& backend, const Scene& scene, const BenchSettings&
             report.add({"path tracing", "samples per pixel per second", v.name, 0.0, "spp/s", e.what()});
             continue;
         }
-        backend.render(1);  // warm-up: caches filled, buffers allocated
+        // Warm-up: caches filled, buffers allocated, and the auto schedule's trial (timed at
+        // the size of the runs' waves) over, so that no run is one of its turns.
+        backend.render(settings.spp);
+        for (int i = 0; i < 8 && backend.stats().schedule == "measuring"; ++i) backend.render(settings.spp);
         std::vector<double> seconds, rayRates;
         for (uint32_t r = 0; r < settings.runs; ++r) {
             backend.resetAccumulation();

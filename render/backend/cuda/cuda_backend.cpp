@@ -402,11 +402,15 @@ bool CudaBackend::runsMegakernel() const {
     return toggles_.autoSchedule ? scheduleChooser_.nextIsMegakernel() : toggles_.megakernel;
 }
 
-uint64_t CudaBackend::scheduleKey() const {
-    // What decides which schedule is faster: the kernel's features, the image, the path length
-    // and the toggles that change the work. FNV-1a over them.
+uint64_t CudaBackend::scheduleKey(uint32_t samplesPerWave) const {
+    // What decides which schedule is faster: the kernel's features, the image, the path length,
+    // the toggles that change the work and the size of a wave (in powers of two). FNV-1a over
+    // them.
     const IntegratorSettings& s = view_.settings;
+    uint32_t waveClass = 0;
+    while ((samplesPerWave >> (waveClass + 1)) != 0) ++waveClass;
     const uint32_t words[] = {renderFeatures(),
+                              waveClass,
                               s.width,
                               s.height,
                               s.maxDepth,
@@ -426,17 +430,20 @@ void CudaBackend::render(uint32_t passes) {
     const auto start = Clock::now();
     const AovBuffers aovs = aovBuffersIn(aovSums_.data(), aovs_, size_t(width_) * height_);
     if (toggles_.autoSchedule) {
-        scheduleChooser_.setKey(scheduleKey());
-        // The auto schedule's trial: single timed passes, alternating, until both have run theirs.
+        const uint32_t wave = scheduler_.samplesPerWave(width_ * height_, passes);
+        scheduleChooser_.setKey(scheduleKey(wave));
+        // The auto schedule's trial: timed waves of the size this call runs, alternating, until
+        // both schedules have run theirs.
         while (passes > 0 && !scheduleChooser_.decided()) {
             const bool megakernel = runsMegakernel();
+            const uint32_t n = std::min(wave, passes);
             const auto passStart = Clock::now();
-            scheduler_.render(view_, stats_.samplesPerPixel, 1, scheduleOptions(), sum_.data(), aovs,
+            scheduler_.render(view_, stats_.samplesPerPixel, n, scheduleOptions(), sum_.data(), aovs,
                               stream_);
             PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
-            scheduleChooser_.record(megakernel, secondsSince(passStart));
-            stats_.samplesPerPixel += 1;
-            passes -= 1;
+            scheduleChooser_.record(megakernel, secondsSince(passStart) / n);
+            stats_.samplesPerPixel += n;
+            passes -= n;
         }
     }
     if (passes > 0) {

@@ -76,7 +76,7 @@ private:
     bool runsMegakernel() const;
     // The scene's features with the AOVs accumulated now: what picks the kernel variant.
     uint32_t renderFeatures() const;
-    uint64_t scheduleKey() const;
+    uint64_t scheduleKey(uint32_t samplesPerWave) const;
     bool firstHitCacheApplies(std::string* why) const;
 
     cudaStream_t stream_ = nullptr;

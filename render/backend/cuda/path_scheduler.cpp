@@ -110,7 +110,7 @@ void PathScheduler::render(const RenderScene& scene, uint32_t firstSample, uint3
                            cudaStream_t stream) {
     const uint32_t pixelCount = scene.settings.width * scene.settings.height;
     if (pixelCount == 0 || samples == 0) return;
-    const uint32_t samplesPerWave = std::max(1u, std::min(samples, maxWavePaths_ / pixelCount));
+    const uint32_t samplesPerWave = this->samplesPerWave(pixelCount, samples);
     const bool cacheCosts = options.firstHitCache && aovs.has(Aov::BvhCost);
     reserve(pixelCount, pixelCount * samplesPerWave, options, cacheCosts);
     const WaveBuffers b = buffers(aovs);

@@ -4,6 +4,7 @@
 // finished samples to a per-pixel double accumulation.
 #include <cuda_runtime.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -37,6 +38,12 @@ public:
     // and to the AOVs of `aovs`.
     void render(const RenderScene& scene, uint32_t firstSample, uint32_t samples, const ScheduleOptions& options,
                 double* sum, const AovBuffers& aovs, cudaStream_t stream);
+
+    // Samples a pixel each wave of a render of `samples` holds (the last may hold fewer).
+    uint32_t samplesPerWave(uint32_t pixelCount, uint32_t samples) const {
+        const uint32_t fit = pixelCount > 0 ? maxWavePaths_ / pixelCount : 1u;
+        return std::max(1u, std::min(samples, fit));
+    }
 
     void resetCounters(cudaStream_t stream);
     RenderCounters counters() const;    // rays and non-finite samples since resetCounters; synchronises

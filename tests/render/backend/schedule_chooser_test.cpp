@@ -60,5 +60,23 @@ TEST(ScheduleChooser, ANewKeyStartsANewTrialAndTheSameKeyKeepsTheDecision) {
     EXPECT_EQ(c.choice(), "wavefront");
 }
 
+// The editor alternates keys (one-sample waves after each edit, longer ones after): a key that
+// comes back has its decision, and its rates, without a new trial.
+TEST(ScheduleChooser, AKeyThatComesBackKeepsItsDecision) {
+    ScheduleChooser c;
+    c.setKey(10);
+    runTrial(c, 0.003, 0.005);  // one sample a wave: the megakernel
+    c.setKey(11);
+    EXPECT_FALSE(c.decided());
+    runTrial(c, 0.004, 0.002);  // longer waves: the wavefront
+    c.setKey(10);
+    EXPECT_TRUE(c.decided());
+    EXPECT_EQ(c.choice(), "megakernel");
+    EXPECT_DOUBLE_EQ(c.megakernelRate(), 1.0 / 0.003);
+    c.setKey(11);
+    EXPECT_EQ(c.choice(), "wavefront");
+    EXPECT_EQ(runTrial(c, 0.004, 0.002), 0);  // nothing left to measure
+}
+
 }  // namespace
 }  // namespace pt
