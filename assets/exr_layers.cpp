@@ -100,6 +100,12 @@ void writeLayeredExr(const std::string& path, const LayeredExr& image) {
             aovExrChannelNames(layer.aov), aovExrPixelType(layer.aov, image.precision), layer.rgba.data(), 4);
         channels.insert(channels.end(), more.begin(), more.end());
     }
+    if (!image.denoised.empty()) {
+        checkPixelCount(path + ": the denoised layer", w, h, 4, image.denoised.size());
+        const std::vector<ExrChannelSource> more = interleavedChannels(
+            {"denoised.R", "denoised.G", "denoised.B"}, image.precision, image.denoised.data(), 4);
+        channels.insert(channels.end(), more.begin(), more.end());
+    }
     ImageMetadata metadata = image.metadata;
     metadata.emplace_back("pt:aovs", aovListText(written));
     writeExrChannels(path, w, h, channels, metadata);
@@ -118,7 +124,8 @@ std::vector<AovImage> readAovImages(const Backend& backend, AovMask wanted) {
 
 LayeredExr renderedExr(const Backend& backend, AovMask wanted, ExrPixelType precision, const Camera& camera,
                        ImageMetadata metadata) {
-    LayeredExr exr{backend.width(), backend.height(), {}, readAovImages(backend, wanted), precision, std::move(metadata)};
+    LayeredExr exr{backend.width(), backend.height(),    {}, readAovImages(backend, wanted),
+                   precision,       std::move(metadata), {}};
     backend.readBeauty(exr.beauty);
     const ImageMetadata view = cameraMetadata(camera, exr.width, exr.height);
     exr.metadata.insert(exr.metadata.end(), view.begin(), view.end());

@@ -13,6 +13,8 @@
 //   roughness, metallic, instance_id, material_id, sample_count, variance
 //                               <aov>.Y                  (Y: OpenEXR's one grey channel)
 //   bvh_cost                    bvh_cost.nodes bvh_cost.primitives
+//   the denoised beauty         denoised.R denoised.G denoised.B   (render/denoise/; the raw
+//                               beauty stays in R G B)
 // Values are Backend::readAov's, unchanged: channel i of a layer is component i of its RGBA.
 //
 // Pixel types: the precision (half or float) applies to every channel except these, which
@@ -73,6 +75,8 @@ struct LayeredExr {
     std::vector<AovImage> aovs;    // at most one image per AOV
     ExrPixelType precision = ExrPixelType::Float;  // Half or Float
     ImageMetadata metadata;
+    std::vector<float>
+        denoised;  // RGBA float (Backend::readDenoised), written as denoised.R/G/B; empty: none
 };
 
 // Writes `image` (atomically: temp file, then rename) with the channels above, zip-compressed.

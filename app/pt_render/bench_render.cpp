@@ -150,6 +150,23 @@ void benchWavefrontOverhead(Backend& backend, Scene scene, const BenchSettings& 
                 "extend, shade and shadow launches and the queue-size read-back, which the host waits for a bounce late"});
 }
 
+void benchDenoise(Backend& backend, const Scene& scene, const BenchSettings& settings, BenchReport& report) {
+    backend.setToggles(settings.toggles);
+    backend.setAovs(kDenoiseGuideAovs);
+    backend.sync(scene, SceneChanges::All, {});
+    backend.render(settings.spp);
+    std::vector<float> denoised;
+    backend.readDenoised(denoised);  // warm-up: working memory allocated
+    std::vector<double> seconds;
+    for (uint32_t r = 0; r < std::max(settings.runs, 3u); ++r)
+        seconds.push_back(backend.readDenoised(denoised));
+    const std::string size = std::to_string(scene.render.width) + "x" + std::to_string(scene.render.height);
+    report.add({"denoise", "a-trous filter (SVGF spatial), 5 passes", size, median(seconds) * 1e3, "ms",
+                backend.name() == "cpu" ? "CPU threads" : "GPU kernels, without the copy to the host"});
+    backend.setAovs(0);
+    backend.sync(scene, SceneChanges::All, {});
+}
+
 void benchImageCheck(Backend& backend, Scene scene, const BenchSettings& settings, BenchReport& report) {
     if (backend.name() == "cpu") return;
     // Small enough for the CPU to match in seconds.

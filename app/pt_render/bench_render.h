@@ -20,6 +20,9 @@ void benchPathTracing(Backend& backend, const Scene& scene, const BenchSettings&
 // sync), timed on a one-pixel image where the work itself is nil.
 void benchWavefrontOverhead(Backend& backend, Scene scene, const BenchSettings& settings,
                             BenchReport& report);
+// The denoiser (render/denoise/) at the bench's image size: the filter's time alone (on a GPU
+// its kernels, without the copy to the host), median of the runs.
+void benchDenoise(Backend& backend, const Scene& scene, const BenchSettings& settings, BenchReport& report);
 // Renders a reduced-size copy of the scene on `backend` and on the CPU at equal samples.
 void benchImageCheck(Backend& backend, Scene scene, const BenchSettings& settings, BenchReport& report);
 

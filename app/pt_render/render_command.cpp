@@ -37,6 +37,9 @@ struct RenderRequest {
     bool quiet = false;
     AovMask aovs = 0;  // --aov: EXR layers beside the beauty (only these are accumulated)
     bool half = false;  // --half: 16-bit EXR channels (exr_layers.h says which stay float)
+    // --denoise: the EXR gains a denoised layer beside the raw beauty, the PNG shows the
+    // denoised image; the denoiser's guides are accumulated for it.
+    bool denoise = false;
     DisplayRequest display;  // --png: how linear becomes display pixels (display_options.h)
 };
 
@@ -54,10 +57,10 @@ void parseExrOptions(const Options& o, RenderRequest& r) {
 
 RenderRequest parseRequest(const std::vector<std::string>& args) {
     const Options o(args,
-                    joined({"-o", "--png", "--spp", "--time", "--size", "--seed", "--threads", "--backend", "--stats",
-                            "--max-depth", "--aov"},
+                    joined({"-o", "--png", "--spp", "--time", "--size", "--seed", "--threads", "--backend",
+                            "--stats", "--max-depth", "--aov"},
                            joined(toggleValuedFlags(), displayValuedFlags())),
-                    joined(joined({"--quiet", "--half"}, toggleSwitches()), displaySwitches()));
+                    joined(joined({"--quiet", "--half", "--denoise"}, toggleSwitches()), displaySwitches()));
     if (o.positional().size() != 1) throw UsageError("expected one SCENE argument");
     RenderRequest r;
     r.scenePath = o.positional()[0];
@@ -78,6 +81,7 @@ RenderRequest parseRequest(const std::vector<std::string>& args) {
     parseExrOptions(o, r);
     r.display = parseDisplayOptions(o);
     if (r.display.anyGiven && r.pngPath.empty()) throw UsageError("display flags apply to --png OUT.png; give one");
+    r.denoise = o.has("--denoise");
     return r;
 }
 
@@ -136,14 +140,16 @@ void writeStats(const RenderRequest& r, const Backend& backend, double loadSecon
 
 // The beauty and the AOVs asked for as one layered EXR, with the camera in the metadata.
 void writeRenderExr(const RenderRequest& r, const Backend& backend, const Camera& camera, const ImageMetadata& metadata) {
-    const LayeredExr exr =
+    LayeredExr exr =
         renderedExr(backend, r.aovs, r.half ? ExrPixelType::Half : ExrPixelType::Float, camera, metadata);
+    if (r.denoise) backend.readDenoised(exr.denoised);
     writeLayeredExr(r.exrPath, exr);
     if (r.quiet) return;
     std::string channels = "R G B A";
     for (const AovImage& layer : exr.aovs) {
         for (const std::string& name : aovExrChannelNames(layer.aov)) channels += " " + name;
     }
+    if (!exr.denoised.empty()) channels += " denoised.R denoised.G denoised.B";
     std::fprintf(stderr, "%s: %s channels %s\n", r.exrPath.c_str(), r.half ? "half" : "float", channels.c_str());
 }
 
@@ -181,7 +187,8 @@ int runRender(const std::vector<std::string>& args) {
     if (!r.pngPath.empty()) display.emplace(makeDisplayProcessor(r.display, scene.color));
 
     backend->setToggles(r.toggles);
-    backend->setAovs(r.aovs);  // before the sync, whose reset allocates them
+    backend->setAovs(r.aovs |
+                     (r.denoise ? kDenoiseGuideAovs : 0u));  // before the sync, whose reset allocates them
     const SyncReport sync = backend->sync(scene, SceneChanges::All, bar.callback());
     bar.finish();
     accumulate(*backend, r, targetSpp, bar, interrupt);
@@ -190,8 +197,12 @@ int runRender(const std::vector<std::string>& args) {
         return kInterruptedExitCode;
     }
 
-    std::vector<float> beauty;
-    backend->readBeauty(beauty);
+    std::vector<float> beauty;  // what the PNG shows
+    if (r.denoise && !r.pngPath.empty()) {
+        backend->readDenoised(beauty);
+    } else {
+        backend->readBeauty(beauty);
+    }
     const BackendStats stats = backend->stats();
     const ImageMetadata metadata = renderMetadata(stats.samplesPerPixel, std::to_string(stats.renderSeconds),
                                                   backend->name(), r.scenePath, "pt-render 0.1");

@@ -10,22 +10,6 @@ constexpr const char* kAovNames[kAovCount] = {
     "albedo",   "shading_normal", "geometric_normal", "depth",       "position", "uv",           "roughness",
     "metallic", "emission",       "instance_id",      "material_id", "bvh_cost", "sample_count", "variance"};
 
-// The value of channel c of one pixel's sums, as the image shows it.
-float aovValue(Aov aov, const double* sums, uint32_t c, uint32_t samples) {
-    const double n = double(samples);
-    switch (aov) {
-        case Aov::SampleCount:
-            return float(samples);
-        case Aov::InstanceId:
-        case Aov::MaterialId:
-            return float(sums[0]);
-        case Aov::Variance:  // of the mean: the sample variance M2 / (n - 1), over n
-            return samples > 1 ? float(sums[1] / ((n - 1.0) * n)) : 0.0f;
-        default:
-            return samples ? float(sums[c] / n) : 0.0f;
-    }
-}
-
 }  // namespace
 
 const char* aovName(Aov a) { return uint32_t(a) < kAovCount ? kAovNames[uint32_t(a)] : "unknown"; }
@@ -78,9 +62,9 @@ void aovImageFromSums(Aov aov, const double* plane, size_t pixels, uint32_t samp
         const double* sums = plane ? plane + i * channels : nullptr;
         float* out = &rgba[i * 4];
         if (channels == 1 || aov == Aov::SampleCount || aov == Aov::Variance) {
-            out[0] = out[1] = out[2] = aovValue(aov, sums, 0, samples);
+            out[0] = out[1] = out[2] = aovPixelValue(aov, sums, 0, samples);
         } else {
-            for (uint32_t c = 0; c < channels; ++c) out[c] = aovValue(aov, sums, c, samples);
+            for (uint32_t c = 0; c < channels; ++c) out[c] = aovPixelValue(aov, sums, c, samples);
         }
         out[3] = 1.0f;
     }

@@ -24,6 +24,24 @@ AovBuffers aovBuffersIn(double* base, AovMask mask, size_t pixels);
 // Throws std::invalid_argument naming the AOV when it is not in `enabled`.
 void requireAov(AovMask enabled, Aov aov);
 
+// The value of channel c of one pixel's sums (aovChannels(aov) doubles at `sums`), as the
+// image shows it: averages, except the ids (as stored), sample_count (`samples`) and the
+// variance of the mean (Welford: M2 / (n - 1), over n).
+PT_HD float aovPixelValue(Aov aov, const double* sums, uint32_t c, uint32_t samples) {
+    const double n = double(samples);
+    switch (aov) {
+        case Aov::SampleCount:
+            return float(samples);
+        case Aov::InstanceId:
+        case Aov::MaterialId:
+            return float(sums[0]);
+        case Aov::Variance:
+            return samples > 1 ? float(sums[1] / ((n - 1.0) * n)) : 0.0f;
+        default:
+            return samples ? float(sums[c] / n) : 0.0f;
+    }
+}
+
 // RGBA floats (A = 1) of AOV `aov` from its plane of sums over `samples` samples: averages,
 // except the ids (as stored) and sample_count (`samples`). One-channel AOVs fill R, G and B.
 void aovImageFromSums(Aov aov, const double* plane, size_t pixels, uint32_t samples,

@@ -148,7 +148,19 @@ public:
     virtual void readAov(Aov aov, std::vector<float>& rgba) const = 0;
     // Memory the AOVs hold now (host memory on the CPU, device memory on a GPU); 0 without AOVs.
     virtual uint64_t aovBytes() const = 0;
+
+    // The beauty denoised (render/denoise/), RGBA float like readBeauty; returns the seconds the
+    // filter took (on a GPU its kernels, without the copy to the host). Needs the guides
+    // (kDenoiseGuideAovs) among aovs(); throws std::invalid_argument naming one missing. This
+    // default reads them back and filters on the CPU.
+    virtual double readDenoised(std::vector<float>& rgba) const;
 };
+
+// The AOVs the denoiser reads: first-hit albedo, shading normal, depth and emission, and the
+// variance of each pixel's mean.
+constexpr Aov kDenoiseGuides[] = {Aov::Albedo, Aov::ShadingNormal, Aov::Depth, Aov::Emission, Aov::Variance};
+constexpr AovMask kDenoiseGuideAovs = aovBit(Aov::Albedo) | aovBit(Aov::ShadingNormal) | aovBit(Aov::Depth) |
+                                      aovBit(Aov::Emission) | aovBit(Aov::Variance);
 
 // "cpu", or "cuda" where built. Throws std::invalid_argument naming the backends available,
 // or, for "cuda" on a machine without a usable GPU, saying why.

@@ -61,7 +61,7 @@ Rendered renderAllAovs(ExrPixelType precision) {
     backend.sync(r.scene, SceneChanges::All, {});
     backend.render(3);
     EXPECT_EQ(backend.aovs(), kAllAovs);
-    r.exr = {backend.width(), backend.height(), {}, readAovImages(backend, kAllAovs), precision, {}};
+    r.exr = {backend.width(), backend.height(), {}, readAovImages(backend, kAllAovs), precision, {}, {}};
     backend.readBeauty(r.exr.beauty);
     r.exr.metadata = renderMetadata(3, "0.25", backend.name(), "sphere.json", "pt tests");
     const ImageMetadata camera = cameraMetadata(r.scene.camera, r.exr.width, r.exr.height);
@@ -149,7 +149,7 @@ TEST(ExrLayers, HalfChannelsSaturateInsteadOfOverflowing) {
     const std::vector<float> rgba = {1e6f, -1e6f, 65504.0f, 1.0f};
     const std::vector<float> depth = {1e6f, 0.0f, 0.0f, 1.0f};
     const std::string path = test::tempDir() + "/sun.exr";
-    writeLayeredExr(path, {1, 1, rgba, {{Aov::Depth, depth}}, ExrPixelType::Half, {}});
+    writeLayeredExr(path, {1, 1, rgba, {{Aov::Depth, depth}}, ExrPixelType::Half, {}, {}});
     const ExrImage read = readExrChannels(path);
     EXPECT_EQ(read.channel("R")->values[0], 65504.0f);
     EXPECT_EQ(read.channel("G")->values[0], -65504.0f);
@@ -161,7 +161,7 @@ TEST(ExrLayers, WithoutAovsTheFileHoldsTheBeautyAlone) {
     PT_REQUIRE_OIIO();
     const std::vector<float> rgba = {0.5f, 1.0f, 2.0f, 1.0f, 3.0f, 4.0f, 5.0f, 1.0f};
     const std::string path = test::tempDir() + "/beauty.exr";
-    writeLayeredExr(path, {2, 1, rgba, {}, ExrPixelType::Half, {}});
+    writeLayeredExr(path, {2, 1, rgba, {}, ExrPixelType::Half, {}, {}});
     const ExrImage read = readExrChannels(path);
     ASSERT_EQ(read.channels.size(), 4u);
     EXPECT_EQ(read.channels[0].name, "R");
@@ -178,7 +178,7 @@ TEST(ExrLayers, ReadImageRgbaTakesTheBeautyOfALayeredFile) {
     const std::vector<float> beauty = {0.25f, 0.5f, 0.75f, 1.0f};
     const std::vector<float> albedo = {9.0f, 8.0f, 7.0f, 1.0f};
     const std::string path = test::tempDir() + "/layered.exr";
-    writeLayeredExr(path, {1, 1, beauty, {{Aov::Albedo, albedo}}, ExrPixelType::Float, {}});
+    writeLayeredExr(path, {1, 1, beauty, {{Aov::Albedo, albedo}}, ExrPixelType::Float, {}, {}});
     uint32_t w = 0, h = 0;
     EXPECT_EQ(readImageRgba(path, w, h), beauty);
 }
@@ -194,14 +194,16 @@ TEST(ExrLayers, BadImagesGiveInputErrorsNamingTheFile) {
         }
         return "(no error)";
     };
-    EXPECT_NE(message({1, 1, one, {{Aov::Depth, {1.0f}}}, ExrPixelType::Float, {}}).find(path + ": AOV depth"),
+    EXPECT_NE(
+        message({1, 1, one, {{Aov::Depth, {1.0f}}}, ExrPixelType::Float, {}, {}}).find(path + ": AOV depth"),
+        std::string::npos);
+    EXPECT_NE(message({1, 1, one, {{Aov::Depth, one}, {Aov::Depth, one}}, ExrPixelType::Float, {}, {}})
+                  .find("twice"),
               std::string::npos);
-    EXPECT_NE(message({1, 1, one, {{Aov::Depth, one}, {Aov::Depth, one}}, ExrPixelType::Float, {}}).find("twice"),
-              std::string::npos);
-    EXPECT_NE(message({2, 1, one, {}, ExrPixelType::Float, {}}).find(path), std::string::npos);
+    EXPECT_NE(message({2, 1, one, {}, ExrPixelType::Float, {}, {}}).find(path), std::string::npos);
     EXPECT_FALSE(std::filesystem::exists(path));
     // A valid image: written where OpenImageIO is, else refused with the reason.
-    const std::string valid = message({1, 1, one, {}, ExrPixelType::Float, {}});
+    const std::string valid = message({1, 1, one, {}, ExrPixelType::Float, {}, {}});
     if (PT_TEST_HAVE_OIIO) {
         EXPECT_EQ(valid, "(no error)");
     } else {
@@ -209,7 +211,7 @@ TEST(ExrLayers, BadImagesGiveInputErrorsNamingTheFile) {
     }
     const std::string noFolder = test::tempDir() + "/no/such/folder.exr";
     try {
-        writeLayeredExr(noFolder, {1, 1, one, {}, ExrPixelType::Float, {}});
+        writeLayeredExr(noFolder, {1, 1, one, {}, ExrPixelType::Float, {}, {}});
         ADD_FAILURE() << "wrote into a missing folder";
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find(noFolder), std::string::npos) << e.what();

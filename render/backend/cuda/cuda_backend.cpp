@@ -7,6 +7,7 @@
 
 #include "render/backend/cuda/cuda_device.h"
 #include "render/backend/cuda/display_copy.h"
+#include "render/backend/cuda/stream_timer.h"
 #include "render/backend/mean_image.h"
 #include "render/backend/toggle_states.h"
 #include "render/integrator/camera.h"
@@ -479,6 +480,22 @@ void CudaBackend::readAov(Aov aov, std::vector<float>& rgba) const {
     aovImageFromSums(aov, plane.empty() ? nullptr : plane.data(), pixels, stats_.samplesPerPixel, rgba);
 }
 
+double CudaBackend::copyDenoisedToDevice(float* deviceRgba) const {
+    const AovBuffers aovs = aovBuffersIn(aovSums_.data(), aovs_, size_t(width_) * height_);
+    StreamTimer timer;
+    return timer.time(stream_, [&] {
+        denoiser_.run(sum_.data(), aovs, width_, height_, stats_.samplesPerPixel, deviceRgba, stream_);
+    });
+}
+
+double CudaBackend::readDenoised(std::vector<float>& rgba) const {
+    const size_t pixels = size_t(width_) * height_;
+    if (denoised_.size() != 4 * pixels) denoised_ = DeviceBuffer<float>(4 * pixels);
+    const double seconds = copyDenoisedToDevice(denoised_.data());
+    denoised_.download(rgba);
+    return seconds;
+}
+
 uint64_t CudaBackend::aovBytes() const { return aovSums_.bytes() + scheduler_.aovBytes(); }
 
 BackendStats CudaBackend::stats() const {
@@ -528,26 +545,12 @@ std::vector<double> CudaBackend::traceRays(const std::vector<Ray>& rays, bool an
     if (!compiled_) return seconds;
     queryRays_.upload(rays, stream_);
     queryHits_.resize(rays.size());
-    cudaEvent_t begin = nullptr, end = nullptr;
-    PT_CUDA_CHECK(cudaEventCreate(&begin));
-    PT_CUDA_CHECK(cudaEventCreate(&end));
-    try {
-        for (uint32_t run = 0; run < runs; ++run) {
-            PT_CUDA_CHECK(cudaEventRecord(begin, stream_));
+    StreamTimer timer;
+    for (uint32_t run = 0; run < runs; ++run) {
+        seconds.push_back(timer.time(stream_, [&] {
             launchTraceRays(view_, queryRays_.data(), uint32_t(rays.size()), anyHit, queryHits_.data(), stream_);
-            PT_CUDA_CHECK(cudaEventRecord(end, stream_));
-            PT_CUDA_CHECK(cudaEventSynchronize(end));
-            float ms = 0.0f;
-            PT_CUDA_CHECK(cudaEventElapsedTime(&ms, begin, end));
-            seconds.push_back(double(ms) * 1e-3);
-        }
-    } catch (...) {
-        cudaEventDestroy(begin);
-        cudaEventDestroy(end);
-        throw;
+        }));
     }
-    cudaEventDestroy(begin);
-    cudaEventDestroy(end);
     if (hits) queryHits_.download(*hits);
     return seconds;
 }
@@ -557,6 +560,7 @@ std::vector<std::pair<std::string, uint64_t>> CudaBackend::deviceMemoryByBuffer(
     rows.emplace_back("path scheduler", scheduler_.bytes());
     rows.emplace_back("accumulation (beauty)", sum_.bytes());
     rows.emplace_back("accumulation (AOVs)", aovSums_.bytes());
+    rows.emplace_back("denoiser", denoiser_.bytes() + denoised_.bytes());
     rows.emplace_back("BVH scratch (primitive boxes)", primBoxes_.bytes());
     rows.emplace_back("BVH scratch (refit visits)", refitVisits_.bytes());
     rows.emplace_back("BVH scratch (LBVH builder)", lbvh_.bytes());

@@ -14,6 +14,7 @@
 #include "render/backend/backend.h"
 #include "render/backend/cuda/device_scene.h"
 #include "render/backend/cuda/gpu_bvh.h"
+#include "render/backend/cuda/gpu_denoiser.h"
 #include "render/backend/cuda/path_scheduler.h"
 #include "render/backend/cuda/pinned_range.h"
 #include "render/backend/schedule_chooser.h"
@@ -45,6 +46,11 @@ public:
     void setAovs(AovMask aovs) override { aovsRequested_ = aovs; }
     AovMask aovs() const override { return aovs_; }
     void readAov(Aov aov, std::vector<float>& rgba) const override;
+    // On the GPU (gpu_denoiser.h), from the sums in device memory.
+    double readDenoised(std::vector<float>& rgba) const override;
+    // The denoised beauty into device memory (RGBA float, e.g. an interop pixel buffer); returns
+    // the seconds its kernels took.
+    double copyDenoisedToDevice(float* deviceRgba) const;
     uint64_t aovBytes() const override;
 
     // Paths alive at the start of each bounce in the last wavefront wave (compaction's effect).
@@ -91,6 +97,8 @@ private:
     DeviceBuffer<double> sum_;
     AovMask aovsRequested_ = 0, aovs_ = 0;  // as set; as applied at the last reset
     DeviceBuffer<double> aovSums_;          // render/backend/aov.h's layout; none without AOVs
+    mutable GpuDenoiser denoiser_;          // working memory only once a denoise ran
+    mutable DeviceBuffer<float> denoised_;  // its RGBA output
     DeviceBuffer<Aabb> primBoxes_;
     DeviceBuffer<uint32_t> refitVisits_;
     DeviceBuffer<Ray> queryRays_;

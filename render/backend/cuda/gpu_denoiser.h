@@ -1,0 +1,30 @@
+#pragma once
+// The denoiser (render/denoise/) on the GPU: the same per-pixel steps as denoiseOnCpu, each a
+// kernel, over guides computed from the accumulation's sums where they are, so neither the
+// guides nor the image leave the device. Its working memory exists only while it is used.
+#include <cuda_runtime.h>
+
+#include <cstdint>
+
+#include "render/backend/cuda/device_buffer.h"
+#include "render/denoise/atrous_filter.h"
+#include "render/integrator/aov.h"
+
+namespace pt::cuda {
+
+class GpuDenoiser {
+public:
+    // The mean of `sum` (RGB doubles a pixel over `samples`) denoised into `rgba` (device, RGBA
+    // float a pixel), guided by the AOV sums of `aovs`, which must hold kDenoiseGuideAovs
+    // (backend.h).
+    void run(const double* sum, const AovBuffers& aovs, uint32_t width, uint32_t height, uint32_t samples,
+             float* rgba, cudaStream_t stream);
+    uint64_t bytes() const { return planes_.bytes() + input_.bytes() + a_.bytes() + b_.bytes(); }
+    void release();
+
+private:
+    DeviceBuffer<float> planes_;  // beauty, albedo, normal, depth, emission, variance: RGBA planes
+    DeviceBuffer<DenoiseSample> input_, a_, b_;  // demodulated input; the passes' two planes
+};
+
+}  // namespace pt::cuda

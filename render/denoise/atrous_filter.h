@@ -1,0 +1,235 @@
+#pragma once
+// The per-pixel steps of the denoiser, shared by the CPU driver (denoiser.h) and the CUDA
+// kernels: the spatial filter of SVGF (Schied et al. 2017, "Spatiotemporal Variance-Guided
+// Filtering"), an edge-avoiding a-trous wavelet filter (Dammertz et al. 2010, "Edge-Avoiding
+// A-Trous Wavelet Transform for fast Global Illumination Filtering") whose luminance edge
+// stop is scaled by the estimated standard deviation of each pixel's mean. Why this method: it
+// needs nothing but the guides the renderer already writes (first-hit albedo, shading normal,
+// depth, the variance of the mean), it is five passes of 25 taps (a few milliseconds at 1080p on
+// a CPU core per pass, far less on a GPU), and its luminance edge stop makes it fade out by
+// itself: as samples grow the variance of the mean falls, the stop tightens, and a converged
+// image passes through almost untouched. A feature regression (Koskela et al. 2019, BMFR) cleans
+// more at 1 spp but blocks of least squares cost far more and need a temporal pass to hide their
+// seams; we have no motion vectors to feed one.
+//
+// The filter works on demodulated radiance (radiance over albedo), so textures are multiplied
+// back after filtering and keep their detail; the variance carried along is that of each
+// pixel's mean luminance, filtered with the squared weights (SVGF, eq. 4).
+// Images are row-major RGBA floats (what Backend::readBeauty and readAov return).
+#include <cstdint>
+
+#include "render/math/hd.h"
+#include "render/math/vec.h"
+
+namespace pt {
+
+// One pixel of the filter's working planes: demodulated radiance and the variance of its
+// mean luminance. A pixel whose input was not finite has a negative variance: it takes no part
+// in the filter, and its neighbours fill it in.
+struct DenoiseSample {
+    Vec3 radiance;
+    float variance;
+
+    PT_HD bool valid() const { return variance >= 0.0f; }
+};
+
+// The guides, row-major RGBA: first-hit albedo, shading normal (xyz; 0 where the camera ray
+// left the scene), depth (r; 0 where it left the scene), emission seen first.
+struct DenoiseGuides {
+    uint32_t width, height;
+    const float* albedo;
+    const float* normal;
+    const float* depth;
+    const float* emission;
+};
+
+namespace denoise {
+
+// Edge-stopping strengths of SVGF (Schied et al. 2017, section 4.3): normals, depth and
+// luminance as there. But our guides are averages over each pixel's antialiased samples: a
+// crease or silhouette pixel holds a mix of normals (their average is shorter than 1), and at
+// power 128 it is cut off from every neighbour and keeps all its noise. So the power falls
+// with the pixels' spread of normals, 1 - |average|: 128 for a pixel on one smooth surface
+// (which keeps normal-mapped detail), about 2 for one astride a right-angled crease. Measured
+// on the Cornell box at 48x48, relMSE against 1024 spp divided by the denoiser at 4 / 16 spp:
+// a fixed power of 128 2.5x / 2.5x, 16 3.5x, 2 8.5x / 4.7x.
+constexpr float kNormalPower = 128.0f;
+constexpr float kNormalSpreadTolerance = 256.0f;
+constexpr float kDepthSigma = 1.0f;
+// Luminance: 2 deviations, not SVGF's 4: with 4 the rim of GolfBall (dark grazing facets
+// against the sky, noisy pixels whose neighbours truly differ) was smoothed into its
+// neighbours, leaving 2.2x the raw relMSE at 16 spp; with 2, 0.81x (the Cornell box at 48x48,
+// 4 spp: 8.0x less error with 4, 6.0x with 2).
+constexpr float kLuminanceSigma = 2.0f;
+// Albedo channels below this are not divided out (black or missing surfaces): dividing would
+// amplify noise by its inverse.
+constexpr float kMinAlbedo = 0.01f;
+// The a-trous filter's 1D B3-spline weights (Dammertz et al. 2010), for taps -2 .. 2.
+PT_HD float splineWeight(int tap) {
+    const int distance = tap < 0 ? -tap : tap;
+    return distance == 0 ? 3.0f / 8.0f : (distance == 1 ? 1.0f / 4.0f : 1.0f / 16.0f);
+}
+
+PT_HD Vec3 loadRgb(const float* rgba, uint32_t i) { return {rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2]}; }
+
+PT_HD float sanitized(float v) { return isFinite(v) ? v : 0.0f; }
+
+constexpr float kInvalid = -1.0f;  // DenoiseSample::variance of a pixel left out
+
+// What pixel i's reflected radiance is divided by, and multiplied back with. The guides are
+// averages over the pixel's samples, and samples that left the scene add 0 to them but the sky
+// to the beauty: dividing a pixel half on a surface and half on the sky by its halved albedo
+// would double the sky in it (the rim of a ball against the sky came out 1.3x too bright and
+// smeared along the rim, measured on GolfBall). So the part of the pixel that missed, estimated
+// as 1 - |averaged normal| (unit normals where it hit), counts with albedo 1: not divided.
+// Channels of albedo below kMinAlbedo are not divided either.
+PT_HD Vec3 demodulator(const DenoiseGuides& g, uint32_t i) {
+    const Vec3 n = loadRgb(g.normal, i);
+    const float missed = 1.0f - minf(sqrtf(sanitized(dot(n, n))), 1.0f);
+    const Vec3 a = loadRgb(g.albedo, i) + Vec3(missed);
+    return {a.x > kMinAlbedo ? a.x : 1.0f, a.y > kMinAlbedo ? a.y : 1.0f, a.z > kMinAlbedo ? a.z : 1.0f};
+}
+
+// Pixel i's demodulated radiance and the variance of its mean luminance; a pixel with
+// non-finite radiance is left out (kInvalid), so that it never spreads. Emission seen first
+// (a light's face) is taken out before and put back after: it is not lit by anything, and a
+// pixel half on a lamp would otherwise divide the lamp by the albedo of what is beside it.
+PT_HD DenoiseSample demodulatedSample(const float* beauty, const float* varianceOfMean,
+                                      const DenoiseGuides& g, uint32_t i) {
+    const Vec3 radiance = loadRgb(beauty, i);
+    const Vec3 emission = loadRgb(g.emission, i);
+    if (!isFinite(radiance) || !isFinite(emission)) return {Vec3(0.0f), kInvalid};
+    const Vec3 d = demodulator(g, i);
+    const float scale = luminance(d);
+    const float variance = sanitized(varianceOfMean[4 * i]);
+    return {(radiance - emission) / d, maxf(variance, 0.0f) / (scale * scale)};
+}
+
+// The filtered value held within a few standard deviations of the pixel's own mean (in
+// luminance, the move scaled down as a whole): the filter may take out what the noise can
+// explain, and no more. This is what makes it fade out: the bound is kNoiseBound deviations
+// up to kFullStrengthSamples samples a pixel and narrows as 1/samples past them, faster than
+// the noise falls, because the bias the edge stops let through does not fall with it (at 4096
+// spp on GolfBall the unbounded filter left 150x the raw relMSE, smoothing the shading of
+// dimples under a normal map that the guides hardly see). A pixel whose variance is
+// underestimated (a highlight every sample found) keeps its raw value.
+constexpr float kNoiseBound = 3.0f;
+constexpr float kFullStrengthSamples = 64.0f;
+PT_HD Vec3 boundedByNoise(const DenoiseSample& input, Vec3 filtered, uint32_t samples) {
+    if (!input.valid()) return filtered;  // nothing of its own to stay near: its neighbours' mean
+    const float move = fabsf(luminance(filtered) - luminance(input.radiance));
+    const float strength = minf(1.0f, kFullStrengthSamples / float(samples > 0 ? samples : 1));
+    const float bound = kNoiseBound * strength * sqrtf(input.variance);
+    return move > bound ? input.radiance + (filtered - input.radiance) * (bound / move) : filtered;
+}
+
+PT_HD Vec3 remodulated(Vec3 radiance, const DenoiseGuides& g, uint32_t i) {
+    const Vec3 emission = loadRgb(g.emission, i);
+    return radiance * demodulator(g, i) + (isFinite(emission) ? emission : Vec3(0.0f));
+}
+
+// How much a neighbour q shares pixel p's surface, from the normals and depths (SVGF eq. 5).
+// `depthSlope`: how fast p's depth changes a pixel; `pixels`: the distance from p to q.
+PT_HD float geometryWeight(const DenoiseGuides& g, uint32_t p, uint32_t q, float depthSlope, float pixels) {
+    const float zp = g.depth[4 * p], zq = g.depth[4 * q];
+    const bool missP = !(zp > 0.0f && isFinite(zp)), missQ = !(zq > 0.0f && isFinite(zq));
+    if (missP || missQ) return missP == missQ ? 1.0f : 0.0f;  // the background only with itself
+    const float wz = expf(-fabsf(zp - zq) / (kDepthSigma * depthSlope * pixels + 1e-3f * zp));
+    // Averaged unit normals: their length falls below 1 where a pixel mixes surfaces.
+    const Vec3 np = loadRgb(g.normal, p), nq = loadRgb(g.normal, q);
+    const float lp = sqrtf(sanitized(dot(np, np))), lq = sqrtf(sanitized(dot(nq, nq)));
+    if (!(lp > 0.0f && lq > 0.0f)) return 0.0f;
+    const float cosine = maxf(sanitized(dot(np, nq)) / (lp * lq), 0.0f);
+    const float spread = 1.0f - minf(minf(lp, lq), 1.0f);
+    return wz * powf(cosine, kNormalPower / (1.0f + kNormalSpreadTolerance * spread));
+}
+
+// The larger of p's depth slopes along x and y (central differences where both sides exist).
+PT_HD float depthSlopeAt(const DenoiseGuides& g, uint32_t x, uint32_t y) {
+    const auto z = [&](uint32_t xx, uint32_t yy) { return sanitized(g.depth[4 * (yy * g.width + xx)]); };
+    const uint32_t x0 = x > 0 ? x - 1 : x, x1 = x + 1 < g.width ? x + 1 : x;
+    const uint32_t y0 = y > 0 ? y - 1 : y, y1 = y + 1 < g.height ? y + 1 : y;
+    const float dx = x1 > x0 ? fabsf(z(x1, y) - z(x0, y)) / float(x1 - x0) : 0.0f;
+    const float dy = y1 > y0 ? fabsf(z(x, y1) - z(x, y0)) / float(y1 - y0) : 0.0f;
+    return maxf(dx, dy);
+}
+
+// The variance of a pixel's mean estimated from its neighbours (a 7x7 window on the same
+// surface), for the first samples, where each pixel's own estimate has too few samples to
+// speak (SVGF section 4.2 does the same while a pixel's history is short): where the true
+// image is smooth, neighbouring means differ by the noise of a mean.
+PT_HD float spatialVarianceAt(const DenoiseSample* in, const DenoiseGuides& g, uint32_t x, uint32_t y) {
+    const uint32_t p = y * g.width + x;
+    if (!in[p].valid()) return kInvalid;
+    const float slope = depthSlopeAt(g, x, y);
+    float sumW = 0.0f, sumL = 0.0f, sumL2 = 0.0f;
+    for (int dy = -3; dy <= 3; ++dy) {
+        for (int dx = -3; dx <= 3; ++dx) {
+            const int qx = int(x) + dx, qy = int(y) + dy;
+            if (qx < 0 || qy < 0 || qx >= int(g.width) || qy >= int(g.height)) continue;
+            const uint32_t q = uint32_t(qy) * g.width + uint32_t(qx);
+            if (!in[q].valid()) continue;
+            const float w = geometryWeight(g, p, q, slope, sqrtf(float(dx * dx + dy * dy)));
+            const float l = luminance(in[q].radiance);
+            sumW += w;
+            sumL += w * l;
+            sumL2 += w * l * l;
+        }
+    }
+    const float mean = sumL / sumW;  // sumW >= 1: p itself
+    return maxf(sumL2 / sumW - mean * mean, 0.0f);
+}
+
+// The variance of p's mean luminance blurred over 3x3 (SVGF eq. 5's g_3x3): the luminance
+// edge stop should not follow the noise of the variance estimate itself.
+PT_HD float blurredVarianceAt(const DenoiseSample* in, uint32_t width, uint32_t height, uint32_t x,
+                              uint32_t y) {
+    float sum = 0.0f, sumW = 0.0f;
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            const int qx = int(x) + dx, qy = int(y) + dy;
+            if (qx < 0 || qy < 0 || qx >= int(width) || qy >= int(height)) continue;
+            const DenoiseSample s = in[uint32_t(qy) * width + uint32_t(qx)];
+            if (!s.valid()) continue;
+            const float w = (dx == 0 ? 2.0f : 1.0f) * (dy == 0 ? 2.0f : 1.0f);  // 3x3 binomial
+            sum += w * s.variance;
+            sumW += w;
+        }
+    }
+    return sumW > 0.0f ? sum / sumW : 0.0f;
+}
+
+// One a-trous iteration at pixel (x, y): 5x5 taps `step` pixels apart (step = 2^iteration).
+// A left-out centre takes its neighbours' weighted mean (by the guides alone).
+PT_HD DenoiseSample atrousAt(const DenoiseSample* in, const DenoiseGuides& g, uint32_t x, uint32_t y,
+                             uint32_t step) {
+    const uint32_t p = y * g.width + x;
+    const DenoiseSample center = in[p];
+    const float slope = depthSlopeAt(g, x, y);
+    const float lp = luminance(center.radiance);
+    const float sigmaL = kLuminanceSigma * sqrtf(blurredVarianceAt(in, g.width, g.height, x, y)) + 1e-10f;
+    const bool centerValid = center.valid();
+    Vec3 sum(0.0f);
+    float sumW = 0.0f, sumVariance = 0.0f;
+    for (int j = -2; j <= 2; ++j) {
+        for (int i = -2; i <= 2; ++i) {
+            const int qx = int(x) + i * int(step), qy = int(y) + j * int(step);
+            if (qx < 0 || qy < 0 || qx >= int(g.width) || qy >= int(g.height)) continue;
+            const uint32_t q = uint32_t(qy) * g.width + uint32_t(qx);
+            const DenoiseSample s = in[q];
+            if (!s.valid()) continue;
+            const float pixels = float(step) * sqrtf(float(i * i + j * j));
+            const float wl = centerValid ? expf(-fabsf(luminance(s.radiance) - lp) / sigmaL) : 1.0f;
+            const float w = splineWeight(i) * splineWeight(j) * wl *
+                            (q == p ? 1.0f : geometryWeight(g, p, q, slope, pixels));
+            sum += w * s.radiance;
+            sumW += w;
+            sumVariance += w * w * s.variance;
+        }
+    }
+    if (!(sumW > 0.0f)) return {Vec3(0.0f), kInvalid};
+    return {sum / sumW, sumVariance / (sumW * sumW)};
+}
+
+}  // namespace denoise
+}  // namespace pt

@@ -1,0 +1,28 @@
+#pragma once
+// The denoiser on the CPU: the a-trous filter of atrous_filter.h over a whole image, one TBB
+// task per row band for each of its passes. The CUDA backend runs the same per-pixel steps as
+// kernels.
+#include <cstdint>
+#include <vector>
+
+#include "render/denoise/atrous_filter.h"
+
+namespace pt {
+
+// Five a-trous passes (taps 1 to 16 pixels apart): a 125-pixel-wide footprint at 1080p.
+constexpr uint32_t kDenoiseIterations = 5;
+// Below this many samples a pixel, the variance of each pixel's mean comes from its neighbours
+// (spatialVarianceAt), its own estimate having too few samples.
+constexpr uint32_t kMinSamplesForOwnVariance = 4;
+
+struct DenoiseInput {
+    uint32_t samples = 0;                   // of the accumulation, a pixel
+    const float* beauty = nullptr;          // mean radiance, RGBA
+    const float* varianceOfMean = nullptr;  // the variance AOV (r: variance of the mean luminance)
+    DenoiseGuides guides{};                 // width, height, albedo, shading normal, depth
+};
+
+// The denoised beauty, RGBA (alpha 1), finite everywhere.
+void denoiseOnCpu(const DenoiseInput& in, std::vector<float>& rgba);
+
+}  // namespace pt

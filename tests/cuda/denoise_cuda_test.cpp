@@ -1,0 +1,96 @@
+// The denoiser on the GPU: the same image as the CPU filter from the same accumulation, and
+// error against a reference at few and at many samples, on the Cornell box and a shared asset
+// with textures and normal maps (GolfBall).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+#include "cuda_test_support.h"
+#include "render/backend/cuda/cuda_backend.h"
+#include "render/util/image_error.h"
+#include "support/load_scene.h"
+#include "support/test_paths.h"
+
+namespace pt {
+namespace {
+
+Scene sized(Scene scene, uint32_t width, uint32_t height) {
+    scene.render.width = width;
+    scene.render.height = height;
+    return scene;
+}
+
+Scene cornell(uint32_t size) {
+    return sized(test::loadSceneOrFail(test::projectPath("scenes/cornell.json")), size, size);
+}
+
+// The backend's accumulation after `spp` samples with the denoiser's guides.
+void renderWithGuides(cuda::CudaBackend& backend, const Scene& scene, uint32_t spp) {
+    backend.setAovs(kDenoiseGuideAovs);
+    backend.sync(scene, SceneChanges::All, {});
+    backend.render(spp);
+}
+
+TEST(GpuDenoiser, MatchesTheCpuFilterOnTheSameAccumulation) {
+    PT_REQUIRE_CUDA_DEVICE();
+    for (const uint32_t spp : {2u, 8u}) {  // the neighbours' variance, then each pixel's own
+        cuda::CudaBackend backend;
+        renderWithGuides(backend, cornell(64), spp);
+        std::vector<float> gpu, cpu;
+        backend.readDenoised(gpu);
+        backend.Backend::readDenoised(cpu);  // the guides read back, the CPU filter
+        ASSERT_EQ(gpu.size(), cpu.size());
+        float worst = 0.0f;
+        for (size_t i = 0; i < gpu.size(); ++i) {
+            worst = std::max(worst, std::fabs(gpu[i] - cpu[i]) / std::max(1.0f, std::fabs(cpu[i])));
+        }
+        std::cout << "[ figures  ] " << spp << " spp: largest relative difference GPU vs CPU denoiser "
+                  << worst << "\n";
+        EXPECT_LE(worst, 1e-3f) << spp << " spp";
+    }
+}
+
+// relMSE against a 65536-spp reference, raw and denoised, at 4, 16 and 4096 spp: at most
+// `fewSamplesRatio` of the raw error at 4 and 16, and no more than 1.05x at 4096 (it fades out).
+void expectDenoisingPays(const std::string& name, const Scene& scene, double fewSamplesRatio) {
+    cuda::CudaBackend backend;
+    backend.sync(scene, SceneChanges::All, {});
+    backend.render(65536);
+    std::vector<float> truth;
+    backend.readBeauty(truth);
+    for (const uint32_t spp : {4u, 16u, 4096u}) {
+        renderWithGuides(backend, scene, spp);
+        std::vector<float> raw, denoised;
+        backend.readBeauty(raw);
+        const double ms = backend.readDenoised(denoised) * 1e3;
+        const double rawError = imageError(raw, truth).relMse,
+                     denoisedError = imageError(denoised, truth).relMse;
+        std::cout << "[ figures  ] " << name << " " << scene.render.width << "x" << scene.render.height
+                  << ", " << spp << " spp: relMSE raw " << rawError << ", denoised " << denoisedError << " ("
+                  << rawError / denoisedError << "x less), filter " << ms << " ms\n";
+        EXPECT_TRUE(allFinite(denoised));
+        EXPECT_LE(denoisedError, (spp < 1024 ? fewSamplesRatio : 1.05) * rawError)
+            << name << ", " << spp << " spp";
+    }
+}
+
+TEST(GpuDenoiser, CornellBoxErrorFallsAtFewSamplesAndNotAtMany) {
+    PT_REQUIRE_CUDA_DEVICE();
+    expectDenoisingPays("Cornell", cornell(128), 0.25);
+}
+
+TEST(GpuDenoiser, TexturedAssetErrorFallsAtFewSamplesAndNotAtMany) {
+    PT_REQUIRE_CUDA_DEVICE();
+    PT_REQUIRE_SHARED_ASSET("GolfBall/GolfBall.glb");
+    // Not yet the quarter the Cornell box reaches: under its uniform sky the ball's noise is
+    // low, and most of the error left is on its rim, where pixels mixing dark grazing facets
+    // with the sky are noisy and truly unlike their neighbours (measured on the CPU at 4 / 16
+    // spp: 0.36x / 0.81x of the raw relMSE). It must still never add error.
+    expectDenoisingPays(
+        "GolfBall", sized(test::loadSceneOrFail(test::sharedAsset("GolfBall/GolfBall.glb")), 160, 120), 1.0);
+}
+
+}  // namespace
+}  // namespace pt
