@@ -21,6 +21,10 @@ struct ViewerSettings {
     // next reset on (changing them restarts accumulation); exportRender writes those that are.
     AovMask exportAovs = 0;
     bool exportHalf = false;          // 16-bit EXR channels (exr_layers.h: which stay float)
+    // The beauty shown (and exported beside the raw one) through the denoiser. Its guides are
+    // accumulated from the reset that turning it on makes; turning it off keeps them, so that
+    // switching back and forth is a display change.
+    bool denoise = false;
 };
 
 struct Document {

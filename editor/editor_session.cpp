@@ -100,7 +100,11 @@ SyncReport EditorSession::sync(const ProgressFn& progress) {
     // allocated).
     const int32_t aov = doc_.viewer.aov;
     const AovMask shown = aov >= 0 && aov < int32_t(Aov::Count) ? aovBit(Aov(aov)) : 0u;
-    const AovMask wanted = shown | (doc_.viewer.exportAovs & kAllAovs);
+    // The denoiser's guides while it is on; once it is off they stay (turning it off is a
+    // display change) until an edit restarts the accumulation anyway.
+    if (changes != SceneChanges::None || doc_.viewer.denoise) keepDenoiseGuides_ = doc_.viewer.denoise;
+    const AovMask guides = keepDenoiseGuides_ ? kDenoiseGuideAovs : 0u;
+    const AovMask wanted = shown | (doc_.viewer.exportAovs & kAllAovs) | guides;
     if (backend_->aovs() != wanted) {
         backend_->setAovs(wanted);
         changes |= SceneChanges::Settings;
@@ -125,12 +129,22 @@ bool EditorSession::converged(uint32_t target) const {
     return target > 0 && backend_->stats().samplesPerPixel >= target;
 }
 
-void EditorSession::readDisplayed(int32_t aov, std::vector<float>& rgba) const {
+void EditorSession::readDisplayed(int32_t aov, bool denoise, std::vector<float>& rgba) const {
     if (aov >= 0 && (backend_->aovs() & aovBit(Aov(aov)))) {
         backend_->readAov(Aov(aov), rgba);
-        return;
+    } else if (denoises(denoise)) {
+        lastDenoiseSeconds_ = backend_->readDenoised(rgba);
+    } else {
+        backend_->readBeauty(rgba);
     }
-    backend_->readBeauty(rgba);
+}
+
+bool EditorSession::copyDisplayedToDevice(bool denoise, void* deviceRgba) const {
+    if (!denoises(denoise)) return backend_->copyBeautyToDevice(deviceRgba);
+    double seconds = 0.0;
+    const bool copied = backend_->copyDenoisedToDevice(deviceRgba, &seconds);
+    if (copied) lastDenoiseSeconds_ = seconds;
+    return copied;
 }
 
 EditLatency EditorSession::lastEdit() const {
@@ -171,8 +185,8 @@ namespace {
 
 AovMask EditorSession::exportRender(const std::string& exrPath, const std::string& displayPath,
                                     const DisplayProcessor& display) const {
-    std::vector<float> beauty;
-    backend_->readBeauty(beauty);
+    std::vector<float> beauty;  // what the viewport shows
+    readDisplayed(-1, doc_.viewer.denoise, beauty);
     const BackendStats stats = backend_->stats();
     ImageMetadata metadata = renderMetadata(stats.samplesPerPixel, std::to_string(stats.renderSeconds),
                                             backend_->name(), doc_.scene.sourcePath, "pathtracer editor 0.1");
@@ -182,9 +196,10 @@ AovMask EditorSession::exportRender(const std::string& exrPath, const std::strin
     AovMask written = 0;
     if (!exrPath.empty()) {
         const ViewerSettings& viewer = doc_.viewer;
-        const LayeredExr exr = renderedExr(*backend_, viewer.exportAovs,
-                                           viewer.exportHalf ? ExrPixelType::Half : ExrPixelType::Float,
-                                           doc_.scene.camera, metadata);
+        LayeredExr exr = renderedExr(*backend_, viewer.exportAovs,
+                                     viewer.exportHalf ? ExrPixelType::Half : ExrPixelType::Float,
+                                     doc_.scene.camera, metadata);
+        if (denoises(viewer.denoise)) exr.denoised = beauty;  // beside the raw beauty
         writeLayeredExr(exrPath, exr);
         for (const AovImage& layer : exr.aovs) written |= aovBit(layer.aov);
     }

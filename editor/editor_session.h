@@ -4,6 +4,7 @@
 // window (editor/ui) drives it from two threads through RenderWorker; tests and the
 // `pt-render editbench` latency benchmark drive it directly, so what they measure is the
 // editor's own path from an edit to a frame.
+#include <atomic>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -64,8 +65,14 @@ public:
     // The same, with the target given, for a render thread that must not read the document
     // while the UI thread edits it.
     uint32_t render(uint32_t passes, uint32_t targetSpp);
-    // The linear image the viewport shows: the beauty (aov -1) or that AOV, RGBA float.
-    void readDisplayed(int32_t aov, std::vector<float>& rgba) const;
+    // The linear image the viewport shows: the beauty (aov -1; denoised with `denoise` once
+    // its guides are accumulated) or that AOV, RGBA float.
+    void readDisplayed(int32_t aov, bool denoise, std::vector<float>& rgba) const;
+    // The beauty as readDisplayed gives it, written into device memory (CUDA-GL interop);
+    // false where the backend cannot.
+    bool copyDisplayedToDevice(bool denoise, void* deviceRgba) const;
+    // Seconds the last denoise of a shown or exported frame took (0: none yet).
+    double lastDenoiseSeconds() const { return lastDenoiseSeconds_.load(); }
     bool converged() const { return converged(doc_.viewer.targetSpp); }
     bool converged(uint32_t targetSpp) const;
     Backend& backend() { return *backend_; }
@@ -89,8 +96,15 @@ private:
     // An edit handed over at `start` and applied now.
     void noteEdit(const std::string& label, SceneChangeMask changes, Clock::time_point start);
 
+    // Whether the denoiser can run now: asked for and its guides accumulated.
+    bool denoises(bool asked) const {
+        return asked && (backend_->aovs() & kDenoiseGuideAovs) == kDenoiseGuideAovs;
+    }
+
     Document doc_;
     CommandStack history_;
+    mutable std::atomic<double> lastDenoiseSeconds_{0.0};
+    bool keepDenoiseGuides_ = false;  // accumulate the denoiser's guides (sync())
     std::unique_ptr<Backend> backend_;
     SceneChangeMask pending_ = SceneChanges::All;
     std::vector<Material> materialsAtLoad_;

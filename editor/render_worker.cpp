@@ -69,18 +69,19 @@ void RenderWorker::setStage(const std::string& stage, double fraction) {
     status_.fraction = fraction;
 }
 
-void RenderWorker::publishFrame(int32_t aov) {
+void RenderWorker::publishFrame(int32_t aov, bool denoise) {
     DisplayFrame next;
     const Backend& backend = session_.backend();
     next.width = backend.width();
     next.height = backend.height();
     next.aov = aov;
     next.stats = backend.stats();
-    if (hostFrames_ || aov >= 0) session_.readDisplayed(aov, next.rgba);
+    if (hostFrames_ || aov >= 0) session_.readDisplayed(aov, denoise, next.rgba);
     std::lock_guard<std::mutex> lock(frameMutex_);
     next.serial = frame_.serial + 1;
     frame_ = std::move(next);
     publishedAov_ = aov;
+    publishedDenoise_ = denoise;
 }
 
 // Called with the backend lock held, after passes.
@@ -97,6 +98,7 @@ bool RenderWorker::step() {
     SceneChangeMask pending;
     uint32_t passes, target;
     int32_t aov;
+    bool denoise;
     {
         std::shared_lock<std::shared_mutex> lock(sceneMutex_);
         pending = session_.pendingChanges();
@@ -104,6 +106,7 @@ bool RenderWorker::step() {
         passes = viewer.samplesPerFrame;  // 0: automatic, decided once the sync has run
         target = viewer.targetSpp;
         aov = viewer.aov;
+        denoise = viewer.denoise;
     }
     std::lock_guard<std::mutex> backendLock(backendMutex_);
     bool changed = false;
@@ -133,12 +136,14 @@ bool RenderWorker::step() {
     if (passes == 0) passes = autoPassesPerStep(secondsPerPass_, session_.backend().stats().samplesPerPixel);
     const auto start = Clock::now();
     const uint32_t rendered = session_.render(passes, target);
-    if (rendered > 0 || changed || aov != publishedAov_) publishFrame(aov);
+    if (rendered > 0 || changed || aov != publishedAov_ || denoise != publishedDenoise_)
+        publishFrame(aov, denoise);
     if (rendered > 0) measureError();  // after publishing, so the frame is not delayed by it
     const double seconds = secondsSince(start);
     if (rendered > 0) secondsPerPass_ = seconds / rendered;
     std::vector<uint32_t> alive = rendered > 0 ? session_.backend().pathsAlivePerBounce() : std::vector<uint32_t>{};
     std::lock_guard<std::mutex> status(statusMutex_);
+    status_.denoiseSeconds = session_.lastDenoiseSeconds();
     if (rendered > 0) {
         status_.secondsPerPass = secondsPerPass_;
         status_.pathsAlivePerBounce = std::move(alive);

@@ -36,6 +36,7 @@ struct WorkerStatus {
     double fraction = 0.0;    // of that stage
     std::string error;        // the last sync's refusal, until the next edit
     double secondsPerPass = 0.0;
+    double denoiseSeconds = 0.0;  // the last denoise of a shown or exported frame (0: none yet)
     bool converged = false;
     std::vector<ToggleState> toggles;  // as the backend applies them, after the last sync
     uint64_t deviceMemoryBytes = 0;
@@ -74,7 +75,7 @@ private:
     void run();
     void wake();  // the render thread: there is new work (an edit, or stop)
     bool step();  // one sync and/or batch of passes; false when there was nothing to do
-    void publishFrame(int32_t aov);
+    void publishFrame(int32_t aov, bool denoise);
     void measureError();
     void setStage(const std::string& stage, double fraction);
 
@@ -94,6 +95,7 @@ private:
     DisplayFrame frame_;
     uint64_t taken_ = 0;
     int32_t publishedAov_ = -2;
+    bool publishedDenoise_ = false;
 
     ErrorTracker errors_;
 

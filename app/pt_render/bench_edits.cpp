@@ -144,7 +144,7 @@ void benchEdits(const std::string& backendName, Scene scene, const BenchSettings
             // The editor's CUDA-GL path: the frame is written into (here: stand-in) GL memory.
             const bool onDevice = deviceFrame.memory() && session.backend().copyBeautyToDevice(deviceFrame.memory());
             const double deviceDisplayed = secondsSince(start);
-            session.readDisplayed(session.document().viewer.aov, frame);
+            session.readDisplayed(session.document().viewer.aov, session.document().viewer.denoise, frame);
             const double displayed = secondsSince(start);
             last = session.lastEdit();
             if (run == 0) continue;  // warm-up

@@ -112,9 +112,11 @@ int runConverge(const std::vector<std::string>& args) {
         if (interrupt.interrupted()) break;
         const auto backend = syncedBackend(r.setup, variant.toggles, input.scene, bar);
         backend->render(1);  // warm-up (thread pools, first-touch pages), not charged to the variant
+        if (variant.denoise) backend->setAovs(kDenoiseGuideAovs);  // from the reset on
         backend->resetAccumulation();
         const ProgressFn progress = [&](const std::string&, double f) { bar.update(variant.name, f); };
-        std::vector<ErrorPoint> points = measureConvergence(*backend, reference.rgba, r.seconds, progress, stop);
+        std::vector<ErrorPoint> points =
+            measureConvergence(*backend, reference.rgba, r.seconds, variant.denoise, progress, stop);
         bar.finish();
         if (points.empty()) break;  // interrupted before its first point
         curves.push_back({variant.name, std::move(points)});

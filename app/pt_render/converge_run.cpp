@@ -18,8 +18,9 @@ std::vector<double> logSpacedTimes(double budget) {
     return times;
 }
 
-std::vector<ErrorPoint> measureConvergence(Backend& backend, const std::vector<float>& reference, double budget,
-                                              const ProgressFn& progress, const std::function<bool()>& stop) {
+std::vector<ErrorPoint> measureConvergence(Backend& backend, const std::vector<float>& reference,
+                                           double budget, bool denoise, const ProgressFn& progress,
+                                           const std::function<bool()>& stop) {
     const std::vector<double> times = logSpacedTimes(budget);
     std::vector<ErrorPoint> points;
     std::vector<float> image;
@@ -28,7 +29,11 @@ std::vector<ErrorPoint> measureConvergence(Backend& backend, const std::vector<f
     while (next < times.size() && !(stop && stop())) {
         const BackendStats stats = backend.stats();
         if (stats.samplesPerPixel > 0 && stats.renderSeconds >= times[next]) {
-            backend.readBeauty(image);
+            if (denoise) {
+                backend.readDenoised(image);
+            } else {
+                backend.readBeauty(image);
+            }
             points.push_back({stats.renderSeconds, stats.samplesPerPixel, imageError(image, reference)});
             while (next < times.size() && times[next] <= stats.renderSeconds) ++next;
             continue;

@@ -16,9 +16,12 @@ namespace pt::cli {
 std::vector<double> logSpacedTimes(double budget);
 
 // Renders on `backend` (synced, with the variant's toggles) until `budget` seconds, recording
-// a point at the first pass that ends at or past each of logSpacedTimes(budget). Where `stop`
-// (polled between batches of passes) says so, it returns the points recorded so far.
-std::vector<ErrorPoint> measureConvergence(Backend& backend, const std::vector<float>& reference, double budget,
-                                              const ProgressFn& progress, const std::function<bool()>& stop = {});
+// a point at the first pass that ends at or past each of logSpacedTimes(budget): the error of
+// the beauty, or with `denoise` of the denoised beauty (the backend accumulating the guides;
+// the filter's own time is not render time). Where `stop` (polled between batches of passes)
+// says so, it returns the points recorded so far.
+std::vector<ErrorPoint> measureConvergence(Backend& backend, const std::vector<float>& reference,
+                                           double budget, bool denoise, const ProgressFn& progress,
+                                           const std::function<bool()>& stop = {});
 
 }  // namespace pt::cli

@@ -1,5 +1,6 @@
 #include "converge_variant.h"
 
+#include <algorithm>
 #include <map>
 
 #include "cli_options.h"
@@ -26,6 +27,7 @@ const std::map<std::string, SwitchFlags>& switchKeys() {
         {"compaction", {"", "--no-compaction"}},
         {"material_sort", {"--sort-materials", "--no-sort-materials"}},
         {"first_hit_cache", {"", "--no-first-hit-cache"}},
+        {"denoise", {"--denoise", ""}},
     };
     return keys;
 }
@@ -78,6 +80,10 @@ ConvergeVariant parseVariant(const std::string& spec) {
                 if (end > begin) appendFlags(settings.substr(begin, end - begin), flags);
             }
         }
+        // --denoise is the render command's, not a toggle.
+        const auto denoise = std::find(flags.begin(), flags.end(), "--denoise");
+        variant.denoise = denoise != flags.end();
+        if (variant.denoise) flags.erase(denoise);
         variant.toggles = parseToggles(Options(flags, toggleValuedFlags(), toggleSwitches()));
     } catch (const UsageError& e) {
         throw UsageError("--variant " + spec + ": " + e.what());

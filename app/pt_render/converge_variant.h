@@ -4,7 +4,8 @@
 // (render/backend/toggle_states.h): nee, mis, rr, bvh, pixel_jitter, megakernel, compaction,
 // material_sort, first_hit_cache take on/off; clamp and rebuild_ratio take a number. Each
 // key is turned into the render command's flag and read by parseToggles, so a variant means
-// exactly what the same flags mean to `pt-render render`.
+// exactly what the same flags mean to `pt-render render`. denoise=on measures the error of
+// the denoised image (render --denoise) instead of the raw one.
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@ struct ConvergeVariant {
     std::string name;
     std::string spec;  // as given, for reports
     IntegratorToggles toggles;
+    bool denoise = false;
 };
 
 // Throws UsageError naming the spec and the bad key or value.

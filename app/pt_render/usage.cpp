@@ -46,8 +46,8 @@ constexpr CommandUsage kCommands[] = {
       Render each variant (default: full, and naive:nee=off,mis=off,rr=off) for SECONDS (default
       10), measuring relMSE, RMSE and MAPE against the reference at log-spaced times; print the
       errors at equal time and flag variants whose error stops falling. Keys: nee, mis, rr, bvh,
-      pixel_jitter, megakernel, path_regeneration, compaction, material_sort, first_hit_cache
-      (on|off), clamp,
+      pixel_jitter, megakernel, path_regeneration, compaction, material_sort, first_hit_cache,
+      denoise (on|off: the error of the denoised image), clamp,
       rebuild_ratio (a number).
 )",
      kNone},

@@ -49,7 +49,7 @@ bool CudaGlFrame::update(RenderWorker& worker, GLuint texture, uint32_t width, u
         size_t bytes = 0;
         if (cudaGraphicsResourceGetMappedPointer(&device, &bytes, resource_) == cudaSuccess &&
             bytes >= size_t(width) * height * 4 * sizeof(float)) {
-            copied = backend.copyBeautyToDevice(device);
+            copied = session.copyDisplayedToDevice(session.document().viewer.denoise, device);
         }
         cudaGraphicsUnmapResources(1, &resource_);
     });

@@ -98,6 +98,8 @@ void drawDisplayPanel(EditorUi& ui, const DisplayView& view) {
         }
         ImGui::EndCombo();
     }
+    // Turning it on restarts the accumulation once, for the guides; after that it is a display switch.
+    changed |= ImGui::Checkbox("Denoise (a-trous, guided by albedo, normal, depth)", &v.denoise);
     changed |= sliderFloat(ui, "Exposure (stops)", &v.display.exposureStops, -10.0f, 10.0f, "%.2f");
     const ColorView& color = ui.colorView;
     if (color.config) {

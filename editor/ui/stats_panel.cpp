@@ -81,6 +81,9 @@ void drawStatsPanel(EditorUi& ui) {
     }
     ImGui::Text("Render: %.1f ms/pass, %.1f Mrays/s", status.secondsPerPass * 1e3,
                 s.renderSeconds > 0 ? double(s.rays) / s.renderSeconds / 1e6 : 0.0);
+    if (ui.doc().viewer.denoise && status.denoiseSeconds > 0.0) {
+        ImGui::Text("Denoise: %.2f ms a frame", status.denoiseSeconds * 1e3);
+    }
     ImGui::Text("Scene: %llu triangles, %u instances", static_cast<unsigned long long>(s.triangles), s.instances);
     drawFeatures(s);
     if (s.nonfiniteSamples > 0) {

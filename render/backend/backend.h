@@ -154,6 +154,12 @@ public:
     // (kDenoiseGuideAovs) among aovs(); throws std::invalid_argument naming one missing. This
     // default reads them back and filters on the CPU.
     virtual double readDenoised(std::vector<float>& rgba) const;
+    // The same into device memory (CUDA-GL interop), the filter's seconds in *seconds; false
+    // where the backend has no device.
+    virtual bool copyDenoisedToDevice(void* deviceRgba, double* seconds) const {
+        (void)deviceRgba, (void)seconds;
+        return false;
+    }
 };
 
 // The AOVs the denoiser reads: first-hit albedo, shading normal, depth and emission, and the

@@ -214,6 +214,46 @@ TEST(EditorSession, ADisplayEditKeepsTheAccumulation) {
     EXPECT_TRUE(session.lastEdit().complete);
 }
 
+// Denoise: turning it on restarts the accumulation once (its guides accumulate from there);
+// the viewport and the export's display image show the denoised beauty, the EXR keeps the raw
+// one with the denoised beside it; turning it off is a display change that keeps the samples.
+TEST(EditorSession, DenoiseShowsTheFilteredBeautyAndTurnsOffWithoutARestart) {
+    Fixture f = startSession(2);
+    EditorSession& session = *f.session;
+    ViewerSettings viewer = session.document().viewer;
+    viewer.denoise = true;
+    session.execute(setViewer(session.document(), viewer));
+    EXPECT_NE(session.sync().action, "nothing") << "the guides need a fresh accumulation";
+    EXPECT_EQ(session.backend().aovs() & kDenoiseGuideAovs, kDenoiseGuideAovs);
+    session.render(4);
+    std::vector<float> shown, denoised, raw;
+    session.readDisplayed(-1, true, shown);
+    session.backend().readDenoised(denoised);
+    session.backend().readBeauty(raw);
+    EXPECT_EQ(shown, denoised);
+    EXPECT_NE(shown, raw) << "4 noisy samples pass the denoiser unchanged";
+    EXPECT_GT(session.lastDenoiseSeconds(), 0.0);
+
+    if (PT_TEST_HAVE_OIIO) {
+        const std::string exr = test::testFolder() + "/denoised.exr";
+        session.exportRender(exr, "", DisplayProcessor(viewer.display));
+        const ExrImage image = readExrChannels(exr);
+        const ExrChannelData *r = image.channel("R"), *denoisedR = image.channel("denoised.R");
+        ASSERT_TRUE(r && denoisedR);
+        for (size_t i = 0; i < raw.size() / 4; ++i) {
+            ASSERT_EQ(r->values[i], raw[4 * i]) << i;
+            ASSERT_EQ(denoisedR->values[i], denoised[4 * i]) << i;
+        }
+    }
+
+    viewer.denoise = false;
+    session.execute(setViewer(session.document(), viewer));
+    EXPECT_EQ(session.sync().action, "nothing");
+    EXPECT_EQ(session.backend().stats().samplesPerPixel, 4u);
+    session.readDisplayed(-1, false, shown);
+    EXPECT_EQ(shown, raw);
+}
+
 TEST(EditorSession, RenderStopsAtTheTargetSpp) {
     Fixture f = startSession(0);
     EditorSession& session = *f.session;

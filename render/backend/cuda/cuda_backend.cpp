@@ -480,18 +480,22 @@ void CudaBackend::readAov(Aov aov, std::vector<float>& rgba) const {
     aovImageFromSums(aov, plane.empty() ? nullptr : plane.data(), pixels, stats_.samplesPerPixel, rgba);
 }
 
-double CudaBackend::copyDenoisedToDevice(float* deviceRgba) const {
+bool CudaBackend::copyDenoisedToDevice(void* deviceRgba, double* seconds) const {
     const AovBuffers aovs = aovBuffersIn(aovSums_.data(), aovs_, size_t(width_) * height_);
     StreamTimer timer;
-    return timer.time(stream_, [&] {
-        denoiser_.run(sum_.data(), aovs, width_, height_, stats_.samplesPerPixel, deviceRgba, stream_);
+    const double s = timer.time(stream_, [&] {
+        denoiser_.run(sum_.data(), aovs, width_, height_, stats_.samplesPerPixel,
+                      static_cast<float*>(deviceRgba), stream_);
     });
+    if (seconds) *seconds = s;
+    return true;
 }
 
 double CudaBackend::readDenoised(std::vector<float>& rgba) const {
     const size_t pixels = size_t(width_) * height_;
     if (denoised_.size() != 4 * pixels) denoised_ = DeviceBuffer<float>(4 * pixels);
-    const double seconds = copyDenoisedToDevice(denoised_.data());
+    double seconds = 0.0;
+    copyDenoisedToDevice(denoised_.data(), &seconds);
     denoised_.download(rgba);
     return seconds;
 }

@@ -48,9 +48,7 @@ public:
     void readAov(Aov aov, std::vector<float>& rgba) const override;
     // On the GPU (gpu_denoiser.h), from the sums in device memory.
     double readDenoised(std::vector<float>& rgba) const override;
-    // The denoised beauty into device memory (RGBA float, e.g. an interop pixel buffer); returns
-    // the seconds its kernels took.
-    double copyDenoisedToDevice(float* deviceRgba) const;
+    bool copyDenoisedToDevice(void* deviceRgba, double* seconds) const override;
     uint64_t aovBytes() const override;
 
     // Paths alive at the start of each bounce in the last wavefront wave (compaction's effect).
