@@ -128,23 +128,8 @@ PT_HD Vec3 remodulated(Vec3 radiance, const DenoiseGuides& g, uint32_t i) {
     return radiance * demodulator(g, i) + (isFinite(emission) ? emission : Vec3(0.0f));
 }
 
-// How much a neighbour q shares pixel p's surface, from the normals and depths (SVGF eq. 5).
-// `depthSlope`: how fast p's depth changes a pixel; `pixels`: the distance from p to q.
-PT_HD float geometryWeight(const DenoiseGuides& g, uint32_t p, uint32_t q, float depthSlope, float pixels) {
-    const float zp = g.depth[4 * p], zq = g.depth[4 * q];
-    const bool missP = !(zp > 0.0f && isFinite(zp)), missQ = !(zq > 0.0f && isFinite(zq));
-    if (missP || missQ) return missP == missQ ? 1.0f : 0.0f;  // the background only with itself
-    const float wz = expf(-fabsf(zp - zq) / (kDepthSigma * depthSlope * pixels + 1e-3f * zp));
-    // Averaged unit normals: their length falls below 1 where a pixel mixes surfaces.
-    const Vec3 np = loadRgb(g.normal, p), nq = loadRgb(g.normal, q);
-    const float lp = sqrtf(sanitized(dot(np, np))), lq = sqrtf(sanitized(dot(nq, nq)));
-    if (!(lp > 0.0f && lq > 0.0f)) return 0.0f;
-    const float cosine = maxf(sanitized(dot(np, nq)) / (lp * lq), 0.0f);
-    const float spread = 1.0f - minf(minf(lp, lq), 1.0f);
-    return wz * powf(cosine, kNormalPower / (1.0f + kNormalSpreadTolerance * spread));
-}
-
-// The larger of p's depth slopes along x and y (central differences where both sides exist).
+// The larger of pixel (x, y)'s depth slopes along x and y (central differences where both
+// sides exist).
 PT_HD float depthSlopeAt(const DenoiseGuides& g, uint32_t x, uint32_t y) {
     const auto z = [&](uint32_t xx, uint32_t yy) { return sanitized(g.depth[4 * (yy * g.width + xx)]); };
     const uint32_t x0 = x > 0 ? x - 1 : x, x1 = x + 1 < g.width ? x + 1 : x;
@@ -154,22 +139,64 @@ PT_HD float depthSlopeAt(const DenoiseGuides& g, uint32_t x, uint32_t y) {
     return maxf(dx, dy);
 }
 
+// A pixel's surface as the edge stops compare it, worked out once a denoise from the guides
+// rather than at each of the 125 taps that read it (measured on the H100, the a-trous passes
+// were bound by the square roots, powers and exponentials of the taps).
+struct DenoiseSurface {
+    Vec3 normal;        // unit; 0 where the pixel holds no usable normal
+    float normalPower;  // the normal edge stop's power, lowered by the pixel's spread of normals
+    float depth;        // 0 where the camera ray left the scene
+    float depthSlope;   // depthSlopeAt
+    float pad[2];
+};
+
+PT_HD DenoiseSurface surfaceAt(const DenoiseGuides& g, uint32_t x, uint32_t y) {
+    const uint32_t i = y * g.width + x;
+    const Vec3 n = loadRgb(g.normal, i);
+    const float length = sqrtf(sanitized(dot(n, n)));
+    const float depth = g.depth[4 * i];
+    DenoiseSurface s{};
+    s.normal = length > 0.0f && isFinite(n) ? n / length : Vec3(0.0f);
+    // Averaged unit normals: their length falls below 1 where a pixel mixes surfaces.
+    s.normalPower = kNormalPower / (1.0f + kNormalSpreadTolerance * (1.0f - minf(length, 1.0f)));
+    s.depth = depth > 0.0f && isFinite(depth) ? depth : 0.0f;
+    s.depthSlope = depthSlopeAt(g, x, y);
+    return s;
+}
+
+constexpr float kDisjoint = -1e30f;  // the log weight of surfaces that share nothing
+
+// The log of how much a neighbour q shares pixel p's surface, from the normals and depths
+// (SVGF eq. 5, as one exponent): the depth stop, and the normal stop with the lower power of
+// the two (the larger spread). `pixels`: the distance from p to q.
+PT_HD float geometryLogWeight(const DenoiseSurface& p, const DenoiseSurface& q, float pixels) {
+    const bool missP = p.depth == 0.0f, missQ = q.depth == 0.0f;
+    if (missP || missQ) return missP == missQ ? 0.0f : kDisjoint;  // the background only with itself
+    const float cosine = dot(p.normal, q.normal);
+    if (!(cosine > 0.0f)) return kDisjoint;
+    return -fabsf(p.depth - q.depth) / (kDepthSigma * p.depthSlope * pixels + 1e-3f * p.depth) +
+           minf(p.normalPower, q.normalPower) * logf(cosine);
+}
+
 // The variance of a pixel's mean estimated from its neighbours (a 7x7 window on the same
 // surface), for the first samples, where each pixel's own estimate has too few samples to
 // speak (SVGF section 4.2 does the same while a pixel's history is short): where the true
 // image is smooth, neighbouring means differ by the noise of a mean.
-PT_HD float spatialVarianceAt(const DenoiseSample* in, const DenoiseGuides& g, uint32_t x, uint32_t y) {
-    const uint32_t p = y * g.width + x;
+PT_HD float spatialVarianceAt(const DenoiseSample* in, const DenoiseSurface* surfaces, uint32_t width,
+                              uint32_t height, uint32_t x, uint32_t y) {
+    const uint32_t p = y * width + x;
     if (!in[p].valid()) return kInvalid;
-    const float slope = depthSlopeAt(g, x, y);
+    const DenoiseSurface surface = surfaces[p];
     float sumW = 0.0f, sumL = 0.0f, sumL2 = 0.0f;
     for (int dy = -3; dy <= 3; ++dy) {
         for (int dx = -3; dx <= 3; ++dx) {
             const int qx = int(x) + dx, qy = int(y) + dy;
-            if (qx < 0 || qy < 0 || qx >= int(g.width) || qy >= int(g.height)) continue;
-            const uint32_t q = uint32_t(qy) * g.width + uint32_t(qx);
+            if (qx < 0 || qy < 0 || qx >= int(width) || qy >= int(height)) continue;
+            const uint32_t q = uint32_t(qy) * width + uint32_t(qx);
             if (!in[q].valid()) continue;
-            const float w = geometryWeight(g, p, q, slope, sqrtf(float(dx * dx + dy * dy)));
+            const float w =
+                q == p ? 1.0f
+                       : expf(geometryLogWeight(surface, surfaces[q], sqrtf(float(dx * dx + dy * dy))));
             const float l = luminance(in[q].radiance);
             sumW += w;
             sumL += w * l;
@@ -201,27 +228,29 @@ PT_HD float blurredVarianceAt(const DenoiseSample* in, uint32_t width, uint32_t 
 
 // One a-trous iteration at pixel (x, y): 5x5 taps `step` pixels apart (step = 2^iteration).
 // A left-out centre takes its neighbours' weighted mean (by the guides alone).
-PT_HD DenoiseSample atrousAt(const DenoiseSample* in, const DenoiseGuides& g, uint32_t x, uint32_t y,
-                             uint32_t step) {
-    const uint32_t p = y * g.width + x;
+PT_HD DenoiseSample atrousAt(const DenoiseSample* in, const DenoiseSurface* surfaces, uint32_t width,
+                             uint32_t height, uint32_t x, uint32_t y, uint32_t step) {
+    const uint32_t p = y * width + x;
     const DenoiseSample center = in[p];
-    const float slope = depthSlopeAt(g, x, y);
+    const DenoiseSurface surface = surfaces[p];
     const float lp = luminance(center.radiance);
-    const float sigmaL = kLuminanceSigma * sqrtf(blurredVarianceAt(in, g.width, g.height, x, y)) + 1e-10f;
-    const bool centerValid = center.valid();
+    // The luminance stop as a factor of the exponent (0: a left-out centre, guides alone).
+    const float invSigmaL =
+        center.valid() ? 1.0f / (kLuminanceSigma * sqrtf(blurredVarianceAt(in, width, height, x, y)) + 1e-10f)
+                       : 0.0f;
     Vec3 sum(0.0f);
     float sumW = 0.0f, sumVariance = 0.0f;
     for (int j = -2; j <= 2; ++j) {
         for (int i = -2; i <= 2; ++i) {
             const int qx = int(x) + i * int(step), qy = int(y) + j * int(step);
-            if (qx < 0 || qy < 0 || qx >= int(g.width) || qy >= int(g.height)) continue;
-            const uint32_t q = uint32_t(qy) * g.width + uint32_t(qx);
+            if (qx < 0 || qy < 0 || qx >= int(width) || qy >= int(height)) continue;
+            const uint32_t q = uint32_t(qy) * width + uint32_t(qx);
             const DenoiseSample s = in[q];
             if (!s.valid()) continue;
             const float pixels = float(step) * sqrtf(float(i * i + j * j));
-            const float wl = centerValid ? expf(-fabsf(luminance(s.radiance) - lp) / sigmaL) : 1.0f;
-            const float w = splineWeight(i) * splineWeight(j) * wl *
-                            (q == p ? 1.0f : geometryWeight(g, p, q, slope, pixels));
+            const float geometry = q == p ? 0.0f : geometryLogWeight(surface, surfaces[q], pixels);
+            const float w = splineWeight(i) * splineWeight(j) *
+                            expf(geometry - fabsf(luminance(s.radiance) - lp) * invSigmaL);
             sum += w * s.radiance;
             sumW += w;
             sumVariance += w * w * s.variance;

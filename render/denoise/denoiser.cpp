@@ -25,21 +25,25 @@ void denoiseOnCpu(const DenoiseInput& in, std::vector<float>& rgba) {
     const DenoiseGuides& g = in.guides;
     const size_t pixels = size_t(g.width) * g.height;
     std::vector<DenoiseSample> a(pixels), b(pixels);
+    std::vector<denoise::DenoiseSurface> surfaces(pixels);
     forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
         const uint32_t i = y * g.width + x;
         a[i] = denoise::demodulatedSample(in.beauty, in.varianceOfMean, g, i);
+        surfaces[i] = denoise::surfaceAt(g, x, y);
     });
     if (in.samples < kMinSamplesForOwnVariance) {
         forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
             const uint32_t i = y * g.width + x;
-            b[i] = {a[i].radiance, denoise::spatialVarianceAt(a.data(), g, x, y)};
+            b[i] = {a[i].radiance,
+                    denoise::spatialVarianceAt(a.data(), surfaces.data(), g.width, g.height, x, y)};
         });
         std::swap(a, b);
     }
     const std::vector<DenoiseSample> input = a;  // each pixel's own mean and noise
     for (uint32_t k = 0; k < kDenoiseIterations; ++k) {
         forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
-            b[y * g.width + x] = denoise::atrousAt(a.data(), g, x, y, 1u << k);
+            b[y * g.width + x] =
+                denoise::atrousAt(a.data(), surfaces.data(), g.width, g.height, x, y, 1u << k);
         });
         std::swap(a, b);
     }

@@ -48,17 +48,26 @@ __global__ void prepareKernel(const double* sum, AovBuffers aovs, uint32_t sampl
     out[i] = denoise::demodulatedSample(p.beauty, p.variance, p.guides, i);
 }
 
-__global__ void spatialVarianceKernel(const DenoiseSample* in, DenoiseGuides g, DenoiseSample* out) {
+// After prepareKernel: a pixel's surface reads its neighbours' depths.
+__global__ void surfaceKernel(DenoiseGuides g, denoise::DenoiseSurface* out) {
     uint32_t x, y;
     if (!pixelOf(g.width, g.height, x, y)) return;
-    const uint32_t i = y * g.width + x;
-    out[i] = {in[i].radiance, denoise::spatialVarianceAt(in, g, x, y)};
+    out[y * g.width + x] = denoise::surfaceAt(g, x, y);
 }
 
-__global__ void atrousKernel(const DenoiseSample* in, DenoiseGuides g, uint32_t step, DenoiseSample* out) {
+__global__ void spatialVarianceKernel(const DenoiseSample* in, const denoise::DenoiseSurface* surfaces,
+                                      uint32_t width, uint32_t height, DenoiseSample* out) {
     uint32_t x, y;
-    if (!pixelOf(g.width, g.height, x, y)) return;
-    out[y * g.width + x] = denoise::atrousAt(in, g, x, y, step);
+    if (!pixelOf(width, height, x, y)) return;
+    const uint32_t i = y * width + x;
+    out[i] = {in[i].radiance, denoise::spatialVarianceAt(in, surfaces, width, height, x, y)};
+}
+
+__global__ void atrousKernel(const DenoiseSample* in, const denoise::DenoiseSurface* surfaces, uint32_t width,
+                             uint32_t height, uint32_t step, DenoiseSample* out) {
+    uint32_t x, y;
+    if (!pixelOf(width, height, x, y)) return;
+    out[y * width + x] = denoise::atrousAt(in, surfaces, width, height, x, y, step);
 }
 
 __global__ void remodulateKernel(const DenoiseSample* input, const DenoiseSample* filtered, DenoiseGuides g,
@@ -83,6 +92,7 @@ void GpuDenoiser::run(const double* sum, const AovBuffers& aovs, uint32_t width,
     if (pixels == 0) return;
     if (planes_.size() != 6 * 4 * pixels) planes_ = DeviceBuffer<float>(6 * 4 * pixels);
     if (a_.size() != pixels) {
+        surfaces_ = DeviceBuffer<denoise::DenoiseSurface>(pixels);
         input_ = DeviceBuffer<DenoiseSample>(pixels);
         a_ = DeviceBuffer<DenoiseSample>(pixels);
         b_ = DeviceBuffer<DenoiseSample>(pixels);
@@ -100,14 +110,17 @@ void GpuDenoiser::run(const double* sum, const AovBuffers& aovs, uint32_t width,
     const bool ownVariance = samples >= kMinSamplesForOwnVariance;
     prepareKernel<<<grid, block, 0, stream>>>(sum, aovs, samples, p, ownVariance ? input : a);
     PT_CUDA_CHECK_LAUNCH("prepareKernel");
+    denoise::DenoiseSurface* surfaces = surfaces_.data();
+    surfaceKernel<<<grid, block, 0, stream>>>(p.guides, surfaces);
+    PT_CUDA_CHECK_LAUNCH("surfaceKernel");
     if (!ownVariance) {
-        spatialVarianceKernel<<<grid, block, 0, stream>>>(a, p.guides, input);
+        spatialVarianceKernel<<<grid, block, 0, stream>>>(a, surfaces, width, height, input);
         PT_CUDA_CHECK_LAUNCH("spatialVarianceKernel");
     }
     const DenoiseSample* from = input;
     for (uint32_t k = 0; k < kDenoiseIterations; ++k) {
         DenoiseSample* to = from == a ? b : a;
-        atrousKernel<<<grid, block, 0, stream>>>(from, p.guides, 1u << k, to);
+        atrousKernel<<<grid, block, 0, stream>>>(from, surfaces, width, height, 1u << k, to);
         PT_CUDA_CHECK_LAUNCH("atrousKernel");
         from = to;
     }
@@ -117,6 +130,7 @@ void GpuDenoiser::run(const double* sum, const AovBuffers& aovs, uint32_t width,
 
 void GpuDenoiser::release() {
     planes_ = DeviceBuffer<float>();
+    surfaces_ = DeviceBuffer<denoise::DenoiseSurface>();
     input_ = DeviceBuffer<DenoiseSample>();
     a_ = DeviceBuffer<DenoiseSample>();
     b_ = DeviceBuffer<DenoiseSample>();

@@ -19,12 +19,15 @@ public:
     // (backend.h).
     void run(const double* sum, const AovBuffers& aovs, uint32_t width, uint32_t height, uint32_t samples,
              float* rgba, cudaStream_t stream);
-    uint64_t bytes() const { return planes_.bytes() + input_.bytes() + a_.bytes() + b_.bytes(); }
+    uint64_t bytes() const {
+        return planes_.bytes() + surfaces_.bytes() + input_.bytes() + a_.bytes() + b_.bytes();
+    }
     void release();
 
 private:
     DeviceBuffer<float> planes_;  // beauty, albedo, normal, depth, emission, variance: RGBA planes
-    DeviceBuffer<DenoiseSample> input_, a_, b_;  // demodulated input; the passes' two planes
+    DeviceBuffer<denoise::DenoiseSurface> surfaces_;  // each pixel's surface for the edge stops
+    DeviceBuffer<DenoiseSample> input_, a_, b_;       // demodulated input; the passes' two planes
 };
 
 }  // namespace pt::cuda
