@@ -152,8 +152,8 @@ void benchWavefrontOverhead(Backend& backend, Scene scene, const BenchSettings& 
 
 void benchDenoise(Backend& backend, const Scene& scene, const BenchSettings& settings, BenchReport& report) {
     backend.setToggles(settings.toggles);
-    backend.setAovs(kDenoiseGuideAovs);
-    backend.sync(scene, SceneChanges::All, {});
+    backend.setAovs(kDenoiseGuideAovs);  // from the reset this sync makes
+    backend.sync(scene, SceneChanges::Settings, {});
     backend.render(settings.spp);
     std::vector<float> denoised;
     backend.readDenoised(denoised);  // warm-up: working memory allocated
@@ -164,7 +164,7 @@ void benchDenoise(Backend& backend, const Scene& scene, const BenchSettings& set
     report.add({"denoise", "a-trous filter (SVGF spatial), 5 passes", size, median(seconds) * 1e3, "ms",
                 backend.name() == "cpu" ? "CPU threads" : "GPU kernels, without the copy to the host"});
     backend.setAovs(0);
-    backend.sync(scene, SceneChanges::All, {});
+    backend.sync(scene, SceneChanges::Settings, {});
 }
 
 void benchImageCheck(Backend& backend, Scene scene, const BenchSettings& settings, BenchReport& report) {

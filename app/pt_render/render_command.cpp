@@ -138,11 +138,13 @@ void writeStats(const RenderRequest& r, const Backend& backend, double loadSecon
     writeTextAtomically(r.statsPath, j.dump(2) + "\n");
 }
 
-// The beauty and the AOVs asked for as one layered EXR, with the camera in the metadata.
-void writeRenderExr(const RenderRequest& r, const Backend& backend, const Camera& camera, const ImageMetadata& metadata) {
+// The beauty and the AOVs asked for as one layered EXR, with the camera in the metadata, and
+// `denoised` (RGBA; empty: none) as its denoised layer.
+void writeRenderExr(const RenderRequest& r, const Backend& backend, const Camera& camera,
+                    const ImageMetadata& metadata, const std::vector<float>& denoised) {
     LayeredExr exr =
         renderedExr(backend, r.aovs, r.half ? ExrPixelType::Half : ExrPixelType::Float, camera, metadata);
-    if (r.denoise) backend.readDenoised(exr.denoised);
+    exr.denoised = denoised;
     writeLayeredExr(r.exrPath, exr);
     if (r.quiet) return;
     std::string channels = "R G B A";
@@ -197,11 +199,11 @@ int runRender(const std::vector<std::string>& args) {
         return kInterruptedExitCode;
     }
 
-    std::vector<float> beauty;  // what the PNG shows
-    if (r.denoise && !r.pngPath.empty()) {
-        backend->readDenoised(beauty);
+    std::vector<float> shown;  // what the PNG shows: the beauty, or with --denoise the denoised one
+    if (r.denoise) {
+        backend->readDenoised(shown);
     } else {
-        backend->readBeauty(beauty);
+        backend->readBeauty(shown);
     }
     const BackendStats stats = backend->stats();
     const ImageMetadata metadata = renderMetadata(stats.samplesPerPixel, std::to_string(stats.renderSeconds),
@@ -212,7 +214,7 @@ int runRender(const std::vector<std::string>& args) {
             const ImageMetadata view = displayMetadata(*display, r.display.dither);
             exrMetadata.insert(exrMetadata.end(), view.begin(), view.end());
         }
-        writeRenderExr(r, *backend, scene.camera, exrMetadata);
+        writeRenderExr(r, *backend, scene.camera, exrMetadata, r.denoise ? shown : std::vector<float>{});
         std::printf("%s\n", r.exrPath.c_str());
     }
     if (!r.pngPath.empty()) {
@@ -220,7 +222,7 @@ int runRender(const std::vector<std::string>& args) {
         const ImageMetadata displayInfo = displayMetadata(*display, r.display.dither);
         pngMetadata.insert(pngMetadata.end(), displayInfo.begin(), displayInfo.end());
         writeDisplayImage(r.pngPath, backend->width(), backend->height(),
-                          display->encode8(beauty, backend->width(), r.display.dither), pngMetadata);
+                          display->encode8(shown, backend->width(), r.display.dither), pngMetadata);
         std::printf("%s\n", r.pngPath.c_str());
     }
     if (!r.statsPath.empty()) writeStats(r, *backend, input.loadSeconds, sync);

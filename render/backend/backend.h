@@ -165,8 +165,13 @@ public:
 // The AOVs the denoiser reads: first-hit albedo, shading normal, depth and emission, and the
 // variance of each pixel's mean.
 constexpr Aov kDenoiseGuides[] = {Aov::Albedo, Aov::ShadingNormal, Aov::Depth, Aov::Emission, Aov::Variance};
-constexpr AovMask kDenoiseGuideAovs = aovBit(Aov::Albedo) | aovBit(Aov::ShadingNormal) | aovBit(Aov::Depth) |
-                                      aovBit(Aov::Emission) | aovBit(Aov::Variance);
+template <size_t N>
+constexpr AovMask aovMaskOf(const Aov (&aovs)[N]) {
+    AovMask mask = 0;
+    for (const Aov a : aovs) mask |= aovBit(a);
+    return mask;
+}
+constexpr AovMask kDenoiseGuideAovs = aovMaskOf(kDenoiseGuides);
 
 // "cpu", or "cuda" where built. Throws std::invalid_argument naming the backends available,
 // or, for "cuda" on a machine without a usable GPU, saying why.

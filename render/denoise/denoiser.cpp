@@ -3,8 +3,6 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include <utility>
-
 namespace pt {
 
 namespace {
@@ -24,34 +22,38 @@ void forEachPixel(uint32_t width, uint32_t height, const PerPixel& perPixel) {
 void denoiseOnCpu(const DenoiseInput& in, std::vector<float>& rgba) {
     const DenoiseGuides& g = in.guides;
     const size_t pixels = size_t(g.width) * g.height;
-    std::vector<DenoiseSample> a(pixels), b(pixels);
+    // `input` keeps each pixel's own mean and noise for boundedByNoise; the passes alternate
+    // between a and b (as GpuDenoiser::run).
+    std::vector<DenoiseSample> input(pixels), a(pixels), b(pixels);
     std::vector<denoise::DenoiseSurface> surfaces(pixels);
+    const bool ownVariance = in.samples >= kMinSamplesForOwnVariance;
+    std::vector<DenoiseSample>& demodulated = ownVariance ? input : a;
     forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
         const uint32_t i = y * g.width + x;
-        a[i] = denoise::demodulatedSample(in.beauty, in.varianceOfMean, g, i);
+        demodulated[i] = denoise::demodulatedSample(in.beauty, in.varianceOfMean, g, i);
         surfaces[i] = denoise::surfaceAt(g, x, y);
     });
-    if (in.samples < kMinSamplesForOwnVariance) {
+    if (!ownVariance) {
         forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
             const uint32_t i = y * g.width + x;
-            b[i] = {a[i].radiance,
-                    denoise::spatialVarianceAt(a.data(), surfaces.data(), g.width, g.height, x, y)};
+            input[i] = {a[i].radiance,
+                        denoise::spatialVarianceAt(a.data(), surfaces.data(), g.width, g.height, x, y)};
         });
-        std::swap(a, b);
     }
-    const std::vector<DenoiseSample> input = a;  // each pixel's own mean and noise
+    const std::vector<DenoiseSample>* from = &input;
     for (uint32_t k = 0; k < kDenoiseIterations; ++k) {
+        std::vector<DenoiseSample>* to = from == &a ? &b : &a;
         forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
-            b[y * g.width + x] =
-                denoise::atrousAt(a.data(), surfaces.data(), g.width, g.height, x, y, 1u << k);
+            (*to)[y * g.width + x] =
+                denoise::atrousAt(from->data(), surfaces.data(), g.width, g.height, x, y, 1u << k);
         });
-        std::swap(a, b);
+        from = to;
     }
     rgba.resize(pixels * 4);
     forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
         const uint32_t i = y * g.width + x;
         const Vec3 c =
-            denoise::remodulated(denoise::boundedByNoise(input[i], a[i].radiance, in.samples), g, i);
+            denoise::remodulated(denoise::boundedByNoise(input[i], (*from)[i].radiance, in.samples), g, i);
         rgba[4 * i + 0] = c.x;
         rgba[4 * i + 1] = c.y;
         rgba[4 * i + 2] = c.z;

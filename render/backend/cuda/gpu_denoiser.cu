@@ -10,10 +10,17 @@ namespace {
 
 constexpr uint32_t kBlockSide = 16;
 
+// The RGBA planes prepareKernel fills from the sums, one after another in GpuDenoiser::planes_.
+enum Plane : uint32_t { kBeauty, kAlbedo, kNormal, kDepth, kEmission, kVariance, kPlaneCount };
+
 struct Planes {
-    float* beauty;
-    float* variance;
-    DenoiseGuides guides;
+    float* base;
+    uint32_t width, height;
+
+    __host__ __device__ float* at(Plane k) const { return base + size_t(k) * 4 * width * height; }
+    __host__ __device__ DenoiseGuides guides() const {
+        return {width, height, at(kAlbedo), at(kNormal), at(kDepth), at(kEmission)};
+    }
 };
 
 __device__ bool pixelOf(uint32_t width, uint32_t height, uint32_t& x, uint32_t& y) {
@@ -35,17 +42,18 @@ __device__ void storeAov(float* plane, const AovBuffers& aovs, Aov aov, uint32_t
 __global__ void prepareKernel(const double* sum, AovBuffers aovs, uint32_t samples, Planes p,
                               DenoiseSample* out) {
     uint32_t x, y;
-    if (!pixelOf(p.guides.width, p.guides.height, x, y)) return;
-    const uint32_t i = y * p.guides.width + x;
+    if (!pixelOf(p.width, p.height, x, y)) return;
+    const uint32_t i = y * p.width + x;
     const double scale = samples ? 1.0 / samples : 0.0;
-    for (uint32_t c = 0; c < 3; ++c) p.beauty[4 * i + c] = float(sum[3 * i + c] * scale);
-    p.beauty[4 * i + 3] = 1.0f;
-    storeAov(const_cast<float*>(p.guides.albedo), aovs, Aov::Albedo, i, samples);
-    storeAov(const_cast<float*>(p.guides.normal), aovs, Aov::ShadingNormal, i, samples);
-    storeAov(const_cast<float*>(p.guides.depth), aovs, Aov::Depth, i, samples);
-    storeAov(const_cast<float*>(p.guides.emission), aovs, Aov::Emission, i, samples);
-    storeAov(p.variance, aovs, Aov::Variance, i, samples);
-    out[i] = denoise::demodulatedSample(p.beauty, p.variance, p.guides, i);
+    float* beauty = p.at(kBeauty);
+    for (uint32_t c = 0; c < 3; ++c) beauty[4 * i + c] = float(sum[3 * i + c] * scale);
+    beauty[4 * i + 3] = 1.0f;
+    storeAov(p.at(kAlbedo), aovs, Aov::Albedo, i, samples);
+    storeAov(p.at(kNormal), aovs, Aov::ShadingNormal, i, samples);
+    storeAov(p.at(kDepth), aovs, Aov::Depth, i, samples);
+    storeAov(p.at(kEmission), aovs, Aov::Emission, i, samples);
+    storeAov(p.at(kVariance), aovs, Aov::Variance, i, samples);
+    out[i] = denoise::demodulatedSample(beauty, p.at(kVariance), p.guides(), i);
 }
 
 // After prepareKernel: a pixel's surface reads its neighbours' depths.
@@ -90,18 +98,14 @@ void GpuDenoiser::run(const double* sum, const AovBuffers& aovs, uint32_t width,
     for (const Aov guide : kDenoiseGuides) requireAov(aovs.mask, guide);
     const size_t pixels = size_t(width) * height;
     if (pixels == 0) return;
-    if (planes_.size() != 6 * 4 * pixels) planes_ = DeviceBuffer<float>(6 * 4 * pixels);
+    if (planes_.size() != kPlaneCount * 4 * pixels) planes_ = DeviceBuffer<float>(kPlaneCount * 4 * pixels);
     if (a_.size() != pixels) {
         surfaces_ = DeviceBuffer<denoise::DenoiseSurface>(pixels);
         input_ = DeviceBuffer<DenoiseSample>(pixels);
         a_ = DeviceBuffer<DenoiseSample>(pixels);
         b_ = DeviceBuffer<DenoiseSample>(pixels);
     }
-    float* base = planes_.data();
-    const Planes p{
-        base,
-        base + 20 * pixels,
-        {width, height, base + 4 * pixels, base + 8 * pixels, base + 12 * pixels, base + 16 * pixels}};
+    const Planes p{planes_.data(), width, height};
     const dim3 block(kBlockSide, kBlockSide);
     const dim3 grid((width + kBlockSide - 1) / kBlockSide, (height + kBlockSide - 1) / kBlockSide);
     // `input` keeps each pixel's own mean and noise for boundedByNoise; the passes alternate
@@ -111,7 +115,7 @@ void GpuDenoiser::run(const double* sum, const AovBuffers& aovs, uint32_t width,
     prepareKernel<<<grid, block, 0, stream>>>(sum, aovs, samples, p, ownVariance ? input : a);
     PT_CUDA_CHECK_LAUNCH("prepareKernel");
     denoise::DenoiseSurface* surfaces = surfaces_.data();
-    surfaceKernel<<<grid, block, 0, stream>>>(p.guides, surfaces);
+    surfaceKernel<<<grid, block, 0, stream>>>(p.guides(), surfaces);
     PT_CUDA_CHECK_LAUNCH("surfaceKernel");
     if (!ownVariance) {
         spatialVarianceKernel<<<grid, block, 0, stream>>>(a, surfaces, width, height, input);
@@ -124,16 +128,8 @@ void GpuDenoiser::run(const double* sum, const AovBuffers& aovs, uint32_t width,
         PT_CUDA_CHECK_LAUNCH("atrousKernel");
         from = to;
     }
-    remodulateKernel<<<grid, block, 0, stream>>>(input, from, p.guides, samples, rgba);
+    remodulateKernel<<<grid, block, 0, stream>>>(input, from, p.guides(), samples, rgba);
     PT_CUDA_CHECK_LAUNCH("remodulateKernel");
-}
-
-void GpuDenoiser::release() {
-    planes_ = DeviceBuffer<float>();
-    surfaces_ = DeviceBuffer<denoise::DenoiseSurface>();
-    input_ = DeviceBuffer<DenoiseSample>();
-    a_ = DeviceBuffer<DenoiseSample>();
-    b_ = DeviceBuffer<DenoiseSample>();
 }
 
 }  // namespace pt::cuda

@@ -1,7 +1,7 @@
 #pragma once
 // The denoiser (render/denoise/) on the GPU: the same per-pixel steps as denoiseOnCpu, each a
 // kernel, over guides computed from the accumulation's sums where they are, so neither the
-// guides nor the image leave the device. Its working memory exists only while it is used.
+// guides nor the image leave the device. Its working memory exists only once it has run.
 #include <cuda_runtime.h>
 
 #include <cstdint>
@@ -22,7 +22,6 @@ public:
     uint64_t bytes() const {
         return planes_.bytes() + surfaces_.bytes() + input_.bytes() + a_.bytes() + b_.bytes();
     }
-    void release();
 
 private:
     DeviceBuffer<float> planes_;  // beauty, albedo, normal, depth, emission, variance: RGBA planes

@@ -36,8 +36,6 @@ constexpr uint32_t kMinBlocks = blocksPerSmFor(kBlock, PT_MEGAKERNEL_REGISTERS);
 constexpr unsigned kFullWarp = 0xffffffffu;
 constexpr uint32_t kNoPath = ~0u;
 
-// kF (below): the variant's feature set; the AOV kernel alone has AOV code.
-
 // One thread a path, for paths that record AOVs (tracePath's plain loop, with the AOV code).
 __global__ void __launch_bounds__(kBlock, kMinBlocks)
     aovMegakernel(RenderScene scene, WaveBuffers b, WaveShape shape) {
@@ -67,6 +65,7 @@ __global__ void __launch_bounds__(kBlock, kMinBlocks)
 // Havran and Dachsbacher 2010, "Path regeneration for interactive path tracing"), so a warp no
 // longer runs with ever fewer lanes until its longest path ends; without, lanes wait for the
 // whole warp, as with one path a thread.
+// kF: the variant's feature set; the AOV kernel above alone has AOV code.
 template <uint32_t kF>
 __global__ void __launch_bounds__(kBlock, kMinBlocks)
     megakernel(RenderScene scene, WaveBuffers b, WaveShape shape, bool regeneration) {
