@@ -28,6 +28,8 @@ std::vector<std::string> channelSuffixes(Aov aov) {
             return {"U", "V"};
         case Aov::BvhCost:
             return {"nodes", "primitives"};
+        case Aov::Alpha:
+            return {"A"};
         default:
             return {"Y"};
     }

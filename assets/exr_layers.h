@@ -13,6 +13,7 @@
 //   roughness, metallic, instance_id, material_id, sample_count, variance
 //                               <aov>.Y                  (Y: OpenEXR's one grey channel)
 //   bvh_cost                    bvh_cost.nodes bvh_cost.primitives
+//   alpha                       alpha.A                  (A: OpenEXR's alpha channel)
 //   the denoised beauty         denoised.R denoised.G denoised.B   (render/denoise/; the raw
 //                               beauty stays in R G B)
 // Values are Backend::readAov's, unchanged: channel i of a layer is component i of its RGBA.

@@ -19,10 +19,10 @@ constexpr CommandUsage kCommands[] = {
       Render SCENE (.json, .gltf, .glb or .obj) progressively; write a linear EXR and/or a
       display-referred PNG (or .jpg, .tif; DISPLAY says how). Prints the paths it wrote. --aov adds AOV layers to the EXR
       (albedo, shading_normal, geometric_normal, depth, position, uv, roughness, metallic,
-      emission, instance_id, material_id, bvh_cost, sample_count, variance; only these are
-      accumulated); --half writes 16-bit channels (ids, sample_count, depth, position stay float).
-      --denoise: the EXR gains denoised.R/G/B beside the raw beauty and the PNG shows the
-      denoised image (an a-trous filter guided by albedo, normal, depth and variance).
+      emission, instance_id, material_id, bvh_cost, sample_count, variance, alpha; only these
+      are accumulated); --half writes 16-bit channels (ids, sample_count, depth, position stay
+      float). --denoise: the EXR gains denoised.R/G/B beside the raw beauty and the PNG shows
+      the denoised image (an a-trous filter guided by albedo, normal, depth, alpha and variance).
 )",
      kToggles | kDisplay},
     {"bench", R"(  bench SCENE [--backend cpu|cuda] [--size WxH] [--max-depth N] [--runs N] [--spp N]

@@ -7,8 +7,9 @@ namespace pt {
 namespace {
 
 constexpr const char* kAovNames[kAovCount] = {
-    "albedo",   "shading_normal", "geometric_normal", "depth",       "position", "uv",           "roughness",
-    "metallic", "emission",       "instance_id",      "material_id", "bvh_cost", "sample_count", "variance"};
+    "albedo",      "shading_normal", "geometric_normal", "depth",    "position",
+    "uv",          "roughness",      "metallic",         "emission", "instance_id",
+    "material_id", "bvh_cost",       "sample_count",     "variance", "alpha"};
 
 }  // namespace
 

@@ -11,7 +11,8 @@
 namespace pt {
 
 // "albedo", "shading_normal", "geometric_normal", "depth", "position", "uv", "roughness",
-// "metallic", "emission", "instance_id", "material_id", "bvh_cost", "sample_count", "variance".
+// "metallic", "emission", "instance_id", "material_id", "bvh_cost", "sample_count", "variance",
+// "alpha".
 const char* aovName(Aov a);
 bool parseAov(const std::string& name, Aov& out);  // false for an unknown name
 

@@ -164,7 +164,8 @@ public:
 
 // The AOVs the denoiser reads: first-hit albedo, shading normal, depth and emission, and the
 // variance of each pixel's mean.
-constexpr Aov kDenoiseGuides[] = {Aov::Albedo, Aov::ShadingNormal, Aov::Depth, Aov::Emission, Aov::Variance};
+constexpr Aov kDenoiseGuides[] = {Aov::Albedo,   Aov::ShadingNormal, Aov::Depth,
+                                  Aov::Emission, Aov::Alpha,         Aov::Variance};
 template <size_t N>
 constexpr AovMask aovMaskOf(const Aov (&aovs)[N]) {
     AovMask mask = 0;

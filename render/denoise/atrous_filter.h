@@ -33,28 +33,35 @@ struct DenoiseSample {
     PT_HD bool valid() const { return variance >= 0.0f; }
 };
 
-// The guides, row-major RGBA: first-hit albedo, shading normal (xyz; 0 where the camera ray
-// left the scene), depth (r; 0 where it left the scene), emission seen first.
+// The guides, row-major RGBA averages over each pixel's samples: first-hit albedo, shading
+// normal (xyz; 0 where the camera ray left the scene), depth (r; 0 where it left the scene),
+// emission seen first (a light's face, or the environment where the camera ray left the
+// scene), alpha (r: the fraction of samples that found a surface).
 struct DenoiseGuides {
     uint32_t width, height;
     const float* albedo;
     const float* normal;
     const float* depth;
     const float* emission;
+    const float* alpha;
 };
 
 namespace denoise {
 
 // Edge-stopping strengths of SVGF (Schied et al. 2017, section 4.3): normals, depth and
 // luminance as there. But our guides are averages over each pixel's antialiased samples: a
-// crease or silhouette pixel holds a mix of normals (their average is shorter than 1), and at
-// power 128 it is cut off from every neighbour and keeps all its noise. So the power falls
-// with the pixels' spread of normals, 1 - |average|: 128 for a pixel on one smooth surface
-// (which keeps normal-mapped detail), about 2 for one astride a right-angled crease. Measured
-// on the Cornell box at 48x48, relMSE against 1024 spp divided by the denoiser at 4 / 16 spp:
-// a fixed power of 128 2.5x / 2.5x, 16 3.5x, 2 8.5x / 4.7x.
+// crease pixel holds a mix of normals (their average is shorter than 1), and at power 128 it
+// is cut off from every neighbour and keeps all its noise. So the power falls with the
+// pixel's spread of normals, 1 - |average| / alpha (alpha: the part of the pixel on a
+// surface): 128 for a pixel on one smooth surface (which keeps normal-mapped detail), about 6
+// for one astride a right-angled crease. A silhouette pixel keeps its power: the sky beside
+// it is not a spread of normals, and the rim of a ball is often truly darker than its face.
+// Measured with the CPU backend, relMSE against 16384 spp, denoised over raw at 4 / 16 spp,
+// Cornell box 128x128 and GolfBall 160x120: tolerance 256: 0.064 / 0.098 and 0.270 / 0.503;
+// 64: 0.067 / 0.101 and 0.276 / 0.433; 32: 0.070 / 0.104 and 0.280 / 0.421. (Before alpha
+// split the silhouette off, GolfBall at 16 spp was 0.80, with the rim 8x its raw error.)
 constexpr float kNormalPower = 128.0f;
-constexpr float kNormalSpreadTolerance = 256.0f;
+constexpr float kNormalSpreadTolerance = 64.0f;
 constexpr float kDepthSigma = 1.0f;
 // Luminance: 2 deviations, not SVGF's 4: with 4 the rim of GolfBall (dark grazing facets
 // against the sky, noisy pixels whose neighbours truly differ) was smoothed into its
@@ -76,24 +83,20 @@ PT_HD float sanitized(float v) { return isFinite(v) ? v : 0.0f; }
 
 constexpr float kInvalid = -1.0f;  // DenoiseSample::variance of a pixel left out
 
-// What pixel i's reflected radiance is divided by, and multiplied back with. The guides are
-// averages over the pixel's samples, and samples that left the scene add 0 to them but the sky
-// to the beauty: dividing a pixel half on a surface and half on the sky by its halved albedo
-// would double the sky in it (the rim of a ball against the sky came out 1.3x too bright and
-// smeared along the rim, measured on GolfBall). So the part of the pixel that missed, estimated
-// as 1 - |averaged normal| (unit normals where it hit), counts with albedo 1: not divided.
-// Channels of albedo below kMinAlbedo are not divided either.
+// What pixel i's reflected radiance is divided by, and multiplied back with: its albedo. The
+// guides are averages over the pixel's samples, and samples that left the scene add 0 to the
+// albedo and their sky to the emission guide, which is taken out before the division: what is
+// left of a pixel half on a surface and half on the sky is the surface's half, divided by the
+// surface's halved albedo. Channels of albedo below kMinAlbedo are not divided.
 PT_HD Vec3 demodulator(const DenoiseGuides& g, uint32_t i) {
-    const Vec3 n = loadRgb(g.normal, i);
-    const float missed = 1.0f - minf(sqrtf(sanitized(dot(n, n))), 1.0f);
-    const Vec3 a = loadRgb(g.albedo, i) + Vec3(missed);
+    const Vec3 a = loadRgb(g.albedo, i);
     return {a.x > kMinAlbedo ? a.x : 1.0f, a.y > kMinAlbedo ? a.y : 1.0f, a.z > kMinAlbedo ? a.z : 1.0f};
 }
 
 // Pixel i's demodulated radiance and the variance of its mean luminance; a pixel with
 // non-finite radiance is left out (kInvalid), so that it never spreads. Emission seen first
-// (a light's face) is taken out before and put back after: it is not lit by anything, and a
-// pixel half on a lamp would otherwise divide the lamp by the albedo of what is beside it.
+// (a light's face, the sky) is taken out before and put back after: it is not lit by anything,
+// and a pixel half on a lamp would otherwise divide the lamp by the albedo of what is beside it.
 PT_HD DenoiseSample demodulatedSample(const float* beauty, const float* varianceOfMean,
                                       const DenoiseGuides& g, uint32_t i) {
     const Vec3 radiance = loadRgb(beauty, i);
@@ -128,10 +131,18 @@ PT_HD Vec3 remodulated(Vec3 radiance, const DenoiseGuides& g, uint32_t i) {
     return radiance * demodulator(g, i) + (isFinite(emission) ? emission : Vec3(0.0f));
 }
 
+// The mean depth of the samples of pixel i that found a surface; 0 where none did. The depth
+// guide averages 0 in for samples that left the scene, which would put a pixel half on an
+// object at half its distance.
+PT_HD float surfaceDepth(const DenoiseGuides& g, uint32_t i) {
+    const float depth = g.depth[4 * i], alpha = g.alpha[4 * i];
+    return depth > 0.0f && alpha > 0.0f && isFinite(depth / alpha) ? depth / alpha : 0.0f;
+}
+
 // The larger of pixel (x, y)'s depth slopes along x and y (central differences where both
 // sides exist).
 PT_HD float depthSlopeAt(const DenoiseGuides& g, uint32_t x, uint32_t y) {
-    const auto z = [&](uint32_t xx, uint32_t yy) { return sanitized(g.depth[4 * (yy * g.width + xx)]); };
+    const auto z = [&](uint32_t xx, uint32_t yy) { return surfaceDepth(g, yy * g.width + xx); };
     const uint32_t x0 = x > 0 ? x - 1 : x, x1 = x + 1 < g.width ? x + 1 : x;
     const uint32_t y0 = y > 0 ? y - 1 : y, y1 = y + 1 < g.height ? y + 1 : y;
     const float dx = x1 > x0 ? fabsf(z(x1, y) - z(x0, y)) / float(x1 - x0) : 0.0f;
@@ -145,7 +156,7 @@ PT_HD float depthSlopeAt(const DenoiseGuides& g, uint32_t x, uint32_t y) {
 struct DenoiseSurface {
     Vec3 normal;        // unit; 0 where the pixel holds no usable normal
     float normalPower;  // the normal edge stop's power, lowered by the pixel's spread of normals
-    float depth;        // 0 where the camera ray left the scene
+    float depth;        // surfaceDepth
     float depthSlope;   // depthSlopeAt
     float pad[2];
 };
@@ -153,13 +164,14 @@ struct DenoiseSurface {
 PT_HD DenoiseSurface surfaceAt(const DenoiseGuides& g, uint32_t x, uint32_t y) {
     const uint32_t i = y * g.width + x;
     const Vec3 n = loadRgb(g.normal, i);
-    const float length = sqrtf(sanitized(dot(n, n)));
-    const float depth = g.depth[4 * i];
+    const float length = sqrtf(sanitized(dot(n, n))), alpha = sanitized(g.alpha[4 * i]);
     DenoiseSurface s{};
     s.normal = length > 0.0f && isFinite(n) ? n / length : Vec3(0.0f);
-    // Averaged unit normals: their length falls below 1 where a pixel mixes surfaces.
-    s.normalPower = kNormalPower / (1.0f + kNormalSpreadTolerance * (1.0f - minf(length, 1.0f)));
-    s.depth = depth > 0.0f && isFinite(depth) ? depth : 0.0f;
+    // Unit normals averaged over the samples that found a surface: shorter than 1 where the
+    // pixel mixes surfaces (not where some of its samples found none).
+    const float spread = alpha > 0.0f ? 1.0f - minf(length / alpha, 1.0f) : 0.0f;
+    s.normalPower = kNormalPower / (1.0f + kNormalSpreadTolerance * spread);
+    s.depth = surfaceDepth(g, i);
     s.depthSlope = depthSlopeAt(g, x, y);
     return s;
 }

@@ -19,7 +19,7 @@ struct DenoiseInput {
     uint32_t samples = 0;                   // of the accumulation, a pixel
     const float* beauty = nullptr;          // mean radiance, RGBA
     const float* varianceOfMean = nullptr;  // the variance AOV (r: variance of the mean luminance)
-    DenoiseGuides guides{};                 // width, height, albedo, shading normal, depth
+    DenoiseGuides guides{};                 // size and guide planes (atrous_filter.h)
 };
 
 // The denoised beauty, RGBA (alpha 1), finite everywhere.

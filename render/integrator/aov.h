@@ -14,15 +14,19 @@
 //   depth             distance from the camera ray's origin (on the lens) to the hit, not z
 //   position          world-space hit point;  uv: texture coordinates (xy)
 //   roughness, metallic  the BSDF's inputs after textures and clamping
-//   emission          emitted radiance seen from the camera (front faces only, as the beauty)
+//   emission          emitted radiance seen from the camera: lights' front faces (as the beauty),
+//                     and the environment where the camera ray leaves the scene
 //   instance_id, material_id  of the FIRST sample only, never averaged: the RenderScene
 //                     instance index (as Hit::instance of Backend::traceRays) and material index
 //   bvh_cost          nodes visited (x) and primitives tested (y) by the camera segment's
 //                     closest-hit queries (several where it passes alpha-transparent surfaces)
 //   sample_count      samples of the pixel (the accumulation's spp; nothing stored per pixel)
 //   variance          variance of the pixel's mean beauty luminance (Welford's running sums)
+//   alpha             the fraction of the pixel's camera rays that found a surface (coverage,
+//                     as compositors use it; alpha-transparent surfaces passed do not count)
 // A camera ray that leaves the scene gives 0 everywhere (depth 0: infinity would poison the
-// average), ids -1, and the traversal work it still cost.
+// average) but its emission (the environment it sees), ids -1, and the traversal work it
+// still cost.
 #include <cstddef>
 #include <cstdint>
 
@@ -48,6 +52,7 @@ enum class Aov : uint32_t {
     BvhCost,
     SampleCount,
     Variance,
+    Alpha,
     Count
 };
 using AovMask = uint32_t;
@@ -99,7 +104,7 @@ struct AovBuffers {
         return sums[uint32_t(a)] + size_t(pixel) * aovChannels(a);
     }
 };
-static_assert(sizeof(AovBuffers) == 120, "AovBuffers: 120 bytes of every AOV kernel's parameters");
+static_assert(sizeof(AovBuffers) == 128, "AovBuffers: 128 bytes of every AOV kernel's parameters");
 
 // Fills `out` (but its cost) from the surface the camera segment stopped at; `cameraOrigin` is
 // where the camera ray started. Reads textures but draws no random number.
@@ -146,6 +151,7 @@ PT_HD void addAovSample(const AovBuffers& b, uint32_t pixel, uint32_t sampleInde
     addAovChannels(b, Aov::Roughness, pixel, Vec3(s.roughness));
     addAovChannels(b, Aov::Metallic, pixel, Vec3(s.metallic));
     addAovChannels(b, Aov::Emission, pixel, s.emission);
+    addAovChannels(b, Aov::Alpha, pixel, Vec3(s.instance >= 0 ? 1.0f : 0.0f));
     if (sampleIndex != 0) return;
     if (b.has(Aov::InstanceId)) *b.at(Aov::InstanceId, pixel) = double(s.instance);
     if (b.has(Aov::MaterialId)) *b.at(Aov::MaterialId, pixel) = double(s.material);

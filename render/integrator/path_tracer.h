@@ -68,8 +68,12 @@ PT_HD float bsdfSampledLightWeight(const RenderScene& scene, const PathState& st
 }
 
 // A ray that left the scene: the environment, weighted against NEE's environment sampling.
+// On the camera segment, a non-null `aov` receives the environment seen as its emission: the
+// sky is an emitter, and the denoiser takes what the camera sees of it out before filtering, so
+// a pixel half on an object and half on the sky is not noisy in how much of each its samples
+// found.
 template <uint32_t kF = kAllFeatures>
-PT_HD void shadeMiss(const RenderScene& scene, PathState& state) {
+PT_HD void shadeMiss(const RenderScene& scene, PathState& state, AovSample* aov = nullptr) {
     state.alive = false;
     state.throughput *= mediumTransmittance<kF>(scene, state.media, kInf);  // an unclosed volume
     if (!hasFeature<kF>(feature::kConstantEnvironment | feature::kImageEnvironment)) return;  // black
@@ -80,6 +84,7 @@ PT_HD void shadeMiss(const RenderScene& scene, PathState& state) {
     if (weight > 0.0f) {
         const Vec3 light = state.throughput * environmentRadiance<kF>(scene, direction) * weight;
         state.radiance += clampIndirect(scene, light, state.depth >= 2);
+        if (aov && state.depth == 0) aov->emission = light;
     }
 }
 
@@ -257,7 +262,7 @@ PT_HD Vec3 tracePath(const RenderScene& scene, uint32_t x, uint32_t y, uint32_t 
             ++counters.rays;
             TraversalStats* cost = aov && state.depth == 0 ? &aov->cost : nullptr;
             if (!intersectClosest<kF>(scene, state.ray, hit, cost)) {
-                shadeMiss<kF>(scene, state);
+                shadeMiss<kF>(scene, state, aov);
                 break;
             }
             const ShadowRay shadow = shadeSurface<kF>(scene, state, hit, aov);

@@ -44,6 +44,7 @@ const std::vector<ExpectedLayer>& expectedLayers() {
         {Aov::BvhCost, {"bvh_cost.nodes", "bvh_cost.primitives"}, false},
         {Aov::SampleCount, {"sample_count.Y"}, true},
         {Aov::Variance, {"variance.Y"}, false},
+        {Aov::Alpha, {"alpha.A"}, false},
     };
     return layers;
 }

@@ -11,7 +11,7 @@ namespace {
 constexpr uint32_t kBlockSide = 16;
 
 // The RGBA planes prepareKernel fills from the sums, one after another in GpuDenoiser::planes_.
-enum Plane : uint32_t { kBeauty, kAlbedo, kNormal, kDepth, kEmission, kVariance, kPlaneCount };
+enum Plane : uint32_t { kBeauty, kAlbedo, kNormal, kDepth, kEmission, kAlpha, kVariance, kPlaneCount };
 
 struct Planes {
     float* base;
@@ -19,7 +19,7 @@ struct Planes {
 
     __host__ __device__ float* at(Plane k) const { return base + size_t(k) * 4 * width * height; }
     __host__ __device__ DenoiseGuides guides() const {
-        return {width, height, at(kAlbedo), at(kNormal), at(kDepth), at(kEmission)};
+        return {width, height, at(kAlbedo), at(kNormal), at(kDepth), at(kEmission), at(kAlpha)};
     }
 };
 
@@ -52,6 +52,7 @@ __global__ void prepareKernel(const double* sum, AovBuffers aovs, uint32_t sampl
     storeAov(p.at(kNormal), aovs, Aov::ShadingNormal, i, samples);
     storeAov(p.at(kDepth), aovs, Aov::Depth, i, samples);
     storeAov(p.at(kEmission), aovs, Aov::Emission, i, samples);
+    storeAov(p.at(kAlpha), aovs, Aov::Alpha, i, samples);
     storeAov(p.at(kVariance), aovs, Aov::Variance, i, samples);
     out[i] = denoise::demodulatedSample(beauty, p.at(kVariance), p.guides(), i);
 }

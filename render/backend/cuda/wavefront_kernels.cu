@@ -121,7 +121,7 @@ __global__ void __launch_bounds__(kBlock, blocksPerSmFor(kBlock, PT_SHADE_REGIST
     if (hit.valid()) {
         shadow = shadeSurface<kF>(scene, state, hit, cameraSegment ? &aov : nullptr);
     } else {
-        shadeMiss<kF>(scene, state);
+        shadeMiss<kF>(scene, state, cameraSegment ? &aov : nullptr);
     }
     // The camera segment ends at its first opaque surface or where it leaves the scene; an
     // alpha-transparent surface only moved it on, and a later shade records it.

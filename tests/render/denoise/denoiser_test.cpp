@@ -18,7 +18,7 @@ namespace {
 // all RGBA as the backends give them.
 struct Frame {
     uint32_t width, height, samples = 64;
-    std::vector<float> beauty, albedo, normal, depth, emission, variance;
+    std::vector<float> beauty, albedo, normal, depth, emission, alpha, variance;
 
     Frame(uint32_t w, uint32_t h)
         : width(w),
@@ -28,6 +28,7 @@ struct Frame {
           normal(4 * w * h, 0.0f),
           depth(4 * w * h, 5.0f),
           emission(4 * w * h, 0.0f),
+          alpha(4 * w * h, 1.0f),
           variance(4 * w * h, 0.0f) {
         for (size_t i = 0; i < size_t(w) * h; ++i) normal[4 * i + 2] = 1.0f;  // a wall facing the camera
     }
@@ -47,7 +48,8 @@ struct Frame {
         in.samples = samples;
         in.beauty = beauty.data();
         in.varianceOfMean = variance.data();
-        in.guides = {width, height, albedo.data(), normal.data(), depth.data(), emission.data()};
+        in.guides = {width,        height,          albedo.data(), normal.data(),
+                     depth.data(), emission.data(), alpha.data()};
         std::vector<float> out;
         denoiseOnCpu(in, out);
         return out;

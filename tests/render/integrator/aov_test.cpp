@@ -74,7 +74,7 @@ TEST(Aov, SphereMatchesTheAnalyticHit) {
                              instance = readAov(backend, Aov::InstanceId),
                              material = readAov(backend, Aov::MaterialId),
                              cost = readAov(backend, Aov::BvhCost),
-                             count = readAov(backend, Aov::SampleCount);
+                             count = readAov(backend, Aov::SampleCount), alpha = readAov(backend, Aov::Alpha);
     const Material m = test::aovSphereMaterial();
     const Vec3 emitted = m.emission * m.emissionStrength;
     uint32_t hits = 0, misses = 0;
@@ -87,12 +87,15 @@ TEST(Aov, SphereMatchesTheAnalyticHit) {
             if (a.graze) continue;
             if (!a.hit) {
                 ++misses;
-                for (const std::vector<float>* img : {&albedo, &shading, &geometric, &depth, &position, &uv,
-                                                      &roughness, &metallic, &emission}) {
+                for (const std::vector<float>* img :
+                     {&albedo, &shading, &geometric, &depth, &position, &uv, &roughness, &metallic}) {
                     for (int c = 0; c < 3; ++c) ASSERT_EQ((*img)[i + c], 0.0f);
                 }
+                // The sky is what the camera sees emitted there.
+                for (int c = 0; c < 3; ++c) ASSERT_FLOAT_EQ(emission[i + c], scene.environment.color[c]);
                 ASSERT_EQ(instance[i], -1.0f);
                 ASSERT_EQ(material[i], -1.0f);
+                ASSERT_EQ(alpha[i], 0.0f);
                 continue;
             }
             ++hits;
@@ -118,6 +121,7 @@ TEST(Aov, SphereMatchesTheAnalyticHit) {
             ASSERT_EQ(uv[i + 2], 0.0f);
             ASSERT_EQ(instance[i], 0.0f);
             ASSERT_EQ(material[i], 0.0f);
+            ASSERT_EQ(alpha[i], 1.0f);
             ASSERT_GT(cost[i], 0.0f) << "nodes visited";
             ASSERT_GT(cost[i + 1], 0.0f) << "primitives tested";
             ASSERT_EQ(cost[i], std::round(cost[i])) << "every sample traces the same ray";
