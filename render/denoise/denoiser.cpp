@@ -24,36 +24,40 @@ void denoiseOnCpu(const DenoiseInput& in, std::vector<float>& rgba) {
     const size_t pixels = size_t(g.width) * g.height;
     // `input` keeps each pixel's own mean and noise for boundedByNoise; the passes alternate
     // between a and b (as GpuDenoiser::run).
-    std::vector<DenoiseSample> input(pixels), a(pixels), b(pixels);
+    std::vector<DenoiseSample> input(pixels), demodulated(pixels);
+    std::vector<denoise::PackedSample> a(pixels), b(pixels);
     std::vector<denoise::DenoiseSurface> surfaces(pixels);
+    std::vector<denoise::SurfaceStops> stops(pixels);
     const bool ownVariance = in.samples >= kMinSamplesForOwnVariance;
-    std::vector<DenoiseSample>& demodulated = ownVariance ? input : a;
     forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
         const uint32_t i = y * g.width + x;
-        demodulated[i] = denoise::demodulatedSample(in.beauty, in.varianceOfMean, g, i);
-        surfaces[i] = denoise::surfaceAt(g, x, y);
+        (ownVariance ? input : demodulated)[i] =
+            denoise::demodulatedSample(denoise::loadRgb(in.beauty, i), in.varianceOfMean[4 * i], g, i);
+        surfaces[i] = denoise::surfaceAt(g, x, y, stops[i]);
     });
-    if (!ownVariance) {
-        forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
-            const uint32_t i = y * g.width + x;
-            input[i] = {a[i].radiance,
-                        denoise::spatialVarianceAt(a.data(), surfaces.data(), g.width, g.height, x, y)};
-        });
-    }
-    const std::vector<DenoiseSample>* from = &input;
+    forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
+        const uint32_t i = y * g.width + x;
+        if (!ownVariance) {
+            input[i] = {demodulated[i].radiance,
+                        denoise::spatialVarianceAt(demodulated.data(), surfaces.data(), stops.data(), g.width,
+                                                   g.height, x, y)};
+        }
+        a[i] = denoise::packSample(input[i]);
+    });
+    const std::vector<denoise::PackedSample>* from = &a;
     for (uint32_t k = 0; k < kDenoiseIterations; ++k) {
-        std::vector<DenoiseSample>* to = from == &a ? &b : &a;
+        std::vector<denoise::PackedSample>* to = from == &a ? &b : &a;
         forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
-            (*to)[y * g.width + x] =
-                denoise::atrousAt(from->data(), surfaces.data(), g.width, g.height, x, y, 1u << k);
+            (*to)[y * g.width + x] = denoise::atrousAt(from->data(), surfaces.data(), stops.data(), g.width,
+                                                       g.height, x, y, 1u << k);
         });
         from = to;
     }
     rgba.resize(pixels * 4);
     forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
         const uint32_t i = y * g.width + x;
-        const Vec3 c =
-            denoise::remodulated(denoise::boundedByNoise(input[i], (*from)[i].radiance, in.samples), g, i);
+        const Vec3 filtered = denoise::filteredRadiance(input[i], (*from)[i]);
+        const Vec3 c = denoise::remodulated(denoise::boundedByNoise(input[i], filtered, in.samples), g, i);
         rgba[4 * i + 0] = c.x;
         rgba[4 * i + 1] = c.y;
         rgba[4 * i + 2] = c.z;

@@ -20,13 +20,18 @@ public:
     void run(const double* sum, const AovBuffers& aovs, uint32_t width, uint32_t height, uint32_t samples,
              float* rgba, cudaStream_t stream);
     uint64_t bytes() const {
-        return planes_.bytes() + surfaces_.bytes() + input_.bytes() + a_.bytes() + b_.bytes();
+        return planes_.bytes() + surfaces_.bytes() + stops_.bytes() + input_.bytes() + demodulated_.bytes() +
+               a_.bytes() + b_.bytes();
     }
 
 private:
-    DeviceBuffer<float> planes_;  // beauty, albedo, normal, depth, emission, variance: RGBA planes
+    DeviceBuffer<float> planes_;  // the guides albedo, normal, depth, emission, alpha: RGBA
     DeviceBuffer<denoise::DenoiseSurface> surfaces_;  // each pixel's surface for the edge stops
-    DeviceBuffer<DenoiseSample> input_, a_, b_;       // demodulated input; the passes' two planes
+    DeviceBuffer<denoise::SurfaceStops> stops_;       // and what only its own stops read
+    // The demodulated input (its variance the neighbours' estimate at few samples, from
+    // `demodulated_`), and the passes' two packed planes.
+    DeviceBuffer<DenoiseSample> input_, demodulated_;
+    DeviceBuffer<denoise::PackedSample> a_, b_;
 };
 
 }  // namespace pt::cuda
