@@ -85,11 +85,11 @@ TEST(GpuDenoiser, TexturedAssetErrorFallsAtFewSamplesAndNotAtMany) {
     PT_REQUIRE_CUDA_DEVICE();
     PT_REQUIRE_SHARED_ASSET("GolfBall/GolfBall.glb");
     // Not yet the quarter the Cornell box reaches: under its uniform sky the ball's noise is
-    // low, and most of the error left is on its rim, where pixels mixing dark grazing facets
-    // with the sky are noisy and truly unlike their neighbours (measured on the CPU at 4 / 16
-    // spp: 0.36x / 0.81x of the raw relMSE). It must still never add error.
+    // low, and most of the error left is on its faceted rim, dark facets one pixel wide beside
+    // bright ones (measured on the H100: 0.28x / 0.44x of the raw relMSE at 4 / 16 spp; 0.80x
+    // at 16 before the alpha guide kept silhouette pixels on their own surface).
     expectDenoisingPays(
-        "GolfBall", sized(test::loadSceneOrFail(test::sharedAsset("GolfBall/GolfBall.glb")), 160, 120), 1.0);
+        "GolfBall", sized(test::loadSceneOrFail(test::sharedAsset("GolfBall/GolfBall.glb")), 160, 120), 0.5);
 }
 
 }  // namespace
