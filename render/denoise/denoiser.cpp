@@ -24,11 +24,12 @@ void denoiseOnCpu(const DenoiseInput& in, std::vector<float>& rgba) {
     const size_t pixels = size_t(g.width) * g.height;
     // `input` keeps each pixel's own mean and noise for boundedByNoise; the passes alternate
     // between a and b (as GpuDenoiser::run).
-    std::vector<DenoiseSample> input(pixels), demodulated(pixels);
+    const bool ownVariance = in.samples >= kMinSamplesForOwnVariance;
+    // `demodulated`: the input before its neighbours estimate the variance, at few samples only.
+    std::vector<DenoiseSample> input(pixels), demodulated(ownVariance ? 0 : pixels);
     std::vector<denoise::PackedSample> a(pixels), b(pixels);
     std::vector<denoise::DenoiseSurface> surfaces(pixels);
     std::vector<denoise::SurfaceStops> stops(pixels);
-    const bool ownVariance = in.samples >= kMinSamplesForOwnVariance;
     forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
         const uint32_t i = y * g.width + x;
         (ownVariance ? input : demodulated)[i] =
