@@ -27,11 +27,22 @@ namespace denoise {
 
 constexpr float kInvalid = -1.0f;  // DenoiseSample::variance of a pixel left out
 
-// A pixel's surface as its neighbours' edge stops compare it (surfaceAt): 16 bytes, a load.
-struct DenoiseSurface {
+// A pixel's surface as its neighbours' edge stops compare it (surfaceAt): 16 bytes, one load
+// (aligned so that the GPU makes it one).
+struct alignas(16) DenoiseSurface {
     Vec3 normal;  // unit; 0 where the pixel holds no usable normal
     float depth;  // of the part of the pixel on a surface; 0 where none is
 };
+
+// Pixel q's surface: on the GPU one 16-byte load (nvcc copies the struct member by member).
+PT_HD DenoiseSurface loadSurface(const DenoiseSurface* surfaces, uint32_t q) {
+#if defined(__CUDA_ARCH__)
+    const float4 v = __ldg(reinterpret_cast<const float4*>(surfaces) + q);
+    return {{v.x, v.y, v.z}, v.w};
+#else
+    return surfaces[q];
+#endif
+}
 
 // What only a pixel's own edge stops read (surfaceAt), a plane of its own so that the taps
 // do not load it.
@@ -44,7 +55,7 @@ struct SurfaceStops {
 // variance: at thousands of samples a variance falls below half's normal range, 6e-5, and its
 // subnormals keep only a few bits). Negative: left out. Demodulated radiance past 65504
 // saturates there; filteredRadiance gives such a pixel back its own excess.
-struct PackedSample {
+struct alignas(8) PackedSample {
     uint16_t r, g, b, deviation;
 };
 

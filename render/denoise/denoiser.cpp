@@ -32,8 +32,8 @@ void denoiseOnCpu(const DenoiseInput& in, std::vector<float>& rgba) {
     std::vector<denoise::SurfaceStops> stops(pixels);
     forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
         const uint32_t i = y * g.width + x;
-        (ownVariance ? input : demodulated)[i] =
-            denoise::demodulatedSample(denoise::loadRgb(in.beauty, i), in.varianceOfMean[4 * i], g, i);
+        (ownVariance ? input : demodulated)[i] = denoise::demodulatedSample(
+            denoise::loadRgb(in.beauty, i), in.varianceOfMean[4 * i], in.samples, g, i);
         surfaces[i] = denoise::surfaceAt(g, x, y, stops[i]);
     });
     forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {

@@ -21,3 +21,15 @@
 #else
 #define PT_HD_OUTLINED inline
 #endif
+
+// PT_UNROLL before a loop of a small constant trip count unrolls it on both compilers, so that
+// small arrays indexed by its counter stay in registers and its per-iteration constants fold
+// (the denoiser's 5x5 taps: on the GPU, a loop not unrolled kept its table of depth scales in
+// local memory).
+#if defined(__CUDA_ARCH__)
+#define PT_UNROLL _Pragma("unroll")
+#elif defined(__CUDACC__)
+#define PT_UNROLL  // the host side of a .cu file: nvcc's front end knows neither pragma there
+#else
+#define PT_UNROLL _Pragma("GCC unroll 8")
+#endif

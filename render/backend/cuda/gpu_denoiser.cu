@@ -53,7 +53,7 @@ __global__ void prepareKernel(const double* sum, AovBuffers aovs, uint32_t sampl
     storeAov(p.at(kEmission), aovs, Aov::Emission, i, samples);
     storeAov(p.at(kAlpha), aovs, Aov::Alpha, i, samples);
     const float variance = aovPixelValue(Aov::Variance, aovs.at(Aov::Variance, i), 0, samples);
-    out[i] = denoise::demodulatedSample(beauty, variance, p.guides(), i);
+    out[i] = denoise::demodulatedSample(beauty, variance, samples, p.guides(), i);
 }
 
 // After prepareKernel: a pixel's surface reads its neighbours' depths.
