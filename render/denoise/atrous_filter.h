@@ -151,14 +151,23 @@ PT_HD float surfaceDepth(const DenoiseGuides& g, uint32_t i) {
     return depth > 0.0f && alpha > 0.0f && isFinite(depth / alpha) ? depth / alpha : 0.0f;
 }
 
-// The larger of pixel (x, y)'s depth slopes along x and y (central differences where both
-// sides exist).
+// The depth slope, a pixel, between depths z0 and z1 `pixels` apart around a centre at zc: a
+// central difference where both sides are on a surface, one-sided where one is (0: background,
+// whose depth would read as a cliff and switch the depth stop off along every silhouette).
+PT_HD float depthSlope(float z0, float zc, float z1, float pixels) {
+    if (z0 > 0.0f && z1 > 0.0f) return fabsf(z1 - z0) / pixels;
+    if (z0 > 0.0f || z1 > 0.0f) return fabsf((z0 > 0.0f ? z0 : z1) - zc) * (2.0f / pixels);
+    return 0.0f;
+}
+
+// The larger of pixel (x, y)'s depth slopes along x and y.
 PT_HD float depthSlopeAt(const DenoiseGuides& g, uint32_t x, uint32_t y) {
     const auto z = [&](uint32_t xx, uint32_t yy) { return surfaceDepth(g, yy * g.width + xx); };
     const uint32_t x0 = x > 0 ? x - 1 : x, x1 = x + 1 < g.width ? x + 1 : x;
     const uint32_t y0 = y > 0 ? y - 1 : y, y1 = y + 1 < g.height ? y + 1 : y;
-    const float dx = x1 > x0 ? fabsf(z(x1, y) - z(x0, y)) / float(x1 - x0) : 0.0f;
-    const float dy = y1 > y0 ? fabsf(z(x, y1) - z(x, y0)) / float(y1 - y0) : 0.0f;
+    const float zc = z(x, y);
+    const float dx = x1 > x0 ? depthSlope(z(x0, y), zc, z(x1, y), float(x1 - x0)) : 0.0f;
+    const float dy = y1 > y0 ? depthSlope(z(x, y0), zc, z(x, y1), float(y1 - y0)) : 0.0f;
     return maxf(dx, dy);
 }
 
