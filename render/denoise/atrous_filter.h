@@ -72,13 +72,23 @@ PT_HD Vec3 loadRgb(const float* rgba, uint32_t i) { return {rgba[4 * i], rgba[4 
 
 PT_HD float sanitized(float v) { return isFinite(v) ? v : 0.0f; }
 
+// One pixel's guides (DenoiseGuides at pixel i); the GPU makes them from the sums directly.
+struct PixelGuides {
+    Vec3 albedo, normal, emission;
+    float depth, alpha;
+};
+
+PT_HD PixelGuides guidesAt(const DenoiseGuides& g, uint32_t i) {
+    return {loadRgb(g.albedo, i), loadRgb(g.normal, i), loadRgb(g.emission, i), g.depth[4 * i],
+            g.alpha[4 * i]};
+}
+
 // What pixel i's reflected radiance is divided by, and multiplied back with: its albedo. The
 // guides are averages over the pixel's samples, and samples that left the scene add 0 to the
 // albedo and their sky to the emission guide, which is taken out before the division: what is
 // left of a pixel half on a surface and half on the sky is the surface's half, divided by the
 // surface's halved albedo. Channels of albedo below kMinAlbedo are not divided.
-PT_HD Vec3 demodulator(const DenoiseGuides& g, uint32_t i) {
-    const Vec3 a = loadRgb(g.albedo, i);
+PT_HD Vec3 demodulator(Vec3 a) {
     return {a.x > kMinAlbedo ? a.x : 1.0f, a.y > kMinAlbedo ? a.y : 1.0f, a.z > kMinAlbedo ? a.z : 1.0f};
 }
 
@@ -102,20 +112,19 @@ PT_HD float coverageFreeVariance(float varianceOfMean, float alpha, float surfac
     return maxf(surfaceSpread, 0.0f) * alpha / (hits - 1.0f);
 }
 
-// Pixel i's demodulated radiance and the variance of its mean luminance; a pixel with
+// A pixel's demodulated radiance and the variance of its mean luminance; a pixel with
 // non-finite radiance is left out (kInvalid), so that it never spreads. Emission seen first
 // (a light's face, the sky) is taken out before and put back after: it is not lit by anything,
 // and a pixel half on a lamp would otherwise divide the lamp by the albedo of what is beside it.
 // `radiance` and `varianceOfMean`: the pixel's mean beauty over `samples` samples and the
 // variance AOV's value.
 PT_HD DenoiseSample demodulatedSample(Vec3 radiance, float varianceOfMean, uint32_t samples,
-                                      const DenoiseGuides& g, uint32_t i) {
-    const Vec3 emission = loadRgb(g.emission, i);
+                                      const PixelGuides& g) {
+    const Vec3 emission = g.emission;
     if (!isFinite(radiance) || !isFinite(emission)) return {Vec3(0.0f), kInvalid};
-    const Vec3 d = demodulator(g, i);
-    const float variance =
-        coverageFreeVariance(maxf(sanitized(varianceOfMean), 0.0f), sanitized(g.alpha[4 * i]),
-                             luminance(radiance - emission), luminance(emission), samples);
+    const Vec3 d = demodulator(g.albedo);
+    const float variance = coverageFreeVariance(maxf(sanitized(varianceOfMean), 0.0f), sanitized(g.alpha),
+                                                luminance(radiance - emission), luminance(emission), samples);
     const float scale = luminance(d);
     return {(radiance - emission) / d, variance / (scale * scale)};
 }
@@ -138,17 +147,15 @@ PT_HD Vec3 boundedByNoise(const DenoiseSample& input, Vec3 filtered, uint32_t sa
     return move > bound ? input.radiance + (filtered - input.radiance) * (bound / move) : filtered;
 }
 
-PT_HD Vec3 remodulated(Vec3 radiance, const DenoiseGuides& g, uint32_t i) {
-    const Vec3 emission = loadRgb(g.emission, i);
-    return radiance * demodulator(g, i) + (isFinite(emission) ? emission : Vec3(0.0f));
+PT_HD Vec3 remodulated(Vec3 radiance, Vec3 albedo, Vec3 emission) {
+    return radiance * demodulator(albedo) + (isFinite(emission) ? emission : Vec3(0.0f));
 }
 
-// The mean depth of the samples of pixel i that found a surface; 0 where none did. The depth
+// The mean depth of the samples of a pixel that found a surface; 0 where none did. The depth
 // guide averages 0 in for samples that left the scene, which would put a pixel half on an
 // object at half its distance.
-PT_HD float surfaceDepth(const DenoiseGuides& g, uint32_t i) {
-    const float depth = g.depth[4 * i], alpha = g.alpha[4 * i];
-    return depth > 0.0f && alpha > 0.0f && isFinite(depth / alpha) ? depth / alpha : 0.0f;
+PT_HD float surfaceDepth(const PixelGuides& g) {
+    return g.depth > 0.0f && g.alpha > 0.0f && isFinite(g.depth / g.alpha) ? g.depth / g.alpha : 0.0f;
 }
 
 // The depth slope, a pixel, between depths z0 and z1 `pixels` apart around a centre at zc: a
@@ -160,27 +167,28 @@ PT_HD float depthSlope(float z0, float zc, float z1, float pixels) {
     return 0.0f;
 }
 
-// The larger of pixel (x, y)'s depth slopes along x and y.
-PT_HD float depthSlopeAt(const DenoiseGuides& g, uint32_t x, uint32_t y) {
-    const auto z = [&](uint32_t xx, uint32_t yy) { return surfaceDepth(g, yy * g.width + xx); };
-    const uint32_t x0 = x > 0 ? x - 1 : x, x1 = x + 1 < g.width ? x + 1 : x;
-    const uint32_t y0 = y > 0 ? y - 1 : y, y1 = y + 1 < g.height ? y + 1 : y;
+// The larger of pixel (x, y)'s depth slopes along x and y, from its neighbours' surfaces.
+PT_HD float depthSlopeAt(const DenoiseSurface* surfaces, uint32_t width, uint32_t height, uint32_t x,
+                         uint32_t y) {
+    const auto z = [&](uint32_t xx, uint32_t yy) { return surfaces[yy * width + xx].depth; };
+    const uint32_t x0 = x > 0 ? x - 1 : x, x1 = x + 1 < width ? x + 1 : x;
+    const uint32_t y0 = y > 0 ? y - 1 : y, y1 = y + 1 < height ? y + 1 : y;
     const float zc = z(x, y);
     const float dx = x1 > x0 ? depthSlope(z(x0, y), zc, z(x1, y), float(x1 - x0)) : 0.0f;
     const float dy = y1 > y0 ? depthSlope(z(x, y0), zc, z(x, y1), float(y1 - y0)) : 0.0f;
     return maxf(dx, dy);
 }
 
-// Pixel (x, y)'s surface, and in `stops` what its own edge stops need.
-PT_HD DenoiseSurface surfaceAt(const DenoiseGuides& g, uint32_t x, uint32_t y, SurfaceStops& stops) {
-    const uint32_t i = y * g.width + x;
-    const Vec3 n = loadRgb(g.normal, i);
-    const float length = sqrtf(sanitized(dot(n, n))), alpha = sanitized(g.alpha[4 * i]);
+// A pixel's surface, and in `normalPower` its own normal stop's power (its depth slope needs
+// its neighbours' surfaces: depthSlopeAt).
+PT_HD DenoiseSurface surfaceOf(const PixelGuides& g, float& normalPower) {
+    const Vec3 n = g.normal;
+    const float length = sqrtf(sanitized(dot(n, n))), alpha = sanitized(g.alpha);
     // Unit normals averaged over the samples that found a surface: shorter than 1 where the
     // pixel mixes surfaces (not where some of its samples found none).
     const float spread = alpha > 0.0f ? 1.0f - minf(length / alpha, 1.0f) : 0.0f;
-    stops = {kNormalPower / (1.0f + kNormalSpreadTolerance * spread), depthSlopeAt(g, x, y)};
-    return {length > 0.0f && isFinite(n) ? n / length : Vec3(0.0f), surfaceDepth(g, i)};
+    normalPower = kNormalPower / (1.0f + kNormalSpreadTolerance * spread);
+    return {length > 0.0f && isFinite(n) ? n / length : Vec3(0.0f), surfaceDepth(g)};
 }
 
 constexpr float kDisjoint = -1e30f;  // the log weight of surfaces that share nothing
@@ -205,15 +213,16 @@ struct EdgeStops {
     PT_HD float inverseDepthScale(float pixels) const {
         return 1.0f / (kDepthSigma * stops.depthSlope * pixels + 1e-3f * center.depth);
     }
-    // The log weight of q, `inverseDepthScale` away (taps at equal distances share one).
-    // Selects, not branches: a tap's cost is its instructions (the GPU pass is issue-bound).
+    // The log weight of q, `inverseDepthScale` away (taps at equal distances share one): the
+    // background shares only with itself. Selects, not branches: a tap's cost is its
+    // instructions (the GPU pass is issue-bound).
     PT_HD float logWeight(const DenoiseSurface& q, float inverseDepth) const {
-        const bool missQ = q.depth == 0.0f;
-        if (center.depth == 0.0f) return missQ ? 0.0f : kDisjoint;  // the background only with itself
+        const bool background = center.depth == 0.0f, missQ = q.depth == 0.0f;
         const float cosine = dot(center.normal, q.normal);
         const float shared =
-            -fabsf(center.depth - q.depth) * inverseDepth + stops.normalPower * (cosine - 1.0f);
-        return !missQ && cosine > 0.0f ? shared : kDisjoint;
+            background ? 0.0f
+                       : -fabsf(center.depth - q.depth) * inverseDepth + stops.normalPower * (cosine - 1.0f);
+        return background == missQ && (background || cosine > 0.0f) ? shared : kDisjoint;
     }
 };
 
@@ -252,17 +261,18 @@ PT_HD float spatialVarianceAt(const DenoiseSample* in, const DenoiseSurface* sur
 // edge stop should not follow the noise of the variance estimate itself.
 PT_HD float blurredVarianceAt(const PackedSample* in, uint32_t width, uint32_t height, uint32_t x,
                               uint32_t y) {
+    const bool left = x > 0, right = x + 1 < width, up = y > 0, down = y + 1 < height;
     float sum = 0.0f, sumW = 0.0f;
     PT_UNROLL
     for (int dy = -1; dy <= 1; ++dy) {
         PT_UNROLL
         for (int dx = -1; dx <= 1; ++dx) {
-            const int qx = int(x) + dx, qy = int(y) + dy;
-            if (qx < 0 || qy < 0 || qx >= int(width) || qy >= int(height)) continue;
-            const DenoiseSample s = unpackSample(in[uint32_t(qy) * width + uint32_t(qx)]);
+            if ((dx < 0 && !left) || (dx > 0 && !right) || (dy < 0 && !up) || (dy > 0 && !down)) continue;
+            const float deviation =
+                floatFromHalf(in[uint32_t(int(y) + dy) * width + uint32_t(int(x) + dx)].deviation);
             const float w =
-                s.valid() ? (dx == 0 ? 2.0f : 1.0f) * (dy == 0 ? 2.0f : 1.0f) : 0.0f;  // 3x3 binomial
-            sum += w * s.variance;
+                deviation >= 0.0f ? (dx == 0 ? 2.0f : 1.0f) * (dy == 0 ? 2.0f : 1.0f) : 0.0f;  // 3x3 binomial
+            sum += w * deviation * deviation;
             sumW += w;
         }
     }
@@ -274,10 +284,11 @@ struct AtrousSums {
     Vec3 radiance = Vec3(0.0f);
     float weight = 0.0f, variance = 0.0f;
 
-    PT_HD void add(float w, const DenoiseSample& s) {
-        radiance += w * s.radiance;
+    // `sampleVariance` counts for nothing where w is 0 (a left-out sample's may be anything).
+    PT_HD void add(float w, Vec3 sampleRadiance, float sampleVariance) {
+        radiance += w * sampleRadiance;
         weight += w;
-        variance += w * w * s.variance;
+        variance += w * w * sampleVariance;
     }
 };
 
@@ -303,13 +314,16 @@ PT_HD PackedSample atrousAt(const PackedSample* in, const DenoiseSurface* surfac
         center.valid() ? 1.0f / (kLuminanceSigma * sqrtf(blurredVarianceAt(in, width, height, x, y)) + 1e-10f)
                        : 0.0f;
     AtrousSums sums;
-    if (center.valid()) sums.add(splineWeight(0) * splineWeight(0), center);
+    if (center.valid()) sums.add(splineWeight(0) * splineWeight(0), center.radiance, center.variance);
     const auto tap = [&](int i, int j, uint32_t q) {
-        const DenoiseSample s = unpackSample(in[q]);
+        const PackedSample packed = in[q];
+        const Vec3 radiance(floatFromHalf(packed.r), floatFromHalf(packed.g), floatFromHalf(packed.b));
+        const float deviation = floatFromHalf(packed.deviation);  // negative: left out
         const float logWeight =
             edges.logWeight(loadSurface(surfaces, q), inverseDepth[j < 0 ? -j : j][i < 0 ? -i : i]) -
-            fabsf(luminance(s.radiance) - lp) * invSigmaL;
-        sums.add(s.valid() ? splineWeight(i) * splineWeight(j) * fastExp(logWeight) : 0.0f, s);
+            fabsf(luminance(radiance) - lp) * invSigmaL;
+        sums.add(deviation >= 0.0f ? splineWeight(i) * splineWeight(j) * fastExp(logWeight) : 0.0f, radiance,
+                 deviation * deviation);
     };
     const uint32_t reach = 2 * step;
     if (x >= reach && y >= reach && x + reach < width && y + reach < height) {

@@ -32,12 +32,14 @@ void denoiseOnCpu(const DenoiseInput& in, std::vector<float>& rgba) {
     std::vector<denoise::SurfaceStops> stops(pixels);
     forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
         const uint32_t i = y * g.width + x;
+        const denoise::PixelGuides pixel = denoise::guidesAt(g, i);
         (ownVariance ? input : demodulated)[i] = denoise::demodulatedSample(
-            denoise::loadRgb(in.beauty, i), in.varianceOfMean[4 * i], in.samples, g, i);
-        surfaces[i] = denoise::surfaceAt(g, x, y, stops[i]);
+            denoise::loadRgb(in.beauty, i), in.varianceOfMean[4 * i], in.samples, pixel);
+        surfaces[i] = denoise::surfaceOf(pixel, stops[i].normalPower);
     });
     forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
         const uint32_t i = y * g.width + x;
+        stops[i].depthSlope = denoise::depthSlopeAt(surfaces.data(), g.width, g.height, x, y);
         if (!ownVariance) {
             input[i] = {demodulated[i].radiance,
                         denoise::spatialVarianceAt(demodulated.data(), surfaces.data(), stops.data(), g.width,
@@ -58,7 +60,8 @@ void denoiseOnCpu(const DenoiseInput& in, std::vector<float>& rgba) {
     forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
         const uint32_t i = y * g.width + x;
         const Vec3 filtered = denoise::filteredRadiance(input[i], (*from)[i]);
-        const Vec3 c = denoise::remodulated(denoise::boundedByNoise(input[i], filtered, in.samples), g, i);
+        const Vec3 c = denoise::remodulated(denoise::boundedByNoise(input[i], filtered, in.samples),
+                                            denoise::loadRgb(g.albedo, i), denoise::loadRgb(g.emission, i));
         rgba[4 * i + 0] = c.x;
         rgba[4 * i + 1] = c.y;
         rgba[4 * i + 2] = c.z;

@@ -1,3 +1,5 @@
+#include <iterator>
+
 #include "render/backend/aov.h"
 #include "render/backend/backend.h"
 #include "render/backend/cuda/cuda_check.h"
@@ -10,17 +12,15 @@ namespace {
 
 constexpr uint32_t kBlockSide = 16;
 
-// The RGBA planes prepareKernel fills from the sums, one after another in GpuDenoiser::planes_.
-enum Plane : uint32_t { kAlbedo, kNormal, kDepth, kEmission, kAlpha, kPlaneCount };
+// The RGBA planes prepareKernel fills from the sums, one after another in GpuDenoiser::planes_:
+// what the last pass multiplies and adds back.
+enum Plane : uint32_t { kAlbedo, kEmission, kPlaneCount };
 
 struct Planes {
     float* base;
     uint32_t width, height;
 
     __host__ __device__ float* at(Plane k) const { return base + size_t(k) * 4 * width * height; }
-    __host__ __device__ DenoiseGuides guides() const {
-        return {width, height, at(kAlbedo), at(kNormal), at(kDepth), at(kEmission), at(kAlpha)};
-    }
 };
 
 __device__ bool pixelOf(uint32_t width, uint32_t height, uint32_t& x, uint32_t& y) {
@@ -29,17 +29,19 @@ __device__ bool pixelOf(uint32_t width, uint32_t height, uint32_t& x, uint32_t& 
     return x < width && y < height;
 }
 
-__device__ void storeAov(float* plane, const AovBuffers& aovs, Aov aov, uint32_t i, uint32_t samples) {
-    const uint32_t channels = aovChannels(aov);
+// AOV `aov` of pixel i as readAov gives it.
+__device__ Vec3 aovValue(const AovBuffers& aovs, Aov aov, uint32_t i, uint32_t samples) {
+    const uint32_t last = aovChannels(aov) == 3 ? 2 : 0;
     const double* sums = aovs.at(aov, i);
-    for (uint32_t c = 0; c < 3; ++c)
-        plane[4 * i + c] = aovPixelValue(aov, sums, channels == 3 ? c : 0, samples);
-    plane[4 * i + 3] = 1.0f;
+    return {aovPixelValue(aov, sums, 0, samples), aovPixelValue(aov, sums, last > 0 ? 1 : 0, samples),
+            aovPixelValue(aov, sums, last, samples)};
 }
 
-// The guides as readAov gives them, then the demodulated samples of the mean beauty (as
-// readBeauty gives it).
+// Each pixel's guides from the sums (the albedo and emission kept for the last pass), its
+// surface and normal stop, and the demodulated sample of its mean beauty (as readBeauty gives
+// it). Only the depth slopes wait for the neighbours' surfaces (packKernel).
 __global__ void prepareKernel(const double* sum, AovBuffers aovs, uint32_t samples, Planes p,
+                              denoise::DenoiseSurface* surfaces, denoise::SurfaceStops* stops,
                               DenoiseSample* out) {
     uint32_t x, y;
     if (!pixelOf(p.width, p.height, x, y)) return;
@@ -47,32 +49,29 @@ __global__ void prepareKernel(const double* sum, AovBuffers aovs, uint32_t sampl
     const double scale = samples ? 1.0 / samples : 0.0;
     const Vec3 beauty(float(sum[3 * i] * scale), float(sum[3 * i + 1] * scale),
                       float(sum[3 * i + 2] * scale));
-    storeAov(p.at(kAlbedo), aovs, Aov::Albedo, i, samples);
-    storeAov(p.at(kNormal), aovs, Aov::ShadingNormal, i, samples);
-    storeAov(p.at(kDepth), aovs, Aov::Depth, i, samples);
-    storeAov(p.at(kEmission), aovs, Aov::Emission, i, samples);
-    storeAov(p.at(kAlpha), aovs, Aov::Alpha, i, samples);
+    const denoise::PixelGuides pixel{
+        aovValue(aovs, Aov::Albedo, i, samples), aovValue(aovs, Aov::ShadingNormal, i, samples),
+        aovValue(aovs, Aov::Emission, i, samples), aovValue(aovs, Aov::Depth, i, samples).x,
+        aovValue(aovs, Aov::Alpha, i, samples).x};
+    reinterpret_cast<float4*>(p.at(kAlbedo))[i] =
+        make_float4(pixel.albedo.x, pixel.albedo.y, pixel.albedo.z, 1.0f);
+    reinterpret_cast<float4*>(p.at(kEmission))[i] =
+        make_float4(pixel.emission.x, pixel.emission.y, pixel.emission.z, 1.0f);
+    surfaces[i] = denoise::surfaceOf(pixel, stops[i].normalPower);
     const float variance = aovPixelValue(Aov::Variance, aovs.at(Aov::Variance, i), 0, samples);
-    out[i] = denoise::demodulatedSample(beauty, variance, samples, p.guides(), i);
+    out[i] = denoise::demodulatedSample(beauty, variance, samples, pixel);
 }
 
-// After prepareKernel: a pixel's surface reads its neighbours' depths.
-__global__ void surfaceKernel(DenoiseGuides g, denoise::DenoiseSurface* surfaces,
-                              denoise::SurfaceStops* stops) {
-    uint32_t x, y;
-    if (!pixelOf(g.width, g.height, x, y)) return;
-    const uint32_t i = y * g.width + x;
-    surfaces[i] = denoise::surfaceAt(g, x, y, stops[i]);
-}
-
-// The first passes' input, packed; before it, where each pixel's own variance has too few
-// samples, the variance its neighbours estimate (`demodulated`: prepareKernel's output).
+// The depth slopes, and the first pass's input, packed; before it, where each pixel's own
+// variance has too few samples, the variance its neighbours estimate (`demodulated`:
+// prepareKernel's output).
 __global__ void packKernel(const DenoiseSample* demodulated, const denoise::DenoiseSurface* surfaces,
-                           const denoise::SurfaceStops* stops, uint32_t width, uint32_t height,
+                           denoise::SurfaceStops* stops, uint32_t width, uint32_t height,
                            DenoiseSample* input, denoise::PackedSample* packed) {
     uint32_t x, y;
     if (!pixelOf(width, height, x, y)) return;
     const uint32_t i = y * width + x;
+    stops[i].depthSlope = denoise::depthSlopeAt(surfaces, width, height, x, y);
     if (demodulated) {
         input[i] = {demodulated[i].radiance,
                     denoise::spatialVarianceAt(demodulated, surfaces, stops, width, height, x, y)};
@@ -80,26 +79,37 @@ __global__ void packKernel(const DenoiseSample* demodulated, const denoise::Deno
     packed[i] = denoise::packSample(input[i]);
 }
 
+// The passes take their step as a constant, so that each tap's address is the row's plus an
+// offset the instruction holds. The last pass (kFinal) writes the image: the filtered value,
+// held near the pixel's own mean, remodulated (`input` and `samples` are read only there).
+template <uint32_t kStep, bool kFinal>
 __global__ void atrousKernel(const denoise::PackedSample* in, const denoise::DenoiseSurface* surfaces,
-                             const denoise::SurfaceStops* stops, uint32_t width, uint32_t height,
-                             uint32_t step, denoise::PackedSample* out) {
+                             const denoise::SurfaceStops* stops, Planes p, const DenoiseSample* input,
+                             uint32_t samples, denoise::PackedSample* out, float* rgba) {
     uint32_t x, y;
-    if (!pixelOf(width, height, x, y)) return;
-    out[y * width + x] = denoise::atrousAt(in, surfaces, stops, width, height, x, y, step);
+    if (!pixelOf(p.width, p.height, x, y)) return;
+    const uint32_t i = y * p.width + x;
+    const denoise::PackedSample filtered =
+        denoise::atrousAt(in, surfaces, stops, p.width, p.height, x, y, kStep);
+    if (!kFinal) {
+        out[i] = filtered;
+        return;
+    }
+    const Vec3 radiance = denoise::filteredRadiance(input[i], filtered);
+    const Vec3 c =
+        denoise::remodulated(denoise::boundedByNoise(input[i], radiance, samples),
+                             denoise::loadRgb(p.at(kAlbedo), i), denoise::loadRgb(p.at(kEmission), i));
+    reinterpret_cast<float4*>(rgba)[i] = make_float4(c.x, c.y, c.z, 1.0f);
 }
 
-__global__ void remodulateKernel(const DenoiseSample* input, const denoise::PackedSample* filtered,
-                                 DenoiseGuides g, uint32_t samples, float* rgba) {
-    uint32_t x, y;
-    if (!pixelOf(g.width, g.height, x, y)) return;
-    const uint32_t i = y * g.width + x;
-    const Vec3 radiance = denoise::filteredRadiance(input[i], filtered[i]);
-    const Vec3 c = denoise::remodulated(denoise::boundedByNoise(input[i], radiance, samples), g, i);
-    rgba[4 * i + 0] = c.x;
-    rgba[4 * i + 1] = c.y;
-    rgba[4 * i + 2] = c.z;
-    rgba[4 * i + 3] = 1.0f;
-}
+using AtrousPass = void (*)(const denoise::PackedSample*, const denoise::DenoiseSurface*,
+                            const denoise::SurfaceStops*, Planes, const DenoiseSample*, uint32_t,
+                            denoise::PackedSample*, float*);
+// Step 2^k for pass k; the last one writes the image.
+constexpr AtrousPass kAtrousPasses[] = {atrousKernel<1, false>, atrousKernel<2, false>,
+                                        atrousKernel<4, false>, atrousKernel<8, false>,
+                                        atrousKernel<16, true>};
+static_assert(std::size(kAtrousPasses) == kDenoiseIterations, "one kernel a pass");
 
 }  // namespace
 
@@ -126,23 +136,20 @@ void GpuDenoiser::run(const double* sum, const AovBuffers& aovs, uint32_t width,
     denoise::PackedSample *a = a_.data(), *b = b_.data();
     const bool ownVariance = samples >= kMinSamplesForOwnVariance;
     DenoiseSample* demodulated = ownVariance ? nullptr : demodulated_.data();
-    prepareKernel<<<grid, block, 0, stream>>>(sum, aovs, samples, p, ownVariance ? input : demodulated);
-    PT_CUDA_CHECK_LAUNCH("prepareKernel");
     denoise::DenoiseSurface* surfaces = surfaces_.data();
     denoise::SurfaceStops* stops = stops_.data();
-    surfaceKernel<<<grid, block, 0, stream>>>(p.guides(), surfaces, stops);
-    PT_CUDA_CHECK_LAUNCH("surfaceKernel");
+    prepareKernel<<<grid, block, 0, stream>>>(sum, aovs, samples, p, surfaces, stops,
+                                              ownVariance ? input : demodulated);
+    PT_CUDA_CHECK_LAUNCH("prepareKernel");
     packKernel<<<grid, block, 0, stream>>>(demodulated, surfaces, stops, width, height, input, a);
     PT_CUDA_CHECK_LAUNCH("packKernel");
     const denoise::PackedSample* from = a;
     for (uint32_t k = 0; k < kDenoiseIterations; ++k) {
         denoise::PackedSample* to = from == a ? b : a;
-        atrousKernel<<<grid, block, 0, stream>>>(from, surfaces, stops, width, height, 1u << k, to);
+        kAtrousPasses[k]<<<grid, block, 0, stream>>>(from, surfaces, stops, p, input, samples, to, rgba);
         PT_CUDA_CHECK_LAUNCH("atrousKernel");
         from = to;
     }
-    remodulateKernel<<<grid, block, 0, stream>>>(input, from, p.guides(), samples, rgba);
-    PT_CUDA_CHECK_LAUNCH("remodulateKernel");
 }
 
 }  // namespace pt::cuda
