@@ -19,6 +19,7 @@
 #include <cstdint>
 
 #include "render/denoise/denoise_planes.h"
+#include "render/math/half_float.h"  // bitsFloat
 #include "render/math/hd.h"
 #include "render/math/vec.h"
 
@@ -193,9 +194,25 @@ PT_HD DenoiseSurface surfaceOf(const PixelGuides& g, float& normalPower) {
 
 constexpr float kDisjoint = -1e30f;  // the log weight of surfaces that share nothing
 
-// e^x as 2^(x log2 e): on the GPU a multiply and the ex2 instruction, where expf adds a range
-// reduction for accuracy that the weights do not need (an a-trous tap's largest cost).
-PT_HD float fastExp(float x) { return exp2f(x * 1.44269504f); }
+// e^x for x <= 0 as 2^(x log2 e), an a-trous tap's largest cost. On the GPU a multiply and the
+// ex2 instruction, where expf adds a range reduction for accuracy that the weights do not
+// need. On the host exp2f is a call into libm; there 2^x is 2^n times a degree-5 Taylor
+// polynomial of 2^f, with n the nearest integer and |f| <= 1/2 (relative error below 1e-5),
+// and 0 below 2^-126 (a denormal weight is none).
+PT_HD float fastExp(float x) {
+#if defined(__CUDA_ARCH__)
+    return exp2f(x * 1.44269504f);
+#else
+    const float t = x * 1.44269504f;
+    if (!(t > -126.0f)) return 0.0f;
+    const float rounder = 12582912.0f;  // 1.5 * 2^23: adding it rounds to an integer
+    const float n = minf((t + rounder) - rounder, 127.0f), f = t - n;
+    const float twoToF =
+        1.0f + f * (0.693147182f +
+                    f * (0.240226507f + f * (0.0555041087f + f * (0.00961812911f + f * 0.00133335581f))));
+    return twoToF * bitsFloat(uint32_t(int32_t(n) + 127) << 23);
+#endif
+}
 
 // How much a neighbour shares a centre pixel's surface, from the normals and depths (SVGF
 // eq. 5, as one exponent). The normal stop is a spherical Gaussian, exp(power (cos - 1))
@@ -245,8 +262,8 @@ PT_HD float spatialVarianceAt(const DenoiseSample* in, const DenoiseSurface* sur
             if (!in[q].valid()) continue;
             const float w =
                 q == p ? 1.0f
-                       : expf(edges.logWeight(loadSurface(surfaces, q),
-                                              edges.inverseDepthScale(sqrtf(float(dx * dx + dy * dy)))));
+                       : fastExp(edges.logWeight(loadSurface(surfaces, q),
+                                                 edges.inverseDepthScale(sqrtf(float(dx * dx + dy * dy)))));
             const float l = luminance(in[q].radiance);
             sumW += w;
             sumL += w * l;
