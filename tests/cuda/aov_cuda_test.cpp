@@ -117,6 +117,32 @@ TEST(AovCuda, JitteredAovsAndVarianceMatchTheCpu) {
     }
 }
 
+// A half-transparent pane in front of the ball: camera segments pass it (stochastic alpha) and
+// end at a later bounce of the wavefront, whose shade then still records AOVs.
+TEST(AovCuda, AovsSeenThroughAnAlphaBlendedPaneMatchTheCpu) {
+    PT_REQUIRE_CUDA_DEVICE();
+    Scene scene = test::noisyScene(32);
+    Material glassPane = test::diffuse({0.2f, 0.5f, 0.9f});
+    glassPane.alphaMode = AlphaMode::Blend;
+    glassPane.alpha = 0.5f;
+    const uint32_t pane = test::addMaterial(scene, "pane", glassPane);
+    test::addShape(scene, ObjectKind::Quad, test::trs({0, 0.8f, 2.0f}, {90, 0, 0}, {0.6f, 1, 0.6f}), pane,
+                   "pane");
+    const AovMask aovs = kAllAovs & ~(aovBit(Aov::BvhCost) | aovBit(Aov::Variance));
+    CpuBackend cpu;
+    renderAovs(cpu, scene, 16, aovs, schedules(true)[0].toggles);
+    std::vector<float> albedo;  // the pane's blue mixed with the grey behind it
+    cpu.readAov(Aov::Albedo, albedo);
+    size_t throughPane = 0;
+    for (size_t i = 0; i < albedo.size(); i += 4) throughPane += albedo[i + 2] > albedo[i] + 0.1f ? 1 : 0;
+    ASSERT_GT(throughPane, 20u) << "the pane must be in view";
+    for (const Schedule& s : schedules(true)) {
+        cuda::CudaBackend gpu;
+        renderAovs(gpu, scene, 16, aovs, s.toggles);
+        expectAovsMatch(cpu, gpu, aovs, s.name);
+    }
+}
+
 TEST(AovCuda, BeautyIsBitIdenticalWithAndWithoutAovs) {
     PT_REQUIRE_CUDA_DEVICE();
     const Scene scene = test::noisyScene(32);

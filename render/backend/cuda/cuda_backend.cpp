@@ -508,9 +508,9 @@ BackendStats CudaBackend::stats() const {
     s.rays = counters.rays;
     s.nonfiniteSamples = counters.nonfinite;
     s.features = renderFeatures();
-    // As the scheduler chooses.
+    // As the scheduler chooses (AOVs aside: their code runs in kernels of its own).
     const KernelVariant& variant =
-        kKernelVariants[chooseKernelVariant(s.features, kernelVariantIndex(toggles_.kernelVariant))];
+        kKernelVariants[chooseKernelVariant(view_.features, kernelVariantIndex(toggles_.kernelVariant))];
     s.kernelVariant = variant.name;
     s.kernelFeatures = variant.features;
     if (toggles_.autoSchedule) {

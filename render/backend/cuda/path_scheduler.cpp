@@ -115,9 +115,10 @@ void PathScheduler::render(const RenderScene& scene, uint32_t firstSample, uint3
     reserve(pixelCount, pixelCount * samplesPerWave, options, cacheCosts);
     const WaveBuffers b = buffers(aovs);
     // Chosen per render, so an edit that adds a feature runs a variant with it from its first
-    // samples on.
-    variant_ =
-        chooseKernelVariant(scene.features | (aovs.mask != 0 ? feature::kAovs : 0u), options.kernelVariant);
+    // samples on. AOVs do not choose it: their code runs in kernels of its own (the megakernel's
+    // AOV kernel; the wavefront's shade of camera segments), so the denoiser's guides no longer
+    // put every stage of every bounce on the generic code.
+    variant_ = chooseKernelVariant(scene.features, options.kernelVariant);
     for (uint32_t done = 0; done < samples;) {
         const uint32_t n = std::min(samplesPerWave, samples - done);
         const WaveShape shape{pixelCount, pixelCount * n, firstSample + done};
@@ -166,7 +167,9 @@ void PathScheduler::runWavefront(const RenderScene& scene, WaveBuffers b, const 
             queue = b.queue[0];
         }
         PT_CUDA_CHECK(cudaMemsetAsync(out, 0, sizeof(BounceCounts), stream));
-        launchShade(variant_, scene, b, queue, length, options.compaction, out, stream);
+        // A camera segment goes on past bounce 0 only through surfaces that let rays through.
+        const bool cameraSegments = k == 0 || scene.transparentMaterials != 0;
+        launchShade(variant_, scene, b, queue, length, options.compaction, cameraSegments, out, stream);
         PT_CUDA_CHECK(cudaMemcpyAsync(&hostBounces_[k % 2], out, sizeof(BounceCounts), cudaMemcpyDeviceToHost, stream));
         PT_CUDA_CHECK(cudaEventRecord(bounceDone_[k % 2], stream));
         QueueLength next{length.bound, options.compaction ? &out->queue : nullptr};

@@ -249,10 +249,11 @@ void launchSortByMaterial(const RenderScene& scene, const WaveBuffers& b, uint32
 }
 
 void launchShade(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const uint32_t* queue,
-                 QueueLength length, bool compaction, BounceCounts* out, cudaStream_t stream) {
+                 QueueLength length, bool compaction, bool cameraSegments, BounceCounts* out,
+                 cudaStream_t stream) {
     if (length.bound == 0) return;
     const uint32_t blocks = blocksFor(length.bound);
-    if (b.aovs.mask & kPathAovs) {  // AOVs run the generic code (kernel_variants.h)
+    if (cameraSegments && (b.aovs.mask & kPathAovs)) {  // AOVs run the generic code (kernel_variants.h)
         shadeKernel<kAllFeatures, true><<<blocks, kBlock, 0, stream>>>(scene, b, queue, length, compaction, out);
     } else {
         forKernelVariant(variant, [&](auto features) {

@@ -89,9 +89,12 @@ void launchSortByMaterial(const RenderScene& scene, const WaveBuffers& b, uint32
 // Shading of the paths in `queue` (`length` entries; all paths when nullptr). With compaction,
 // live paths are appended to b.queue[1] and valid shadow rays to b.shadowQueue, counted in
 // `out` (device memory, zeroed by the caller); without, shadows are marked valid in place and
-// out->alive counts the live paths. Camera segments that end here add their AOVs to b.aovs.
+// out->alive counts the live paths. Camera segments that end here add their AOVs to b.aovs:
+// `cameraSegments` says whether any may be among the paths (else the variant's kernel, which
+// has no AOV code, runs).
 void launchShade(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const uint32_t* queue,
-                 QueueLength length, bool compaction, BounceCounts* out, cudaStream_t stream);
+                 QueueLength length, bool compaction, bool cameraSegments, BounceCounts* out,
+                 cudaStream_t stream);
 
 // Shadow rays of the paths in `queue` (`length` entries; all paths when nullptr); invalid ones
 // are skipped, and unoccluded contributions are added to the paths' radiance. `consume` marks
