@@ -123,7 +123,7 @@ void GpuDenoiser::run(const double* sum, const AovBuffers& aovs, uint32_t width,
         surfaces_ = DeviceBuffer<denoise::DenoiseSurface>(pixels);
         stops_ = DeviceBuffer<denoise::SurfaceStops>(pixels);
         input_ = DeviceBuffer<DenoiseSample>(pixels);
-        demodulated_ = DeviceBuffer<DenoiseSample>(pixels);
+        demodulated_ = DeviceBuffer<DenoiseSample>();  // made when a call has too few samples
         a_ = DeviceBuffer<denoise::PackedSample>(pixels);
         b_ = DeviceBuffer<denoise::PackedSample>(pixels);
     }
@@ -135,6 +135,7 @@ void GpuDenoiser::run(const double* sum, const AovBuffers& aovs, uint32_t width,
     DenoiseSample* input = input_.data();
     denoise::PackedSample *a = a_.data(), *b = b_.data();
     const bool ownVariance = samples >= kMinSamplesForOwnVariance;
+    if (!ownVariance && demodulated_.size() != pixels) demodulated_ = DeviceBuffer<DenoiseSample>(pixels);
     DenoiseSample* demodulated = ownVariance ? nullptr : demodulated_.data();
     denoise::DenoiseSurface* surfaces = surfaces_.data();
     denoise::SurfaceStops* stops = stops_.data();

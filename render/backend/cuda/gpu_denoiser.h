@@ -25,7 +25,7 @@ public:
     }
 
 private:
-    DeviceBuffer<float> planes_;  // the guides albedo, normal, depth, emission, alpha: RGBA
+    DeviceBuffer<float> planes_;  // the guides the last pass reads back, albedo and emission: RGBA
     DeviceBuffer<denoise::DenoiseSurface> surfaces_;  // each pixel's surface for the edge stops
     DeviceBuffer<denoise::SurfaceStops> stops_;       // and what only its own stops read
     // The demodulated input (its variance the neighbours' estimate at few samples, from
