@@ -29,12 +29,12 @@ __device__ bool pixelOf(uint32_t width, uint32_t height, uint32_t& x, uint32_t& 
     return x < width && y < height;
 }
 
-// AOV `aov` of pixel i as readAov gives it.
+// AOV `aov` of pixel i as readAov gives it (a one-channel AOV in all three).
 __device__ Vec3 aovValue(const AovBuffers& aovs, Aov aov, uint32_t i, uint32_t samples) {
-    const uint32_t last = aovChannels(aov) == 3 ? 2 : 0;
+    const uint32_t channel = aovChannels(aov) == 3 ? 1 : 0;  // the step from one channel to the next
     const double* sums = aovs.at(aov, i);
-    return {aovPixelValue(aov, sums, 0, samples), aovPixelValue(aov, sums, last > 0 ? 1 : 0, samples),
-            aovPixelValue(aov, sums, last, samples)};
+    return {aovPixelValue(aov, sums, 0, samples), aovPixelValue(aov, sums, channel, samples),
+            aovPixelValue(aov, sums, 2 * channel, samples)};
 }
 
 // Each pixel's guides from the sums (the albedo and emission kept for the last pass), its
