@@ -27,7 +27,7 @@ namespace denoise {
 
 constexpr float kInvalid = -1.0f;  // DenoiseSample::variance of a pixel left out
 
-// A pixel's surface as its neighbours' edge stops compare it (surfaceAt): 16 bytes, one load
+// A pixel's surface as its neighbours' edge stops compare it (surfaceOf): 16 bytes, one load
 // (aligned so that the GPU makes it one).
 struct alignas(16) DenoiseSurface {
     Vec3 normal;  // unit; 0 where the pixel holds no usable normal
@@ -44,8 +44,8 @@ PT_HD DenoiseSurface loadSurface(const DenoiseSurface* surfaces, uint32_t q) {
 #endif
 }
 
-// What only a pixel's own edge stops read (surfaceAt), a plane of its own so that the taps
-// do not load it.
+// What only a pixel's own edge stops read (surfaceOf, depthSlopeAt), a plane of its own so
+// that the taps do not load it.
 struct SurfaceStops {
     float normalPower;  // the normal edge stop's power, lowered by the pixel's spread of normals
     float depthSlope;   // the larger of its depth slopes along x and y, a pixel
