@@ -239,54 +239,70 @@ struct EdgeStops {
         const float shared =
             background ? 0.0f
                        : -fabsf(center.depth - q.depth) * inverseDepth + stops.normalPower * (cosine - 1.0f);
-        return background == missQ && (background || cosine > 0.0f) ? shared : kDisjoint;
+        return (background == missQ) & (background | (cosine > 0.0f)) ? shared : kDisjoint;
     }
 };
+
+// What spatialVarianceAt adds up for one pixel: its neighbours' luminances, weighted.
+struct SpreadSums {
+    float weight = 0.0f, luminance = 0.0f, squares = 0.0f;
+
+    PT_HD void add(float w, float l) {
+        weight += w;
+        luminance += w * l;
+        squares += w * l * l;
+    }
+    PT_HD float variance() const {  // weight >= 1: the pixel itself
+        const float mean = luminance / weight;
+        return maxf(squares / weight - mean * mean, 0.0f);
+    }
+};
+
+// The weight in spatialVarianceAt of a neighbour q `distance` pixels from the centre (whose
+// own weight is 1): its surface's.
+PT_HD float spreadWeight(const EdgeStops& edges, const DenoiseSurface& q, float distance) {
+    return fastExp(edges.logWeight(q, edges.inverseDepthScale(distance)));
+}
 
 // The variance of a pixel's mean estimated from its neighbours (a 7x7 window on the same
 // surface), for the first samples, where each pixel's own estimate has too few samples to
 // speak (SVGF section 4.2 does the same while a pixel's history is short): where the true
 // image is smooth, neighbouring means differ by the noise of a mean.
+constexpr int kSpreadRadius = 3;
 PT_HD float spatialVarianceAt(const DenoiseSample* in, const DenoiseSurface* surfaces,
                               const SurfaceStops* stops, uint32_t width, uint32_t height, uint32_t x,
                               uint32_t y) {
     const uint32_t p = y * width + x;
     if (!in[p].valid()) return kInvalid;
     const EdgeStops edges{surfaces[p], stops[p]};
-    float sumW = 0.0f, sumL = 0.0f, sumL2 = 0.0f;
-    for (int dy = -3; dy <= 3; ++dy) {
-        for (int dx = -3; dx <= 3; ++dx) {
+    SpreadSums sums;
+    for (int dy = -kSpreadRadius; dy <= kSpreadRadius; ++dy) {
+        for (int dx = -kSpreadRadius; dx <= kSpreadRadius; ++dx) {
             const int qx = int(x) + dx, qy = int(y) + dy;
             if (qx < 0 || qy < 0 || qx >= int(width) || qy >= int(height)) continue;
             const uint32_t q = uint32_t(qy) * width + uint32_t(qx);
             if (!in[q].valid()) continue;
             const float w =
                 q == p ? 1.0f
-                       : fastExp(edges.logWeight(loadSurface(surfaces, q),
-                                                 edges.inverseDepthScale(sqrtf(float(dx * dx + dy * dy)))));
-            const float l = luminance(in[q].radiance);
-            sumW += w;
-            sumL += w * l;
-            sumL2 += w * l * l;
+                       : spreadWeight(edges, loadSurface(surfaces, q), sqrtf(float(dx * dx + dy * dy)));
+            sums.add(w, luminance(in[q].radiance));
         }
     }
-    const float mean = sumL / sumW;  // sumW >= 1: p itself
-    return maxf(sumL2 / sumW - mean * mean, 0.0f);
+    return sums.variance();
 }
 
 // The variance of p's mean luminance blurred over 3x3 (SVGF eq. 5's g_3x3): the luminance
-// edge stop should not follow the noise of the variance estimate itself.
-PT_HD float blurredVarianceAt(const PackedSample* in, uint32_t width, uint32_t height, uint32_t x,
-                              uint32_t y) {
-    const bool left = x > 0, right = x + 1 < width, up = y > 0, down = y + 1 < height;
+// edge stop should not follow the noise of the variance estimate itself. `deviationAt(dx, dy)`:
+// the deviation of the pixel (dx, dy) from p, negative where it is left out or past the
+// image's edge (it then weighs 0: no branch, so the CPU runs a row of these as vectors).
+template <class DeviationAt>
+PT_HD float blurredVarianceAt(const DeviationAt& deviationAt) {
     float sum = 0.0f, sumW = 0.0f;
     PT_UNROLL
     for (int dy = -1; dy <= 1; ++dy) {
         PT_UNROLL
         for (int dx = -1; dx <= 1; ++dx) {
-            if ((dx < 0 && !left) || (dx > 0 && !right) || (dy < 0 && !up) || (dy > 0 && !down)) continue;
-            const float deviation =
-                floatFromHalf(in[uint32_t(int(y) + dy) * width + uint32_t(int(x) + dx)].deviation);
+            const float deviation = deviationAt(dx, dy);
             const float w =
                 deviation >= 0.0f ? (dx == 0 ? 2.0f : 1.0f) * (dy == 0 ? 2.0f : 1.0f) : 0.0f;  // 3x3 binomial
             sum += w * deviation * deviation;
@@ -294,6 +310,23 @@ PT_HD float blurredVarianceAt(const PackedSample* in, uint32_t width, uint32_t h
         }
     }
     return sumW > 0.0f ? sum / sumW : 0.0f;
+}
+
+// 1 / the luminance difference that counts as one deviation at a centre: as a factor of the
+// exponent, 0 for a left-out centre (the guides alone weigh its neighbours).
+PT_HD float inverseLuminanceScale(bool centerValid, float blurredVariance) {
+    return centerValid ? 1.0f / (kLuminanceSigma * sqrtf(blurredVariance) + 1e-10f) : 0.0f;
+}
+
+// The weight of an a-trous tap at neighbour q (its surface, the luminance of its radiance, its
+// deviation: negative where q is left out), `spline` the product of its B3-spline weights,
+// inverseDepth and inverseLuminance the centre's scales for q's distance.
+PT_HD float atrousTapWeight(const EdgeStops& edges, const DenoiseSurface& q, float inverseDepth,
+                            float tapLuminance, float deviation, float centerLuminance,
+                            float inverseLuminance, float spline) {
+    const float logWeight =
+        edges.logWeight(q, inverseDepth) - fabsf(tapLuminance - centerLuminance) * inverseLuminance;
+    return deviation >= 0.0f ? spline * fastExp(logWeight) : 0.0f;
 }
 
 // What an a-trous pass adds up for one pixel.
@@ -306,6 +339,11 @@ struct AtrousSums {
         radiance += w * sampleRadiance;
         weight += w;
         variance += w * w * sampleVariance;
+    }
+    // The weighted mean and its variance (SVGF eq. 4); left out where nothing had weight.
+    PT_HD DenoiseSample result() const {
+        if (!(weight > 0.0f)) return {Vec3(0.0f), kInvalid};
+        return {radiance / weight, variance / (weight * weight)};
     }
 };
 
@@ -326,21 +364,22 @@ PT_HD PackedSample atrousAt(const PackedSample* in, const DenoiseSurface* surfac
             inverseDepth[j][i] = edges.inverseDepthScale(float(step) * sqrtf(float(i * i + j * j)));
     }
     const float lp = luminance(center.radiance);
-    // The luminance stop as a factor of the exponent (0: a left-out centre, guides alone).
-    const float invSigmaL =
-        center.valid() ? 1.0f / (kLuminanceSigma * sqrtf(blurredVarianceAt(in, width, height, x, y)) + 1e-10f)
-                       : 0.0f;
+    const float invSigmaL = inverseLuminanceScale(
+        center.valid(), blurredVarianceAt([&](int dx, int dy) {
+            const bool inside = (dx >= 0 || x > 0) && (dx <= 0 || x + 1 < width) && (dy >= 0 || y > 0) &&
+                                (dy <= 0 || y + 1 < height);
+            return inside ? floatFromHalf(in[int(p) + dy * int(width) + dx].deviation) : kInvalid;
+        }));
     AtrousSums sums;
     if (center.valid()) sums.add(splineWeight(0) * splineWeight(0), center.radiance, center.variance);
     const auto tap = [&](int i, int j, uint32_t q) {
         const PackedSample packed = in[q];
         const Vec3 radiance(floatFromHalf(packed.r), floatFromHalf(packed.g), floatFromHalf(packed.b));
-        const float deviation = floatFromHalf(packed.deviation);  // negative: left out
-        const float logWeight =
-            edges.logWeight(loadSurface(surfaces, q), inverseDepth[j < 0 ? -j : j][i < 0 ? -i : i]) -
-            fabsf(luminance(radiance) - lp) * invSigmaL;
-        sums.add(deviation >= 0.0f ? splineWeight(i) * splineWeight(j) * fastExp(logWeight) : 0.0f, radiance,
-                 deviation * deviation);
+        const float deviation = floatFromHalf(packed.deviation);
+        sums.add(
+            atrousTapWeight(edges, loadSurface(surfaces, q), inverseDepth[j < 0 ? -j : j][i < 0 ? -i : i],
+                            luminance(radiance), deviation, lp, invSigmaL, splineWeight(i) * splineWeight(j)),
+            radiance, deviation * deviation);
     };
     const uint32_t reach = 2 * step;
     if (x >= reach && y >= reach && x + reach < width && y + reach < height) {
@@ -364,8 +403,7 @@ PT_HD PackedSample atrousAt(const PackedSample* in, const DenoiseSurface* surfac
             }
         }
     }
-    if (!(sums.weight > 0.0f)) return packSample({Vec3(0.0f), kInvalid});
-    return packSample({sums.radiance / sums.weight, sums.variance / (sums.weight * sums.weight)});
+    return packSample(sums.result());
 }
 
 }  // namespace denoise

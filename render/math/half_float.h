@@ -16,25 +16,21 @@ PT_HD float bitsFloat(uint32_t u) { return intAsFloat(int32_t(u)); }
 
 constexpr float kHalfMax = 65504.0f;
 
+// Branch-free (each case computed, one selected), so that the CPU converts a row of pixels as
+// SIMD vectors; the cases and their order are Giesen's.
 PT_HD uint16_t halfFromFloat(float value) {
     uint32_t x = floatBits(value);
     const uint32_t sign = x & 0x80000000u;
     x ^= sign;
-    uint32_t half;
-    if (x > 0x7f800000u) {
-        half = 0x7e00u;  // NaN stays NaN
-    } else if (x >= 0x477ff000u) {
-        half = 0x7bffu;  // rounds to 65504 or past it (infinity too): the largest half
-    } else if (x < (113u << 23)) {
-        // Below 2^-14, half's subnormals: adding 0.5 lines the mantissa up so that the float
-        // addition does the rounding, to nearest even.
-        const uint32_t magic = ((127u - 15u) + (23u - 10u) + 1u) << 23;
-        half = floatBits(bitsFloat(x) + bitsFloat(magic)) - magic;
-    } else {
-        const uint32_t mantissaOdd = (x >> 13) & 1u;
-        x += ((15u - 127u) << 23) + 0xfffu + mantissaOdd;  // rebias the exponent, round to even
-        half = x >> 13;
-    }
+    // Below 2^-14, half's subnormals: adding 0.5 lines the mantissa up so that the float
+    // addition does the rounding, to nearest even.
+    const uint32_t magic = ((127u - 15u) + (23u - 10u) + 1u) << 23;
+    const uint32_t subnormal = floatBits(bitsFloat(x) + bitsFloat(magic)) - magic;
+    // Rebias the exponent, round to nearest even.
+    const uint32_t normal = (x + ((15u - 127u) << 23) + 0xfffu + ((x >> 13) & 1u)) >> 13;
+    uint32_t half = x < (113u << 23) ? subnormal : normal;
+    half = x >= 0x477ff000u ? 0x7bffu : half;  // rounds to 65504 or past it (infinity too): the largest half
+    half = x > 0x7f800000u ? 0x7e00u : half;   // NaN stays NaN
     return uint16_t(half | (sign >> 16));
 }
 
@@ -47,11 +43,11 @@ PT_HD float floatFromHalf(uint16_t half) {
 #else
     const uint32_t sign = uint32_t(half & 0x8000u) << 16;
     const uint32_t exponent = half & 0x7c00u, bits = uint32_t(half & 0x7fffu) << 13;
-    if (exponent == 0x7c00u) return bitsFloat(sign | 0x7f800000u | bits);  // infinity, NaN
-    if (exponent == 0) {  // zero and subnormals: the mantissa times 2^-24
-        return bitsFloat(sign | floatBits(float(half & 0x3ffu) * 5.9604644775390625e-8f));
-    }
-    return bitsFloat(sign | (bits + ((127u - 15u) << 23)));
+    const uint32_t special = sign | 0x7f800000u | bits;  // infinity, NaN
+    // Zero and subnormals: the mantissa times 2^-24.
+    const uint32_t small = sign | floatBits(float(half & 0x3ffu) * 5.9604644775390625e-8f);
+    const uint32_t normal = sign | (bits + ((127u - 15u) << 23));
+    return bitsFloat(exponent == 0x7c00u ? special : (exponent == 0 ? small : normal));
 #endif
 }
 

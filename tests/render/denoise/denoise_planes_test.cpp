@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -46,6 +47,27 @@ TEST(HalfFloat, RoundsToNearestEven) {
     }
     EXPECT_EQ(halfFromFloat(std::ldexp(1.0f, -25)), 0u) << "half the smallest subnormal ties to 0";
     EXPECT_EQ(halfFromFloat(std::ldexp(1.1f, -25)), 1u);
+}
+
+// halfFromFloat against rounding done in double arithmetic: the value on half's grid nearest
+// to f, ties to even (std::nearbyint's default), for every 251st float (a stride prime to
+// the mantissa's bits, so every rounding case is met) of both signs and every exponent.
+TEST(HalfFloat, RoundsFloatsAsDoubleArithmeticDoes) {
+    size_t checked = 0;
+    for (uint64_t bits = 0; bits < (uint64_t(1) << 32); bits += 251) {
+        const float f = bitsFloat(uint32_t(bits));
+        if (!std::isfinite(f)) continue;
+        const double magnitude = std::fabs(double(f));
+        const int exponent = magnitude < std::ldexp(1.0, -14) ? -14 : std::ilogb(magnitude);
+        const double spacing = std::ldexp(1.0, exponent - 10);
+        const double nearest = std::min(std::nearbyint(magnitude / spacing) * spacing, double(kHalfMax));
+        const uint16_t expected = uint16_t(halfFromFloat(float(nearest)) | (std::signbit(f) ? 0x8000u : 0u));
+        ASSERT_EQ(floatFromHalf(expected), float(std::copysign(nearest, double(f))))
+            << "the grid value is a half";
+        ASSERT_EQ(halfFromFloat(f), expected) << std::hexfloat << f;
+        ++checked;
+    }
+    EXPECT_GT(checked, 16000000u);
 }
 
 TEST(HalfFloat, SaturatesAtTheLargestHalf) {

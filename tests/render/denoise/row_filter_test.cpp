@@ -1,0 +1,114 @@
+// The CPU's row form of the denoiser's neighbourhood steps against the per-pixel steps the GPU
+// runs (atrous_filter.h), bit for bit: a random image with every kind of pixel (sky beside
+// surfaces, left-out pixels, creases, depth cliffs) through each pass's step, image edges
+// included, at sizes that are not a multiple of a SIMD vector.
+#include "render/denoise/row_filter.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "render/denoise/atrous_filter.h"
+
+namespace pt::denoise {
+namespace {
+
+// One random image in both forms: the per-pixel arrays and the CPU's planes.
+struct RandomImage {
+    uint32_t width, height;
+    PlaneLayout layout{width, height};
+    std::vector<DenoiseSample> samples;
+    std::vector<DenoiseSurface> surfaces;
+    std::vector<SurfaceStops> stops;
+    SurfacePlanes surfacePlanes{layout};
+
+    RandomImage(uint32_t w, uint32_t h, uint32_t seed)
+        : width(w), height(h), samples(size_t(w) * h), surfaces(size_t(w) * h), stops(size_t(w) * h) {
+        std::mt19937 rng(seed);
+        std::uniform_real_distribution<float> u(0.0f, 1.0f);
+        for (size_t i = 0; i < samples.size(); ++i) {
+            const float kind = u(rng);
+            // Patches of a few surfaces, so that neighbours share some and differ in others.
+            const uint32_t x = uint32_t(i % w), y = uint32_t(i / w);
+            const uint32_t patch = (x / 7 + 3 * (y / 5)) % 4;
+            const Vec3 normal =
+                patch == 0 ? Vec3(0, 0, 1) : normalize(Vec3(0.3f * float(patch), u(rng) * 0.1f, 1.0f));
+            const bool sky = patch == 3 && kind < 0.5f;
+            surfaces[i] = {sky ? Vec3(0.0f) : normal, sky ? 0.0f : 2.0f + float(patch) + 0.01f * u(rng)};
+            stops[i].normalPower = kNormalPower / (1.0f + 10.0f * u(rng));
+            const Vec3 radiance(u(rng), u(rng) * 2.0f, u(rng) * 0.5f);
+            samples[i] =
+                kind < 0.05f ? DenoiseSample{Vec3(0.0f), kInvalid} : DenoiseSample{radiance, 0.1f * u(rng)};
+        }
+        for (uint32_t y = 0; y < h; ++y) {
+            for (uint32_t x = 0; x < w; ++x) {
+                const uint32_t i = y * w + x;
+                stops[i].depthSlope = depthSlopeAt(surfaces.data(), w, h, x, y);
+                surfacePlanes.store(layout.at(x, y), surfaces[i], stops[i]);
+            }
+        }
+    }
+};
+
+bool sameBits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+TEST(RowFilter, AtrousRowsMatchThePerPixelStepBitForBit) {
+    for (const auto& [w, h] : {std::pair{67u, 45u}, std::pair{5u, 3u}, std::pair{1u, 9u}}) {
+        const RandomImage image(w, h, w * 31 + h);
+        std::vector<PackedSample> packed(image.samples.size());
+        SamplePlanes planes(image.layout), out(image.layout);
+        const SampleOutput input(planes);
+        for (uint32_t y = 0; y < h; ++y) {
+            for (uint32_t x = 0; x < w; ++x) {
+                packed[y * w + x] = packSample(image.samples[y * w + x]);
+                input.store(image.layout.at(x, y), image.samples[y * w + x]);
+            }
+        }
+        RowSums sums(w);
+        for (uint32_t step = 1; step <= 16; step *= 2) {
+            for (uint32_t y = 0; y < h; ++y)
+                atrousRow(planes, image.surfacePlanes, image.layout, y, step, sums, out);
+            size_t mismatches = 0;
+            for (uint32_t y = 0; y < h; ++y) {
+                for (uint32_t x = 0; x < w; ++x) {
+                    const PackedSample expected =
+                        atrousAt(packed.data(), image.surfaces.data(), image.stops.data(), w, h, x, y, step);
+                    const PackedSample got = out.packed(image.layout.at(x, y));
+                    mismatches += std::memcmp(&expected, &got, sizeof got) != 0;
+                }
+            }
+            EXPECT_EQ(mismatches, 0u) << w << "x" << h << ", step " << step;
+        }
+    }
+}
+
+TEST(RowFilter, SpatialVarianceRowsMatchThePerPixelStepBitForBit) {
+    for (const auto& [w, h] : {std::pair{67u, 45u}, std::pair{3u, 2u}}) {
+        const RandomImage image(w, h, w + h);
+        LuminancePlanes luminance(image.layout);
+        for (uint32_t y = 0; y < h; ++y) {
+            for (uint32_t x = 0; x < w; ++x) luminance.store(image.layout.at(x, y), image.samples[y * w + x]);
+        }
+        RowSums sums(w);
+        std::vector<float> variance(w);
+        size_t mismatches = 0, leftOut = 0;
+        for (uint32_t y = 0; y < h; ++y) {
+            spatialVarianceRow(luminance, image.surfacePlanes, image.layout, y, sums, variance.data());
+            for (uint32_t x = 0; x < w; ++x) {
+                const float expected = spatialVarianceAt(image.samples.data(), image.surfaces.data(),
+                                                         image.stops.data(), w, h, x, y);
+                mismatches += !sameBits(expected, variance[x]);
+                leftOut += expected == kInvalid;
+            }
+        }
+        EXPECT_EQ(mismatches, 0u) << w << "x" << h;
+        if (w * h > 100) {
+            EXPECT_GT(leftOut, 0u) << "the image has left-out pixels";
+        }
+    }
+}
+
+}  // namespace
+}  // namespace pt::denoise
