@@ -1,29 +1,30 @@
-// Backend::readDenoised as every backend can run it: the guides read back, the CPU filter.
+// Backend::readDenoised as every backend can run it (HostDenoiser), and HostDenoiser.
 #include "render/backend/backend.h"
-#include "render/denoise/denoiser.h"
+#include "render/backend/host_denoiser.h"
 #include "render/util/stopwatch.h"
 
 namespace pt {
 
-double Backend::readDenoised(std::vector<float>& rgba) const {
-    for (const Aov guide : kDenoiseGuides) requireAov(aovs(), guide);
-    std::vector<float> beauty, albedo, normal, depth, emission, alpha, variance;
-    readBeauty(beauty);
-    readAov(Aov::Albedo, albedo);
-    readAov(Aov::ShadingNormal, normal);
-    readAov(Aov::Depth, depth);
-    readAov(Aov::Emission, emission);
-    readAov(Aov::Alpha, alpha);
-    readAov(Aov::Variance, variance);
+double HostDenoiser::run(const Backend& backend, std::vector<float>& rgba) {
+    for (const Aov guide : kDenoiseGuides) requireAov(backend.aovs(), guide);
+    backend.readBeauty(beauty_);
+    backend.readAov(Aov::Albedo, albedo_);
+    backend.readAov(Aov::ShadingNormal, normal_);
+    backend.readAov(Aov::Depth, depth_);
+    backend.readAov(Aov::Emission, emission_);
+    backend.readAov(Aov::Alpha, alpha_);
+    backend.readAov(Aov::Variance, variance_);
     DenoiseInput in;
-    in.samples = stats().samplesPerPixel;
-    in.beauty = beauty.data();
-    in.varianceOfMean = variance.data();
-    in.guides = {width(),      height(),        albedo.data(), normal.data(),
-                 depth.data(), emission.data(), alpha.data()};
+    in.samples = backend.stats().samplesPerPixel;
+    in.beauty = beauty_.data();
+    in.varianceOfMean = variance_.data();
+    in.guides = {backend.width(), backend.height(), albedo_.data(), normal_.data(),
+                 depth_.data(),   emission_.data(), alpha_.data()};
     const auto start = Clock::now();
-    denoiseOnCpu(in, rgba);
+    filter_.run(in, rgba);
     return secondsSince(start);
 }
+
+double Backend::readDenoised(std::vector<float>& rgba) const { return HostDenoiser().run(*this, rgba); }
 
 }  // namespace pt

@@ -30,59 +30,88 @@ void forEachRow(uint32_t width, uint32_t height, const PerRow& perRow) {
 
 }  // namespace
 
-void denoiseOnCpu(const DenoiseInput& in, std::vector<float>& rgba) {
-    const DenoiseGuides& g = in.guides;
-    const size_t pixels = size_t(g.width) * g.height;
-    const denoise::PlaneLayout layout{g.width, g.height};
+// The planes a denoise works in, kept for the next call of the same size: at 512x512 they
+// are 30 MB, which a call that allocated them anew spent about a sixth of its time faulting in.
+// The planes' margins are written once, at allocation; every call overwrites the pixels.
+struct CpuDenoiser::Workspace {
+    denoise::PlaneLayout layout;
     // `input` keeps each pixel's own mean and noise for boundedByNoise; the passes alternate
     // between a and b (as GpuDenoiser::run).
-    const bool ownVariance = in.samples >= kMinSamplesForOwnVariance;
-    std::vector<DenoiseSample> input(pixels);
-    std::vector<denoise::DenoiseSurface> surfaces(pixels);
-    std::vector<denoise::SurfaceStops> stops(pixels);
+    std::vector<DenoiseSample> input;
+    std::vector<denoise::DenoiseSurface> surfaces;
+    std::vector<denoise::SurfaceStops> stops;
+    denoise::SurfacePlanes surfacePlanes;
+    denoise::SamplePlanes a, b;
+    // Below kMinSamplesForOwnVariance only: the luminances its neighbours' variance is
+    // estimated from, and that variance (made at the first call that needs them).
+    std::unique_ptr<denoise::LuminancePlanes> luminance;
+    std::vector<float> spread;
+
+    explicit Workspace(const denoise::PlaneLayout& l)
+        : layout(l),
+          input(size_t(l.width) * l.height),
+          surfaces(input.size()),
+          stops(input.size()),
+          surfacePlanes(l),
+          a(l),
+          b(l) {}
+};
+
+CpuDenoiser::CpuDenoiser() = default;
+CpuDenoiser::~CpuDenoiser() = default;
+
+void CpuDenoiser::run(const DenoiseInput& in, std::vector<float>& rgba) {
+    const DenoiseGuides& g = in.guides;
+    const size_t pixels = size_t(g.width) * g.height;
+    if (!workspace_ || workspace_->layout.width != g.width || workspace_->layout.height != g.height) {
+        workspace_.reset();  // the old planes go before the new ones come
+        workspace_ = std::make_unique<Workspace>(denoise::PlaneLayout{g.width, g.height});
+    }
+    Workspace& w = *workspace_;
+    const denoise::PlaneLayout& layout = w.layout;
     forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
         const uint32_t i = y * g.width + x;
         const denoise::PixelGuides pixel = denoise::guidesAt(g, i);
-        input[i] = denoise::demodulatedSample(denoise::loadRgb(in.beauty, i), in.varianceOfMean[4 * i],
-                                              in.samples, pixel);
-        surfaces[i] = denoise::surfaceOf(pixel, stops[i].normalPower);
+        w.input[i] = denoise::demodulatedSample(denoise::loadRgb(in.beauty, i), in.varianceOfMean[4 * i],
+                                                in.samples, pixel);
+        w.surfaces[i] = denoise::surfaceOf(pixel, w.stops[i].normalPower);
     });
-    denoise::SurfacePlanes surfacePlanes(layout);
     forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
         const uint32_t i = y * g.width + x;
-        stops[i].depthSlope = denoise::depthSlopeAt(surfaces.data(), g.width, g.height, x, y);
-        surfacePlanes.store(layout.at(x, y), surfaces[i], stops[i]);
+        w.stops[i].depthSlope = denoise::depthSlopeAt(w.surfaces.data(), g.width, g.height, x, y);
+        w.surfacePlanes.store(layout.at(x, y), w.surfaces[i], w.stops[i]);
     });
-    if (!ownVariance) {
+    if (in.samples < kMinSamplesForOwnVariance) {
         // Too few samples for each pixel's own variance: its neighbours estimate it.
-        denoise::LuminancePlanes luminance(layout);
+        if (!w.luminance) {
+            w.luminance = std::make_unique<denoise::LuminancePlanes>(layout);
+            w.spread.resize(pixels);
+        }
         forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
-            luminance.store(layout.at(x, y), input[y * g.width + x]);
+            w.luminance->store(layout.at(x, y), w.input[y * g.width + x]);
         });
-        std::vector<float> variance(pixels);
         forEachRow(g.width, g.height, [&](uint32_t y, denoise::RowSums& sums) {
-            denoise::spatialVarianceRow(luminance, surfacePlanes, layout, y, sums,
-                                        &variance[size_t(y) * g.width]);
+            denoise::spatialVarianceRow(*w.luminance, w.surfacePlanes, layout, y, sums,
+                                        &w.spread[size_t(y) * g.width]);
         });
-        for (size_t i = 0; i < pixels; ++i) input[i].variance = variance[i];
+        for (size_t i = 0; i < pixels; ++i) w.input[i].variance = w.spread[i];
     }
-    denoise::SamplePlanes a(layout), b(layout);
-    const denoise::SampleOutput first(a);
+    const denoise::SampleOutput first(w.a);
     forEachPixel(g.width, g.height,
-                 [&](uint32_t x, uint32_t y) { first.store(layout.at(x, y), input[y * g.width + x]); });
-    const denoise::SamplePlanes* from = &a;
+                 [&](uint32_t x, uint32_t y) { first.store(layout.at(x, y), w.input[y * g.width + x]); });
+    const denoise::SamplePlanes* from = &w.a;
     for (uint32_t k = 0; k < kDenoiseIterations; ++k) {
-        denoise::SamplePlanes* to = from == &a ? &b : &a;
+        denoise::SamplePlanes* to = from == &w.a ? &w.b : &w.a;
         forEachRow(g.width, g.height, [&](uint32_t y, denoise::RowSums& sums) {
-            denoise::atrousRow(*from, surfacePlanes, layout, y, 1u << k, sums, *to);
+            denoise::atrousRow(*from, w.surfacePlanes, layout, y, 1u << k, sums, *to);
         });
         from = to;
     }
     rgba.resize(pixels * 4);
     forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
         const uint32_t i = y * g.width + x;
-        const Vec3 filtered = denoise::filteredRadiance(input[i], from->packed(layout.at(x, y)));
-        const Vec3 c = denoise::remodulated(denoise::boundedByNoise(input[i], filtered, in.samples),
+        const Vec3 filtered = denoise::filteredRadiance(w.input[i], from->packed(layout.at(x, y)));
+        const Vec3 c = denoise::remodulated(denoise::boundedByNoise(w.input[i], filtered, in.samples),
                                             denoise::loadRgb(g.albedo, i), denoise::loadRgb(g.emission, i));
         rgba[4 * i + 0] = c.x;
         rgba[4 * i + 1] = c.y;
@@ -90,5 +119,7 @@ void denoiseOnCpu(const DenoiseInput& in, std::vector<float>& rgba) {
         rgba[4 * i + 3] = 1.0f;
     });
 }
+
+void denoiseOnCpu(const DenoiseInput& in, std::vector<float>& rgba) { CpuDenoiser().run(in, rgba); }
 
 }  // namespace pt

@@ -3,6 +3,7 @@
 // task per row band for each of its passes. The CUDA backend runs the same per-pixel steps as
 // kernels.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "render/denoise/atrous_filter.h"
@@ -22,7 +23,20 @@ struct DenoiseInput {
     DenoiseGuides guides{};                 // size and guide planes (atrous_filter.h)
 };
 
-// The denoised beauty, RGBA (alpha 1), finite everywhere.
+// The denoiser on the CPU, keeping its working memory for the next call of the same size.
+class CpuDenoiser {
+public:
+    CpuDenoiser();
+    ~CpuDenoiser();
+    // The denoised beauty, RGBA (alpha 1), finite everywhere.
+    void run(const DenoiseInput& in, std::vector<float>& rgba);
+
+private:
+    struct Workspace;
+    std::unique_ptr<Workspace> workspace_;
+};
+
+// One denoise, its working memory freed after.
 void denoiseOnCpu(const DenoiseInput& in, std::vector<float>& rgba);
 
 }  // namespace pt

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "render/backend/backend.h"
+#include "render/backend/host_denoiser.h"
 #include "render/integrator/path_state.h"
 #include "render/scene/compile_scene.h"
 
@@ -27,6 +28,7 @@ public:
     AovMask aovs() const override { return aovs_; }
     void readAov(Aov aov, std::vector<float>& rgba) const override;
     uint64_t aovBytes() const override { return aovSums_.capacity() * sizeof(double); }
+    double readDenoised(std::vector<float>& rgba) const override { return denoiser_.run(*this, rgba); }
 
 private:
     template <bool kAovs>
@@ -38,10 +40,11 @@ private:
     RenderScene view_{};
     IntegratorToggles toggles_;
     uint32_t width_ = 0, height_ = 0;
-    std::vector<double> sum_;  // RGB per pixel
+    std::vector<double> sum_;               // RGB per pixel
     AovMask aovsRequested_ = 0, aovs_ = 0;  // as set; as applied at the last reset
     std::vector<double> aovSums_;           // render/backend/aov.h's layout; empty without AOVs
     BackendStats stats_;
+    mutable HostDenoiser denoiser_;  // its memory kept from one readDenoised to the next
 };
 
 }  // namespace pt

@@ -43,15 +43,18 @@ struct Frame {
         const float* p = &plane[4 * (size_t(y) * width + x)];
         return {p[0], p[1], p[2]};
     }
-    std::vector<float> denoised() const {
+    DenoiseInput input() const {
         DenoiseInput in;
         in.samples = samples;
         in.beauty = beauty.data();
         in.varianceOfMean = variance.data();
         in.guides = {width,        height,          albedo.data(), normal.data(),
                      depth.data(), emission.data(), alpha.data()};
+        return in;
+    }
+    std::vector<float> denoised() const {
         std::vector<float> out;
-        denoiseOnCpu(in, out);
+        denoiseOnCpu(input(), out);
         return out;
     }
 };
@@ -114,6 +117,33 @@ TEST(Denoiser, AGeometricEdgeStopsTheFilter) {
     for (uint32_t y = 0; y < f.height; ++y) {
         EXPECT_NEAR(f.at(out, 19, y).x, 1.0f, 0.03f) << "row " << y;
         EXPECT_NEAR(f.at(out, 20, y).x, 0.1f, 0.03f) << "row " << y;
+    }
+}
+
+// A CpuDenoiser keeps its planes from call to call: what one call leaves in them (its own
+// variance estimate at few samples, its sizes) must not reach the next.
+TEST(Denoiser, AKeptWorkspaceGivesWhatAFreshOneGives) {
+    std::mt19937 rng(5);
+    std::normal_distribution<float> noise(0.0f, 0.1f);
+    const auto noisy = [&](uint32_t w, uint32_t h, uint32_t samples) {
+        Frame f(w, h);
+        f.samples = samples;
+        for (uint32_t y = 0; y < h; ++y) {
+            for (uint32_t x = 0; x < w; ++x) {
+                f.set(f.beauty, x, y, Vec3(0.5f + noise(rng)));
+                f.set(f.variance, x, y,
+                      Vec3(samples < kMinSamplesForOwnVariance ? 0.0f : 0.01f / float(samples)));
+                if (x > w / 2) f.set(f.depth, x, y, Vec3(0.0f));  // sky: left of the wall only
+            }
+        }
+        return f;
+    };
+    const Frame frames[] = {noisy(40, 30, 1), noisy(40, 30, 16), noisy(23, 37, 2), noisy(40, 30, 1)};
+    CpuDenoiser kept;
+    for (const Frame& f : frames) {
+        std::vector<float> reused;
+        kept.run(f.input(), reused);
+        EXPECT_EQ(reused, f.denoised()) << f.width << "x" << f.height << ", " << f.samples << " spp";
     }
 }
 
