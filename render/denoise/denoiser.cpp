@@ -94,7 +94,8 @@ void CpuDenoiser::run(const DenoiseInput& in, std::vector<float>& rgba) {
             denoise::spatialVarianceRow(*w.luminance, w.surfacePlanes, layout, y, sums,
                                         &w.spread[size_t(y) * g.width]);
         });
-        for (size_t i = 0; i < pixels; ++i) w.input[i].variance = w.spread[i];
+        for (size_t i = 0; i < pixels; ++i)
+            w.input[i].variance = denoise::firstSamplesVariance(w.spread[i], in.samples);
     }
     const denoise::SampleOutput first(w.a);
     forEachPixel(g.width, g.height,

@@ -63,18 +63,20 @@ __global__ void prepareKernel(const double* sum, AovBuffers aovs, uint32_t sampl
 }
 
 // The depth slopes, and the first pass's input, packed; before it, where each pixel's own
-// variance has too few samples, the variance its neighbours estimate (`demodulated`:
-// prepareKernel's output).
+// variance has too few samples (`samples`), the variance its neighbours estimate
+// (`demodulated`: prepareKernel's output).
 __global__ void packKernel(const DenoiseSample* demodulated, const denoise::DenoiseSurface* surfaces,
-                           denoise::SurfaceStops* stops, uint32_t width, uint32_t height,
+                           denoise::SurfaceStops* stops, uint32_t width, uint32_t height, uint32_t samples,
                            DenoiseSample* input, denoise::PackedSample* packed) {
     uint32_t x, y;
     if (!pixelOf(width, height, x, y)) return;
     const uint32_t i = y * width + x;
     stops[i].depthSlope = denoise::depthSlopeAt(surfaces, width, height, x, y);
     if (demodulated) {
-        input[i] = {demodulated[i].radiance,
-                    denoise::spatialVarianceAt(demodulated, surfaces, stops, width, height, x, y)};
+        input[i] = {
+            demodulated[i].radiance,
+            denoise::firstSamplesVariance(
+                denoise::spatialVarianceAt(demodulated, surfaces, stops, width, height, x, y), samples)};
     }
     packed[i] = denoise::packSample(input[i]);
 }
@@ -142,7 +144,7 @@ void GpuDenoiser::run(const double* sum, const AovBuffers& aovs, uint32_t width,
     prepareKernel<<<grid, block, 0, stream>>>(sum, aovs, samples, p, surfaces, stops,
                                               ownVariance ? input : demodulated);
     PT_CUDA_CHECK_LAUNCH("prepareKernel");
-    packKernel<<<grid, block, 0, stream>>>(demodulated, surfaces, stops, width, height, input, a);
+    packKernel<<<grid, block, 0, stream>>>(demodulated, surfaces, stops, width, height, samples, input, a);
     PT_CUDA_CHECK_LAUNCH("packKernel");
     const denoise::PackedSample* from = a;
     for (uint32_t k = 0; k < kDenoiseIterations; ++k) {
