@@ -113,6 +113,30 @@ PT_HD float coverageFreeVariance(float varianceOfMean, float alpha, float surfac
     return maxf(surfaceSpread, 0.0f) * alpha / (hits - 1.0f);
 }
 
+// A variance of the mean estimated from few samples, raised to the variance it stands for:
+// a pixel's first samples are heavy-tailed (the rare path that finds a light adds far more than
+// the typical one), and the spread of a few of them, or of a window of 1-sample neighbours
+// (spatialVarianceAt), is the typical one. Left low, the luminance stop and the noise bound
+// keep every pixel's outliers. SVGF's own implementation (Schied et al. 2017; Falcor's
+// SVGFFilterMoments) multiplies its neighbours' estimate by 4 / samples for this; here both
+// estimates are multiplied by 16 / samples below 16 samples, which paid on both test scenes
+// (CPU backend, denoised over raw relMSE against 8192 / 4096 spp; Cornell box 128x128, GolfBall
+// 160x120):
+//   spp                      1      2      3      4      8      (16: unchanged)
+//   none         Cornell   0.458  0.683  0.763  0.068  0.077
+//                GolfBall  0.327  0.414  0.491  0.281  0.295
+//   4 / spp      Cornell   0.062  0.170  0.289
+//                GolfBall  0.197  0.216  0.261
+//   16 / spp     Cornell   0.025  0.029  0.046  0.048  0.062
+//                GolfBall  0.151  0.151  0.184  0.222  0.276
+//   32 / spp     Cornell   0.024  0.026  0.037  0.044  0.054  (0.082 at 16)
+//                GolfBall  0.140  0.138  0.172  0.212  0.276  (0.404 at 16: worse)
+constexpr float kFewSamplesVarianceBoost = 16.0f;
+PT_HD float fewSamplesVariance(float variance, uint32_t samples) {
+    const float boost = kFewSamplesVarianceBoost / float(samples > 0 ? samples : 1);
+    return boost > 1.0f && variance >= 0.0f ? variance * boost : variance;  // kInvalid stays
+}
+
 // A pixel's demodulated radiance and the variance of its mean luminance; a pixel with
 // non-finite radiance is left out (kInvalid), so that it never spreads. Emission seen first
 // (a light's face, the sky) is taken out before and put back after: it is not lit by anything,
@@ -127,7 +151,7 @@ PT_HD DenoiseSample demodulatedSample(Vec3 radiance, float varianceOfMean, uint3
     const float variance = coverageFreeVariance(maxf(sanitized(varianceOfMean), 0.0f), sanitized(g.alpha),
                                                 luminance(radiance - emission), luminance(emission), samples);
     const float scale = luminance(d);
-    return {(radiance - emission) / d, variance / (scale * scale)};
+    return {(radiance - emission) / d, fewSamplesVariance(variance / (scale * scale), samples)};
 }
 
 // The filtered value held within a few standard deviations of the pixel's own mean (in
@@ -289,25 +313,6 @@ PT_HD float spatialVarianceAt(const DenoiseSample* in, const DenoiseSurface* sur
         }
     }
     return sums.variance();
-}
-
-// spatialVarianceAt's estimate raised for a pixel's first samples, the variance it stands for.
-// Those samples are heavy-tailed (the rare path that finds a light adds far more than the
-// typical one), and a 7x7 window's spread is the typical one: it underestimates the variance
-// of the mean, and the luminance stop and the noise bound then keep every pixel's outliers.
-// SVGF's own implementation (Schied et al. 2017; Falcor's SVGFFilterMoments) multiplies the
-// estimate by 4 / samples for this. A larger factor paid on both test scenes (CPU backend,
-// denoised over raw relMSE against 8192 / 4096 spp at 1, 2 and 3 spp):
-//   no boost: Cornell box 128x128 0.458 / 0.683 / 0.763, GolfBall 160x120 0.327 / 0.414 / 0.491
-//   4 / n:    0.062 / 0.170 / 0.289 and 0.197 / 0.216 / 0.261
-//   16 / n:   0.025 / 0.029 / 0.046 and 0.151 / 0.151 / 0.184
-//   32 / n:   0.024 / 0.026 / 0.037 and 0.140 / 0.138 / 0.172
-// 16: little is gained past it, and the next sample (4, each pixel's own variance) is not
-// filtered less than this one (Cornell 0.068, GolfBall 0.28).
-constexpr float kFirstSamplesVarianceBoost = 16.0f;
-PT_HD float firstSamplesVariance(float spatialVariance, uint32_t samples) {
-    const float boost = kFirstSamplesVarianceBoost / float(samples > 0 ? samples : 1);
-    return spatialVariance >= 0.0f ? spatialVariance * boost : spatialVariance;  // kInvalid stays
 }
 
 // The variance of p's mean luminance blurred over 3x3 (SVGF eq. 5's g_3x3): the luminance

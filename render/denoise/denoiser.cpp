@@ -95,7 +95,7 @@ void CpuDenoiser::run(const DenoiseInput& in, std::vector<float>& rgba) {
                                         &w.spread[size_t(y) * g.width]);
         });
         for (size_t i = 0; i < pixels; ++i)
-            w.input[i].variance = denoise::firstSamplesVariance(w.spread[i], in.samples);
+            w.input[i].variance = denoise::fewSamplesVariance(w.spread[i], in.samples);
     }
     const denoise::SampleOutput first(w.a);
     forEachPixel(g.width, g.height,

@@ -75,7 +75,7 @@ __global__ void packKernel(const DenoiseSample* demodulated, const denoise::Deno
     if (demodulated) {
         input[i] = {
             demodulated[i].radiance,
-            denoise::firstSamplesVariance(
+            denoise::fewSamplesVariance(
                 denoise::spatialVarianceAt(demodulated, surfaces, stops, width, height, x, y), samples)};
     }
     packed[i] = denoise::packSample(input[i]);
