@@ -1,16 +1,17 @@
 #pragma once
 // The per-pixel steps of the denoiser, shared by the CPU driver (denoiser.h) and the CUDA
-// kernels: the spatial filter of SVGF (Schied et al. 2017, "Spatiotemporal Variance-Guided
-// Filtering"), an edge-avoiding a-trous wavelet filter (Dammertz et al. 2010, "Edge-Avoiding
-// A-Trous Wavelet Transform for fast Global Illumination Filtering") whose luminance edge
-// stop is scaled by the estimated standard deviation of each pixel's mean. Why this method: it
-// needs nothing but the guides the renderer already writes (first-hit albedo, shading normal,
-// depth, the variance of the mean), it is five passes of 25 taps (a few milliseconds at 1080p on
-// a CPU core per pass, far less on a GPU), and its luminance edge stop makes it fade out by
+// kernels (the CPU runs them a row of pixels at a time: row_filter.h): the spatial filter of
+// SVGF (Schied et al. 2017, "Spatiotemporal Variance-Guided Filtering"), an edge-avoiding
+// a-trous wavelet filter (Dammertz et al. 2010, "Edge-Avoiding A-Trous Wavelet Transform for
+// fast Global Illumination Filtering") whose luminance edge stop is scaled by the estimated
+// standard deviation of each pixel's mean. Why this method: it needs nothing but the guides the
+// renderer already writes (first-hit albedo, shading normal, depth, the variance of the mean),
+// it is five passes of 25 taps (at 512x512 about 16 ms a pass on one CPU core, as SIMD rows:
+// row_filter.h; at 1080p 0.15 ms on an H100), and its luminance edge stop makes it fade out by
 // itself: as samples grow the variance of the mean falls, the stop tightens, and a converged
-// image passes through almost untouched. A feature regression (Koskela et al. 2019, BMFR) cleans
-// more at 1 spp but blocks of least squares cost far more and need a temporal pass to hide their
-// seams; we have no motion vectors to feed one.
+// image passes through almost untouched. A feature regression (Koskela et al. 2019, BMFR)
+// cleans more at 1 spp but blocks of least squares cost far more and need a temporal pass to
+// hide their seams; we have no motion vectors to feed one.
 //
 // The filter works on demodulated radiance (radiance over albedo), so textures are multiplied
 // back after filtering and keep their detail; the variance carried along is that of each
@@ -256,7 +257,8 @@ struct EdgeStops {
     }
     // The log weight of q, `inverseDepthScale` away (taps at equal distances share one): the
     // background shares only with itself. Selects, not branches: a tap's cost is its
-    // instructions (the GPU pass is issue-bound).
+    // instructions (the GPU pass is issue-bound), and the CPU's row loops vectorise only where
+    // the conditions are bitwise (&&'s short circuit left GCC a branch it would not convert).
     PT_HD float logWeight(const DenoiseSurface& q, float inverseDepth) const {
         const bool background = center.depth == 0.0f, missQ = q.depth == 0.0f;
         const float cosine = dot(center.normal, q.normal);
