@@ -1,6 +1,7 @@
 #include "editor/editor_session.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <stdexcept>
 
 #include "assets/exr_layers.h"
@@ -91,6 +92,8 @@ void EditorSession::save(const std::string& path) {
     }
     render = shown;
     history_.markSaved();
+    // The document is that file now: exports name it, and saving again needs no confirmation.
+    doc_.scene.sourcePath = std::filesystem::absolute(path).lexically_normal().string();
 }
 
 SyncReport EditorSession::sync(const ProgressFn& progress) {
@@ -176,13 +179,6 @@ void EditorSession::setBackend(std::unique_ptr<Backend> backend) {
     pending_ = SceneChanges::All;
 }
 
-namespace {
-
-// The OpenColorIO config, display, view and look the scene asks for, where it names them: how
-// the scene-linear EXR is meant to be viewed.
-
-}  // namespace
-
 AovMask EditorSession::exportRender(const std::string& exrPath, const std::string& displayPath,
                                     const DisplayProcessor& display) const {
     std::vector<float> beauty;  // what the viewport shows
@@ -204,7 +200,8 @@ AovMask EditorSession::exportRender(const std::string& exrPath, const std::strin
         for (const AovImage& layer : exr.aovs) written |= aovBit(layer.aov);
     }
     if (!displayPath.empty()) {
-        writeDisplayImage(displayPath, w, h, display.encode8(beauty, w, doc_.viewer.display.dither), metadata);
+        writeDisplayImage(displayPath, w, h, display.encode8(beauty, w, doc_.viewer.display.dither),
+                          metadata);
     }
     return written;
 }

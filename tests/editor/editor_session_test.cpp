@@ -17,6 +17,7 @@
 #include <string>
 
 #include "assets/exr_layers.h"
+#include "assets/image_metadata.h"
 #include "assets/image_read.h"
 #include "assets/image_write.h"
 #include "assets/input_error.h"
@@ -385,7 +386,8 @@ TEST(EditorSession, ExportLayersAccumulateAfterTheirEditAndGoIntoTheExr) {
     std::vector<std::string> names;
     for (const ExrChannelData& c : image.channels) names.push_back(c.name);
     std::sort(names.begin(), names.end());
-    EXPECT_EQ(names, (std::vector<std::string>{"A", "B", "G", "R", "albedo.B", "albedo.G", "albedo.R", "instance_id.Y"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"A", "B", "G", "R", "albedo.B", "albedo.G", "albedo.R",
+                                               "instance_id.Y"}));
     EXPECT_EQ(image.channel("R")->type, ExrPixelType::Half);
     EXPECT_EQ(image.channel("albedo.R")->type, ExrPixelType::Half);
     EXPECT_EQ(image.channel("instance_id.Y")->type, ExrPixelType::Float);
@@ -393,7 +395,8 @@ TEST(EditorSession, ExportLayersAccumulateAfterTheirEditAndGoIntoTheExr) {
     session.backend().readAov(Aov::Albedo, albedo);
     session.backend().readAov(Aov::InstanceId, ids);
     for (size_t i = 0; i < 16u * 16u; ++i) {
-        ASSERT_NEAR(image.channel("albedo.G")->values[i], albedo[i * 4 + 1], albedo[i * 4 + 1] * 0x1p-11f) << i;
+        ASSERT_NEAR(image.channel("albedo.G")->values[i], albedo[i * 4 + 1], albedo[i * 4 + 1] * 0x1p-11f)
+            << i;
         ASSERT_EQ(image.channel("instance_id.Y")->values[i], ids[i * 4]) << i;
     }
     EXPECT_EQ(image.attribute("pt:aovs"), "albedo,instance_id");
@@ -446,6 +449,30 @@ TEST(EditorSession, SaveWritesTheSceneAndClearsModified) {
     // A failing save throws and keeps the modified flag.
     EXPECT_THROW(session.save(folder + "/missing folder/x.json"), InputError);
     EXPECT_TRUE(session.modified());
+}
+
+// After Save As the document is the new file: an export names it (not the file it was opened
+// from, which lacks the edits), and a failed save leaves the name alone.
+TEST(EditorSession, SaveAsMakesTheDocumentTheNewFile) {
+    Fixture f = startSession(1);
+    EditorSession& session = *f.session;
+    const std::string opened = session.document().scene.sourcePath;
+    const std::string folder = test::testFolder();
+    const std::string path = folder + "/saved as.json";
+    session.save(path);
+    const std::string expected = std::filesystem::absolute(path).lexically_normal().string();
+    EXPECT_NE(opened, expected);
+    EXPECT_EQ(session.document().scene.sourcePath, expected);
+    EXPECT_THROW(session.save(folder + "/missing folder/x.json"), InputError);
+    EXPECT_EQ(session.document().scene.sourcePath, expected);
+    if (!PT_TEST_HAVE_OIIO) GTEST_SKIP() << "this build has no OpenImageIO (PT_OIIO=OFF): no EXR metadata";
+    const std::string exr = folder + "/after save as.exr";
+    session.exportRender(exr, "", DisplayProcessor(session.document().viewer.display));
+    std::string named;
+    for (const auto& [key, value] : readImageMetadata(exr)) {
+        if (key == "pt:scene") named = value;
+    }
+    EXPECT_EQ(named, expected);
 }
 
 }  // namespace
