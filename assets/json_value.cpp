@@ -336,4 +336,26 @@ void putIfChanged(Json& out, const char* key, Vec3 value, Vec3 fallback) {
     if (!sameBits(value, fallback)) out[key] = vec3ToJson(value);
 }
 
+float nearestInRange(float v, NumberRange range) {
+    float lo = -std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::max();
+    switch (range) {
+        case NumberRange::Any:
+            break;
+        case NumberRange::NonNegative:
+            lo = 0.0f;
+            break;
+        case NumberRange::Positive:
+            lo = std::numeric_limits<float>::min();  // the smallest normal float: > 0 when read back
+            break;
+        case NumberRange::AtLeastOne:
+            lo = 1.0f;
+            break;
+        case NumberRange::Unit:
+            lo = 0.0f;
+            hi = 1.0f;
+            break;
+    }
+    return std::isnan(v) ? lo : std::min(std::max(v, lo), hi);
+}
+
 }  // namespace pt

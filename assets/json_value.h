@@ -23,6 +23,10 @@ Json parseJsonText(const std::string& text, const std::string& fileName);
 // Allowed values of a number, stated in messages ("expected a number in [0, 1], got 1.5").
 enum class NumberRange { Any, NonNegative, Positive, AtLeastOne, Unit };
 
+// The number in `range` nearest to v, finite (NaN: the range's lowest), so that an editor can
+// keep values the reader would refuse out of what it saves.
+float nearestInRange(float v, NumberRange range);
+
 // A value inside a parsed document and the path that reached it. Holds a reference into
 // the document, which must outlive it.
 class JsonValue {

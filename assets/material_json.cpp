@@ -173,6 +173,25 @@ void writeMaterialParams(const Material& m, const TexturePathFn& texturePath, Js
     }
 }
 
+Material withinFileRanges(const Material& material) {
+    const Material defaults;
+    Material m = material;
+    const auto hold = [](float& v, float fallback, NumberRange range) {
+        if (!(v == fallback)) v = nearestInRange(v, range);
+    };
+    for (const ParamKey& k : kParamKeys) {
+        if (k.scalar) hold(m.*k.scalar, defaults.*k.scalar, k.range);
+        if (k.color) {
+            Vec3& c = m.*k.color;
+            const Vec3& d = defaults.*k.color;
+            hold(c.x, d.x, k.range);
+            hold(c.y, d.y, k.range);
+            hold(c.z, d.z, k.range);
+        }
+    }
+    return m;
+}
+
 bool hasDefaultParams(const Material& material) {
     const TexturePathFn anyPath = [](int32_t, const std::string&) { return std::string(); };
     Json params = Json::object();

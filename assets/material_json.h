@@ -24,6 +24,11 @@ Material readMaterialParams(ObjectReader& object, const TextureLoader& loadTextu
 // never written), in the schema's order.
 void writeMaterialParams(const Material& material, const TexturePathFn& texturePath, Json& out);
 
+// The material with every parameter the reader checks held in its range (nearestInRange), so
+// that a saved scene reopens; a parameter at its default is kept (attenuationDistance's
+// infinity, which the writer leaves out).
+Material withinFileRanges(const Material& material);
+
 // True when writeMaterialParams would write nothing: every parameter is Material{}'s.
 bool hasDefaultParams(const Material& material);
 

@@ -16,6 +16,12 @@ constexpr int kSceneJsonVersion = 1;
 // after the JSON-defined ones, unless the JSON defines a material of this name itself.
 constexpr const char* kDefaultMaterialName = "default";
 
+// The camera's vertical field of view must lie in (0, 180) degrees for the reader.
+// withinFileRanges holds an edited one to [kMinEditedFov, kMaxEditedFov], well inside, and its
+// aperture to a finite number >= 0, so that a saved scene reopens.
+constexpr float kMinEditedFov = 0.01f, kMaxEditedFov = 179.0f;
+Camera withinFileRanges(const Camera& camera);
+
 // Throws InputError naming the file and the JSON path of the bad element, e.g.
 // "scene.json: objects[3].transform.scale: expected 3 numbers".
 Scene readSceneJson(const std::string& path, const ProgressFn& progress = {});

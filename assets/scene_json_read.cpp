@@ -439,4 +439,13 @@ Scene readSceneJson(const std::string& path, const ProgressFn& progress) {
     }
 }
 
+Camera withinFileRanges(const Camera& camera) {
+    Camera c = camera;
+    c.verticalFovDegrees = std::isnan(c.verticalFovDegrees)
+                               ? Camera{}.verticalFovDegrees
+                               : std::clamp(c.verticalFovDegrees, kMinEditedFov, kMaxEditedFov);
+    c.apertureRadius = nearestInRange(c.apertureRadius, NumberRange::NonNegative);
+    return c;
+}
+
 }  // namespace pt

@@ -2,6 +2,8 @@
 
 #include <map>
 
+#include "assets/material_json.h"
+#include "assets/scene_json.h"
 #include "render/scene/morph.h"
 
 namespace pt::editor {
@@ -57,13 +59,14 @@ ObjectPlacement movedPlacement(const ObjectPlacement& before, const ObjectTransf
 
 }  // namespace
 
+// Values typed into a field are held where the scene reader accepts them (withinFileRanges),
+// so that the editor never saves a scene it cannot open.
 std::unique_ptr<EditCommand> setMaterial(const Document& doc, uint32_t material, const Material& after) {
     const NamedMaterial& named = doc.scene.materials.at(material);
-    return makeValueCommand<Material>("Edit material " + named.name, key("material", material),
-                                      SceneChanges::Materials, named.params, after,
-                                      [material](Document& d, const Material& m) {
-                                          d.scene.materials.at(material).params = m;
-                                      });
+    return makeValueCommand<Material>(
+        "Edit material " + named.name, key("material", material), SceneChanges::Materials, named.params,
+        withinFileRanges(after),
+        [material](Document& d, const Material& m) { d.scene.materials.at(material).params = m; });
 }
 
 std::unique_ptr<EditCommand> setObjectTransform(const Document& doc, uint32_t object, const ObjectTransform& after) {
@@ -94,7 +97,8 @@ std::unique_ptr<EditCommand> setLight(const Document& doc, uint32_t light, const
 }
 
 std::unique_ptr<EditCommand> setCamera(const Document& doc, const Camera& after) {
-    return makeValueCommand<Camera>("Camera", "camera", SceneChanges::Camera, doc.scene.camera, after,
+    return makeValueCommand<Camera>("Camera", "camera", SceneChanges::Camera, doc.scene.camera,
+                                    withinFileRanges(after),
                                     [](Document& d, const Camera& c) { d.scene.camera = c; });
 }
 

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <memory>
@@ -21,6 +22,7 @@
 #include "assets/image_read.h"
 #include "assets/image_write.h"
 #include "assets/input_error.h"
+#include "assets/scene_json.h"
 #include "assets/scene_test_helpers.h"
 #include "editor/color_view.h"
 #include "editor/scene_edits.h"
@@ -449,6 +451,47 @@ TEST(EditorSession, SaveWritesTheSceneAndClearsModified) {
     // A failing save throws and keeps the modified flag.
     EXPECT_THROW(session.save(folder + "/missing folder/x.json"), InputError);
     EXPECT_TRUE(session.modified());
+}
+
+// Values typed past what the scene reader accepts (a field of view of 0, roughness -1, an IOR
+// of 0, a negative colour) are held in range by the edit, so the saved scene reopens with them.
+TEST(EditorSession, TypedValuesOutOfRangeAreHeldSoTheSavedSceneReopens) {
+    Fixture f = startSession();
+    EditorSession& session = *f.session;
+    Camera camera = session.document().scene.camera;
+    camera.verticalFovDegrees = 0.0f;
+    camera.apertureRadius = -2.0f;
+    session.execute(setCamera(session.document(), camera));
+    EXPECT_EQ(session.document().scene.camera.verticalFovDegrees, kMinEditedFov);
+    EXPECT_EQ(session.document().scene.camera.apertureRadius, 0.0f);
+    camera.verticalFovDegrees = 1e9f;
+    camera.apertureRadius = 1e9f;  // absurd, but a scene may hold it
+    session.execute(setCamera(session.document(), camera));
+    EXPECT_EQ(session.document().scene.camera.verticalFovDegrees, kMaxEditedFov);
+    EXPECT_EQ(session.document().scene.camera.apertureRadius, 1e9f);
+
+    Material m = session.document().scene.materials[0].params;
+    m.roughness = -1.0f;
+    m.ior = 0.0f;
+    m.baseColor = {2.0f, -1.0f, 0.5f};
+    m.emissionStrength = std::nanf("");
+    session.execute(setMaterial(session.document(), 0, m));
+    const Material& held = session.document().scene.materials[0].params;
+    EXPECT_EQ(held.roughness, 0.0f);
+    EXPECT_EQ(held.ior, 1.0f);
+    EXPECT_EQ(held.baseColor.x, 1.0f);
+    EXPECT_EQ(held.baseColor.y, 0.0f);
+    EXPECT_EQ(held.baseColor.z, 0.5f);
+    EXPECT_EQ(held.emissionStrength, 0.0f);
+    EXPECT_EQ(held.attenuationDistance, Material{}.attenuationDistance) << "a default stays (infinity)";
+
+    const std::string path = test::testFolder() + "/typed.json";
+    session.save(path);
+    const LoadResult reopened = loadScene(path);
+    ASSERT_TRUE(reopened.ok()) << reopened.error;
+    EXPECT_EQ(reopened.scene->camera.verticalFovDegrees, kMaxEditedFov);
+    EXPECT_EQ(reopened.scene->materials[0].params.ior, 1.0f);
+    EXPECT_EQ(reopened.scene->materials[0].params.roughness, 0.0f);
 }
 
 // After Save As the document is the new file: an export names it (not the file it was opened
