@@ -75,6 +75,12 @@ void EditorSession::overrideResolution(uint32_t width, uint32_t height) {
     pending_ |= SceneChanges::Settings;
 }
 
+std::string EditorSession::windowTitle() const {
+    const std::string& source = doc_.scene.sourcePath;
+    const std::string name = source.empty() ? "untitled" : std::filesystem::path(source).filename().string();
+    return (modified() ? "*" : "") + name + " - pathtracer";
+}
+
 void EditorSession::save(const std::string& path) {
     RenderSettings& render = doc_.scene.render;
     const RenderSettings shown = render;

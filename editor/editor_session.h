@@ -52,6 +52,9 @@ public:
     // Writes scene JSON (atomic); throws InputError naming the file.
     void save(const std::string& path);
     bool modified() const { return history_.modified(); }
+    // The window's title: the document's file name ("untitled" for none), "*" before it while
+    // edits are unsaved, then "- pathtracer".
+    std::string windowTitle() const;
 
     // --- The backend (the render thread) ---
     // Brings the backend up to date with every edit since the last call. Returns the report;

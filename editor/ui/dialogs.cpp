@@ -1,12 +1,15 @@
 // Modal dialogs: errors (one at a time; the current scene always stays), open with a path field
 // and recent files, save with overwrite confirmation, export render (paths, EXR pixel type and
-// AOV layers), and load progress.
+// AOV layers), unsaved edits before they would be lost, and load progress.
+#include <GLFW/glfw3.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <string>
 
 #include "assets/exr_layers.h"
 #include "editor/scene_edits.h"
+#include "editor/ui/key_taps.h"
 #include "editor/ui/widgets.h"
 
 namespace pt::editor {
@@ -56,7 +59,8 @@ void openDialog(EditorUi& ui) {
         if (ImGui::Selectable(recent.c_str())) path.set(recent);
     }
     if (ImGui::Button("Open") || enter) {
-        ui.openScene(path.text);
+        const std::string chosen = path.text;
+        ui.askBeforeDiscarding("Opening " + chosen, [&ui, chosen] { ui.openScene(chosen); });
         ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
@@ -190,11 +194,50 @@ void loadingDialog(EditorUi& ui) {
 
 }  // namespace
 
+// Before an action that would lose unsaved edits (askBeforeDiscarding): save them into the
+// scene's own JSON file (where it has one; Return) and go on, go on without them, or cancel
+// (Escape). A save that fails shows its error and goes nowhere.
+void unsavedEditsDialog(EditorUi& ui) {
+    if (!ui.discardAction) return;
+    if (!ImGui::IsPopupOpen("Unsaved edits")) ImGui::OpenPopup("Unsaved edits");
+    if (!ImGui::BeginPopupModal("Unsaved edits", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    const std::string source = ui.doc().scene.sourcePath;
+    const bool savable = !source.empty() && fs::path(source).extension() == ".json";
+    ImGui::Text("The scene has edits that are not saved. %s loses them.", ui.discardWhat.c_str());
+    if (!savable)
+        ImGui::TextUnformatted("(It came from a model file: Cancel, then File > Save Scene as JSON.)");
+    // Keys from the frame that opened the dialog (the Return of the Open dialog) are not answers.
+    const bool keys = !ImGui::IsWindowAppearing();
+    const auto close = [&ui](bool go) {
+        std::function<void()> action = std::move(ui.discardAction);
+        ui.discardAction = nullptr;
+        ui.discardWhat.clear();
+        ImGui::CloseCurrentPopup();
+        if (go) action();
+    };
+    bool save = false;
+    if (savable) {
+        save = ImGui::Button("Save") || (keys && keyTapped(GLFW_KEY_ENTER));
+        ImGui::SameLine();
+    }
+    const bool discard = ImGui::Button("Don't save");
+    ImGui::SameLine();
+    const bool cancel = ImGui::Button("Cancel") || (keys && keyTapped(GLFW_KEY_ESCAPE));
+    if (save) {
+        ui.saveScene(source, true);
+        close(!ui.session.modified());
+    } else if (discard || cancel) {
+        close(discard);
+    }
+    ImGui::EndPopup();
+}
+
 void drawDialogs(EditorUi& ui) {
     loadingDialog(ui);
     openDialog(ui);
     saveDialog(ui);
     exportDialog(ui);
+    unsavedEditsDialog(ui);
     errorDialog(ui);
 }
 

@@ -72,6 +72,15 @@ bool EditorUi::pollLoad() {
     return true;
 }
 
+void EditorUi::askBeforeDiscarding(const std::string& what, std::function<void()> action) {
+    if (!session.modified()) {
+        action();
+        return;
+    }
+    discardWhat = what;
+    discardAction = std::move(action);
+}
+
 void EditorUi::saveScene(const std::string& path, bool confirmedOverwrite) {
     const std::string current = doc().scene.sourcePath;
     std::error_code ec;

@@ -57,6 +57,9 @@ public:
 
     // Files.
     void openScene(const std::string& path);   // asynchronous; errors end in a dialog
+    // Runs `action` (which would lose the document's unsaved edits: `what`, e.g. "Quitting")
+    // at once where there are none, else once the user says so in the "Unsaved edits" dialog.
+    void askBeforeDiscarding(const std::string& what, std::function<void()> action);
     // Takes a finished load; false when it failed (the error is queued for the dialog).
     bool pollLoad();
     void saveScene(const std::string& path, bool confirmedOverwrite);
@@ -69,6 +72,8 @@ public:
     std::vector<std::string> recentFiles;
     std::vector<std::string> errors;         // shown one at a time in a modal dialog
     std::string pendingOverwrite;            // a save path awaiting "replace?" confirmation
+    std::string discardWhat;                 // what the "Unsaved edits" dialog asks about
+    std::function<void()> discardAction;     // what it runs once the user agrees
     std::unique_ptr<SceneLoadJob> loading;
     std::string backendName;
     // The OpenColorIO config and view the viewport draws with, re-resolved when the scene's

@@ -34,6 +34,14 @@ std::vector<std::string>& droppedFiles() {
     return files;
 }
 
+// The window's close button: with unsaved edits the window stays until the user answers.
+void onCloseRequest(GLFWwindow* window) {
+    auto* ui = static_cast<EditorUi*>(glfwGetWindowUserPointer(window));
+    if (!ui || !ui->session.modified()) return;
+    glfwSetWindowShouldClose(window, GLFW_FALSE);
+    ui->askBeforeDiscarding("Closing the window", [window] { glfwSetWindowShouldClose(window, GLFW_TRUE); });
+}
+
 void onDrop(GLFWwindow*, int count, const char** paths) {
     for (int i = 0; i < count; ++i) droppedFiles().push_back(paths[i]);
 }
@@ -130,19 +138,28 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
     int64_t renderedFrames = 0;
     int screenshots = 0;
     auto last = Clock::now();
+    glfwSetWindowUserPointer(window.handle, &ui);
+    glfwSetWindowCloseCallback(window.handle, onCloseRequest);
+    std::string title;  // on the window now
     while (!glfwWindowShouldClose(window.handle)) {
         glfwPollEvents();
         const float dt = float(secondsSince(last));
         last = Clock::now();
         ui.frameMillis.push_back(dt * 1e3f);
         if (ui.frameMillis.size() > kFrameHistory) ui.frameMillis.erase(ui.frameMillis.begin());
-        for (const std::string& path : droppedFiles()) ui.openScene(path);
+        for (const std::string& path : droppedFiles()) {
+            ui.askBeforeDiscarding("Opening " + path, [&ui, path] { ui.openScene(path); });
+        }
         droppedFiles().clear();
         if (!ui.pollLoad() && options.frames >= 0) {
             std::fprintf(stderr, "pathtracer: %s\n", ui.errors.empty() ? "load failed" : ui.errors.front().c_str());
             return 1;  // automation: a scene that does not load is a failure, not a dialog
         }
         ui.flushEdits();
+        if (ui.session.windowTitle() != title) {
+            title = ui.session.windowTitle();
+            glfwSetWindowTitle(window.handle, title.c_str());
+        }
         if (ui.worker.takeFrame(ui.lastFrame)) {
             showFrame(ui, view, interop);
             if (ui.lastFrame.stats.samplesPerPixel > 0) ++renderedFrames;

@@ -205,6 +205,13 @@ protected:
         return r.output;
     }
 
+    // The editor window's title.
+    std::string windowName() {
+        std::string name = xdo({"getwindowname", window});
+        while (!name.empty() && (name.back() == '\n' || name.back() == '\r')) name.pop_back();
+        return name;
+    }
+
     // Long enough for a few UI frames to see a key or button down (see the file comment).
     double hold() const { return std::clamp(3.0 * frameSeconds, 0.25, 2.0); }
 
@@ -296,7 +303,7 @@ protected:
         // The window once mapped; keys go to the focused window (there is no window manager).
         const auto start = Clock::now();
         while (window.empty() && secondsSince(start) < 30.0 && editor->running()) {
-            const CommandResult r = x->xdotool({"search", "--onlyvisible", "--name", "^pathtracer$"});
+            const CommandResult r = x->xdotool({"search", "--onlyvisible", "--name", " - pathtracer$"});
             if (r.status == 0)
                 window = r.output.substr(0, r.output.find('\n'));
             else
@@ -376,6 +383,8 @@ protected:
         const auto start = Clock::now();
         while (readText(scene) == before && secondsSince(start) < 10.0) sleepSeconds(0.05);
         EXPECT_NE(readText(scene), before) << "ctrl+s, Return did not save " << scene << editorOutput();
+        sleepSeconds(hold());
+        EXPECT_EQ(windowName(), scene.filename().string() + " - pathtracer") << "saved: no '*'";
         chord("ctrl+q");
         const std::optional<int> status = editor->waitForExit(15.0);
         ASSERT_TRUE(status.has_value()) << "ctrl+q did not close the editor within 15 s" << editorOutput();
@@ -481,11 +490,20 @@ TEST_F(EditorEndToEnd, ClickDragUndoRedoSaveQuit) {
     const double redoDiff = meanAbsDiff(dragged, redone, view);
     EXPECT_LE(redoDiff, 0.05) << "ctrl+shift+z did not bring the edit back" << editorOutput();
 
-    // 6. Save over the scene's own file, then quit.
+    // 6. Quitting with unsaved edits asks first: the title marks them, ctrl+q leaves the editor
+    // running with the "Unsaved edits" dialog up, and Escape cancels (the scene stays).
+    EXPECT_EQ(windowName(), "*cornell.json - pathtracer") << editorOutput();
+    chord("ctrl+q");
+    EXPECT_FALSE(editor->waitForExit(2.0).has_value()) << "ctrl+q quit with unsaved edits, asking nothing";
+    chord("Escape");
+    EXPECT_FALSE(editor->waitForExit(1.0).has_value()) << "Escape in the dialog quit the editor";
+    ASSERT_FALSE(HasFailure());
+
+    // 7. Save over the scene's own file (the title loses its mark), then quit: nothing to ask.
     saveAndQuit(scenePath);
     ASSERT_FALSE(HasFailure());
 
-    // 7. The file holds the redone roughness; everything else is what the original held.
+    // 8. The file holds the redone roughness; everything else is what the original held.
     LoadResult saved = loadScene(scenePath.string());
     ASSERT_TRUE(saved.ok()) << saved.error << "\n" << readText(scenePath);
     const int32_t savedGlass = saved.scene->findMaterial("glass");

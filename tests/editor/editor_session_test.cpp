@@ -518,5 +518,18 @@ TEST(EditorSession, SaveAsMakesTheDocumentTheNewFile) {
     EXPECT_EQ(named, expected);
 }
 
+// The window's title names the document's file and marks unsaved edits with "*".
+TEST(EditorSession, TheWindowTitleNamesTheFileAndMarksUnsavedEdits) {
+    Fixture f = startSession();
+    EditorSession& session = *f.session;
+    const std::string opened = session.document().scene.sourcePath;
+    const std::string name = opened.empty() ? "untitled" : std::filesystem::path(opened).filename().string();
+    EXPECT_EQ(session.windowTitle(), name + " - pathtracer");
+    session.execute(setMaterial(session.document(), 0, edited(session, 0)));
+    EXPECT_EQ(session.windowTitle(), "*" + name + " - pathtracer");
+    session.save(test::testFolder() + "/titled.json");
+    EXPECT_EQ(session.windowTitle(), "titled.json - pathtracer");
+}
+
 }  // namespace
 }  // namespace pt::editor
