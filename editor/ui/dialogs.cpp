@@ -59,8 +59,7 @@ void openDialog(EditorUi& ui) {
         if (ImGui::Selectable(recent.c_str())) path.set(recent);
     }
     if (ImGui::Button("Open") || enter) {
-        const std::string chosen = path.text;
-        ui.askBeforeDiscarding("Opening " + chosen, [&ui, chosen] { ui.openScene(chosen); });
+        ui.openScene(path.text);
         ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();

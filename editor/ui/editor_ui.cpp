@@ -1,5 +1,7 @@
 #include "editor/ui/editor_ui.h"
 
+#include <GLFW/glfw3.h>
+
 #include <filesystem>
 
 #include "assets/input_error.h"
@@ -42,6 +44,14 @@ void EditorUi::redo() {
 }
 
 void EditorUi::openScene(const std::string& path) {
+    askBeforeDiscarding("Opening " + path, [this, path] { loadScene(path); });
+}
+
+void EditorUi::quit(GLFWwindow* window) {
+    askBeforeDiscarding("Quitting", [window] { glfwSetWindowShouldClose(window, GLFW_TRUE); });
+}
+
+void EditorUi::loadScene(const std::string& path) {
     if (loading) {
         showError("Still loading " + loading->path() + "; open " + path + " afterwards.");
         return;

@@ -14,6 +14,8 @@
 #include "editor/ui/display_view.h"
 #include "editor/scene_load_job.h"
 
+struct GLFWwindow;
+
 namespace pt::editor {
 
 struct Selection {
@@ -56,7 +58,11 @@ public:
     void flushEdits();  // once per frame: applies what was queued
 
     // Files.
-    void openScene(const std::string& path);   // asynchronous; errors end in a dialog
+    // Asynchronous; errors end in a dialog. openScene asks first where the document has
+    // unsaved edits; loadScene does not (the scene named on the command line).
+    void openScene(const std::string& path);
+    void loadScene(const std::string& path);
+    void quit(GLFWwindow* window);  // closes it, asking first where edits are unsaved
     // Runs `action` (which would lose the document's unsaved edits: `what`, e.g. "Quitting")
     // at once where there are none, else once the user says so in the "Unsaved edits" dialog.
     void askBeforeDiscarding(const std::string& what, std::function<void()> action);

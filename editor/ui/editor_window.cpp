@@ -34,12 +34,13 @@ std::vector<std::string>& droppedFiles() {
     return files;
 }
 
-// The window's close button: with unsaved edits the window stays until the user answers.
+// The window's close button quits as File > Quit does: with unsaved edits the window stays
+// until the user answers.
 void onCloseRequest(GLFWwindow* window) {
     auto* ui = static_cast<EditorUi*>(glfwGetWindowUserPointer(window));
-    if (!ui || !ui->session.modified()) return;
+    if (!ui) return;
     glfwSetWindowShouldClose(window, GLFW_FALSE);
-    ui->askBeforeDiscarding("Closing the window", [window] { glfwSetWindowShouldClose(window, GLFW_TRUE); });
+    ui->quit(window);
 }
 
 void onDrop(GLFWwindow*, int count, const char** paths) {
@@ -147,17 +148,15 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
         last = Clock::now();
         ui.frameMillis.push_back(dt * 1e3f);
         if (ui.frameMillis.size() > kFrameHistory) ui.frameMillis.erase(ui.frameMillis.begin());
-        for (const std::string& path : droppedFiles()) {
-            ui.askBeforeDiscarding("Opening " + path, [&ui, path] { ui.openScene(path); });
-        }
+        for (const std::string& path : droppedFiles()) ui.openScene(path);
         droppedFiles().clear();
         if (!ui.pollLoad() && options.frames >= 0) {
             std::fprintf(stderr, "pathtracer: %s\n", ui.errors.empty() ? "load failed" : ui.errors.front().c_str());
             return 1;  // automation: a scene that does not load is a failure, not a dialog
         }
         ui.flushEdits();
-        if (ui.session.windowTitle() != title) {
-            title = ui.session.windowTitle();
+        if (std::string now = ui.session.windowTitle(); now != title) {
+            title = std::move(now);
             glfwSetWindowTitle(window.handle, title.c_str());
         }
         if (ui.worker.takeFrame(ui.lastFrame)) {
@@ -230,7 +229,7 @@ int runEditor(const EditorOptions& options) {
         s.execute(setViewer(s.document(), viewer));
     });
     // Loaded on its own thread, so the window shows progress from the start.
-    if (!options.scenePath.empty()) ui.openScene(options.scenePath);
+    if (!options.scenePath.empty()) ui.loadScene(options.scenePath);
     if (!options.referencePath.empty()) {
         ui.loadReference(options.referencePath);
         if (!ui.errors.empty() && options.frames >= 0) {

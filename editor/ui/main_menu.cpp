@@ -12,9 +12,7 @@ void drawMainMenu(EditorUi& ui) {
         if (ImGui::MenuItem("Open...", "Ctrl+O")) ui.showOpenDialog = true;
         if (ImGui::BeginMenu("Open Recent", !ui.recentFiles.empty())) {
             for (const std::string& path : ui.recentFiles) {
-                if (ImGui::MenuItem(path.c_str())) {
-                    ui.askBeforeDiscarding("Opening " + path, [&ui, path] { ui.openScene(path); });
-                }
+                if (ImGui::MenuItem(path.c_str())) ui.openScene(path);
             }
             ImGui::EndMenu();
         }
@@ -22,10 +20,7 @@ void drawMainMenu(EditorUi& ui) {
         if (ImGui::MenuItem("Save Scene", "Ctrl+S")) ui.showSaveDialog = true;
         if (ImGui::MenuItem("Export Render...", "Ctrl+E")) ui.showExportDialog = true;
         ImGui::Separator();
-        if (ImGui::MenuItem("Quit", "Ctrl+Q")) {
-            GLFWwindow* window = glfwGetCurrentContext();
-            ui.askBeforeDiscarding("Quitting", [window] { glfwSetWindowShouldClose(window, 1); });
-        }
+        if (ImGui::MenuItem("Quit", "Ctrl+Q")) ui.quit(glfwGetCurrentContext());
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Edit")) {

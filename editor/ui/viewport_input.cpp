@@ -105,9 +105,7 @@ bool ViewportInput::shortcuts(EditorUi& ui) {
         if (keyTapped(GLFW_KEY_O)) ui.showOpenDialog = true;
         if (keyTapped(GLFW_KEY_S)) ui.showSaveDialog = true;
         if (keyTapped(GLFW_KEY_E)) ui.showExportDialog = true;
-        if (keyTapped(GLFW_KEY_Q)) {
-            ui.askBeforeDiscarding("Quitting", [window] { glfwSetWindowShouldClose(window, 1); });
-        }
+        if (keyTapped(GLFW_KEY_Q)) ui.quit(window);
     }
     const Selection& sel = ui.selection;
     if (sel.kind != Selection::Kind::Object || sel.index < 0 || io.WantCaptureKeyboard) return screenshot;

@@ -91,11 +91,12 @@ void CpuDenoiser::run(const DenoiseInput& in, std::vector<float>& rgba) {
             w.luminance->store(layout.at(x, y), w.input[y * g.width + x]);
         });
         forEachRow(g.width, g.height, [&](uint32_t y, denoise::RowSums& sums) {
-            denoise::spatialVarianceRow(*w.luminance, w.surfacePlanes, layout, y, sums,
-                                        &w.spread[size_t(y) * g.width]);
+            float* spread = &w.spread[size_t(y) * g.width];
+            denoise::spatialVarianceRow(*w.luminance, w.surfacePlanes, layout, y, sums, spread);
+            DenoiseSample* row = &w.input[size_t(y) * g.width];
+            for (uint32_t x = 0; x < g.width; ++x)
+                row[x].variance = denoise::fewSamplesVariance(spread[x], in.samples);
         });
-        for (size_t i = 0; i < pixels; ++i)
-            w.input[i].variance = denoise::fewSamplesVariance(w.spread[i], in.samples);
     }
     const denoise::SampleOutput first(w.a);
     forEachPixel(g.width, g.height,

@@ -33,11 +33,7 @@ EdgeStops edgeStopsAt(const SurfaceData& s, size_t i) { return {s.surfaceAt(i), 
 // The kTapDistances distances of a-trous taps, in steps. Each pixel's depth scale for each
 // (one division each, not one a tap, as atrousAt).
 const float kTapDistance[kTapDistances] = {1.0f, 2.0f, sqrtf(2.0f), sqrtf(5.0f), sqrtf(8.0f)};
-constexpr int tapDistanceOf(int absI, int absJ) {
-    return absI + absJ == 1
-               ? 0
-               : (absI == 1 && absJ == 1 ? 2 : (absI + absJ == 2 ? 1 : (absI + absJ == 3 ? 3 : 4)));
-}
+constexpr int kTapDistanceIndex[3][3] = {{-1, 0, 1}, {0, 2, 3}, {1, 3, 4}};  // by |j|, |i|
 
 // A row's sums through pointers taken once (SampleData says why).
 struct RowSumsData {
@@ -120,7 +116,7 @@ PT_ALWAYS_INLINE void addTapRow(const SampleInput& in, const SurfaceData& surfac
             if (kCentreRow && i == 0) continue;
             const size_t q = tapStart[i + 2] + x;
             const float w = atrousTapWeight(edges, surfaces.surfaceAt(q),
-                                            sums.inverseDepth[tapDistanceOf(i < 0 ? -i : i, absJ)][x],
+                                            sums.inverseDepth[kTapDistanceIndex[absJ][i < 0 ? -i : i]][x],
                                             in.luminance[q], in.deviation[q], sums.centerLuminance[x],
                                             sums.inverseLuminance[x], splineWeight(i) * splineWeight(j));
             s.add(w, {in.r[q], in.g[q], in.b[q]}, in.deviation[q] * in.deviation[q]);
