@@ -13,6 +13,12 @@ namespace pt::editor {
 
 EditorSession::EditorSession(std::unique_ptr<Backend> backend) : backend_(std::move(backend)) {
     if (!backend_) throw std::invalid_argument("EditorSession needs a backend");
+    setPassInterrupts(true);
+}
+
+void EditorSession::setPassInterrupts(bool on) {
+    passInterrupts_ = on;
+    backend_->setInterruptFlag(on ? &interrupt_ : nullptr);
 }
 
 std::string EditorSession::open(const std::string& path, const ProgressFn& progress) {
@@ -28,6 +34,7 @@ void EditorSession::adopt(Scene scene) {
     resolutionOverridden_ = false;
     history_.clear();
     pending_ = SceneChanges::All;
+    interrupt_ = true;
     std::lock_guard<std::mutex> lock(statusMutex_);
     lastEdit_ = {};
 }
@@ -35,6 +42,7 @@ void EditorSession::adopt(Scene scene) {
 void EditorSession::noteEdit(const std::string& label, SceneChangeMask changes, Clock::time_point start) {
     pending_ |= changes;
     if ((changes & ~SceneChangeMask(SceneChanges::Display)) == 0) return;  // nothing to render again
+    interrupt_ = true;  // the samples in flight are of the scene before the edit
     std::lock_guard<std::mutex> lock(statusMutex_);
     lastEdit_ = {};
     lastEdit_.label = label;
@@ -73,6 +81,7 @@ void EditorSession::overrideResolution(uint32_t width, uint32_t height) {
     overriddenRender_ = doc_.scene.render;
     resolutionOverridden_ = true;
     pending_ |= SceneChanges::Settings;
+    interrupt_ = true;
 }
 
 std::string EditorSession::windowTitle() const {
@@ -105,6 +114,7 @@ void EditorSession::save(const std::string& path) {
 SyncReport EditorSession::sync(const ProgressFn& progress) {
     SceneChangeMask changes = pending_ & ~SceneChangeMask(SceneChanges::Display);
     pending_ = SceneChanges::None;
+    interrupt_ = false;  // the edits that raised it are applied now
     // Only the AOV on screen and the export layers are accumulated (the others are not even
     // allocated).
     const int32_t aov = doc_.viewer.aov;
@@ -171,8 +181,11 @@ uint32_t EditorSession::render(uint32_t passes, uint32_t target) {
     if (target > 0) passes = done >= target ? 0 : std::min(passes, target - done);
     if (passes == 0) return 0;
     backend_->render(passes);
+    if (backend_->stats().samplesPerPixel != done + passes) return 0;  // interrupted (render())
     std::lock_guard<std::mutex> lock(statusMutex_);
-    if (!lastEdit_.complete && !lastEdit_.label.empty()) {
+    // The edit's first frame is the first pass after its sync (which names its action), not a
+    // pass of the scene before it that was in flight when the edit came (render thread).
+    if (!lastEdit_.complete && !lastEdit_.label.empty() && !lastEdit_.action.empty()) {
         lastEdit_.toFrameSeconds = secondsSince(editStart_);
         lastEdit_.complete = true;
     }
@@ -182,6 +195,7 @@ uint32_t EditorSession::render(uint32_t passes, uint32_t target) {
 void EditorSession::setBackend(std::unique_ptr<Backend> backend) {
     if (!backend) throw std::invalid_argument("setBackend: no backend");
     backend_ = std::move(backend);
+    setPassInterrupts(passInterrupts_);
     pending_ = SceneChanges::All;
 }
 

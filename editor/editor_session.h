@@ -63,11 +63,18 @@ public:
     SyncReport sync(const ProgressFn& progress = {});
     SceneChangeMask pendingChanges() const { return pending_; }
     // Adds up to `passes` samples per pixel, stopping at the viewer's target spp. Returns the
-    // passes rendered.
+    // passes rendered: 0 where an edit that restarts the accumulation (execute, undo, redo,
+    // adopt) or interruptRender() stopped the pass under way, which a render thread's render()
+    // watches for so that the edit waits for one tile, not a whole pass (the accumulation is
+    // then empty, as the edit's sync would leave it). sync() lowers the flag again.
     uint32_t render(uint32_t passes) { return render(passes, doc_.viewer.targetSpp); }
     // The same, with the target given, for a render thread that must not read the document
     // while the UI thread edits it.
     uint32_t render(uint32_t passes, uint32_t targetSpp);
+    // Any thread: stops a render() under way, as such an edit does (e.g. the window closing).
+    void interruptRender() { interrupt_ = true; }
+    // Off: render() always finishes its passes, as before interrupts (a benchmark's baseline).
+    void setPassInterrupts(bool on);
     // The linear image the viewport shows: the beauty (aov -1; denoised with `denoise` once
     // its guides are accumulated) or that AOV, RGBA float.
     void readDisplayed(int32_t aov, bool denoise, std::vector<float>& rgba) const;
@@ -110,6 +117,8 @@ private:
     bool keepDenoiseGuides_ = false;  // accumulate the denoiser's guides (sync())
     std::unique_ptr<Backend> backend_;
     SceneChangeMask pending_ = SceneChanges::All;
+    std::atomic<bool> interrupt_{false};  // the backend's interrupt flag (render())
+    bool passInterrupts_ = true;
     std::vector<Material> materialsAtLoad_;
     RenderSettings fileRender_, overriddenRender_;
     bool resolutionOverridden_ = false;

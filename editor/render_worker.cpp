@@ -9,10 +9,12 @@
 
 namespace pt::editor {
 
-RenderWorker::RenderWorker(EditorSession& session) : session_(session), thread_([this] { run(); }) {}
+RenderWorker::RenderWorker(EditorSession& session, std::function<void()> onUpdate)
+    : session_(session), onUpdate_(std::move(onUpdate)), thread_([this] { run(); }) {}
 
 RenderWorker::~RenderWorker() {
     stop_ = true;
+    session_.interruptRender();  // a pass in flight would hold the window open until it ends
     wake();
     thread_.join();
 }
@@ -64,9 +66,12 @@ WorkerStatus RenderWorker::status() const {
 }
 
 void RenderWorker::setStage(const std::string& stage, double fraction) {
-    std::lock_guard<std::mutex> lock(statusMutex_);
-    status_.stage = stage;
-    status_.fraction = fraction;
+    {
+        std::lock_guard<std::mutex> lock(statusMutex_);
+        status_.stage = stage;
+        status_.fraction = fraction;
+    }
+    if (onUpdate_) onUpdate_();
 }
 
 void RenderWorker::publishFrame(int32_t aov, bool denoise) {
@@ -77,11 +82,14 @@ void RenderWorker::publishFrame(int32_t aov, bool denoise) {
     next.aov = aov;
     next.stats = backend.stats();
     if (hostFrames_ || aov >= 0) session_.readDisplayed(aov, denoise, next.rgba);
-    std::lock_guard<std::mutex> lock(frameMutex_);
-    next.serial = frame_.serial + 1;
-    frame_ = std::move(next);
-    publishedAov_ = aov;
-    publishedDenoise_ = denoise;
+    {
+        std::lock_guard<std::mutex> lock(frameMutex_);
+        next.serial = frame_.serial + 1;
+        frame_ = std::move(next);
+        publishedAov_ = aov;
+        publishedDenoise_ = denoise;
+    }
+    if (onUpdate_) onUpdate_();
 }
 
 // Called with the backend lock held, after passes.

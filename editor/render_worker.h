@@ -46,7 +46,10 @@ struct WorkerStatus {
 
 class RenderWorker {
 public:
-    explicit RenderWorker(EditorSession& session);
+    // `onUpdate` (any thread; may be empty) is called from the render thread whenever a frame
+    // is published or the status' stage changes: the window wakes to show it (glfwPostEmptyEvent)
+    // instead of drawing without pause to find out.
+    explicit RenderWorker(EditorSession& session, std::function<void()> onUpdate = {});
     ~RenderWorker();
     RenderWorker(const RenderWorker&) = delete;
     RenderWorker& operator=(const RenderWorker&) = delete;
@@ -80,6 +83,7 @@ private:
     void setStage(const std::string& stage, double fraction);
 
     EditorSession& session_;
+    const std::function<void()> onUpdate_;
     std::shared_mutex sceneMutex_;
     std::mutex backendMutex_;
     std::atomic<uint32_t> backendWaiters_{0};  // withBackend() callers waiting for backendMutex_

@@ -125,6 +125,7 @@ int runBench(const std::vector<std::string>& args) {
     benchBvhBuilds(compiled, r.backend == "cuda", r.settings.runs, report);
     phase("edits");
     benchEdits(r.backend, scene, r.settings, report);
+    benchEditInFlight(r.backend, scene, r.settings, report);
     phase("denoise");
     benchDenoise(*backend, scene, r.settings, report);
     phase("image check");

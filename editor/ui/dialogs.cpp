@@ -9,7 +9,7 @@
 
 #include "assets/exr_layers.h"
 #include "editor/scene_edits.h"
-#include "editor/ui/key_taps.h"
+#include "editor/ui/input_events.h"
 #include "editor/ui/widgets.h"
 
 namespace pt::editor {
@@ -216,12 +216,12 @@ void unsavedEditsDialog(EditorUi& ui) {
     };
     bool save = false;
     if (savable) {
-        save = ImGui::Button("Save") || (keys && keyTapped(GLFW_KEY_ENTER));
+        save = ImGui::Button("Save") || (keys && inputEvents().tapped(GLFW_KEY_ENTER));
         ImGui::SameLine();
     }
     const bool discard = ImGui::Button("Don't save");
     ImGui::SameLine();
-    const bool cancel = ImGui::Button("Cancel") || (keys && keyTapped(GLFW_KEY_ESCAPE));
+    const bool cancel = ImGui::Button("Cancel") || (keys && inputEvents().tapped(GLFW_KEY_ESCAPE));
     if (save) {
         ui.saveScene(source, true);
         close(!ui.session.modified());

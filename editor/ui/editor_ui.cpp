@@ -137,6 +137,7 @@ void EditorUi::loadReference(const std::string& path) {
 void EditorUi::switchBackend(const std::string& name) {
     try {
         std::unique_ptr<Backend> next = createBackend(name);
+        session.interruptRender();  // the old backend's samples are thrown away anyway
         worker.withBackend([&](EditorSession& s) { worker.edit([&](EditorSession&) { s.setBackend(std::move(next)); }); });
         backendName = name;
     } catch (const std::exception& e) {

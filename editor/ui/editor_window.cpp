@@ -3,7 +3,6 @@
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
-
 #include <tbb/global_control.h>
 
 #include <algorithm>
@@ -14,7 +13,8 @@
 #include "editor/scene_edits.h"
 #include "editor/ui/cuda_gl_frame.h"
 #include "editor/ui/gl.h"
-#include "editor/ui/key_taps.h"
+#include "editor/ui/input_events.h"
+#include "editor/ui/redraw_policy.h"
 #include "editor/ui/screenshot.h"
 #include "editor/ui/viewport_input.h"
 #if defined(PT_HAVE_CUDA)
@@ -95,7 +95,7 @@ public:
         glfwMakeContextCurrent(handle);
         glfwSwapInterval(1);
         glfwSetDropCallback(handle, onDrop);
-        installKeyTapCallback(handle);  // before ImGui's callbacks, which chain to it
+        installInputCallbacks(handle);  // before ImGui's callbacks, which chain to them
         IMGUI_CHECKVERSION();
         ImGui::CreateContext();
         ImGui::GetIO().IniFilename = nullptr;  // a fixed layout: no imgui.ini littering the working folder
@@ -142,8 +142,19 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
     glfwSetWindowUserPointer(window.handle, &ui);
     glfwSetWindowCloseCallback(window.handle, onCloseRequest);
     std::string title;  // on the window now
+    RedrawPolicy redraw;
+    double wait = 0.0;  // the policy's answer after the last frame
+    uint64_t eventsSeen = 0;
     while (!glfwWindowShouldClose(window.handle)) {
-        glfwPollEvents();
+        if (wait == 0.0)
+            glfwPollEvents();
+        else if (wait == RedrawPolicy::kForever)
+            glfwWaitEvents();
+        else
+            glfwWaitEventsTimeout(wait);
+        FrameActivity activity;
+        activity.happened = inputEvents().count() != eventsSeen || !droppedFiles().empty();
+        eventsSeen = inputEvents().count();
         const float dt = float(secondsSince(last));
         last = Clock::now();
         ui.frameMillis.push_back(dt * 1e3f);
@@ -158,8 +169,10 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
         if (std::string now = ui.session.windowTitle(); now != title) {
             title = std::move(now);
             glfwSetWindowTitle(window.handle, title.c_str());
+            activity.happened = true;
         }
         if (ui.worker.takeFrame(ui.lastFrame)) {
+            activity.happened = true;
             showFrame(ui, view, interop);
             if (ui.lastFrame.stats.samplesPerPixel > 0) ++renderedFrames;
         }
@@ -198,8 +211,12 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
             }
         }
         glfwSwapBuffers(window.handle);
-        clearKeyTaps();
+        inputEvents().endFrame();
         if (framesDone) break;
+        activity.moving = input.moving() || ImGui::IsAnyMouseDown();
+        activity.progress = ui.loading || !ui.worker.status().stage.empty();
+        activity.textInput = ImGui::GetIO().WantTextInput;
+        wait = redraw.afterFrame(activity);
     }
     return 0;
 }
@@ -220,7 +237,7 @@ int runEditor(const EditorOptions& options) {
     // One core stays with the window: the CPU backend's threads would otherwise starve it.
     const size_t cores = std::max<size_t>(std::thread::hardware_concurrency(), 2);
     tbb::global_control renderThreads(tbb::global_control::max_allowed_parallelism, cores - 1);
-    RenderWorker worker(session);
+    RenderWorker worker(session, [] { glfwPostEmptyEvent(); });  // the frame loop waits for events
     EditorUi ui(session, worker, options);
     ui.backendName = backendName;
     worker.edit([&](EditorSession& s) {

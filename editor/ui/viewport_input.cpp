@@ -1,12 +1,13 @@
 #include "editor/ui/viewport_input.h"
 
 #include <cmath>
+#include <optional>
 
 #include "editor/camera_controller.h"
 #include "editor/object_edits.h"
 #include "editor/scene_edits.h"
 #include "editor/ui/gl.h"
-#include "editor/ui/key_taps.h"
+#include "editor/ui/input_events.h"
 #include "editor/ui/widgets.h"
 
 namespace pt::editor {
@@ -68,9 +69,11 @@ void ViewportInput::clickTools(EditorUi& ui, const ImageRect& image) {
         pressX_ = m.x;
         pressY_ = m.y;
     }
-    if (!image.contains(m.x, m.y)) return;
-    if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
-        const PickResult hit = pickAt(ui, image, m.x, m.y);
+    // From the press events' own times and places (input_events.h): at a few frames a second
+    // ImGui's frame-time double-click misses most.
+    if (const std::optional<ScreenPoint> at = inputEvents().doubleClick(GLFW_MOUSE_BUTTON_LEFT);
+        at && image.contains(at->x, at->y)) {
+        const PickResult hit = pickAt(ui, image, at->x, at->y);
         if (hit.hit()) {
             Camera c = ui.doc().scene.camera;
             c.focusDistance = hit.focusDistance;
@@ -79,6 +82,7 @@ void ViewportInput::clickTools(EditorUi& ui, const ImageRect& image) {
         }
         return;
     }
+    if (!image.contains(m.x, m.y)) return;
     if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && std::fabs(m.x - pressX_) <= kClickSlop &&
         std::fabs(m.y - pressY_) <= kClickSlop) {
         const PickResult hit = pickAt(ui, image, m.x, m.y);
@@ -90,32 +94,24 @@ void ViewportInput::clickTools(EditorUi& ui, const ImageRect& image) {
 
 bool ViewportInput::shortcuts(EditorUi& ui) {
     const ImGuiIO& io = ImGui::GetIO();
-    const bool screenshot = keyTapped(GLFW_KEY_F12);
+    const InputEvents& keys = inputEvents();  // each press with the modifiers it came with
+    const bool screenshot = keys.tapped(GLFW_KEY_F12);
     if (io.WantTextInput) return screenshot;
-    // Modifiers are read from GLFW: a tapped key's modifiers may be up again by the frame.
-    GLFWwindow* window = glfwGetCurrentContext();
-    const auto down = [window](int a, int b) {
-        return glfwGetKey(window, a) == GLFW_PRESS || glfwGetKey(window, b) == GLFW_PRESS;
-    };
-    const bool ctrl = io.KeyCtrl || down(GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL);
-    const bool shift = io.KeyShift || down(GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT);
-    if (ctrl) {
-        if (keyTapped(GLFW_KEY_Z)) shift ? ui.redo() : ui.undo();
-        if (keyTapped(GLFW_KEY_Y)) ui.redo();
-        if (keyTapped(GLFW_KEY_O)) ui.showOpenDialog = true;
-        if (keyTapped(GLFW_KEY_S)) ui.showSaveDialog = true;
-        if (keyTapped(GLFW_KEY_E)) ui.showExportDialog = true;
-        if (keyTapped(GLFW_KEY_Q)) ui.quit(window);
-    }
+    if (keys.chord(GLFW_KEY_Z, kModCtrl)) ui.undo();
+    if (keys.chord(GLFW_KEY_Z, kModCtrl | kModShift) || keys.chord(GLFW_KEY_Y, kModCtrl)) ui.redo();
+    if (keys.chord(GLFW_KEY_O, kModCtrl)) ui.showOpenDialog = true;
+    if (keys.chord(GLFW_KEY_S, kModCtrl)) ui.showSaveDialog = true;
+    if (keys.chord(GLFW_KEY_E, kModCtrl)) ui.showExportDialog = true;
+    if (keys.chord(GLFW_KEY_Q, kModCtrl)) ui.quit(glfwGetCurrentContext());
     const Selection& sel = ui.selection;
     if (sel.kind != Selection::Kind::Object || sel.index < 0 || io.WantCaptureKeyboard) return screenshot;
     const uint32_t object = uint32_t(sel.index);
-    if (keyTapped(GLFW_KEY_DELETE)) {
+    if (keys.chord(GLFW_KEY_DELETE, 0)) {
         ui.apply(deleteObject(ui.doc(), object));
         ui.selection = {};
-    } else if (ctrl && keyTapped(GLFW_KEY_D)) {
+    } else if (keys.chord(GLFW_KEY_D, kModCtrl)) {
         ui.apply(duplicateObject(ui.doc(), object));
-    } else if (!ctrl && keyTapped(GLFW_KEY_H)) {
+    } else if (keys.chord(GLFW_KEY_H, 0) || keys.chord(GLFW_KEY_H, kModShift)) {
         ui.apply(setObjectHidden(ui.doc(), object, !objectHidden(ui.doc().scene, object)));
     }
     return screenshot;

@@ -12,6 +12,8 @@ class ViewportInput {
 public:
     // Call once per frame after ImGui::NewFrame(). Returns true when F12 asked for a screenshot.
     bool handle(EditorUi& ui, const ImageRect& image, float frameSeconds);
+    // A camera drag or fly is under way: the window draws every frame meanwhile.
+    bool moving() const { return dragging_ || flying_; }
 
 private:
     void navigate(EditorUi& ui, const ImageRect& image, float frameSeconds);

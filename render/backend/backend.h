@@ -2,6 +2,7 @@
 // Backend: the one interface the CLI and the editor know a renderer by (STYLE.md rule 4).
 // A backend owns its copy of the compiled scene and a progressive accumulation of linear
 // radiance; sync() brings the copy up to date after an edit, render() adds samples.
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -106,6 +107,12 @@ public:
                             const ProgressFn& progress = {}) = 0;
     virtual void setToggles(const IntegratorToggles& toggles) = 0;  // takes effect at next sync
     virtual void render(uint32_t passes) = 0;  // adds `passes` samples per pixel
+    // A flag another thread raises to stop a render() under way (the editor: an edit that
+    // restarts the accumulation has arrived, so the samples in flight are wasted). While it is
+    // up, render() stops before its next sample (CPU) or wave (GPU), resets the accumulation (a
+    // pass that reached only some pixels is no sample) and returns. Null, the default: never.
+    // (Virtual for backends that wrap another.)
+    virtual void setInterruptFlag(const std::atomic<bool>* flag) { interrupt_ = flag; }
     virtual void resetAccumulation() = 0;
 
     virtual uint32_t width() const = 0;
@@ -160,6 +167,12 @@ public:
         (void)deviceRgba, (void)seconds;
         return false;
     }
+
+protected:
+    bool interruptRequested() const { return interrupt_ && interrupt_->load(std::memory_order_relaxed); }
+
+private:
+    const std::atomic<bool>* interrupt_ = nullptr;
 };
 
 // The AOVs the denoiser reads: first-hit albedo, shading normal, depth and emission, and the

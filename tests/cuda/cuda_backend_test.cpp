@@ -7,9 +7,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <future>
 #include <iostream>
 #include <random>
+#include <thread>
 #include <vector>
 
 #include "cuda_test_support.h"
@@ -571,6 +577,34 @@ TEST(CudaBackend, DeviceFrameEqualsTheHostFrame) {
     cudaFree(device);
     EXPECT_EQ(maxAbsDifference(host, copied), 0.0f);
     EXPECT_GT(*std::max_element(copied.begin(), copied.end()), 0.0f);
+}
+
+// The editor's interrupt (Backend::setInterruptFlag): a call for hours of waves stops at the
+// next wave once the flag is up, and leaves an empty accumulation (no wave of it counts), so
+// what follows renders as a fresh backend would.
+TEST(CudaBackend, AnInterruptStopsBetweenWavesAndLeavesNoSamples) {
+    PT_REQUIRE_CUDA_DEVICE();
+    const Scene scene = cornell(256);
+    const IntegratorToggles toggles = wavefrontToggles();
+    cuda::CudaBackend backend;
+    std::atomic<bool> interrupt{false};
+    backend.setInterruptFlag(&interrupt);
+    renderWith(backend, scene, 2, toggles);
+    auto pass = std::async(std::launch::async, [&] { backend.render(100'000'000); });
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    interrupt = true;
+    if (pass.wait_for(std::chrono::seconds(60)) != std::future_status::ready) {
+        std::fprintf(stderr, "render() went on with the interrupt flag up\n");
+        std::abort();  // the waves would hold the test process for hours
+    }
+    EXPECT_EQ(backend.stats().samplesPerPixel, 0u);
+    interrupt = false;
+    backend.render(4);
+    std::vector<float> resumed;
+    backend.readBeauty(resumed);
+    cuda::CudaBackend fresh;
+    const std::vector<float> expected = renderWith(fresh, scene, 4, toggles);
+    EXPECT_EQ(maxAbsDifference(expected, resumed), 0.0f);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 // keeps only "is down" per key, so a press and release that land in one UI frame (xdotool key
 // sends both a few ms apart; a UI frame here takes ~50 ms) are never seen.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -210,6 +211,20 @@ protected:
         std::string name = xdo({"getwindowname", window});
         while (!name.empty() && (name.back() == '\n' || name.back() == '\r')) name.pop_back();
         return name;
+    }
+
+    // The editor's CPU time so far, all its threads (utime + stime of /proc/PID/stat), in seconds.
+    double editorCpuSeconds() const {
+        const std::string stat = readText("/proc/" + std::to_string(editor->pid()) + "/stat");
+        const size_t close = stat.rfind(')');  // after the command name, which may hold spaces
+        if (close == std::string::npos) return 0.0;
+        std::istringstream fields(stat.substr(close + 1));
+        std::string field;
+        double ticks = 0.0;
+        for (int i = 3; i <= 15 && fields >> field; ++i) {
+            if (i >= 14) ticks += std::stod(field);  // fields 14 and 15
+        }
+        return ticks / double(sysconf(_SC_CLK_TCK));
     }
 
     // Long enough for a few UI frames to see a key or button down (see the file comment).
@@ -440,6 +455,16 @@ TEST_F(EditorEndToEnd, ClickDragUndoRedoSaveQuit) {
     const Image first = converged("first render", nullptr, layout);
     ASSERT_FALSE(HasFailure());
 
+    // 1b. Converged (--spp 8) and left alone, the window waits for events instead of drawing
+    // the same image without pause (which took 1.7 cores): at most 5% of one core over 3 s.
+    sleepSeconds(1.0);  // past the frames that follow the last screenshot's key release
+    const double cpuAtStart = editorCpuSeconds();
+    const auto idleStart = Clock::now();
+    sleepSeconds(3.0);
+    const double idleCores = (editorCpuSeconds() - cpuAtStart) / secondsSince(idleStart);
+    EXPECT_LE(idleCores, 0.05) << "an idle editor used " << idleCores * 100.0 << "% of a core"
+                               << editorOutput();
+
     // 2. Click the sphere's centre (projected through the scene's camera) to select it.
     const Point sphereAt = layout.fromRender(
         projectToRender(original.scene->camera, sphere->objectToWorld.translation(), kRender, kRender));
@@ -517,9 +542,9 @@ TEST_F(EditorEndToEnd, ClickDragUndoRedoSaveQuit) {
 
     std::printf(
         "[ measured ] inspector change %.2f, drag change %.3f, undo diff %.3f, redo diff %.3f levels; "
-        "roughness %.3f; last F12 latency %.0f ms; %.1f s in all\n",
+        "roughness %.3f; last F12 latency %.0f ms; idle CPU %.2f%% of a core; %.1f s in all\n",
         inspectorChange, dragChange, undoDiff, redoDiff, double(roughness), frameSeconds * 1e3,
-        secondsSince(testStart));
+        idleCores * 100.0, secondsSince(testStart));
     // The screenshots (about 45, 4 MB) stay only when something failed, for a look at them.
     if (!HasFailure()) fs::remove_all(dir);
 }

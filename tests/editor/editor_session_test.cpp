@@ -11,11 +11,16 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <future>
 #include <memory>
 #include <string>
+#include <thread>
 
 #include "assets/exr_layers.h"
 #include "assets/image_metadata.h"
@@ -53,6 +58,7 @@ public:
     }
     void setToggles(const IntegratorToggles& toggles) override { cpu_->setToggles(toggles); }
     void render(uint32_t passes) override { cpu_->render(passes); }
+    void setInterruptFlag(const std::atomic<bool>* flag) override { cpu_->setInterruptFlag(flag); }
     void resetAccumulation() override { cpu_->resetAccumulation(); }
     uint32_t width() const override { return cpu_->width(); }
     uint32_t height() const override { return cpu_->height(); }
@@ -255,6 +261,65 @@ TEST(EditorSession, DenoiseShowsTheFilteredBeautyAndTurnsOffWithoutARestart) {
     EXPECT_EQ(session.backend().stats().samplesPerPixel, 4u);
     session.readDisplayed(-1, false, shown);
     EXPECT_EQ(shown, raw);
+}
+
+// An edit that restarts the accumulation stops the pass in flight on the render thread (its
+// samples are of the old scene) instead of waiting for it: here a pass of hours.
+TEST(EditorSession, AnEditStopsThePassInFlight) {
+    Fixture f = startSession(1);
+    EditorSession& session = *f.session;
+    auto pass = std::async(std::launch::async, [&] { return session.render(100'000'000, 0); });
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    Camera camera = session.document().scene.camera;
+    camera.position.x += 0.1f;
+    session.execute(setCamera(session.document(), camera));
+    if (pass.wait_for(std::chrono::seconds(120)) != std::future_status::ready) {
+        std::fprintf(stderr, "the camera edit did not stop the pass in flight\n");
+        std::abort();  // the pass would hold the test process for hours
+    }
+    EXPECT_EQ(pass.get(), 0u) << "an interrupted pass is no sample";
+    EXPECT_FALSE(session.lastEdit().complete) << "the edit's frame is still to come";
+    EXPECT_EQ(session.render(1, 0), 0u) << "nothing renders before the edit is synced";
+    EXPECT_EQ(session.sync().action, "reset");
+    EXPECT_EQ(session.render(2, 0), 2u);
+    EXPECT_EQ(session.backend().stats().samplesPerPixel, 2u);
+    EXPECT_TRUE(session.lastEdit().complete);
+}
+
+// A display edit keeps the accumulation, so it lets the pass in flight finish; so does a new
+// backend's first sync (the flag is the session's, handed to every backend it holds).
+TEST(EditorSession, ADisplayEditLetsThePassFinish) {
+    Fixture f = startSession(1);
+    EditorSession& session = *f.session;
+    ViewerSettings viewer = session.document().viewer;
+    viewer.display.exposureStops = 1.0f;
+    session.execute(setViewer(session.document(), viewer));
+    EXPECT_EQ(session.render(3, 0), 3u);
+    EXPECT_EQ(session.sync().action, "nothing");
+    EXPECT_EQ(session.backend().stats().samplesPerPixel, 4u);
+
+    session.setBackend(createBackend("cpu"));
+    session.sync();
+    EXPECT_EQ(session.render(2, 0), 2u);
+    session.interruptRender();
+    EXPECT_EQ(session.render(2, 0), 0u) << "the new backend watches the session's flag";
+    EXPECT_EQ(session.backend().stats().samplesPerPixel, 0u);
+}
+
+// With interrupts off (the edit bench's baseline), the pass in flight when an edit comes ends
+// normally; it shows the scene before the edit, so it is not the edit's first frame.
+TEST(EditorSession, APassBeforeTheEditsSyncIsNotItsFirstFrame) {
+    Fixture f = startSession(1);
+    EditorSession& session = *f.session;
+    session.setPassInterrupts(false);
+    Camera camera = session.document().scene.camera;
+    camera.position.x += 0.1f;
+    session.execute(setCamera(session.document(), camera));
+    EXPECT_EQ(session.render(1, 0), 1u);
+    EXPECT_FALSE(session.lastEdit().complete);
+    session.sync();
+    EXPECT_EQ(session.render(1, 0), 1u);
+    EXPECT_TRUE(session.lastEdit().complete);
 }
 
 TEST(EditorSession, RenderStopsAtTheTargetSpp) {

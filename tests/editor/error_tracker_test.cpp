@@ -116,14 +116,7 @@ TEST(ErrorTracker, LoadsAReferenceWithItsNoiseEstimate) {
 // The editor's render thread measures the error as it accumulates: against a high-spp render
 // of the same scene, the error at 16 or more times the samples of the first point is lower.
 TEST(ErrorTracker, TheRenderThreadMeasuresAFallingCurve) {
-    Scene scene;
-    scene.render = {24, 24, 3, 1, 0};
-    scene.camera.position = {0, 0, 4};
-    scene.camera.lookAt = {0, 0, 0};
-    const uint32_t grey = test::addMaterial(scene, "grey", test::diffuse({0.6f, 0.6f, 0.6f}));
-    const uint32_t lamp = test::addMaterial(scene, "lamp", test::emitter({3, 3, 3}));
-    test::addShape(scene, ObjectKind::Sphere, test::trs({0, -0.3f, 0}, {0, 0, 0}, {0.8f, 0.8f, 0.8f}), grey, "ball");
-    test::addShape(scene, ObjectKind::Quad, test::trs({0, 1.5f, 0}, {180, 0, 0}, {1, 1, 1}), lamp, "lamp");
+    Scene scene = test::ballUnderLampScene();
     scene.environment.color = {0.05f, 0.05f, 0.05f};
 
     auto reference = std::make_shared<ReferenceImage>();

@@ -28,6 +28,7 @@ public:
     ChildProcess& operator=(const ChildProcess&) = delete;
 
     bool running();
+    pid_t pid() const { return pid_; }
     // The exit status once the process ended within `seconds` (128 + N after signal N), else none.
     std::optional<int> waitForExit(double seconds);
     void stop();

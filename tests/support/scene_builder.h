@@ -104,5 +104,17 @@ inline Scene floorPointScene(float albedo, uint32_t maxDepth = 1) {
     return scene;
 }
 
-
+// A grey ball lit by an emitting quad above it, at `size` x `size`: a small scene with direct
+// and indirect light, for tests of the editor's render thread.
+inline Scene ballUnderLampScene(uint32_t size = 24) {
+    Scene scene;
+    scene.render = {size, size, 3, 1, 0};
+    scene.camera.position = {0, 0, 4};
+    scene.camera.lookAt = {0, 0, 0};
+    const uint32_t grey = addMaterial(scene, "grey", diffuse({0.6f, 0.6f, 0.6f}));
+    const uint32_t lamp = addMaterial(scene, "lamp", emitter({3, 3, 3}));
+    addShape(scene, ObjectKind::Sphere, trs({0, -0.3f, 0}, {0, 0, 0}, {0.8f, 0.8f, 0.8f}), grey, "ball");
+    addShape(scene, ObjectKind::Quad, trs({0, 1.5f, 0}, {180, 0, 0}, {1, 1, 1}), lamp, "lamp");
+    return scene;
+}
 }  // namespace pt::test

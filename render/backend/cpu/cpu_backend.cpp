@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 
 #include "render/backend/mean_image.h"
 #include "render/backend/toggle_states.h"
@@ -112,17 +113,21 @@ void CpuBackend::render(uint32_t passes) {
     tbb::combinable<PathCounters> counters;
     constexpr size_t kTile = 16;
     const bool pathAovs = (aovs_ & kPathAovs) != 0;
+    std::atomic<bool> torn{false};
     tbb::parallel_for(tbb::blocked_range2d<uint32_t>(0, height_, kTile, 0, width_, kTile),
                       [&](const tbb::blocked_range2d<uint32_t>& tile) {
                           const auto rows = tile.rows(), cols = tile.cols();
-                          if (pathAovs) {
-                              renderTile<true>(scene, rows.begin(), rows.end(), cols.begin(), cols.end(),
-                                               firstSample, passes, counters.local());
-                          } else {
-                              renderTile<false>(scene, rows.begin(), rows.end(), cols.begin(), cols.end(),
-                                                firstSample, passes, counters.local());
-                          }
+                          const bool done =
+                              pathAovs ? renderTile<true>(scene, rows.begin(), rows.end(), cols.begin(),
+                                                          cols.end(), firstSample, passes, counters.local())
+                                       : renderTile<false>(scene, rows.begin(), rows.end(), cols.begin(),
+                                                           cols.end(), firstSample, passes, counters.local());
+                          if (!done) torn = true;
                       });
+    if (torn) {
+        resetAccumulation();
+        return;
+    }
     counters.combine_each([&](const PathCounters& c) {
         stats_.rays += c.rays;
         stats_.nonfiniteSamples += c.nonfiniteSamples;
@@ -132,9 +137,11 @@ void CpuBackend::render(uint32_t passes) {
 }
 
 // Each pixel's samples in order, by one thread: the sums (and Welford's variance) need no atomics.
-// kAovs: the path records AOVs (kPathAovs); without, tracePath has no AOV code.
+// kAovs: the path records AOVs (kPathAovs); without, tracePath has no AOV code. Returns false
+// where the interrupt flag stopped it (checked before every sample: a call may ask for many
+// samples a pixel, and one relaxed load is nothing beside a path).
 template <bool kAovs>
-void CpuBackend::renderTile(const RenderScene& scene, uint32_t y0, uint32_t y1, uint32_t x0, uint32_t x1,
+bool CpuBackend::renderTile(const RenderScene& scene, uint32_t y0, uint32_t y1, uint32_t x0, uint32_t x1,
                             uint32_t firstSample, uint32_t passes, PathCounters& counters) {
     const AovBuffers aovs = aovBuffersIn(aovSums_.data(), aovs_, size_t(width_) * height_);
     const bool variance = aovs.has(Aov::Variance);
@@ -143,6 +150,7 @@ void CpuBackend::renderTile(const RenderScene& scene, uint32_t y0, uint32_t y1, 
             const uint32_t pixel = y * width_ + x;
             double* sum = &sum_[size_t(pixel) * 3];
             for (uint32_t s = 0; s < passes; ++s) {
+                if (interruptRequested()) return false;
                 AovSample aov;
                 const Vec3 L = tracePath<kAovs>(scene, x, y, firstSample + s, counters, &aov);
                 sum[0] += L.x;
@@ -156,6 +164,7 @@ void CpuBackend::renderTile(const RenderScene& scene, uint32_t y0, uint32_t y1, 
             }
         }
     }
+    return true;
 }
 
 void CpuBackend::readBeauty(std::vector<float>& rgba) const {

@@ -32,7 +32,7 @@ public:
 
 private:
     template <bool kAovs>
-    void renderTile(const RenderScene& scene, uint32_t y0, uint32_t y1, uint32_t x0, uint32_t x1,
+    bool renderTile(const RenderScene& scene, uint32_t y0, uint32_t y1, uint32_t x0, uint32_t x1,
                     uint32_t firstSample, uint32_t passes, PathCounters& counters);
     // stats_.features: the compiled scene's, plus the AOVs applied now and the brute-force toggle.
     void updateStatsFeatures();

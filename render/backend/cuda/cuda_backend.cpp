@@ -426,32 +426,30 @@ uint64_t CudaBackend::scheduleKey(uint32_t samplesPerWave) const {
     return h;
 }
 
+// One wave at a time, each waited for: the interrupt flag is read between waves, so an edit
+// waits for one wave, not the call's; and the auto schedule's trial times each wave it runs.
 void CudaBackend::render(uint32_t passes) {
     if (!compiled_ || passes == 0) return;
     const auto start = Clock::now();
     const AovBuffers aovs = aovBuffersIn(aovSums_.data(), aovs_, size_t(width_) * height_);
-    if (toggles_.autoSchedule) {
-        const uint32_t wave = scheduler_.samplesPerWave(width_ * height_, passes);
-        scheduleChooser_.setKey(scheduleKey(wave));
-        // The auto schedule's trial: timed waves of the size this call runs, alternating, until
-        // both schedules have run theirs.
-        while (passes > 0 && !scheduleChooser_.decided()) {
-            const bool megakernel = runsMegakernel();
-            const uint32_t n = std::min(wave, passes);
-            const auto passStart = Clock::now();
-            scheduler_.render(view_, stats_.samplesPerPixel, n, scheduleOptions(), sum_.data(), aovs,
-                              stream_);
-            PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
-            scheduleChooser_.record(megakernel, secondsSince(passStart) / n);
-            stats_.samplesPerPixel += n;
-            passes -= n;
+    const uint32_t wave = scheduler_.samplesPerWave(width_ * height_, passes);
+    // The trial runs waves of the size this call runs, alternating the schedules, until both
+    // have run theirs.
+    if (toggles_.autoSchedule) scheduleChooser_.setKey(scheduleKey(wave));
+    while (passes > 0) {
+        if (interruptRequested()) {
+            resetAccumulation();
+            return;
         }
-    }
-    if (passes > 0) {
-        scheduler_.render(view_, stats_.samplesPerPixel, passes, scheduleOptions(), sum_.data(), aovs,
-                          stream_);
+        const bool trial = toggles_.autoSchedule && !scheduleChooser_.decided();
+        const bool megakernel = runsMegakernel();
+        const uint32_t n = std::min(wave, passes);
+        const auto waveStart = Clock::now();
+        scheduler_.render(view_, stats_.samplesPerPixel, n, scheduleOptions(), sum_.data(), aovs, stream_);
         PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
-        stats_.samplesPerPixel += passes;
+        if (trial) scheduleChooser_.record(megakernel, secondsSince(waveStart) / n);
+        stats_.samplesPerPixel += n;
+        passes -= n;
     }
     stats_.renderSeconds += secondsSince(start);
 }

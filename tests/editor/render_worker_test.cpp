@@ -1,0 +1,63 @@
+// RenderWorker, the editor's render thread: an edit made while a pass is in flight reaches the
+// backend within a tile's time, not the pass's, and closing the window during a pass returns at
+// once. The viewer asks for 10^8 samples a step here, a pass of hours: without the interrupt
+// the edit would miss its deadline, and the worker's destructor (the window closing, with the
+// next such pass in flight) would hold the test until ctest's timeout.
+#include "editor/render_worker.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
+
+#include "editor/scene_edits.h"
+#include "render/backend/backend.h"
+#include "support/scene_builder.h"
+
+namespace pt::editor {
+namespace {
+
+using std::chrono::seconds;
+using std::chrono::steady_clock;
+
+// A session whose worker renders passes of 10^8 samples a pixel.
+void startEndlessPasses(EditorSession& session, RenderWorker& worker) {
+    worker.edit([](EditorSession& s) {
+        ViewerSettings viewer = s.document().viewer;
+        viewer.samplesPerFrame = 100'000'000;
+        viewer.targetSpp = 0;
+        s.execute(setViewer(s.document(), viewer));
+    });
+    // The first sync has run once it left its report; the endless pass follows.
+    const auto deadline = steady_clock::now() + seconds(60);
+    while (session.lastSync().action.empty()) {
+        ASSERT_LT(steady_clock::now(), deadline) << "the first sync never ran";
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));  // well into the pass
+}
+
+TEST(RenderWorker, AnEditDuringAPassReachesTheBackendWithoutWaitingForIt) {
+    EditorSession session(createBackend("cpu"));
+    session.adopt(test::ballUnderLampScene());
+    RenderWorker worker(session);
+    ASSERT_NO_FATAL_FAILURE(startEndlessPasses(session, worker));
+
+    worker.edit([](EditorSession& s) {
+        Camera camera = s.document().scene.camera;
+        camera.position.x += 0.2f;
+        s.execute(setCamera(s.document(), camera));
+    });
+    // The edit's sync fills in its action; it runs once the pass in flight has stopped.
+    const auto deadline = steady_clock::now() + seconds(60);
+    while (session.lastEdit().action.empty()) {
+        ASSERT_LT(steady_clock::now(), deadline) << "the edit waits for the pass in flight";
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    EXPECT_EQ(session.lastEdit().label, "Camera");
+    EXPECT_EQ(worker.status().error, "");
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));  // into the next pass; then close
+}
+
+}  // namespace
+}  // namespace pt::editor
