@@ -35,6 +35,7 @@ void EditorSession::adopt(Scene scene) {
     history_.clear();
     pending_ = SceneChanges::All;
     interrupt_ = true;
+    ++documentSerial_;
     std::lock_guard<std::mutex> lock(statusMutex_);
     lastEdit_ = {};
 }
@@ -115,6 +116,7 @@ SyncReport EditorSession::sync(const ProgressFn& progress) {
     SceneChangeMask changes = pending_ & ~SceneChangeMask(SceneChanges::Display);
     pending_ = SceneChanges::None;
     interrupt_ = false;  // the edits that raised it are applied now
+    const uint64_t document = documentSerial_;
     // Only the AOV on screen and the export layers are accumulated (the others are not even
     // allocated).
     const int32_t aov = doc_.viewer.aov;
@@ -128,7 +130,10 @@ SyncReport EditorSession::sync(const ProgressFn& progress) {
         backend_->setAovs(wanted);
         changes |= SceneChanges::Settings;
     }
-    if (changes == SceneChanges::None) return {"nothing", 0.0, 0.0, {}};
+    if (changes == SceneChanges::None) {
+        syncedDocument_ = document;
+        return {"nothing", 0.0, 0.0, {}};
+    }
     if (changes & SceneChanges::Settings) backend_->setToggles(doc_.toggles);
     SyncReport report;
     try {
@@ -137,6 +142,7 @@ SyncReport EditorSession::sync(const ProgressFn& progress) {
         pending_ |= changes;  // still owed: the next sync tries again (e.g. after an undo)
         throw;
     }
+    syncedDocument_ = document;
     std::lock_guard<std::mutex> lock(statusMutex_);
     lastSync_ = report;
     lastEdit_.action = report.action;

@@ -41,6 +41,11 @@ public:
     // Takes a scene loaded elsewhere (e.g. on a loader thread) as the new document.
     void adopt(Scene scene);
     const Document& document() const { return doc_; }
+    // Grows with every document adopted (open): frames carry the one they show (RenderWorker),
+    // so the window never shows the previous scene's image as the new one's.
+    uint64_t documentSerial() const { return documentSerial_; }
+    // The render thread: the document the backend holds, as of the last sync that succeeded.
+    uint64_t syncedDocument() const { return syncedDocument_; }
     const CommandStack& history() const { return history_; }
     SceneChangeMask execute(std::unique_ptr<EditCommand> command);
     bool undo();
@@ -118,6 +123,7 @@ private:
     std::unique_ptr<Backend> backend_;
     SceneChangeMask pending_ = SceneChanges::All;
     std::atomic<bool> interrupt_{false};  // the backend's interrupt flag (render())
+    std::atomic<uint64_t> documentSerial_{0}, syncedDocument_{0};
     bool passInterrupts_ = true;
     std::vector<Material> materialsAtLoad_;
     RenderSettings fileRender_, overriddenRender_;

@@ -80,6 +80,7 @@ void RenderWorker::publishFrame(int32_t aov, bool denoise) {
     next.width = backend.width();
     next.height = backend.height();
     next.aov = aov;
+    next.document = session_.syncedDocument();
     next.stats = backend.stats();
     if (hostFrames_ || aov >= 0) session_.readDisplayed(aov, denoise, next.rgba);
     {

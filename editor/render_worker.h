@@ -28,6 +28,7 @@ struct DisplayFrame {
     std::vector<float> rgba;
     int32_t aov = -1;        // -1: the beauty
     uint64_t serial = 0;     // grows with every published frame
+    uint64_t document = 0;   // the EditorSession::documentSerial() it shows
     BackendStats stats;
 };
 

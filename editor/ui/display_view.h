@@ -54,6 +54,7 @@ public:
     ImageRect draw(const ViewerSettings& viewer, CompareView compare, float x, float y, float w, float h, float framebufferHeight,
                    float pixelScale);
     bool hasImage() const { return width_ > 0; }
+    void clear() { width_ = height_ = 0; }  // nothing drawn until the next frame comes
     // The largest value of the shown AOV's first channel, for the heat map's legend.
     float aovMaximum() const { return aovMax_; }
 

@@ -77,6 +77,23 @@ void drawPanels(EditorUi& ui, const DisplayView& view, float width, float height
     ImGui::End();
 }
 
+// In the middle of an empty viewport (a scene loading, or its BVH building before its first
+// frame): what is under way.
+void drawViewportStatus(EditorUi& ui, float width, float height) {
+    const WorkerStatus status = ui.worker.status();
+    std::string text = "Preparing the scene";
+    if (ui.loading) {
+        text = "Loading " + ui.loading->path();
+    } else if (!status.stage.empty()) {
+        text = status.stage + " (" + std::to_string(int(status.fraction * 100.0)) + "%)";
+    } else if (!status.error.empty()) {
+        text = status.error;
+    }
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+    ImGui::GetBackgroundDrawList()->AddText(ImVec2(0.5f * (width - size.x), 0.3f * height),
+                                            IM_COL32(200, 200, 200, 255), text.c_str());
+}
+
 class Window {
 public:
     explicit Window(const EditorOptions& o) {
@@ -142,6 +159,7 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
     glfwSetWindowUserPointer(window.handle, &ui);
     glfwSetWindowCloseCallback(window.handle, onCloseRequest);
     std::string title;  // on the window now
+    DisplayFrame taken;
     RedrawPolicy redraw;
     double wait = 0.0;  // the policy's answer after the last frame
     uint64_t eventsSeen = 0;
@@ -171,11 +189,18 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
             glfwSetWindowTitle(window.handle, title.c_str());
             activity.happened = true;
         }
-        if (ui.worker.takeFrame(ui.lastFrame)) {
+        // Frames of the document before an open are dropped, and so is the image on screen:
+        // the viewport says what is under way until the new scene's first frame.
+        const uint64_t document = ui.session.documentSerial();
+        if (ui.worker.takeFrame(taken)) {
             activity.happened = true;
-            showFrame(ui, view, interop);
-            if (ui.lastFrame.stats.samplesPerPixel > 0) ++renderedFrames;
+            if (taken.document == document) {
+                ui.lastFrame = std::move(taken);
+                showFrame(ui, view, interop);
+                if (ui.lastFrame.stats.samplesPerPixel > 0) ++renderedFrames;
+            }
         }
+        if (ui.lastFrame.document != document) view.clear();
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
@@ -185,6 +210,7 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
         glfwGetFramebufferSize(window.handle, &fbw, &fbh);
         glfwGetWindowSize(window.handle, &ww, &wh);
         drawPanels(ui, view, float(ww), float(wh));
+        if (!view.hasImage()) drawViewportStatus(ui, float(ww) - kPanelWidth, float(wh));
         drawDialogs(ui);
         ImGui::Render();
         glViewport(0, 0, fbw, fbh);

@@ -1,8 +1,8 @@
 // RenderWorker, the editor's render thread: an edit made while a pass is in flight reaches the
-// backend within a tile's time, not the pass's, and closing the window during a pass returns at
-// once. The viewer asks for 10^8 samples a step here, a pass of hours: without the interrupt
-// the edit would miss its deadline, and the worker's destructor (the window closing, with the
-// next such pass in flight) would hold the test until ctest's timeout.
+// backend within a sample's time, not the pass's, and closing the window during a pass returns at
+// once; frames name the document they show. The viewer asks for 10^8 samples a step here, a pass of hours:
+// without the interrupt the edit would miss its deadline, and the worker's destructor (the window closing,
+// with the next such pass in flight) would hold the test until ctest's timeout.
 #include "editor/render_worker.h"
 
 #include <gtest/gtest.h>
@@ -57,6 +57,37 @@ TEST(RenderWorker, AnEditDuringAPassReachesTheBackendWithoutWaitingForIt) {
     EXPECT_EQ(session.lastEdit().label, "Camera");
     EXPECT_EQ(worker.status().error, "");
     std::this_thread::sleep_for(std::chrono::milliseconds(50));  // into the next pass; then close
+}
+
+// After an open, the window must not show the previous scene's image as the new one's (it did
+// for 4-6 s: issue 20, defect 7): every frame carries the document it shows, the one the
+// backend had synced, so frames of the old scene still in flight say so.
+TEST(RenderWorker, FramesSayWhichDocumentTheyShow) {
+    EditorSession session(createBackend("cpu"));
+    session.adopt(test::ballUnderLampScene(24));
+    RenderWorker worker(session);
+    const uint64_t first = session.documentSerial();
+    DisplayFrame frame;
+    const auto takeUntil = [&](uint64_t document) {
+        const auto deadline = steady_clock::now() + seconds(60);
+        while (steady_clock::now() < deadline) {
+            if (worker.takeFrame(frame)) {
+                if (frame.document == document) return true;
+                EXPECT_LT(frame.document, document);
+                EXPECT_EQ(frame.width, 24u) << "a frame of the new scene with the old document's serial";
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+        return false;
+    };
+    ASSERT_TRUE(takeUntil(first));
+    EXPECT_EQ(frame.width, 24u);
+
+    worker.edit([](EditorSession& s) { s.adopt(test::ballUnderLampScene(32)); });
+    const uint64_t opened = session.documentSerial();
+    EXPECT_GT(opened, first);
+    ASSERT_TRUE(takeUntil(opened)) << "no frame of the opened scene";
+    EXPECT_EQ(frame.width, 32u) << "a frame of the old scene with the new document's serial";
 }
 
 }  // namespace
