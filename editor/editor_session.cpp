@@ -127,8 +127,12 @@ SyncReport EditorSession::sync(const ProgressFn& progress) {
     const AovMask guides = keepDenoiseGuides_ ? kDenoiseGuideAovs : 0u;
     const AovMask wanted = shown | (doc_.viewer.exportAovs & kAllAovs) | guides;
     if (backend_->aovs() != wanted) {
-        backend_->setAovs(wanted);
-        changes |= SceneChanges::Settings;
+        if (changes == SceneChanges::None && !needsFreshGuides(wanted)) {
+            backend_->changeAovs(wanted);  // a display change: the beauty keeps its samples
+        } else {
+            backend_->setAovs(wanted);  // from the reset that follows
+            changes |= SceneChanges::Settings;
+        }
     }
     if (changes == SceneChanges::None) {
         syncedDocument_ = document;
@@ -148,6 +152,17 @@ SyncReport EditorSession::sync(const ProgressFn& progress) {
     lastEdit_.action = report.action;
     lastEdit_.syncSeconds = report.seconds;
     return report;
+}
+
+// The denoiser's guides must hold every sample of the beauty (requireDenoiseGuides): turning it
+// on restarts the accumulation once, unless they happen to be there from the start already.
+bool EditorSession::needsFreshGuides(AovMask wanted) const {
+    if ((wanted & kDenoiseGuideAovs) != kDenoiseGuideAovs) return false;
+    const uint32_t samples = backend_->stats().samplesPerPixel;
+    for (const Aov guide : kDenoiseGuides) {
+        if (!(backend_->aovs() & aovBit(guide)) || backend_->aovSamples(guide) != samples) return true;
+    }
+    return false;
 }
 
 bool EditorSession::converged(uint32_t target) const {

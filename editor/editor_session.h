@@ -111,10 +111,11 @@ private:
     // An edit handed over at `start` and applied now.
     void noteEdit(const std::string& label, SceneChangeMask changes, Clock::time_point start);
 
-    // Whether the denoiser can run now: asked for and its guides accumulated.
-    bool denoises(bool asked) const {
-        return asked && (backend_->aovs() & kDenoiseGuideAovs) == kDenoiseGuideAovs;
-    }
+    // Whether `wanted` holds the denoiser's guides and the backend lacks one, or holds one that
+    // started after the beauty.
+    bool needsFreshGuides(AovMask wanted) const;
+    // Whether the denoiser can run now: asked for and its guides accumulated with the beauty.
+    bool denoises(bool asked) const { return asked && !needsFreshGuides(kDenoiseGuideAovs); }
 
     Document doc_;
     CommandStack history_;

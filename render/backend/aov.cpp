@@ -37,14 +37,38 @@ size_t aovPlaneOffset(AovMask mask, Aov aov, size_t pixels) {
     return aovDoublesPerPixel(mask & (aovBit(aov) - 1u)) * pixels;
 }
 
-AovBuffers aovBuffersIn(double* base, AovMask mask, size_t pixels) {
+AovSet AovSet::changedTo(AovMask next, uint32_t samplesPerPixel) const {
+    AovSet changed;
+    changed.mask = next;
+    for (uint32_t i = 0; i < kAovCount; ++i) {
+        const AovMask bit = aovBit(Aov(i));
+        if (next & bit) changed.firstSample[i] = (mask & bit) ? firstSample[i] : samplesPerPixel;
+    }
+    return changed;
+}
+
+AovBuffers aovBuffersIn(double* base, const AovSet& set, size_t pixels) {
     AovBuffers b{};
-    b.mask = mask;
+    b.mask = set.mask;
     for (uint32_t i = 0; i < kAovCount; ++i) {
         const Aov a = Aov(i);
-        if ((mask & aovBit(a)) && aovChannels(a) > 0) b.sums[i] = base + aovPlaneOffset(mask, a, pixels);
+        b.firstSample[i] = set.firstSample[i];
+        if ((set.mask & aovBit(a)) && aovChannels(a) > 0)
+            b.sums[i] = base + aovPlaneOffset(set.mask, a, pixels);
     }
     return b;
+}
+
+std::vector<AovPlaneMove> keptAovPlanes(AovMask before, AovMask after, size_t pixels) {
+    std::vector<AovPlaneMove> moves;
+    for (uint32_t i = 0; i < kAovCount; ++i) {
+        const Aov a = Aov(i);
+        if ((before & after & aovBit(a)) && aovChannels(a) > 0) {
+            moves.push_back({aovPlaneOffset(before, a, pixels), aovPlaneOffset(after, a, pixels),
+                             aovChannels(a) * pixels});
+        }
+    }
+    return moves;
 }
 
 void requireAov(AovMask enabled, Aov aov) {
@@ -55,15 +79,18 @@ void requireAov(AovMask enabled, Aov aov) {
     }
 }
 
-void aovImageFromSums(Aov aov, const double* plane, size_t pixels, uint32_t samples,
+void aovImageFromSums(Aov aov, const double* plane, size_t pixels, uint32_t samples, uint32_t beautySamples,
                       std::vector<float>& rgba) {
     const uint32_t channels = aovChannels(aov);
+    // The variance of the mean of the AOV's samples, to that of the beauty's.
+    const float ofBeauty =
+        aov == Aov::Variance && beautySamples > 0 ? float(samples) / float(beautySamples) : 1.0f;
     rgba.assign(pixels * 4, 0.0f);
     for (size_t i = 0; i < pixels; ++i) {
         const double* sums = plane ? plane + i * channels : nullptr;
         float* out = &rgba[i * 4];
         if (channels == 1 || aov == Aov::SampleCount || aov == Aov::Variance) {
-            out[0] = out[1] = out[2] = aovPixelValue(aov, sums, 0, samples);
+            out[0] = out[1] = out[2] = aovPixelValue(aov, sums, 0, samples) * ofBeauty;
         } else {
             for (uint32_t c = 0; c < channels; ++c) out[c] = aovPixelValue(aov, sums, c, samples);
         }

@@ -148,8 +148,17 @@ public:
     // setToggles, or a sync that resets), and only the AOVs it names then have memory. The
     // beauty is the same with or without them.
     virtual void setAovs(AovMask aovs) = 0;
-    // The AOVs accumulated now: the last setAovs once a reset has applied it (0 before).
+    // Changes the AOVs accumulated now without touching the beauty (the editor's AOV view and
+    // export layers are display changes): the AOVs kept keep their sums, new ones start at the
+    // next pass and average over their own samples (aovSamples), the ones left out are freed.
+    // It is also setAovs' choice: the next reset starts them all with the beauty again.
+    virtual void changeAovs(AovMask aovs) = 0;
+    // The AOVs accumulated now: the last setAovs once a reset has applied it (0 before), or the
+    // last changeAovs.
     virtual AovMask aovs() const = 0;
+    // The samples AOV `aov` holds: stats().samplesPerPixel, less the samples taken before
+    // changeAovs added it.
+    virtual uint32_t aovSamples(Aov aov) const = 0;
     // Per-pixel value of an AOV, RGBA float, row-major top row first, same size as the beauty.
     // Throws std::invalid_argument when that AOV is not enabled (not in aovs()).
     virtual void readAov(Aov aov, std::vector<float>& rgba) const = 0;
@@ -158,8 +167,9 @@ public:
 
     // The beauty denoised (render/denoise/), RGBA float like readBeauty; returns the seconds the
     // filter took (on a GPU its kernels, without the copy to the host). Needs the guides
-    // (kDenoiseGuideAovs) among aovs(); throws std::invalid_argument naming one missing. This
-    // default reads them back and filters on the CPU.
+    // (kDenoiseGuideAovs) among aovs(), holding every sample of the beauty (since a reset);
+    // throws std::invalid_argument naming one missing. This default reads them back and
+    // filters on the CPU.
     virtual double readDenoised(std::vector<float>& rgba) const;
     // The same into device memory (CUDA-GL interop), the filter's seconds in *seconds; false
     // where the backend has no device.
@@ -186,6 +196,9 @@ constexpr AovMask aovMaskOf(const Aov (&aovs)[N]) {
     return mask;
 }
 constexpr AovMask kDenoiseGuideAovs = aovMaskOf(kDenoiseGuides);
+// Throws std::invalid_argument naming a guide that `backend` does not accumulate, or that
+// holds fewer samples than the beauty (changeAovs added it later): readDenoised's condition.
+void requireDenoiseGuides(const Backend& backend);
 
 // "cpu", or "cuda" where built. Throws std::invalid_argument naming the backends available,
 // or, for "cuda" on a machine without a usable GPU, saying why.

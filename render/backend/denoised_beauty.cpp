@@ -1,12 +1,27 @@
 // Backend::readDenoised as every backend can run it (HostDenoiser), and HostDenoiser.
+#include <stdexcept>
+#include <string>
+
 #include "render/backend/backend.h"
 #include "render/backend/host_denoiser.h"
 #include "render/util/stopwatch.h"
 
 namespace pt {
 
+void requireDenoiseGuides(const Backend& backend) {
+    const uint32_t samples = backend.stats().samplesPerPixel;
+    for (const Aov guide : kDenoiseGuides) {
+        requireAov(backend.aovs(), guide);
+        if (backend.aovSamples(guide) != samples) {
+            throw std::invalid_argument(std::string("denoiser guide \"") + aovName(guide) + "\" holds " +
+                                        std::to_string(backend.aovSamples(guide)) + " of the beauty's " +
+                                        std::to_string(samples) + " samples (reset the accumulation)");
+        }
+    }
+}
+
 double HostDenoiser::run(const Backend& backend, std::vector<float>& rgba) {
-    for (const Aov guide : kDenoiseGuides) requireAov(backend.aovs(), guide);
+    requireDenoiseGuides(backend);
     backend.readBeauty(beauty_);
     backend.readAov(Aov::Albedo, albedo_);
     backend.readAov(Aov::ShadingNormal, normal_);

@@ -94,17 +94,20 @@ struct AovSample {
 };
 static_assert(sizeof(AovSample) == 96, "AovSample: 96 bytes");
 
-// Where a backend accumulates AOVs: per enabled AOV, aovChannels() doubles per pixel.
+// Where a backend accumulates AOVs: per enabled AOV, aovChannels() doubles per pixel, holding
+// the samples from firstSample on (an AOV added while the beauty accumulates starts there:
+// Backend::changeAovs).
 struct AovBuffers {
     double* sums[kAovCount];  // nullptr where the AOV is off or stores nothing
     AovMask mask;
+    uint32_t firstSample[kAovCount];
 
     PT_HD bool has(Aov a) const { return (mask & aovBit(a)) != 0; }
     PT_HD double* at(Aov a, uint32_t pixel) const {
         return sums[uint32_t(a)] + size_t(pixel) * aovChannels(a);
     }
 };
-static_assert(sizeof(AovBuffers) == 128, "AovBuffers: 128 bytes of every AOV kernel's parameters");
+static_assert(sizeof(AovBuffers) == 184, "AovBuffers: 184 bytes of every AOV kernel's parameters");
 
 // Fills `out` (but its cost) from the surface the camera segment stopped at; `cameraOrigin` is
 // where the camera ray started. Reads textures but draws no random number.
@@ -140,7 +143,7 @@ PT_HD void addAovChannels(const AovBuffers& b, Aov a, uint32_t pixel, Vec3 value
 }
 
 // Adds a sample's surface values (not its cost: addAovCost) to pixel `pixel`. The ids are
-// written by the accumulation's first sample only.
+// written by their AOV's first sample only (sample `sampleIndex` of the accumulation).
 PT_HD void addAovSample(const AovBuffers& b, uint32_t pixel, uint32_t sampleIndex, const AovSample& s) {
     addAovChannels(b, Aov::Albedo, pixel, s.albedo);
     addAovChannels(b, Aov::ShadingNormal, pixel, s.shadingNormal);
@@ -152,9 +155,10 @@ PT_HD void addAovSample(const AovBuffers& b, uint32_t pixel, uint32_t sampleInde
     addAovChannels(b, Aov::Metallic, pixel, Vec3(s.metallic));
     addAovChannels(b, Aov::Emission, pixel, s.emission);
     addAovChannels(b, Aov::Alpha, pixel, Vec3(s.instance >= 0 ? 1.0f : 0.0f));
-    if (sampleIndex != 0) return;
-    if (b.has(Aov::InstanceId)) *b.at(Aov::InstanceId, pixel) = double(s.instance);
-    if (b.has(Aov::MaterialId)) *b.at(Aov::MaterialId, pixel) = double(s.material);
+    if (b.has(Aov::InstanceId) && sampleIndex == b.firstSample[uint32_t(Aov::InstanceId)])
+        *b.at(Aov::InstanceId, pixel) = double(s.instance);
+    if (b.has(Aov::MaterialId) && sampleIndex == b.firstSample[uint32_t(Aov::MaterialId)])
+        *b.at(Aov::MaterialId, pixel) = double(s.material);
 }
 
 // Adds traversal work of the camera segment (possibly in parts) to pixel `pixel`.
@@ -167,13 +171,13 @@ PT_HD void addAovCost(const AovBuffers& b, uint32_t pixel, TraversalStats cost) 
 
 // Welford's update (Knuth, TAOCP vol. 2, 4.2.2) of the running mean and sum of squared
 // deviations of a pixel's beauty luminance: a constant gives exactly 0, and no sum of squares
-// grows to swallow the deviations. Not atomic: one writer per pixel, in sample order
-// (`samplesBefore` samples of the pixel are already in).
-PT_HD void addVarianceSample(const AovBuffers& b, uint32_t pixel, uint32_t samplesBefore, Vec3 radiance) {
+// grows to swallow the deviations. Not atomic: one writer per pixel, in sample order (this is
+// sample `sampleIndex` of the accumulation; the AOV's own count starts at its first sample).
+PT_HD void addVarianceSample(const AovBuffers& b, uint32_t pixel, uint32_t sampleIndex, Vec3 radiance) {
     double* w = b.at(Aov::Variance, pixel);
     const double y = double(luminance(radiance));
     const double delta = y - w[0];
-    w[0] += delta / double(samplesBefore + 1u);
+    w[0] += delta / double(sampleIndex - b.firstSample[uint32_t(Aov::Variance)] + 1u);
     w[1] += delta * (y - w[0]);
 }
 

@@ -71,7 +71,9 @@ public:
     }
     uint64_t deviceMemoryBytes() const override { return cpu_->deviceMemoryBytes(); }
     void setAovs(AovMask aovs) override { cpu_->setAovs(aovs); }
+    void changeAovs(AovMask aovs) override { cpu_->changeAovs(aovs); }
     AovMask aovs() const override { return cpu_->aovs(); }
+    uint32_t aovSamples(Aov aov) const override { return cpu_->aovSamples(aov); }
     void readAov(Aov aov, std::vector<float>& rgba) const override { cpu_->readAov(aov, rgba); }
     uint64_t aovBytes() const override { return cpu_->aovBytes(); }
 
@@ -221,6 +223,32 @@ TEST(EditorSession, ADisplayEditKeepsTheAccumulation) {
     EXPECT_EQ(session.document().viewer.display.exposureStops, 2.0f);
     EXPECT_EQ(session.lastEdit().label, latency.label) << "a display edit is not an edit to render";
     EXPECT_TRUE(session.lastEdit().complete);
+}
+
+// Showing an AOV is a display change: the beauty keeps its samples and the AOV accumulates from
+// there (it restarted the accumulation: issue 20, defect 8); back on the beauty, it is freed.
+TEST(EditorSession, SwitchingTheAovKeepsTheAccumulation) {
+    Fixture f = startSession(4);
+    EditorSession& session = *f.session;
+    const size_t syncs = f.backend->syncs.size();
+    ViewerSettings viewer = session.document().viewer;
+    viewer.aov = int32_t(Aov::ShadingNormal);
+    session.execute(setViewer(session.document(), viewer));
+    EXPECT_EQ(session.sync().action, "nothing");
+    EXPECT_EQ(f.backend->syncs.size(), syncs);
+    EXPECT_EQ(session.render(2), 2u);
+    EXPECT_EQ(session.backend().stats().samplesPerPixel, 6u);
+    EXPECT_EQ(session.backend().aovSamples(Aov::ShadingNormal), 2u);
+    std::vector<float> shown, normal;
+    session.readDisplayed(viewer.aov, false, shown);
+    session.backend().readAov(Aov::ShadingNormal, normal);
+    EXPECT_EQ(shown, normal);
+
+    viewer.aov = -1;
+    session.execute(setViewer(session.document(), viewer));
+    EXPECT_EQ(session.sync().action, "nothing");
+    EXPECT_EQ(session.backend().aovs(), 0u);
+    EXPECT_EQ(session.backend().stats().samplesPerPixel, 6u);
 }
 
 // Denoise: turning it on restarts the accumulation once (its guides accumulate from there);
@@ -410,8 +438,8 @@ TEST(EditorSession, ExportWritesTheBeautyAndItsDisplayImage) {
     }
 }
 
-// Export layers accumulate beside the displayed AOV from the next sync (which restarts the
-// accumulation); an export writes those accumulated, at the viewer's precision.
+// Export layers accumulate beside the displayed AOV from the next sync, which keeps the beauty's
+// samples (a display change); an export writes those accumulated, at the viewer's precision.
 TEST(EditorSession, ExportLayersAccumulateAfterTheirEditAndGoIntoTheExr) {
     auto recording = std::make_unique<RecordingBackend>();
     Fixture f{recording.get(), std::make_unique<EditorSession>(std::move(recording))};
@@ -437,11 +465,14 @@ TEST(EditorSession, ExportLayersAccumulateAfterTheirEditAndGoIntoTheExr) {
         EXPECT_EQ(readExrChannels(folder + "/early.exr").channels.size(), 4u);
     }
     const size_t syncs = f.backend->syncs.size();
-    session.sync();
-    EXPECT_EQ(f.backend->syncs.size(), syncs + 1) << "new AOVs restart the accumulation";
+    EXPECT_EQ(session.sync().action, "nothing");
+    EXPECT_EQ(f.backend->syncs.size(), syncs) << "new AOVs need no sync (issue 20, defect 8)";
     EXPECT_EQ(session.backend().aovs(), exported | aovBit(Aov::Depth));
-    EXPECT_EQ(session.backend().stats().samplesPerPixel, 0u);
+    EXPECT_EQ(session.backend().stats().samplesPerPixel, 2u) << "the beauty keeps its samples";
+    EXPECT_EQ(session.backend().aovSamples(Aov::Albedo), 0u);
     session.render(2);
+    EXPECT_EQ(session.backend().aovSamples(Aov::Albedo), 2u);
+    EXPECT_EQ(session.backend().stats().samplesPerPixel, 4u);
 
     if (!PT_TEST_HAVE_OIIO) GTEST_SKIP() << "this build has no OpenImageIO (PT_OIIO=OFF): no EXR";
     const std::string exr = folder + "/layers.exr";
@@ -467,7 +498,7 @@ TEST(EditorSession, ExportLayersAccumulateAfterTheirEditAndGoIntoTheExr) {
         ASSERT_EQ(image.channel("instance_id.Y")->values[i], ids[i * 4]) << i;
     }
     EXPECT_EQ(image.attribute("pt:aovs"), "albedo,instance_id");
-    EXPECT_EQ(image.attribute("pt:spp"), "2");
+    EXPECT_EQ(image.attribute("pt:spp"), "4");
     EXPECT_EQ(image.attribute("pt:camera_position"), "0 0 5");
     EXPECT_EQ(image.attribute("pt:view"), display.describe());
 #ifdef PT_HAS_OCIO

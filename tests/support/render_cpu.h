@@ -19,6 +19,18 @@ inline std::vector<float> renderCpu(const Scene& scene, uint32_t spp, const Inte
     return rgba;
 }
 
+// What a backend holds now, as images (RGBA float).
+inline std::vector<float> beautyOf(const Backend& backend) {
+    std::vector<float> rgba;
+    backend.readBeauty(rgba);
+    return rgba;
+}
+inline std::vector<float> aovOf(const Backend& backend, Aov aov) {
+    std::vector<float> rgba;
+    backend.readAov(aov, rgba);
+    return rgba;
+}
+
 // The mean of channel `channel` (0 = R) over all pixels.
 inline double meanChannel(const std::vector<float>& rgba, int channel) {
     double sum = 0.0;

@@ -84,8 +84,8 @@ std::vector<ToggleState> CpuBackend::toggleStates() const {
 
 void CpuBackend::resetAccumulation() {
     sum_.assign(size_t(width_) * height_ * 3, 0.0);
-    aovs_ = aovsRequested_;
-    const size_t aovDoubles = aovDoublesPerPixel(aovs_) * width_ * height_;
+    aovs_ = AovSet{aovsRequested_, {}};
+    const size_t aovDoubles = aovDoublesPerPixel(aovs_.mask) * width_ * height_;
     // A fresh vector when the size changes, so memory follows the AOVs enabled now.
     if (aovSums_.size() != aovDoubles) {
         aovSums_ = std::vector<double>(aovDoubles, 0.0);
@@ -101,7 +101,7 @@ void CpuBackend::resetAccumulation() {
 
 void CpuBackend::updateStatsFeatures() {
     stats_.features = compiled_ ? compiled_->features : 0u;
-    if (aovs_ != 0) stats_.features |= feature::kAovs;
+    if (aovs_.mask != 0) stats_.features |= feature::kAovs;
     if (toggles_.bruteForce) stats_.features |= feature::kBruteForce;
 }
 
@@ -112,7 +112,7 @@ void CpuBackend::render(uint32_t passes) {
     const RenderScene& scene = view_;
     tbb::combinable<PathCounters> counters;
     constexpr size_t kTile = 16;
-    const bool pathAovs = (aovs_ & kPathAovs) != 0;
+    const bool pathAovs = (aovs_.mask & kPathAovs) != 0;
     std::atomic<bool> torn{false};
     tbb::parallel_for(tbb::blocked_range2d<uint32_t>(0, height_, kTile, 0, width_, kTile),
                       [&](const tbb::blocked_range2d<uint32_t>& tile) {
@@ -172,10 +172,23 @@ void CpuBackend::readBeauty(std::vector<float>& rgba) const {
 }
 
 void CpuBackend::readAov(Aov aov, std::vector<float>& rgba) const {
-    requireAov(aovs_, aov);
+    requireAov(aovs_.mask, aov);
     const size_t pixels = size_t(width_) * height_;
-    const double* plane = aovChannels(aov) ? aovSums_.data() + aovPlaneOffset(aovs_, aov, pixels) : nullptr;
-    aovImageFromSums(aov, plane, pixels, stats_.samplesPerPixel, rgba);
+    const double* plane =
+        aovChannels(aov) ? aovSums_.data() + aovPlaneOffset(aovs_.mask, aov, pixels) : nullptr;
+    aovImageFromSums(aov, plane, pixels, aovSamples(aov), stats_.samplesPerPixel, rgba);
+}
+
+void CpuBackend::changeAovs(AovMask aovs) {
+    aovsRequested_ = aovs;
+    if (aovs == aovs_.mask) return;
+    const size_t pixels = size_t(width_) * height_;
+    std::vector<double> sums(aovDoublesPerPixel(aovs) * pixels, 0.0);
+    for (const AovPlaneMove& m : keptAovPlanes(aovs_.mask, aovs, pixels))
+        std::copy_n(aovSums_.begin() + ptrdiff_t(m.from), m.doubles, sums.begin() + ptrdiff_t(m.to));
+    aovSums_ = std::move(sums);
+    aovs_ = aovs_.changedTo(aovs, stats_.samplesPerPixel);
+    updateStatsFeatures();
 }
 
 BackendStats CpuBackend::stats() const { return stats_; }

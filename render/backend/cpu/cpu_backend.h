@@ -25,7 +25,9 @@ public:
     std::vector<double> traceRays(const std::vector<Ray>& rays, bool anyHit, uint32_t runs,
                                   std::vector<Hit>* hits) override;
     void setAovs(AovMask aovs) override { aovsRequested_ = aovs; }
-    AovMask aovs() const override { return aovs_; }
+    void changeAovs(AovMask aovs) override;
+    AovMask aovs() const override { return aovs_.mask; }
+    uint32_t aovSamples(Aov aov) const override { return aovs_.samples(aov, stats_.samplesPerPixel); }
     void readAov(Aov aov, std::vector<float>& rgba) const override;
     uint64_t aovBytes() const override { return aovSums_.capacity() * sizeof(double); }
     double readDenoised(std::vector<float>& rgba) const override { return denoiser_.run(*this, rgba); }
@@ -41,7 +43,8 @@ private:
     IntegratorToggles toggles_;
     uint32_t width_ = 0, height_ = 0;
     std::vector<double> sum_;               // RGB per pixel
-    AovMask aovsRequested_ = 0, aovs_ = 0;  // as set; as applied at the last reset
+    AovMask aovsRequested_ = 0;             // as set, for the next reset
+    AovSet aovs_;                           // as accumulated now
     std::vector<double> aovSums_;           // render/backend/aov.h's layout; empty without AOVs
     BackendStats stats_;
     mutable HostDenoiser denoiser_;  // its memory kept from one readDenoised to the next

@@ -384,8 +384,8 @@ ScheduleOptions CudaBackend::scheduleOptions() const {
 void CudaBackend::resetAccumulation() {
     sum_.resize(size_t(width_) * height_ * 3);
     sum_.fillZero(stream_);
-    aovs_ = aovsRequested_;
-    const size_t aovDoubles = aovDoublesPerPixel(aovs_) * width_ * height_;
+    aovs_ = AovSet{aovsRequested_, {}};
+    const size_t aovDoubles = aovDoublesPerPixel(aovs_.mask) * width_ * height_;
     // A fresh buffer when the size changes, so device memory follows the AOVs enabled now.
     if (aovSums_.size() != aovDoubles) aovSums_ = DeviceBuffer<double>(aovDoubles);
     aovSums_.fillZero(stream_);
@@ -397,7 +397,9 @@ void CudaBackend::resetAccumulation() {
     stats_.nonfiniteSamples = 0;
 }
 
-uint32_t CudaBackend::renderFeatures() const { return view_.features | (aovs_ != 0 ? feature::kAovs : 0u); }
+uint32_t CudaBackend::renderFeatures() const {
+    return view_.features | (aovs_.mask != 0 ? feature::kAovs : 0u);
+}
 
 bool CudaBackend::runsMegakernel() const {
     return toggles_.autoSchedule ? scheduleChooser_.nextIsMegakernel() : toggles_.megakernel;
@@ -471,14 +473,31 @@ bool CudaBackend::copyBeautyToDevice(void* deviceRgba) const {
 }
 
 void CudaBackend::readAov(Aov aov, std::vector<float>& rgba) const {
-    requireAov(aovs_, aov);
+    requireAov(aovs_.mask, aov);
     const size_t pixels = size_t(width_) * height_;
     std::vector<double> plane(pixels * aovChannels(aov));
-    aovSums_.downloadAt(aovPlaneOffset(aovs_, aov, pixels), plane.data(), plane.size());
-    aovImageFromSums(aov, plane.empty() ? nullptr : plane.data(), pixels, stats_.samplesPerPixel, rgba);
+    aovSums_.downloadAt(aovPlaneOffset(aovs_.mask, aov, pixels), plane.data(), plane.size());
+    aovImageFromSums(aov, plane.empty() ? nullptr : plane.data(), pixels, aovSamples(aov),
+                     stats_.samplesPerPixel, rgba);
+}
+
+void CudaBackend::changeAovs(AovMask aovs) {
+    aovsRequested_ = aovs;
+    if (aovs == aovs_.mask) return;
+    const size_t pixels = size_t(width_) * height_;
+    DeviceBuffer<double> sums(aovDoublesPerPixel(aovs) * pixels);
+    sums.fillZero(stream_);
+    for (const AovPlaneMove& m : keptAovPlanes(aovs_.mask, aovs, pixels)) {
+        PT_CUDA_CHECK(cudaMemcpyAsync(sums.data() + m.to, aovSums_.data() + m.from,
+                                      m.doubles * sizeof(double), cudaMemcpyDeviceToDevice, stream_));
+    }
+    PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
+    aovSums_ = std::move(sums);
+    aovs_ = aovs_.changedTo(aovs, stats_.samplesPerPixel);
 }
 
 bool CudaBackend::copyDenoisedToDevice(void* deviceRgba, double* seconds) const {
+    requireDenoiseGuides(*this);
     const AovBuffers aovs = aovBuffersIn(aovSums_.data(), aovs_, size_t(width_) * height_);
     StreamTimer timer;
     const double s = timer.time(stream_, [&] {

@@ -44,7 +44,9 @@ public:
     std::vector<double> traceRays(const std::vector<Ray>& rays, bool anyHit, uint32_t runs,
                                   std::vector<Hit>* hits) override;
     void setAovs(AovMask aovs) override { aovsRequested_ = aovs; }
-    AovMask aovs() const override { return aovs_; }
+    void changeAovs(AovMask aovs) override;
+    AovMask aovs() const override { return aovs_.mask; }
+    uint32_t aovSamples(Aov aov) const override { return aovs_.samples(aov, stats_.samplesPerPixel); }
     void readAov(Aov aov, std::vector<float>& rgba) const override;
     // On the GPU (gpu_denoiser.h), from the sums in device memory.
     double readDenoised(std::vector<float>& rgba) const override;
@@ -93,7 +95,8 @@ private:
     PathScheduler scheduler_;
     ScheduleChooser scheduleChooser_;
     DeviceBuffer<double> sum_;
-    AovMask aovsRequested_ = 0, aovs_ = 0;  // as set; as applied at the last reset
+    AovMask aovsRequested_ = 0;             // as set, for the next reset
+    AovSet aovs_;                           // as accumulated now
     DeviceBuffer<double> aovSums_;          // render/backend/aov.h's layout; none without AOVs
     mutable GpuDenoiser denoiser_;          // working memory only once a denoise ran
     mutable DeviceBuffer<float> denoised_;  // its RGBA output

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "render/backend/backend.h"
+#include "support/render_cpu.h"
 #include "support/scene_builder.h"
 
 namespace pt {
@@ -27,12 +28,6 @@ Scene litQuad() {
     test::addLight(scene, LightType::Point, {1, 1, 1}, 5.0f, {0, 1, 0});
     scene.environment.color = {0.2f, 0.2f, 0.3f};
     return scene;
-}
-
-std::vector<float> beauty(const Backend& backend) {
-    std::vector<float> rgba;
-    backend.readBeauty(rgba);
-    return rgba;
 }
 
 TEST(RenderInterrupt, ARaisedFlagStopsThePassInFlightAndLeavesNoTornSamples) {
@@ -55,7 +50,8 @@ TEST(RenderInterrupt, ARaisedFlagStopsThePassInFlightAndLeavesNoTornSamples) {
     }
     EXPECT_EQ(backend->stats().samplesPerPixel, 0u);
     EXPECT_EQ(backend->stats().rays, 0u);
-    for (const float v : beauty(*backend)) ASSERT_TRUE(v == 0.0f || v == 1.0f) << "a torn pass left samples";
+    for (const float v : test::beautyOf(*backend))
+        ASSERT_TRUE(v == 0.0f || v == 1.0f) << "a torn pass left samples";
 
     // While the flag is up nothing renders; once lowered the accumulation starts afresh.
     backend->render(1);
@@ -66,11 +62,8 @@ TEST(RenderInterrupt, ARaisedFlagStopsThePassInFlightAndLeavesNoTornSamples) {
     fresh->setAovs(aovBit(Aov::Albedo) | aovBit(Aov::Variance));
     fresh->sync(scene, SceneChanges::All, {});
     fresh->render(3);
-    EXPECT_EQ(beauty(*backend), beauty(*fresh));
-    std::vector<float> variance, freshVariance;
-    backend->readAov(Aov::Variance, variance);
-    fresh->readAov(Aov::Variance, freshVariance);
-    EXPECT_EQ(variance, freshVariance);
+    EXPECT_EQ(test::beautyOf(*backend), test::beautyOf(*fresh));
+    EXPECT_EQ(test::aovOf(*backend, Aov::Variance), test::aovOf(*fresh, Aov::Variance));
 }
 
 }  // namespace
