@@ -9,8 +9,12 @@
 
 namespace pt::editor {
 
-RenderWorker::RenderWorker(EditorSession& session, std::function<void()> onUpdate)
-    : session_(session), onUpdate_(std::move(onUpdate)), thread_([this] { run(); }) {}
+RenderWorker::RenderWorker(EditorSession& session, std::function<void()> onUpdate,
+                           const std::function<void()>& onStart)
+    : session_(session), onUpdate_(std::move(onUpdate)), thread_([this, onStart] {
+          if (onStart) onStart();
+          run();
+      }) {}
 
 RenderWorker::~RenderWorker() {
     stop_ = true;

@@ -50,7 +50,9 @@ public:
     // `onUpdate` (any thread; may be empty) is called from the render thread whenever a frame
     // is published or the status' stage changes: the window wakes to show it (glfwPostEmptyEvent)
     // instead of drawing without pause to find out.
-    explicit RenderWorker(EditorSession& session, std::function<void()> onUpdate = {});
+    // `onStart` (may be empty) runs first on the render thread (the window lowers its priority).
+    explicit RenderWorker(EditorSession& session, std::function<void()> onUpdate = {},
+                          const std::function<void()>& onStart = {});
     ~RenderWorker();
     RenderWorker(const RenderWorker&) = delete;
     RenderWorker& operator=(const RenderWorker&) = delete;

@@ -3,14 +3,13 @@
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
-#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <thread>
 
 #include "editor/scene_edits.h"
+#include "editor/ui/background_render_threads.h"
 #include "editor/ui/cuda_gl_frame.h"
 #include "editor/ui/gl.h"
 #include "editor/ui/input_events.h"
@@ -260,10 +259,10 @@ int runEditor(const EditorOptions& options) {
         std::fprintf(stderr, "pathtracer: %s\n", e.what());
         return 1;
     }
-    // One core stays with the window: the CPU backend's threads would otherwise starve it.
-    const size_t cores = std::max<size_t>(std::thread::hardware_concurrency(), 2);
-    tbb::global_control renderThreads(tbb::global_control::max_allowed_parallelism, cores - 1);
-    RenderWorker worker(session, [] { glfwPostEmptyEvent(); });  // the frame loop waits for events
+    // The CPU backend's threads on every core, niced below the window's (their file says why).
+    BackgroundRenderThreads backgroundRenderThreads;
+    RenderWorker worker(
+        session, [] { glfwPostEmptyEvent(); }, lowerThisThreadsPriority);
     EditorUi ui(session, worker, options);
     ui.backendName = backendName;
     worker.edit([&](EditorSession& s) {
