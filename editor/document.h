@@ -18,13 +18,18 @@ struct ViewerSettings {
     uint32_t samplesPerFrame = 0;
     uint32_t targetSpp = 0;           // stop accumulating here; 0 = never stop
     // Export: AOV layers for the EXR. They are accumulated beside the displayed AOV from the
-    // next reset on (changing them restarts accumulation); exportRender writes those that are.
+    // next pass on (Backend::changeAovs); exportRender writes those that are.
     AovMask exportAovs = 0;
     bool exportHalf = false;          // 16-bit EXR channels (exr_layers.h: which stay float)
     // The beauty shown (and exported beside the raw one) through the denoiser. Its guides are
     // accumulated from the reset that turning it on makes; turning it off keeps them, so that
     // switching back and forth is a display change.
     bool denoise = false;
+    // The render's size follows the viewport's (the window's pixels times `resolutionScale`,
+    // a quarter a side while the camera moves: viewport_resolution.h) instead of the scene's
+    // resolution, which saving keeps as the file had it. Off where --size fixes the size.
+    bool followViewport = true;
+    float resolutionScale = 1.0f;
 };
 
 struct Document {

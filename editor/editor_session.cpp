@@ -76,11 +76,27 @@ bool EditorSession::redo() {
 }
 
 void EditorSession::overrideResolution(uint32_t width, uint32_t height) {
-    fileRender_ = doc_.scene.render;
+    // The file's own size, as it was before the first override (a viewport that follows the
+    // window overrides again at every resize), or as the user last set it.
+    if (!resolutionOverridden_ || doc_.scene.render.width != overriddenRender_.width ||
+        doc_.scene.render.height != overriddenRender_.height)
+        fileRender_ = doc_.scene.render;
     doc_.scene.render.width = width;
     doc_.scene.render.height = height;
     overriddenRender_ = doc_.scene.render;
     resolutionOverridden_ = true;
+    pending_ |= SceneChanges::Settings;
+    interrupt_ = true;
+}
+
+void EditorSession::restoreResolution() {
+    RenderSettings& render = doc_.scene.render;
+    if (!resolutionOverridden_ || render.width != overriddenRender_.width ||
+        render.height != overriddenRender_.height)
+        return;  // not overridden, or set by the user since
+    render.width = fileRender_.width;
+    render.height = fileRender_.height;
+    resolutionOverridden_ = false;
     pending_ |= SceneChanges::Settings;
     interrupt_ = true;
 }

@@ -51,9 +51,12 @@ public:
     bool undo();
     bool redo();
     void endDrag() { history_.closeMerge(); }
-    // Renders at width x height without making that an edit (the editor's --size): saving
-    // writes the file's own resolution unless the user changes the resolution afterwards.
+    // Renders at width x height without making that an edit (the editor's --size, or a render
+    // that follows the viewport): saving writes the file's own resolution unless the user
+    // changes the resolution afterwards.
     void overrideResolution(uint32_t width, uint32_t height);
+    // Back to the resolution the override replaced (the viewport no longer followed).
+    void restoreResolution();
     // Writes scene JSON (atomic); throws InputError naming the file.
     void save(const std::string& path);
     bool modified() const { return history_.modified(); }

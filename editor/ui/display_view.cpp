@@ -135,6 +135,12 @@ ImageRect DisplayView::draw(const ViewerSettings& viewer, CompareView compare, f
     glUseProgram(program);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, texture_);
+    // A render smaller than its place on screen (a resolution scale, the coarse frames while
+    // navigating) is filtered, not shown as blocks; ids stay unblended, and 1:1 stays exact.
+    const bool upscaled = rect.width * pixelScale > float(width_) + 0.5f;
+    const GLint filter = upscaled && displayMode(aov_) != 3 ? GL_LINEAR : GL_NEAREST;
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
     glUniform1i(glGetUniformLocation(program, "image"), 0);
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, referenceTexture_);

@@ -49,6 +49,9 @@ public:
     RenderWorker& worker;
     const EditorOptions options;
     const Document& doc() const { return session.document(); }
+    // The render's size follows the viewport's (ViewerSettings::followViewport), unless --size
+    // fixed it.
+    bool followsViewport() const { return options.width == 0 && doc().viewer.followViewport; }
 
     // Edits go through here: applied now when the render thread allows, else queued in order.
     void apply(std::unique_ptr<EditCommand> command);

@@ -16,6 +16,7 @@
 #include "editor/ui/redraw_policy.h"
 #include "editor/ui/screenshot.h"
 #include "editor/ui/viewport_input.h"
+#include "editor/viewport_resolution.h"
 #if defined(PT_HAVE_CUDA)
 #include "render/backend/cuda/cuda_device.h"
 #endif
@@ -74,6 +75,23 @@ void drawPanels(EditorUi& ui, const DisplayView& view, float width, float height
     drawDisplayPanel(ui, view);
     drawStatsPanel(ui);
     ImGui::End();
+}
+
+// The render's size, where it follows the viewport (viewport_resolution.h): the viewport's
+// framebuffer pixels `width` x `height`. Without the render thread's lock (a sync under way),
+// the change waits for a later frame.
+void followViewport(EditorUi& ui, ViewportResolution& resolution, float width, float height,
+                    bool navigating) {
+    if (!ui.followsViewport()) {  // turned off: back to the scene's resolution
+        if (resolution.following() && ui.worker.tryEdit([](EditorSession& s) { s.restoreResolution(); }))
+            resolution.stop();
+        return;
+    }
+    const RenderSettings& render = ui.doc().scene.render;
+    const std::optional<RenderSize> size =
+        resolution.update(width, height, ui.doc().viewer.resolutionScale, navigating,
+                          {render.width, render.height}, glfwGetTime());
+    if (size) ui.worker.tryEdit([&](EditorSession& s) { s.overrideResolution(size->width, size->height); });
 }
 
 // In the middle of an empty viewport (a scene loading, or its BVH building before its first
@@ -159,6 +177,7 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
     glfwSetWindowCloseCallback(window.handle, onCloseRequest);
     std::string title;  // on the window now
     DisplayFrame taken;
+    ViewportResolution resolution;
     RedrawPolicy redraw;
     double wait = 0.0;  // the policy's answer after the last frame
     uint64_t eventsSeen = 0;
@@ -208,6 +227,9 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
         int fbw = 0, fbh = 0, ww = 0, wh = 0;
         glfwGetFramebufferSize(window.handle, &fbw, &fbh);
         glfwGetWindowSize(window.handle, &ww, &wh);
+        const float top = ImGui::GetFrameHeight(), scale = ww > 0 ? float(fbw) / float(ww) : 1.0f;
+        followViewport(ui, resolution, (float(ww) - kPanelWidth) * scale, (float(wh) - top) * scale,
+                       input.moving());
         drawPanels(ui, view, float(ww), float(wh));
         if (!view.hasImage()) drawViewportStatus(ui, float(ww) - kPanelWidth, float(wh));
         drawDialogs(ui);
@@ -215,7 +237,6 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
         glViewport(0, 0, fbw, fbh);
         glClearColor(0.12f, 0.12f, 0.13f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
-        const float top = ImGui::GetFrameHeight(), scale = ww > 0 ? float(fbw) / float(ww) : 1.0f;
         view.setReference(ui.worker.errors().reference());
         ui.updateColorView();
         view.setColorView(ui.colorView);
@@ -239,7 +260,7 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
         inputEvents().endFrame();
         if (framesDone) break;
         activity.moving = input.moving() || ImGui::IsAnyMouseDown();
-        activity.progress = ui.loading || !ui.worker.status().stage.empty();
+        activity.progress = ui.loading || !ui.worker.status().stage.empty() || resolution.settling();
         activity.textInput = ImGui::GetIO().WantTextInput;
         wait = redraw.afterFrame(activity);
     }

@@ -47,20 +47,47 @@ void toggleStates(EditorUi& ui) {
     }
 }
 
+// Whether the render follows the viewport, and at what scale of its pixels; off, it renders at
+// the Resolution below (the scene's own unless edited).
+void renderSize(EditorUi& ui) {
+    if (ui.options.width > 0) {
+        ImGui::TextDisabled("Render size fixed by --size");
+        return;
+    }
+    ViewerSettings v = ui.doc().viewer;
+    bool changed = ImGui::Checkbox("Follow the viewport", &v.followViewport);
+    constexpr float kScales[] = {1.0f, 0.75f, 0.5f, 0.25f};
+    const char* names[] = {"100%", "75%", "50%", "25%"};
+    int current = 0;
+    for (int i = 0; i < 4; ++i) current = v.resolutionScale == kScales[i] ? i : current;
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(80.0f);
+    ImGui::BeginDisabled(!v.followViewport);
+    if (ImGui::Combo("Scale", &current, names, 4)) {
+        v.resolutionScale = kScales[current];
+        changed = true;
+    }
+    ImGui::EndDisabled();
+    if (changed) ui.apply(setViewer(ui.doc(), v));
+}
+
 }  // namespace
 
 void drawRenderPanel(EditorUi& ui) {
     if (!ImGui::CollapsingHeader("Render settings")) return;
     backendChoice(ui);
+    renderSize(ui);
     RenderSettings r = ui.doc().scene.render;
     int size[2] = {int(r.width), int(r.height)};
     int depth = int(r.maxDepth);
     bool changed = false;
+    ImGui::BeginDisabled(ui.followsViewport());
     if (ImGui::InputInt2("Resolution", size, ImGuiInputTextFlags_EnterReturnsTrue) && size[0] > 0 && size[1] > 0) {
         r.width = uint32_t(size[0]);
         r.height = uint32_t(size[1]);
         changed = true;
     }
+    ImGui::EndDisabled();
     if (ImGui::SliderInt("Max depth", &depth, 1, 64)) {
         r.maxDepth = uint32_t(depth);
         changed = true;

@@ -525,6 +525,39 @@ TEST(EditorSession, ExportLayersAccumulateAfterTheirEditAndGoIntoTheExr) {
     EXPECT_EQ(session.backend().aovBytes(), 0u);
 }
 
+// A render that follows the viewport overrides the resolution at every resize: saving still
+// writes the file's own, and turning the following off goes back to it. A resolution the user
+// sets is theirs: saved, and not taken back.
+TEST(EditorSession, ResolutionOverridesKeepTheFilesResolution) {
+    Fixture f = startSession();
+    EditorSession& session = *f.session;
+    const std::string path = test::testFolder() + "/overridden.json";
+    session.overrideResolution(40, 30);
+    session.overrideResolution(64, 48);
+    session.sync();
+    EXPECT_EQ(session.backend().width(), 64u);
+    EXPECT_FALSE(session.modified()) << "an override is not an edit";
+    session.save(path);
+    EXPECT_EQ(test::loadSceneOrFail(path).render.width, 16u);
+    EXPECT_EQ(session.document().scene.render.width, 64u) << "the render keeps its size after saving";
+
+    session.restoreResolution();
+    EXPECT_EQ(session.pendingChanges() & SceneChanges::Settings, SceneChanges::Settings);
+    session.sync();
+    EXPECT_EQ(session.backend().width(), 16u);
+    EXPECT_EQ(session.backend().height(), 16u);
+
+    session.overrideResolution(64, 48);
+    RenderSettings typed = session.document().scene.render;
+    typed.width = 100;
+    typed.height = 50;
+    session.execute(setRenderSettings(session.document(), typed));
+    session.restoreResolution();
+    EXPECT_EQ(session.document().scene.render.width, 100u) << "the user's resolution stays";
+    session.save(path);
+    EXPECT_EQ(test::loadSceneOrFail(path).render.width, 100u);
+}
+
 TEST(EditorSession, SaveWritesTheSceneAndClearsModified) {
     Fixture f = startSession();
     EditorSession& session = *f.session;
