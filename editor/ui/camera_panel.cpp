@@ -70,7 +70,12 @@ void drawCameraPanel(EditorUi& ui) {
     changed |= dragVec3(ui, "Look at", &c.lookAt, 0.01f);
     depthOfField(ui, c, changed);
     if (changed) ui.apply(setCamera(ui.doc(), c));
-    if (ImGui::Button("Reset (frame the scene)")) {
+    if (ImGui::Button("Reset to the file's camera")) {
+        ui.apply(setCamera(ui.doc(), ui.fileCamera));
+        ui.endDrag();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Frame the scene")) {
         ui.apply(setCamera(ui.doc(), frameBounds(ui.doc().scene)));
         ui.endDrag();
     }

@@ -29,17 +29,15 @@ std::string defaultScenePath(const Scene& scene) {
     return p.extension() == ".json" ? p.string() : p.replace_extension(".json").string();
 }
 
-// One message at a time, titled by what it is. Return or Escape dismiss it only as a new press
-// after it appeared: ImGui's IsKeyPressed also answers a held key's repeats, so the Return that
-// opened a broken file, held a moment, dismissed its error before it was seen (issue 20,
-// defect 4).
+// One error at a time (warnings go to the status bar). Return or Escape dismiss it only as a
+// new press after it appeared: ImGui's IsKeyPressed also answers a held key's repeats, so the
+// Return that opened a broken file, held a moment, dismissed its error before it was seen
+// (issue 20, defect 4).
 void errorDialog(EditorUi& ui) {
     if (ui.errors.empty()) return;
     const std::string& message = ui.errors.front();
-    const bool warning = message.rfind("Warning:", 0) == 0;
-    const char* title = warning ? "Warning###message" : "Error###message";  // one popup id for both
-    if (!ImGui::IsPopupOpen("###message")) ImGui::OpenPopup(title);
-    if (ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    if (!ImGui::IsPopupOpen("Error")) ImGui::OpenPopup("Error");
+    if (ImGui::BeginPopupModal("Error", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::PushTextWrapPos(600.0f);
         ImGui::TextUnformatted(message.c_str());
         ImGui::PopTextWrapPos();

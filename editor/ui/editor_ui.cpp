@@ -69,7 +69,13 @@ bool EditorUi::pollLoad() {
         return false;
     }
     Scene scene = std::move(*result.scene);
-    for (const std::string& warning : scene.warnings) showError("Warning: " + warning);
+    // Warnings need no answer: the status bar says them (a model without lights used to stop
+    // everything with a dialog to say that it is lit by a white environment).
+    std::string warnings;
+    for (const std::string& warning : scene.warnings)
+        warnings += (warnings.empty() ? "Warning: " : "; ") + warning;
+    notify(warnings.empty() ? "Opened " + path : warnings);
+    fileCamera = scene.camera;
     queued_.clear();
     worker.edit([&](EditorSession& s) {
         s.adopt(std::move(scene));
@@ -103,6 +109,7 @@ void EditorUi::saveScene(const std::string& path, bool confirmedOverwrite) {
     try {
         worker.edit([&](EditorSession& s) { s.save(path); });
         recentFiles = rememberRecentFile(recentFiles, fs::absolute(path).string());
+        notify("Saved " + path);
     } catch (const std::exception& e) {
         showError(e.what());
     }
@@ -112,6 +119,7 @@ void EditorUi::exportRender(const std::string& exrPath, const std::string& pngPa
     try {
         const DisplayProcessor display = displayProcessorFor(colorView, doc().viewer);
         worker.withBackend([&](EditorSession& s) { s.exportRender(exrPath, pngPath, display); });
+        notify("Exported " + exrPath + (exrPath.empty() || pngPath.empty() ? "" : " and ") + pngPath);
     } catch (const std::exception& e) {
         showError(e.what());
     }

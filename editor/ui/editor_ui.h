@@ -75,11 +75,16 @@ public:
     void exportRender(const std::string& exrPath, const std::string& pngPath);
     void switchBackend(const std::string& name);
     void showError(const std::string& message) { errors.push_back(message); }
+    // A line in the status bar that needs no answer: what was saved or exported where, a
+    // loaded scene's warnings.
+    void notify(const std::string& message) { notice = message; }
 
     Selection selection;
     std::vector<CameraBookmark> bookmarks;
     std::vector<std::string> recentFiles;
     std::vector<std::string> errors;         // shown one at a time in a modal dialog
+    std::string notice;                      // the status bar's message (notify)
+    Camera fileCamera;                       // the opened scene's camera, for Camera > Reset
     std::string pendingOverwrite;            // a save path awaiting "replace?" confirmation
     std::string discardWhat;                 // what the "Unsaved edits" dialog asks about
     std::function<void()> discardAction;     // what it runs once the user agrees
@@ -116,5 +121,9 @@ void drawRenderPanel(EditorUi& ui);
 void drawDisplayPanel(EditorUi& ui, const DisplayView& view);
 void drawStatsPanel(EditorUi& ui);
 void drawDialogs(EditorUi& ui);
+// The bar at the window's foot: the last notice, and the render's progress. Its height is
+// kStatusBarHeight (ImGui's default frame height), which the viewport leaves free.
+constexpr float kStatusBarHeight = 19.0f;
+void drawStatusBar(EditorUi& ui, float width, float height);
 
 }  // namespace pt::editor

@@ -26,6 +26,7 @@ namespace pt::editor {
 namespace {
 
 constexpr float kPanelWidth = 400.0f;
+constexpr const char* kScreenshotName = "pathtracer-screenshot.png";  // F12 without --screenshot
 constexpr size_t kFrameHistory = 120;
 
 // Files dropped on the window, collected by GLFW's callback and opened by the frame loop.
@@ -227,11 +228,13 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
         int fbw = 0, fbh = 0, ww = 0, wh = 0;
         glfwGetFramebufferSize(window.handle, &fbw, &fbh);
         glfwGetWindowSize(window.handle, &ww, &wh);
+        // The viewport: below the menu bar, left of the panels, above the status bar.
         const float top = ImGui::GetFrameHeight(), scale = ww > 0 ? float(fbw) / float(ww) : 1.0f;
-        followViewport(ui, resolution, (float(ww) - kPanelWidth) * scale, (float(wh) - top) * scale,
-                       input.moving());
-        drawPanels(ui, view, float(ww), float(wh));
-        if (!view.hasImage()) drawViewportStatus(ui, float(ww) - kPanelWidth, float(wh));
+        const float viewWidth = float(ww) - kPanelWidth, viewHeight = float(wh) - top - kStatusBarHeight;
+        followViewport(ui, resolution, viewWidth * scale, viewHeight * scale, input.moving());
+        drawPanels(ui, view, float(ww), float(wh) - kStatusBarHeight);
+        drawStatusBar(ui, float(ww), float(wh));
+        if (!view.hasImage()) drawViewportStatus(ui, viewWidth, viewHeight);
         drawDialogs(ui);
         ImGui::Render();
         glViewport(0, 0, fbw, fbh);
@@ -240,7 +243,7 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
         view.setReference(ui.worker.errors().reference());
         ui.updateColorView();
         view.setColorView(ui.colorView);
-        image = view.draw(ui.doc().viewer, ui.compare, 0.0f, top, float(ww) - kPanelWidth, float(wh) - top, float(fbh), scale);
+        image = view.draw(ui.doc().viewer, ui.compare, 0.0f, top, viewWidth, viewHeight, float(fbh), scale);
         glViewport(0, 0, fbw, fbh);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         // --frames: done after that many frames with new samples, or once the frame on screen
@@ -248,11 +251,19 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
         const bool sppReached = options.spp > 0 && ui.lastFrame.stats.samplesPerPixel >= options.spp;
         const bool framesDone = options.frames >= 0 && (renderedFrames >= options.frames || sppReached) &&
                                 !ui.loading && view.hasImage();
-        if ((screenshot || framesDone) && !options.screenshotPath.empty()) {
+        if (screenshot || (framesDone && !options.screenshotPath.empty())) {
+            // F12 without --screenshot: numbered files in the working folder, never overwritten.
+            const bool named = !options.screenshotPath.empty();
+            std::string path =
+                screenshotPath(named ? options.screenshotPath : kScreenshotName, screenshots++);
+            while (!named && std::filesystem::exists(path))
+                path = screenshotPath(kScreenshotName, screenshots++);
             try {
-                writeWindowScreenshot(screenshotPath(options.screenshotPath, screenshots++), fbw, fbh);
+                writeWindowScreenshot(path, fbw, fbh);
+                ui.notify("Screenshot: " + path);
             } catch (const std::exception& e) {
                 std::fprintf(stderr, "pathtracer: %s\n", e.what());
+                ui.showError(e.what());
                 if (framesDone) return 1;
             }
         }

@@ -61,8 +61,10 @@ constexpr float kRow = kFrameHeight + kItemSpacingY;   // one widget row: 23
 constexpr float kTextRow = kFontSize + kItemSpacingY;  // one line of text: 17
 constexpr float kWindowPadding = 8.0f;
 constexpr float kGrabMinSize = 10.0f, kGrabPadding = 2.0f;
-// The editor's own (editor_window.cpp kPanelWidth, outliner_panel.cpp BeginChild height).
+// The editor's own (editor_window.cpp kPanelWidth, outliner_panel.cpp BeginChild height,
+// editor_ui.h kStatusBarHeight).
 constexpr float kPanelWidth = 400.0f;
+constexpr float kStatusBarHeight = 19.0f;
 constexpr float kOutlinerHeight = 180.0f;
 
 struct Point {
@@ -80,9 +82,9 @@ struct Layout {
 
     Layout(float w, float h, uint32_t rw, uint32_t rh)
         : width(w), height(h), renderWidth(rw), renderHeight(rh) {
-        // DisplayView::draw: the viewport is left of the panel and below the menu bar; the
-        // image keeps its aspect (square here) and is centred.
-        const float vw = width - kPanelWidth, vh = height - kFrameHeight;
+        // DisplayView::draw: the viewport is left of the panel, below the menu bar and above
+        // the status bar; the image keeps its aspect (square here) and is centred.
+        const float vw = width - kPanelWidth, vh = height - kFrameHeight - kStatusBarHeight;
         imageSize = std::min(vw, vh);
         imageX = 0.5f * (vw - imageSize);
         imageY = kFrameHeight + 0.5f * (vh - imageSize);
@@ -118,8 +120,9 @@ struct Layout {
     PixelRect inspectorRows() const {
         return {int(panelX()), int(inspectorTop()), int(width), int(materialTop() - kRow)};
     }
-    // Where the pointer rests between actions: a viewport corner hovers over nothing.
-    Point restingPoint() const { return {imageX + 4, height - 4}; }
+    // Where the pointer rests between actions: a viewport corner hovers over nothing (the
+    // status bar below would show its notice's tooltip).
+    Point restingPoint() const { return {imageX + 4, height - kStatusBarHeight - 4}; }
 };
 
 // Where a world point lands in the render (pixels, y down), the inverse of generateCameraRay.
