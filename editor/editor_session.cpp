@@ -30,6 +30,9 @@ std::string EditorSession::open(const std::string& path, const ProgressFn& progr
 
 void EditorSession::adopt(Scene scene) {
     doc_.scene = std::move(scene);
+    // Exposure belongs to a scene's light levels: the last file's does not carry over (a sunlit
+    // model opened after a dim room came up white).
+    doc_.viewer.display.exposureStops = 0.0f;
     materialsAtLoad_ = materialParams(doc_.scene);
     resolutionOverridden_ = false;
     history_.clear();

@@ -1,9 +1,11 @@
 // Display: what the viewport shows (the beauty or one AOV) and how (exposure, tone mapper).
-// Display changes never restart accumulation; switching the AOV starts accumulating that AOV.
+// Display changes never restart accumulation; switching the AOV starts accumulating that AOV
+// beside the beauty's samples.
 #include <cstdio>
 #include <string>
 #include <vector>
 
+#include "editor/auto_exposure.h"
 #include "editor/scene_edits.h"
 #include "editor/ui/widgets.h"
 
@@ -100,7 +102,16 @@ void drawDisplayPanel(EditorUi& ui, const DisplayView& view) {
     }
     // Turning it on restarts the accumulation once, for the guides; after that it is a display switch.
     changed |= ImGui::Checkbox("Denoise (a-trous, guided by albedo, normal, depth)", &v.denoise);
-    changed |= sliderFloat(ui, "Exposure (stops)", &v.display.exposureStops, -10.0f, 10.0f, "%.2f");
+    changed |= sliderFloat(ui, "Exposure (stops)", &v.display.exposureStops, -16.0f, 16.0f, "%.2f");
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Auto")) {  // the frame's log-average luminance to middle grey
+        std::vector<float> beauty;
+        ui.worker.withBackend([&](EditorSession& s) { s.backend().readBeauty(beauty); });
+        v.display.exposureStops = autoExposureStops(beauty);
+        changed = true;
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Bring the render's log-average luminance to middle grey (0.18)");
     const ColorView& color = ui.colorView;
     if (color.config) {
         bool ocio = !v.builtinDisplay;

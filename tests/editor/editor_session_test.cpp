@@ -151,6 +151,19 @@ TEST(EditorSession, OpenFailuresNameTheFileAndKeepTheDocument) {
     EXPECT_TRUE(session.modified());
 }
 
+// A new document's exposure starts at 0 stops: the previous file's does not carry over.
+TEST(EditorSession, ExposureDoesNotLeakIntoTheNextFile) {
+    Fixture f = startSession();
+    EditorSession& session = *f.session;
+    ViewerSettings viewer = session.document().viewer;
+    viewer.display.exposureStops = -9.0f;
+    viewer.aov = int32_t(Aov::Albedo);
+    session.execute(setViewer(session.document(), viewer));
+    session.adopt(tinyScene());
+    EXPECT_EQ(session.document().viewer.display.exposureStops, 0.0f);
+    EXPECT_EQ(session.document().viewer.aov, int32_t(Aov::Albedo)) << "the other view choices stay";
+}
+
 TEST(EditorSession, OpenReplacesTheDocument) {
     Fixture f = startSession();
     EditorSession& session = *f.session;
