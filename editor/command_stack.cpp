@@ -46,4 +46,16 @@ void CommandStack::markSaved() {
     savedState_ = currentState();
 }
 
+std::vector<std::string> CommandStack::undoLabels() const {
+    std::vector<std::string> labels;
+    for (const Entry& e : undo_) labels.push_back(e.command->label());
+    return labels;
+}
+
+std::vector<std::string> CommandStack::redoLabels() const {
+    std::vector<std::string> labels;
+    for (auto e = redo_.rbegin(); e != redo_.rend(); ++e) labels.push_back(e->command->label());
+    return labels;
+}
+
 }  // namespace pt::editor

@@ -24,6 +24,10 @@ public:
     std::string undoLabel() const { return canUndo() ? undo_.back().command->label() : std::string(); }
     std::string redoLabel() const { return canRedo() ? redo_.back().command->label() : std::string(); }
     size_t undoDepth() const { return undo_.size(); }
+    // The history list: the commands applied, oldest first (the last is the document's state),
+    // and those undone, the next to redo first.
+    std::vector<std::string> undoLabels() const;
+    std::vector<std::string> redoLabels() const;
     // Whether the document differs from when markSaved() was last called.
     bool modified() const { return savedState_ != currentState(); }
     // Also ends an open drag: what the drag does next is a change to the saved document.

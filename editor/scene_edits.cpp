@@ -4,6 +4,7 @@
 
 #include "assets/material_json.h"
 #include "assets/scene_json.h"
+#include "editor/edit_labels.h"
 #include "render/scene/morph.h"
 
 namespace pt::editor {
@@ -97,15 +98,15 @@ std::unique_ptr<EditCommand> setLight(const Document& doc, uint32_t light, const
 }
 
 std::unique_ptr<EditCommand> setCamera(const Document& doc, const Camera& after) {
-    return makeValueCommand<Camera>("Camera", "camera", SceneChanges::Camera, doc.scene.camera,
-                                    withinFileRanges(after),
+    return makeValueCommand<Camera>(cameraEditLabel(doc.scene.camera, withinFileRanges(after)), "camera",
+                                    SceneChanges::Camera, doc.scene.camera, withinFileRanges(after),
                                     [](Document& d, const Camera& c) { d.scene.camera = c; });
 }
 
 std::unique_ptr<EditCommand> setRenderSettings(const Document& doc, const RenderSettings& after) {
-    return makeValueCommand<RenderSettings>("Render settings", "render-settings", SceneChanges::Settings,
-                                            doc.scene.render, after,
-                                            [](Document& d, const RenderSettings& r) { d.scene.render = r; });
+    return makeValueCommand<RenderSettings>(
+        renderSettingsEditLabel(doc.scene.render, after), "render-settings", SceneChanges::Settings,
+        doc.scene.render, after, [](Document& d, const RenderSettings& r) { d.scene.render = r; });
 }
 
 std::unique_ptr<EditCommand> setEnvironment(const Document& doc, const Environment& after) {
@@ -115,13 +116,14 @@ std::unique_ptr<EditCommand> setEnvironment(const Document& doc, const Environme
 }
 
 std::unique_ptr<EditCommand> setToggles(const Document& doc, const IntegratorToggles& after) {
-    return makeValueCommand<IntegratorToggles>("Renderer toggles", "toggles", SceneChanges::Settings, doc.toggles,
-                                               after,
-                                               [](Document& d, const IntegratorToggles& t) { d.toggles = t; });
+    return makeValueCommand<IntegratorToggles>(
+        togglesEditLabel(doc.toggles, after), "toggles", SceneChanges::Settings, doc.toggles, after,
+        [](Document& d, const IntegratorToggles& t) { d.toggles = t; });
 }
 
 std::unique_ptr<EditCommand> setViewer(const Document& doc, const ViewerSettings& after) {
-    return makeValueCommand<ViewerSettings>("Display", "viewer", SceneChanges::Display, doc.viewer, after,
+    return makeValueCommand<ViewerSettings>(viewerEditLabel(doc.viewer, after), "viewer",
+                                            SceneChanges::Display, doc.viewer, after,
                                             [](Document& d, const ViewerSettings& v) { d.viewer = v; });
 }
 

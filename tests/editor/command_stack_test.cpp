@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace pt::editor {
 namespace {
@@ -51,6 +52,19 @@ TEST(CommandStack, UndoAndRedoWalkTheHistoryInOrder) {
     stack.redo(doc);
     EXPECT_EQ(exposure(doc), 3.0f);
     EXPECT_FALSE(stack.canRedo());
+}
+
+// The history list (Edit > History): applied steps oldest first, undone ones next-to-redo first.
+TEST(CommandStack, TheHistoryListsAppliedAndUndoneSteps) {
+    Document doc;
+    CommandStack stack;
+    for (float v : {1.0f, 2.0f, 3.0f, 4.0f}) stack.execute(doc, setExposure(doc, v));
+    stack.undo(doc);
+    stack.undo(doc);
+    EXPECT_EQ(stack.undoLabels(), (std::vector<std::string>{"Exposure 1", "Exposure 2"}));
+    EXPECT_EQ(stack.redoLabels(), (std::vector<std::string>{"Exposure 3", "Exposure 4"}));
+    EXPECT_EQ(stack.undoLabels().back(), stack.undoLabel());
+    EXPECT_EQ(stack.redoLabels().front(), stack.redoLabel());
 }
 
 TEST(CommandStack, ANewEditClearsTheRedoHistory) {

@@ -54,7 +54,7 @@ TEST(RenderWorker, AnEditDuringAPassReachesTheBackendWithoutWaitingForIt) {
         ASSERT_LT(steady_clock::now(), deadline) << "the edit waits for the pass in flight";
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
-    EXPECT_EQ(session.lastEdit().label, "Camera");
+    EXPECT_EQ(session.lastEdit().label, "Camera: position");
     EXPECT_EQ(worker.status().error, "");
     std::this_thread::sleep_for(std::chrono::milliseconds(50));  // into the next pass; then close
 }

@@ -1,0 +1,15 @@
+#pragma once
+// What an edit of the camera, the render settings, the renderer toggles or the display changed,
+// as the Edit menu and the history list name it ("Undo Display: exposure", not "Undo Display").
+#include <string>
+
+#include "editor/document.h"
+
+namespace pt::editor {
+
+std::string cameraEditLabel(const Camera& before, const Camera& after);
+std::string renderSettingsEditLabel(const RenderSettings& before, const RenderSettings& after);
+std::string togglesEditLabel(const IntegratorToggles& before, const IntegratorToggles& after);
+std::string viewerEditLabel(const ViewerSettings& before, const ViewerSettings& after);
+
+}  // namespace pt::editor
