@@ -100,4 +100,13 @@ std::string viewerEditLabel(const ViewerSettings& before, const ViewerSettings& 
         .str();
 }
 
+std::string environmentEditLabel(const Environment& before, const Environment& after) {
+    return Label("Environment")
+        .text(!sameVec(before.color, after.color), "colour")
+        .text(before.texture != after.texture && after.texture < 0, "no image")
+        .field("strength", before.intensity, after.intensity)
+        .field("rotation", before.rotationDegrees, after.rotationDegrees)
+        .str();
+}
+
 }  // namespace pt::editor

@@ -1,7 +1,10 @@
 #include "editor/scene_edits.h"
 
+#include <filesystem>
 #include <map>
+#include <memory>
 
+#include "assets/image_read.h"
 #include "assets/material_json.h"
 #include "assets/scene_json.h"
 #include "editor/edit_labels.h"
@@ -110,9 +113,54 @@ std::unique_ptr<EditCommand> setRenderSettings(const Document& doc, const Render
 }
 
 std::unique_ptr<EditCommand> setEnvironment(const Document& doc, const Environment& after) {
-    return makeValueCommand<Environment>("Environment", "environment", SceneChanges::Environment,
-                                         doc.scene.environment, after,
+    return makeValueCommand<Environment>(environmentEditLabel(doc.scene.environment, after), "environment",
+                                         SceneChanges::Environment, doc.scene.environment, after,
                                          [](Document& d, const Environment& e) { d.scene.environment = e; });
+}
+
+namespace {
+
+class EnvironmentImageCommand final : public EditCommand {
+public:
+    EnvironmentImageCommand(Environment before, std::shared_ptr<const Texture> image)
+        : before_(std::move(before)), image_(std::move(image)) {}
+    std::string label() const override {
+        return "Environment: image " + std::filesystem::path(image_->sourcePath).filename().string();
+    }
+    SceneChangeMask apply(Document& doc) override {
+        std::vector<Texture>& textures = doc.scene.textures;
+        SceneChangeMask changes = SceneChanges::Environment;
+        if (index_ < 0 || size_t(index_) >= textures.size() ||
+            textures[size_t(index_)].sourcePath != image_->sourcePath) {
+            textures.push_back(*image_);
+            index_ = int32_t(textures.size() - 1);
+            changes |= SceneChanges::Textures;
+        }
+        Environment& e = doc.scene.environment;
+        e = before_;
+        e.texture = index_;
+        e.imagePath = image_->sourcePath;
+        return changes;
+    }
+    SceneChangeMask revert(Document& doc) override {
+        doc.scene.environment = before_;
+        return SceneChanges::Environment;
+    }
+
+private:
+    Environment before_;
+    std::shared_ptr<const Texture> image_;
+    int32_t index_ = -1;  // where apply() put it in Scene::textures
+};
+
+}  // namespace
+
+std::unique_ptr<EditCommand> setEnvironmentImage(const Document& doc, const std::string& path) {
+    auto image = std::make_shared<Texture>(readTextureFile(path));
+    image->sourcePath = std::filesystem::absolute(path).lexically_normal().string();
+    if (image->name.empty()) image->name = std::filesystem::path(path).filename().string();
+    image->object = -1;
+    return std::make_unique<EnvironmentImageCommand>(doc.scene.environment, std::move(image));
 }
 
 std::unique_ptr<EditCommand> setToggles(const Document& doc, const IntegratorToggles& after) {

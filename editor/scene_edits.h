@@ -21,6 +21,10 @@ std::unique_ptr<EditCommand> setLight(const Document& doc, uint32_t light, const
 std::unique_ptr<EditCommand> setCamera(const Document& doc, const Camera& after);
 std::unique_ptr<EditCommand> setRenderSettings(const Document& doc, const RenderSettings& after);
 std::unique_ptr<EditCommand> setEnvironment(const Document& doc, const Environment& after);
+// Lights the scene with the equirectangular image at `path`, keeping its strength and rotation.
+// The image is decoded here (throws InputError naming the file); it joins Scene::textures when
+// the command first applies and stays there through undo, so that redo finds it again.
+std::unique_ptr<EditCommand> setEnvironmentImage(const Document& doc, const std::string& path);
 std::unique_ptr<EditCommand> setToggles(const Document& doc, const IntegratorToggles& after);
 // Display-only (exposure, tone mapper, AOV) and the viewer's sample settings: no reset.
 std::unique_ptr<EditCommand> setViewer(const Document& doc, const ViewerSettings& after);

@@ -118,6 +118,7 @@ void drawOutliner(EditorUi& ui);
 void drawInspector(EditorUi& ui);
 void drawCameraPanel(EditorUi& ui);
 void drawRenderPanel(EditorUi& ui);
+void drawEnvironmentPanel(EditorUi& ui);
 void drawDisplayPanel(EditorUi& ui, const DisplayView& view);
 void drawStatsPanel(EditorUi& ui);
 void drawDialogs(EditorUi& ui);

@@ -73,6 +73,7 @@ void drawPanels(EditorUi& ui, const DisplayView& view, float width, float height
     drawInspector(ui);
     drawCameraPanel(ui);
     drawRenderPanel(ui);
+    drawEnvironmentPanel(ui);
     drawDisplayPanel(ui, view);
     drawStatsPanel(ui);
     ImGui::End();

@@ -6,9 +6,11 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <string>
 
+#include "assets/input_error.h"
 #include "assets/scene_test_helpers.h"
 #include "editor/command_stack.h"
 #include "editor/scene_equality.h"
@@ -179,6 +181,46 @@ TEST(SceneEdits, SetEnvironment) {
     environment.rotationDegrees = 45.0f;
     checkEdit(doc, setEnvironment(doc, environment), SceneChanges::Environment,
               [&](Document& d) { d.scene.environment = environment; });
+}
+
+// A 4x2 Radiance .hdr of (1, 0.5, 0.25) (flat RGBE scanlines: narrower than 8, so not RLE).
+std::string writeTinyHdr(const std::string& path) {
+    std::ofstream out(path, std::ios::binary);
+    out << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n";
+    for (int i = 0; i < 8; ++i) out << char(128) << char(64) << char(32) << char(129);
+    return path;
+}
+
+// An environment image chosen in the Environment panel: decoded when the command is made, put
+// into Scene::textures once (undo keeps it, redo finds it again), strength and rotation kept.
+TEST(SceneEdits, SetEnvironmentImage) {
+    Document doc = codeDocument();
+    doc.scene.environment.intensity = 3.0f;
+    doc.scene.environment.rotationDegrees = 30.0f;
+    const size_t textures = doc.scene.textures.size();
+    const std::string path = writeTinyHdr(test::testFolder() + "/sky.hdr");
+    CommandStack stack;
+    EXPECT_EQ(stack.execute(doc, setEnvironmentImage(doc, path)),
+              SceneChanges::Environment | SceneChanges::Textures);
+    ASSERT_EQ(doc.scene.textures.size(), textures + 1);
+    const Environment& e = doc.scene.environment;
+    EXPECT_EQ(e.texture, int32_t(textures));
+    EXPECT_EQ(e.imagePath, std::filesystem::absolute(path).lexically_normal().string());
+    EXPECT_EQ(e.intensity, 3.0f);
+    EXPECT_EQ(e.rotationDegrees, 30.0f);
+    const Texture& image = doc.scene.textures.back();
+    ASSERT_EQ(image.width, 4u);
+    ASSERT_EQ(image.format, TexelFormat::RGBA32F);
+    EXPECT_EQ(image.texelsF[1], 0.5f);
+    EXPECT_EQ(stack.undoLabel(), "Environment: image sky.hdr");
+
+    EXPECT_EQ(stack.undo(doc), SceneChanges::Environment);
+    EXPECT_EQ(doc.scene.environment.texture, -1);
+    EXPECT_EQ(stack.redo(doc), SceneChanges::Environment) << "the image is there already";
+    EXPECT_EQ(doc.scene.textures.size(), textures + 1);
+    EXPECT_EQ(doc.scene.environment.texture, int32_t(textures));
+
+    EXPECT_THROW(setEnvironmentImage(doc, test::testFolder() + "/missing.hdr"), InputError);
 }
 
 TEST(SceneEdits, SetTogglesChangesNoScene) {
