@@ -102,9 +102,10 @@ void drawDisplayPanel(EditorUi& ui, const DisplayView& view) {
     }
     // Turning it on restarts the accumulation once, for the guides; after that it is a display switch.
     changed |= ImGui::Checkbox("Denoise (a-trous, guided by albedo, normal, depth)", &v.denoise);
-    changed |= sliderFloat(ui, "Exposure (stops)", &v.display.exposureStops, -16.0f, 16.0f, "%.2f");
-    ImGui::SameLine();
-    if (ImGui::SmallButton("Auto")) {  // the frame's log-average luminance to middle grey
+    // [Auto][slider] Exposure: the button before the slider, so the label stays in its column.
+    const float autoWidth = ImGui::CalcTextSize("Auto").x + 2.0f * ImGui::GetStyle().FramePadding.x;
+    const float sliderWidth = ImGui::CalcItemWidth() - autoWidth - ImGui::GetStyle().ItemInnerSpacing.x;
+    if (ImGui::Button("Auto")) {  // the frame's log-average luminance to middle grey
         std::vector<float> beauty;
         ui.worker.withBackend([&](EditorSession& s) { s.backend().readBeauty(beauty); });
         v.display.exposureStops = autoExposureStops(beauty);
@@ -112,6 +113,9 @@ void drawDisplayPanel(EditorUi& ui, const DisplayView& view) {
     }
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Bring the render's log-average luminance to middle grey (0.18)");
+    ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::SetNextItemWidth(sliderWidth);
+    changed |= sliderFloat(ui, "Exposure (stops)", &v.display.exposureStops, -16.0f, 16.0f, "%.2f");
     const ColorView& color = ui.colorView;
     if (color.config) {
         bool ocio = !v.builtinDisplay;

@@ -11,8 +11,9 @@
 #include <vector>
 
 #include "editor/render_worker.h"
-#include "editor/ui/display_view.h"
 #include "editor/scene_load_job.h"
+#include "editor/ui/display_view.h"
+#include "editor/ui/panel_layout.h"
 
 struct GLFWwindow;
 
@@ -85,6 +86,7 @@ public:
     std::vector<std::string> errors;         // shown one at a time in a modal dialog
     std::string notice;                      // the status bar's message (notify)
     Camera fileCamera;                       // the opened scene's camera, for Camera > Reset
+    PanelLayout layout;                      // the panels' column (its width is the user's)
     std::string pendingOverwrite;            // a save path awaiting "replace?" confirmation
     std::string discardWhat;                 // what the "Unsaved edits" dialog asks about
     std::function<void()> discardAction;     // what it runs once the user agrees
@@ -122,9 +124,8 @@ void drawEnvironmentPanel(EditorUi& ui);
 void drawDisplayPanel(EditorUi& ui, const DisplayView& view);
 void drawStatsPanel(EditorUi& ui);
 void drawDialogs(EditorUi& ui);
-// The bar at the window's foot: the last notice, and the render's progress. Its height is
-// kStatusBarHeight (ImGui's default frame height), which the viewport leaves free.
-constexpr float kStatusBarHeight = 19.0f;
+// The bar at the window's foot: the last notice, and the render's progress. It is a frame high
+// (ImGui::GetFrameHeight(), as the menu bar), which the viewport leaves free.
 void drawStatusBar(EditorUi& ui, float width, float height);
 
 }  // namespace pt::editor

@@ -5,14 +5,17 @@
 #include <imgui_impl_opengl3.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "editor/scene_edits.h"
 #include "editor/ui/background_render_threads.h"
 #include "editor/ui/cuda_gl_frame.h"
 #include "editor/ui/gl.h"
 #include "editor/ui/input_events.h"
+#include "editor/ui/panel_layout.h"
 #include "editor/ui/redraw_policy.h"
 #include "editor/ui/screenshot.h"
 #include "editor/ui/viewport_input.h"
@@ -25,7 +28,6 @@
 namespace pt::editor {
 namespace {
 
-constexpr float kPanelWidth = 400.0f;
 constexpr const char* kScreenshotName = "pathtracer-screenshot.png";  // F12 without --screenshot
 constexpr size_t kFrameHistory = 120;
 
@@ -63,10 +65,34 @@ std::string screenshotPath(const std::string& base, int n) {
     return (p.parent_path() / (p.stem().string() + "-" + std::to_string(n) + p.extension().string())).string();
 }
 
+// The panels' column at the window's right, `height` tall below the menu bar; dragging its left
+// edge resizes it (remembered when the editor closes: panel_layout.h). The drag starts where the
+// press was (InputEvents), not where the pointer is when a slow frame looks.
 void drawPanels(EditorUi& ui, const DisplayView& view, float width, float height) {
     const float top = ImGui::GetFrameHeight();
-    ImGui::SetNextWindowPos(ImVec2(width - kPanelWidth, top));
-    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, height - top));
+    const float panelWidth = ui.layout.clampedWidth(width), edgeX = width - panelWidth;
+    constexpr float kGrab = 4.0f;  // pixels either side of the edge
+    const ImGuiIO& io = ImGui::GetIO();
+    if (const std::optional<ScreenPoint> at = inputEvents().pressed(GLFW_MOUSE_BUTTON_LEFT);
+        at && std::fabs(at->x - edgeX) <= kGrab && at->y > top && at->y < height) {
+        ui.layout.resizing = true;
+    }
+    if (ui.layout.resizing && !ImGui::IsMouseDown(ImGuiMouseButton_Left) &&
+        !inputEvents().pressed(GLFW_MOUSE_BUTTON_LEFT))
+        ui.layout.resizing = false;
+    if (ui.layout.resizing) ui.layout.width = width - io.MousePos.x;
+    const bool overEdge =
+        std::fabs(io.MousePos.x - edgeX) <= kGrab && io.MousePos.y > top && io.MousePos.y < height;
+    if (overEdge || ui.layout.resizing) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
+    // The edge's strip is a window of its own, so that pressing it is not a click in the viewport.
+    ImGui::SetNextWindowPos(ImVec2(edgeX - kGrab, top));
+    ImGui::SetNextWindowSize(ImVec2(2.0f * kGrab, height - top));
+    ImGui::Begin("##panel edge", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove);
+    ImGui::End();
+    ImGui::SetNextWindowPos(ImVec2(width - panelWidth, top));
+    ImGui::SetNextWindowSize(ImVec2(panelWidth, height - top));
     ImGui::Begin("Panels", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoTitleBar |
                                         ImGuiWindowFlags_NoCollapse);
     drawOutliner(ui);
@@ -121,8 +147,10 @@ public:
         glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
         glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
         glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-        // Room for the render at its size (at least 640 square) beside the panels.
-        const int w = int(std::max(o.width, 640u) + uint32_t(kPanelWidth)), h = int(std::max(o.height, 640u) + 20u);
+        // Room for the render at its size (at least 640 square) beside the panels, between the
+        // menu bar and the status bar.
+        const int w = int(std::max(o.width, 640u) + uint32_t(PanelLayout::kDefaultWidth));
+        const int h = int(std::max(o.height, 640u) + 40u);
         handle = glfwCreateWindow(w, h, "pathtracer", nullptr, nullptr);
         if (!handle) {
             glfwTerminate();
@@ -136,6 +164,17 @@ public:
         ImGui::CreateContext();
         ImGui::GetIO().IniFilename = nullptr;  // a fixed layout: no imgui.ini littering the working folder
         ImGui::StyleColorsDark();
+        // A high-DPI screen: the font drawn at its pixel size (not a blurred scale of 13 px),
+        // and every padding and size with it.
+        float xscale = 1.0f, yscale = 1.0f;
+        glfwGetWindowContentScale(handle, &xscale, &yscale);
+        scale = std::clamp(std::max(xscale, yscale), 1.0f, 4.0f);
+        if (scale > 1.0f) {
+            ImFontConfig font;
+            font.SizePixels = std::round(13.0f * scale);
+            ImGui::GetIO().Fonts->AddFontDefault(&font);
+            ImGui::GetStyle().ScaleAllSizes(scale);
+        }
         ImGui_ImplGlfw_InitForOpenGL(handle, true);
         ImGui_ImplOpenGL3_Init("#version 330 core");
     }
@@ -147,6 +186,7 @@ public:
         glfwTerminate();
     }
     GLFWwindow* handle = nullptr;
+    float scale = 1.0f;  // the interface's, from the screen's content scale
 };
 
 // A new frame on screen: through CUDA-GL interop for the CUDA backend's beauty where the GL
@@ -224,16 +264,19 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
-        const bool screenshot = input.handle(ui, image, dt);
+        // A fly step covers the frame's time, but not the wait before it: after an idle wait
+        // the first step would jump (frames follow each other while flying).
+        const bool screenshot = input.handle(ui, image, std::min(dt, 0.05f));
         drawMainMenu(ui);
         int fbw = 0, fbh = 0, ww = 0, wh = 0;
         glfwGetFramebufferSize(window.handle, &fbw, &fbh);
         glfwGetWindowSize(window.handle, &ww, &wh);
         // The viewport: below the menu bar, left of the panels, above the status bar.
         const float top = ImGui::GetFrameHeight(), scale = ww > 0 ? float(fbw) / float(ww) : 1.0f;
-        const float viewWidth = float(ww) - kPanelWidth, viewHeight = float(wh) - top - kStatusBarHeight;
+        const float viewWidth = float(ww) - ui.layout.clampedWidth(float(ww)),
+                    viewHeight = float(wh) - top - top;
         followViewport(ui, resolution, viewWidth * scale, viewHeight * scale, input.moving());
-        drawPanels(ui, view, float(ww), float(wh) - kStatusBarHeight);
+        drawPanels(ui, view, float(ww), float(wh) - top);  // the status bar is a frame high, as the menu bar
         drawStatusBar(ui, float(ww), float(wh));
         if (!view.hasImage()) drawViewportStatus(ui, viewWidth, viewHeight);
         drawDialogs(ui);
@@ -298,6 +341,7 @@ int runEditor(const EditorOptions& options) {
         session, [] { glfwPostEmptyEvent(); }, lowerThisThreadsPriority);
     EditorUi ui(session, worker, options);
     ui.backendName = backendName;
+    ui.layout = loadPanelLayout(window->scale);
     worker.edit([&](EditorSession& s) {
         ViewerSettings viewer = s.document().viewer;
         viewer.targetSpp = options.spp;
@@ -312,7 +356,9 @@ int runEditor(const EditorOptions& options) {
             return 1;
         }
     }
-    return frameLoop(*window, ui, options);
+    const int status = frameLoop(*window, ui, options);
+    savePanelLayout(ui.layout);
+    return status;
 }
 
 }  // namespace pt::editor

@@ -32,32 +32,49 @@ public:
 
     void key(int key, int action, int mods);
     void mouseButton(int button, int action, ScreenPoint at, double seconds);
-    void other() { ++count_; }  // a move, scroll, character, focus or resize: counted only
+    void other() { ++count_; }  // a scroll, character, focus or resize: counted only
+    // The pointer moved to `at`: a press takes the position of the last move before it (events
+    // come in order), not where the pointer is when its callback runs, a frame later or more.
+    void cursorMoved(ScreenPoint at) {
+        ++count_;
+        cursor_ = at;
+    }
+    const std::optional<ScreenPoint>& cursor() const { return cursor_; }
 
     // `key` pressed since the last endFrame(), with any modifiers.
     bool tapped(int key) const;
     // `key` pressed with exactly the modifiers `mods` among Shift, Ctrl and Alt (so Ctrl+Z is
     // not Ctrl+Shift+Z); other bits (Caps Lock, Num Lock) are ignored.
     bool chord(int key, int mods) const;
+    // `key` is down from a press made without Ctrl or Alt: a navigation key (WASD, Q/E). Ctrl+S
+    // is no step backwards, even in a frame that sees S down after Ctrl came up (which flew the
+    // camera on Ctrl+Q and Ctrl+S, so that quitting asked to save a camera move).
+    bool heldPlain(int key) const;
     // Where the second press of a double-click of `button` was, if one came since endFrame().
     std::optional<ScreenPoint> doubleClick(int button) const;
+    // Where the first press of `button` since endFrame() was: ImGui takes a click where the
+    // pointer is at frame time, by which a quick press-and-drag has left what it pressed.
+    std::optional<ScreenPoint> pressed(int button) const;
     // Events of any kind so far; a change means the frame has something to show.
     uint64_t count() const { return count_; }
     void endFrame();
 
-private:
-    struct Press {
-        int key = 0, mods = 0;
-    };
     struct Click {
         int button = -1;
         ScreenPoint at;
         double seconds = 0.0;
     };
+
+private:
+    struct Press {
+        int key = 0, mods = 0;
+    };
     std::vector<Press> presses_;
-    std::vector<Click> doubleClicks_;
+    std::vector<int> heldPlain_;  // keys down since a press without Ctrl or Alt
+    std::vector<Click> doubleClicks_, clicks_;
     Click lastClick_;  // the last press of any button, which a double-click pairs with
     uint64_t count_ = 0;
+    std::optional<ScreenPoint> cursor_;  // none before the first move
 };
 
 // The window's events (the window's thread only).

@@ -9,9 +9,10 @@
 namespace pt::editor {
 
 void drawStatusBar(EditorUi& ui, float width, float height) {
-    ImGui::SetNextWindowPos(ImVec2(0.0f, height - kStatusBarHeight));
-    ImGui::SetNextWindowSize(ImVec2(width, kStatusBarHeight));
-    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(6.0f, 3.0f));
+    const float barHeight = ImGui::GetFrameHeight();
+    ImGui::SetNextWindowPos(ImVec2(0.0f, height - barHeight));
+    ImGui::SetNextWindowSize(ImVec2(width, barHeight));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImGui::GetStyle().FramePadding);
     ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0.0f);
     ImGui::Begin("##status", nullptr,
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |

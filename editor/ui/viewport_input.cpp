@@ -48,9 +48,11 @@ void ViewportInput::navigate(EditorUi& ui, const ImageRect& image, float frameSe
         ui.endDrag();
     }
     if (io.WantCaptureKeyboard || io.KeyCtrl) return;
-    const float forward = float(ImGui::IsKeyDown(GLFW_KEY_W)) - float(ImGui::IsKeyDown(GLFW_KEY_S));
-    const float right = float(ImGui::IsKeyDown(GLFW_KEY_D)) - float(ImGui::IsKeyDown(GLFW_KEY_A));
-    const float up = float(ImGui::IsKeyDown(GLFW_KEY_E)) - float(ImGui::IsKeyDown(GLFW_KEY_Q));
+    const InputEvents& keys = inputEvents();  // held from a press without Ctrl or Alt
+    const auto held = [&keys](int key) { return float(keys.heldPlain(key)); };
+    const float forward = held(GLFW_KEY_W) - held(GLFW_KEY_S);
+    const float right = held(GLFW_KEY_D) - held(GLFW_KEY_A);
+    const float up = held(GLFW_KEY_E) - held(GLFW_KEY_Q);
     if (forward != 0.0f || right != 0.0f || up != 0.0f) {
         const float speed = flySpeedFor(ui.doc().scene) * (io.KeyShift ? 4.0f : 1.0f);
         ui.apply(setCamera(ui.doc(), flyCamera(camera, forward, right, up, frameSeconds, speed)));

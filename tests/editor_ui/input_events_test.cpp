@@ -34,6 +34,25 @@ TEST(InputEvents, AChordKeepsTheModifiersOfItsPress) {
     EXPECT_FALSE(events.tapped(GLFW_KEY_Z));
 }
 
+// Navigation keys count as held only from a press without Ctrl or Alt: Ctrl+S, Ctrl+Q, Ctrl+D and
+// Ctrl+E are shortcuts, never a camera step, whatever order the key releases come in.
+TEST(InputEvents, ShortcutKeysAreNotHeldForNavigation) {
+    InputEvents events;
+    events.key(GLFW_KEY_LEFT_CONTROL, GLFW_PRESS, kModCtrl);
+    events.key(GLFW_KEY_Q, GLFW_PRESS, kModCtrl);
+    events.key(GLFW_KEY_LEFT_CONTROL, GLFW_RELEASE, 0);  // Ctrl up first: Q alone is down now
+    EXPECT_FALSE(events.heldPlain(GLFW_KEY_Q));
+    events.key(GLFW_KEY_Q, GLFW_RELEASE, 0);
+
+    events.key(GLFW_KEY_W, GLFW_PRESS, kModShift);  // Shift flies faster: still navigation
+    EXPECT_TRUE(events.heldPlain(GLFW_KEY_W));
+    events.key(GLFW_KEY_W, GLFW_REPEAT, kModShift);
+    events.endFrame();
+    EXPECT_TRUE(events.heldPlain(GLFW_KEY_W)) << "held across frames";
+    events.key(GLFW_KEY_W, GLFW_RELEASE, 0);
+    EXPECT_FALSE(events.heldPlain(GLFW_KEY_W));
+}
+
 // Both presses of a double-click in one frame (a 200 ms frame at 5 fps): paired by their own
 // times and places.
 TEST(InputEvents, ADoubleClickIsPairedByItsPressesTimes) {
