@@ -23,6 +23,15 @@ struct PathField {
     void set(const std::string& s) { std::snprintf(text, sizeof(text), "%s", s.c_str()); }
 };
 
+// A path field that Return confirms. ImGui 1.86 sees Return only if it is down when a frame
+// starts, so a quick press and release within one slow frame was lost (the file was not saved
+// or opened); the press event (InputEvents) counts too while the field has the keyboard.
+bool pathFieldEntered(const char* label, PathField& path) {
+    const bool entered =
+        ImGui::InputText(label, path.text, sizeof(path.text), ImGuiInputTextFlags_EnterReturnsTrue);
+    return entered || (ImGui::IsItemActive() && inputEvents().tapped(GLFW_KEY_ENTER));
+}
+
 std::string defaultScenePath(const Scene& scene) {
     if (scene.sourcePath.empty()) return "scene.json";
     fs::path p(scene.sourcePath);
@@ -61,7 +70,7 @@ void openDialog(EditorUi& ui) {
     ImGui::TextUnformatted(".json, .gltf, .glb or .obj (or drop a file on the window)");
     ImGui::SetNextItemWidth(500);
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();  // type, then Return
-    const bool enter = ImGui::InputText("Path", path.text, sizeof(path.text), ImGuiInputTextFlags_EnterReturnsTrue);
+    const bool enter = pathFieldEntered("Path", path);
     for (const std::string& recent : ui.recentFiles) {
         if (ImGui::Selectable(recent.c_str())) path.set(recent);
     }
@@ -84,7 +93,7 @@ void saveDialog(EditorUi& ui) {
     if (ImGui::BeginPopupModal("Save scene", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::SetNextItemWidth(500);
         if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-        const bool enter = ImGui::InputText("JSON path", path.text, sizeof(path.text), ImGuiInputTextFlags_EnterReturnsTrue);
+        const bool enter = pathFieldEntered("JSON path", path);
         if (ImGui::Button("Save") || enter) {
             ui.saveScene(path.text, false);
             ImGui::CloseCurrentPopup();
