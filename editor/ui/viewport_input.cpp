@@ -32,7 +32,10 @@ void ViewportInput::navigate(EditorUi& ui, const ImageRect& image, float frameSe
     const float h = image.height;
     const bool middle = ImGui::IsMouseDown(ImGuiMouseButton_Middle);
     const bool altLeft = io.KeyAlt && ImGui::IsMouseDown(ImGuiMouseButton_Left);
-    if ((middle || altLeft) && (dragging_ || (over && !io.WantCaptureMouse))) {
+    // The right button too: many window managers take Alt+left-drag to move the window, and a
+    // laptop's touchpad may have no middle button.
+    const bool rightDrag = ImGui::IsMouseDown(ImGuiMouseButton_Right);
+    if ((middle || altLeft || rightDrag) && (dragging_ || (over && !io.WantCaptureMouse))) {
         const ImVec2 d = io.MouseDelta;
         if (d.x != 0.0f || d.y != 0.0f) {
             const Camera next = io.KeyShift ? panCamera(camera, d.x, d.y, h) : orbitCamera(camera, d.x, d.y, h);

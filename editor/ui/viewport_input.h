@@ -1,5 +1,6 @@
 #pragma once
-// Viewport mouse and keyboard: orbit (middle drag, or Alt+left), pan (Shift+middle), zoom
+// Viewport mouse and keyboard: orbit (middle or right drag, or Alt+left), pan (Shift+middle or
+// Shift+right), zoom
 // (wheel), WASD fly (Q/E down/up), click to select what is under the cursor, double-click to
 // focus depth of field there. Shortcuts: Ctrl+Z / Ctrl+Shift+Z (or Ctrl+Y), Ctrl+O, Ctrl+S,
 // Ctrl+E, Delete, Ctrl+D, H, F12 (screenshot).
