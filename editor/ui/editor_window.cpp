@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "editor/scene_edits.h"
+#include "editor/selection_box.h"
 #include "editor/ui/background_render_threads.h"
 #include "editor/ui/cuda_gl_frame.h"
 #include "editor/ui/gl.h"
@@ -120,6 +121,25 @@ void followViewport(EditorUi& ui, ViewportResolution& resolution, float width, f
         resolution.update(width, height, ui.doc().viewer.resolutionScale, navigating,
                           {render.width, render.height}, glfwGetTime());
     if (size) ui.worker.tryEdit([&](EditorSession& s) { s.overrideResolution(size->width, size->height); });
+}
+
+// The selection's outline over the image (selection_box.h), from the render's pixels to where
+// the image lies in the window.
+void drawSelectionOutline(const EditorUi& ui, const ImageRect& image) {
+    const Selection& sel = ui.selection;
+    const bool object = sel.kind == Selection::Kind::Object, instance = sel.kind == Selection::Kind::Instance;
+    if ((!object && !instance) || image.imageWidth == 0) return;
+    const std::vector<ImageSegment> edges =
+        selectionBoxInImage(ui.doc().scene, object ? sel.index : -1, instance ? sel.index : -1,
+                            image.imageWidth, image.imageHeight);
+    const float sx = image.width / float(image.imageWidth), sy = image.height / float(image.imageHeight);
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    draw->PushClipRect(ImVec2(image.x, image.y), ImVec2(image.x + image.width, image.y + image.height), true);
+    for (const ImageSegment& e : edges) {
+        draw->AddLine(ImVec2(image.x + e.a.x * sx, image.y + e.a.y * sy),
+                      ImVec2(image.x + e.b.x * sx, image.y + e.b.y * sy), IM_COL32(255, 160, 40, 220), 1.5f);
+    }
+    draw->PopClipRect();
 }
 
 // In the middle of an empty viewport (a scene loading, or its BVH building before its first
@@ -279,6 +299,8 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
         drawPanels(ui, view, float(ww), float(wh) - top);  // the status bar is a frame high, as the menu bar
         drawStatusBar(ui, float(ww), float(wh));
         if (!view.hasImage()) drawViewportStatus(ui, viewWidth, viewHeight);
+        else
+            drawSelectionOutline(ui, image);
         drawDialogs(ui);
         ImGui::Render();
         glViewport(0, 0, fbw, fbh);

@@ -29,4 +29,15 @@ RenderCamera makeRenderCamera(const Camera& camera, uint32_t width, uint32_t hei
     return rc;
 }
 
+Vec2 projectToImage(const RenderCamera& camera, Vec3 p, uint32_t width, uint32_t height, float* depth) {
+    const Vec3 d = p - camera.origin;
+    const float z = dot(d, camera.forward) / length(camera.forward);
+    if (depth) *depth = z;
+    // generateCameraRay's direction is forward + right ndcX + up ndcY: scaled to reach d.
+    const float along = dot(d, camera.forward) / lengthSquared(camera.forward);
+    const float ndcX = dot(d, camera.right) / (lengthSquared(camera.right) * along);
+    const float ndcY = dot(d, camera.up) / (lengthSquared(camera.up) * along);
+    return {0.5f * (ndcX + 1.0f) * float(width), 0.5f * (1.0f - ndcY) * float(height)};
+}
+
 }  // namespace pt

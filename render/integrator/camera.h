@@ -9,6 +9,11 @@ namespace pt {
 // Host: the render form of a Camera for an image of width x height pixels.
 RenderCamera makeRenderCamera(const Camera& camera, uint32_t width, uint32_t height);
 
+// Host: where world point `p` lands in the image (pixels, y down), the inverse of a pinhole
+// camera ray through the pixel; `depth` receives its distance along the view direction (<= 0:
+// behind the camera, where the pixel means nothing).
+Vec2 projectToImage(const RenderCamera& camera, Vec3 p, uint32_t width, uint32_t height, float* depth);
+
 // Primary ray through pixel (x, y) with `pixelJitter` in [0,1)^2 inside the pixel and
 // `lensSample` in [0,1)^2 on the aperture. The direction is unit length. Image y grows down.
 PT_HD Ray generateCameraRay(const RenderCamera& camera, uint32_t width, uint32_t height, uint32_t x,

@@ -85,6 +85,14 @@ void Scene::worldBounds(Vec3& lo, Vec3& hi) const {
     }
 }
 
+bool Scene::instanceBounds(uint32_t instance, Vec3& lo, Vec3& hi) const {
+    lo = Vec3(kInf);
+    hi = Vec3(-kInf);
+    if (instance >= instances.size() || instances[instance].mesh >= meshes.size()) return false;
+    growByMesh(meshes[instances[instance].mesh], instances[instance].objectToWorld, lo, hi);
+    return lo.x <= hi.x;
+}
+
 uint64_t Scene::triangleCount() const {
     uint64_t count = 0;
     for (const Instance& instance : instances) {

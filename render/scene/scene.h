@@ -202,6 +202,8 @@ struct Scene {
     int32_t findMaterial(const std::string& name) const;
     // Bounds of all visible instances in world space; empty scenes give a unit box.
     void worldBounds(Vec3& lo, Vec3& hi) const;
+    // Bounds of one instance in world space, hidden or not; false where it has no geometry.
+    bool instanceBounds(uint32_t instance, Vec3& lo, Vec3& hi) const;
     uint64_t triangleCount() const;     // over instances (what is traced)
 };
 

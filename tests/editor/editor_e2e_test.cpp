@@ -127,12 +127,8 @@ struct Layout {
 
 // Where a world point lands in the render (pixels, y down), the inverse of generateCameraRay.
 Point projectToRender(const Camera& camera, Vec3 p, uint32_t width, uint32_t height) {
-    const RenderCamera rc = makeRenderCamera(camera, width, height);
-    const Vec3 d = p - rc.origin;
-    const float z = dot(d, rc.forward);
-    const float ndcX = dot(d, rc.right) / (lengthSquared(rc.right) * z);
-    const float ndcY = dot(d, rc.up) / (lengthSquared(rc.up) * z);
-    return {0.5f * (ndcX + 1.0f) * float(width), 0.5f * (1.0f - ndcY) * float(height)};
+    const Vec2 at = projectToImage(makeRenderCamera(camera, width, height), p, width, height, nullptr);
+    return {at.x, at.y};
 }
 
 // ---- Images -------------------------------------------------------------------------------
@@ -514,13 +510,20 @@ TEST_F(EditorEndToEnd, ClickDragUndoRedoSaveQuit) {
         << screenshotFile(shots - 1) << ")";
     ASSERT_FALSE(HasFailure());
 
+    // The viewport outlines the selection (its box's edges over the image); the images the
+    // edits are compared with from here on carry it.
+    const Image outlined = converged("the selected sphere", nullptr, layout);
+    ASSERT_FALSE(HasFailure());
+    const double outline = meanAbsDiff(first, outlined, view);
+    EXPECT_GT(outline, 0.0) << "no selection outline over the viewport";
+
     // 3. Drag Roughness from 0 to 0.6 of its range. The slider rounds to its "%.3f" format.
     const float endX = dragSlider(layout, float(rowY), 0.0f, 0.6f);
     const float expectedRoughness =
         std::round((endX - layout.usableMin()) / layout.usableSize() * 1000.0f) / 1000.0f;
-    const Image dragged = converged("after the Roughness drag", &first, layout);
+    const Image dragged = converged("after the Roughness drag", &outlined, layout);
     ASSERT_FALSE(HasFailure());
-    const double dragChange = meanAbsDiff(first, dragged, view);
+    const double dragChange = meanAbsDiff(outlined, dragged, view);
     // Same-state renders differ by exactly 0; the edit measured 2.53. Any threshold above 0
     // would do; 1.0 also rejects an edit that reached only a few pixels.
     EXPECT_GT(dragChange, 1.0) << "the Roughness drag barely changed the render" << editorOutput();
@@ -529,7 +532,7 @@ TEST_F(EditorEndToEnd, ClickDragUndoRedoSaveQuit) {
     chord("ctrl+z");
     const Image undone = converged("after ctrl+z", &dragged, layout);
     ASSERT_FALSE(HasFailure());
-    const double undoDiff = meanAbsDiff(first, undone, view);
+    const double undoDiff = meanAbsDiff(outlined, undone, view);
     EXPECT_LE(undoDiff, 0.05) << "ctrl+z did not restore the render (measured 0 when it does)"
                               << editorOutput();
 
@@ -567,8 +570,8 @@ TEST_F(EditorEndToEnd, ClickDragUndoRedoSaveQuit) {
 
     std::printf(
         "[ measured ] inspector change %.2f, drag change %.3f, undo diff %.3f, redo diff %.3f levels; "
-        "roughness %.3f; last F12 latency %.0f ms; idle CPU %.2f%% of a core; %.1f s in all\n",
-        inspectorChange, dragChange, undoDiff, redoDiff, double(roughness), frameSeconds * 1e3,
+        "roughness %.3f; outline %.3f; last F12 latency %.0f ms; idle CPU %.2f%% of a core; %.1f s in all\n",
+        inspectorChange, dragChange, undoDiff, redoDiff, double(roughness), outline, frameSeconds * 1e3,
         idleCores * 100.0, secondsSince(testStart));
     // The screenshots (about 45, 4 MB) stay only when something failed, for a look at them.
     if (!HasFailure()) fs::remove_all(dir);
