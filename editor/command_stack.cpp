@@ -4,6 +4,7 @@ namespace pt::editor {
 
 SceneChangeMask CommandStack::execute(Document& doc, std::unique_ptr<EditCommand> command) {
     const SceneChangeMask changes = command->apply(doc);
+    ++revision_;
     redo_.clear();
     const std::string key = command->mergeKey();
     if (mergeOpen_ && !key.empty() && !undo_.empty() && undo_.back().command->mergeKey() == key) {
@@ -21,6 +22,7 @@ SceneChangeMask CommandStack::undo(Document& doc) {
     Entry entry = std::move(undo_.back());
     undo_.pop_back();
     const SceneChangeMask changes = entry.command->revert(doc);
+    ++revision_;
     redo_.push_back(std::move(entry));
     return changes;
 }
@@ -31,6 +33,7 @@ SceneChangeMask CommandStack::redo(Document& doc) {
     Entry entry = std::move(redo_.back());
     redo_.pop_back();
     const SceneChangeMask changes = entry.command->apply(doc);
+    ++revision_;
     undo_.push_back(std::move(entry));
     return changes;
 }

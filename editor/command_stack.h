@@ -28,6 +28,9 @@ public:
     // and those undone, the next to redo first.
     std::vector<std::string> undoLabels() const;
     std::vector<std::string> redoLabels() const;
+    // Grows with every command applied, undone or redone (each step of a drag too), so that
+    // what is derived from the document can be kept until it changes.
+    uint64_t revision() const { return revision_; }
     // Whether the document differs from when markSaved() was last called.
     bool modified() const { return savedState_ != currentState(); }
     // Also ends an open drag: what the drag does next is a change to the saved document.
@@ -45,6 +48,7 @@ private:
     std::vector<Entry> undo_, redo_;
     bool mergeOpen_ = false;
     uint64_t nextId_ = 1;
+    uint64_t revision_ = 0;
     uint64_t savedState_ = 0;
 };
 

@@ -81,9 +81,7 @@ bool EditorSession::redo() {
 void EditorSession::overrideResolution(uint32_t width, uint32_t height) {
     // The file's own size, as it was before the first override (a viewport that follows the
     // window overrides again at every resize), or as the user last set it.
-    if (!resolutionOverridden_ || doc_.scene.render.width != overriddenRender_.width ||
-        doc_.scene.render.height != overriddenRender_.height)
-        fileRender_ = doc_.scene.render;
+    if (!showsOverriddenResolution()) fileRender_ = doc_.scene.render;
     doc_.scene.render.width = width;
     doc_.scene.render.height = height;
     overriddenRender_ = doc_.scene.render;
@@ -92,11 +90,15 @@ void EditorSession::overrideResolution(uint32_t width, uint32_t height) {
     interrupt_ = true;
 }
 
+bool EditorSession::showsOverriddenResolution() const {
+    const RenderSettings& render = doc_.scene.render;
+    return resolutionOverridden_ && render.width == overriddenRender_.width &&
+           render.height == overriddenRender_.height;
+}
+
 void EditorSession::restoreResolution() {
+    if (!showsOverriddenResolution()) return;  // not overridden, or set by the user since
     RenderSettings& render = doc_.scene.render;
-    if (!resolutionOverridden_ || render.width != overriddenRender_.width ||
-        render.height != overriddenRender_.height)
-        return;  // not overridden, or set by the user since
     render.width = fileRender_.width;
     render.height = fileRender_.height;
     resolutionOverridden_ = false;
@@ -113,8 +115,7 @@ std::string EditorSession::windowTitle() const {
 void EditorSession::save(const std::string& path) {
     RenderSettings& render = doc_.scene.render;
     const RenderSettings shown = render;
-    const bool restore = resolutionOverridden_ && shown.width == overriddenRender_.width &&
-                         shown.height == overriddenRender_.height;
+    const bool restore = showsOverriddenResolution();
     if (restore) {
         render.width = fileRender_.width;
         render.height = fileRender_.height;
@@ -176,12 +177,7 @@ SyncReport EditorSession::sync(const ProgressFn& progress) {
 // The denoiser's guides must hold every sample of the beauty (requireDenoiseGuides): turning it
 // on restarts the accumulation once, unless they happen to be there from the start already.
 bool EditorSession::needsFreshGuides(AovMask wanted) const {
-    if ((wanted & kDenoiseGuideAovs) != kDenoiseGuideAovs) return false;
-    const uint32_t samples = backend_->stats().samplesPerPixel;
-    for (const Aov guide : kDenoiseGuides) {
-        if (!(backend_->aovs() & aovBit(guide)) || backend_->aovSamples(guide) != samples) return true;
-    }
-    return false;
+    return (wanted & kDenoiseGuideAovs) == kDenoiseGuideAovs && !denoiseGuidesComplete(*backend_);
 }
 
 bool EditorSession::converged(uint32_t target) const {

@@ -73,8 +73,8 @@ public:
     // Adds up to `passes` samples per pixel, stopping at the viewer's target spp. Returns the
     // passes rendered: 0 where an edit that restarts the accumulation (execute, undo, redo,
     // adopt) or interruptRender() stopped the pass under way, which a render thread's render()
-    // watches for so that the edit waits for one tile, not a whole pass (the accumulation is
-    // then empty, as the edit's sync would leave it). sync() lowers the flag again.
+    // watches for so that the edit waits for one sample (a wave on a GPU), not a whole pass (the
+    // accumulation is then empty, as the edit's sync would leave it). sync() lowers the flag.
     uint32_t render(uint32_t passes) { return render(passes, doc_.viewer.targetSpp); }
     // The same, with the target given, for a render thread that must not read the document
     // while the UI thread edits it.
@@ -117,6 +117,8 @@ private:
     // Whether `wanted` holds the denoiser's guides and the backend lacks one, or holds one that
     // started after the beauty.
     bool needsFreshGuides(AovMask wanted) const;
+    // The render's size is the one overrideResolution set (not one the user set since).
+    bool showsOverriddenResolution() const;
     // Whether the denoiser can run now: asked for and its guides accumulated with the beauty.
     bool denoises(bool asked) const { return asked && !needsFreshGuides(kDenoiseGuideAovs); }
 

@@ -123,15 +123,41 @@ void followViewport(EditorUi& ui, ViewportResolution& resolution, float width, f
     if (size) ui.worker.tryEdit([&](EditorSession& s) { s.overrideResolution(size->width, size->height); });
 }
 
-// The selection's outline over the image (selection_box.h), from the render's pixels to where
-// the image lies in the window.
-void drawSelectionOutline(const EditorUi& ui, const ImageRect& image) {
-    const Selection& sel = ui.selection;
-    const bool object = sel.kind == Selection::Kind::Object, instance = sel.kind == Selection::Kind::Instance;
-    if ((!object && !instance) || image.imageWidth == 0) return;
+// The selection's world box (selection_box.h), kept until the selection or the document
+// changes: finding it walks the selected meshes' vertices, too much for every frame.
+class SelectionOutline {
+public:
+    const std::optional<WorldBox>& box(const EditorUi& ui) {
+        const Selection& sel = ui.selection;
+        const uint64_t document = ui.session.documentSerial(), revision = ui.session.history().revision();
+        if (sel.kind != kind_ || sel.index != index_ || document != document_ || revision != revision_) {
+            kind_ = sel.kind;
+            index_ = sel.index;
+            document_ = document;
+            revision_ = revision;
+            const bool object = kind_ == Selection::Kind::Object,
+                       instance = kind_ == Selection::Kind::Instance;
+            box_ = object || instance
+                       ? selectionBounds(ui.doc().scene, object ? index_ : -1, instance ? index_ : -1)
+                       : std::nullopt;
+        }
+        return box_;
+    }
+
+private:
+    Selection::Kind kind_ = Selection::Kind::None;
+    int32_t index_ = -1;
+    uint64_t document_ = ~uint64_t(0), revision_ = ~uint64_t(0);
+    std::optional<WorldBox> box_;
+};
+
+// The selection's outline over the image, from the render's pixels to where the image lies in
+// the window.
+void drawSelectionOutline(const EditorUi& ui, SelectionOutline& outline, const ImageRect& image) {
+    const std::optional<WorldBox>& box = outline.box(ui);
+    if (!box || image.imageWidth == 0) return;
     const std::vector<ImageSegment> edges =
-        selectionBoxInImage(ui.doc().scene, object ? sel.index : -1, instance ? sel.index : -1,
-                            image.imageWidth, image.imageHeight);
+        boxInImage(*box, ui.doc().scene.camera, image.imageWidth, image.imageHeight);
     const float sx = image.width / float(image.imageWidth), sy = image.height / float(image.imageHeight);
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
     draw->PushClipRect(ImVec2(image.x, image.y), ImVec2(image.x + image.width, image.y + image.height), true);
@@ -240,6 +266,7 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
     std::string title;  // on the window now
     DisplayFrame taken;
     ViewportResolution resolution;
+    SelectionOutline outline;
     RedrawPolicy redraw;
     double wait = 0.0;  // the policy's answer after the last frame
     uint64_t eventsSeen = 0;
@@ -300,7 +327,7 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
         drawStatusBar(ui, float(ww), float(wh));
         if (!view.hasImage()) drawViewportStatus(ui, viewWidth, viewHeight);
         else
-            drawSelectionOutline(ui, image);
+            drawSelectionOutline(ui, outline, image);
         drawDialogs(ui);
         ImGui::Render();
         glViewport(0, 0, fbw, fbh);

@@ -196,8 +196,10 @@ constexpr AovMask aovMaskOf(const Aov (&aovs)[N]) {
     return mask;
 }
 constexpr AovMask kDenoiseGuideAovs = aovMaskOf(kDenoiseGuides);
-// Throws std::invalid_argument naming a guide that `backend` does not accumulate, or that
-// holds fewer samples than the beauty (changeAovs added it later): readDenoised's condition.
+// readDenoised's condition: `backend` accumulates every guide, each holding all the beauty's
+// samples (none added later by changeAovs). requireDenoiseGuides throws std::invalid_argument
+// naming the guide that fails it.
+bool denoiseGuidesComplete(const Backend& backend);
 void requireDenoiseGuides(const Backend& backend);
 
 // "cpu", or "cuda" where built. Throws std::invalid_argument naming the backends available,

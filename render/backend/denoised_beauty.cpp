@@ -8,11 +8,26 @@
 
 namespace pt {
 
+namespace {
+
+bool guideComplete(const Backend& backend, Aov guide) {
+    return (backend.aovs() & aovBit(guide)) && backend.aovSamples(guide) == backend.stats().samplesPerPixel;
+}
+
+}  // namespace
+
+bool denoiseGuidesComplete(const Backend& backend) {
+    for (const Aov guide : kDenoiseGuides) {
+        if (!guideComplete(backend, guide)) return false;
+    }
+    return true;
+}
+
 void requireDenoiseGuides(const Backend& backend) {
     const uint32_t samples = backend.stats().samplesPerPixel;
     for (const Aov guide : kDenoiseGuides) {
         requireAov(backend.aovs(), guide);
-        if (backend.aovSamples(guide) != samples) {
+        if (!guideComplete(backend, guide)) {
             throw std::invalid_argument(std::string("denoiser guide \"") + aovName(guide) + "\" holds " +
                                         std::to_string(backend.aovSamples(guide)) + " of the beauty's " +
                                         std::to_string(samples) + " samples (reset the accumulation)");

@@ -54,6 +54,24 @@ TEST(CommandStack, UndoAndRedoWalkTheHistoryInOrder) {
     EXPECT_FALSE(stack.canRedo());
 }
 
+// The revision counts every change of the document, a drag's folded steps included (the
+// undo history's states do not: a drag is one of them).
+TEST(CommandStack, TheRevisionGrowsWithEveryChange) {
+    Document doc;
+    CommandStack stack;
+    const uint64_t start = stack.revision();
+    stack.execute(doc, setExposure(doc, 1.0f, "drag"));
+    stack.execute(doc, setExposure(doc, 2.0f, "drag"));  // folds into the first
+    EXPECT_EQ(stack.undoDepth(), 1u);
+    EXPECT_EQ(stack.revision(), start + 2);
+    stack.undo(doc);
+    stack.redo(doc);
+    EXPECT_EQ(stack.revision(), start + 4);
+    EXPECT_EQ(stack.undo(doc), SceneChanges::Display);
+    EXPECT_EQ(stack.undo(doc), SceneChanges::None);
+    EXPECT_EQ(stack.revision(), start + 5) << "nothing to undo changes nothing";
+}
+
 // The history list (Edit > History): applied steps oldest first, undone ones next-to-redo first.
 TEST(CommandStack, TheHistoryListsAppliedAndUndoneSteps) {
     Document doc;

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "support/scene_builder.h"
 
 namespace pt::editor {
@@ -20,9 +22,15 @@ Scene twoBoxes() {
     return scene;
 }
 
+// The outline of a selection, as the window draws it.
+std::vector<ImageSegment> outline(const Scene& scene, int32_t object, int32_t instance) {
+    const std::optional<WorldBox> box = selectionBounds(scene, object, instance);
+    return box ? boxInImage(*box, scene.camera, 100, 100) : std::vector<ImageSegment>{};
+}
+
 TEST(SelectionBox, TheBoxInFrontProjectsAroundItsCentre) {
     const Scene scene = twoBoxes();
-    const std::vector<ImageSegment> edges = selectionBoxInImage(scene, 0, -1, 100, 100);
+    const std::vector<ImageSegment> edges = outline(scene, 0, -1);
     ASSERT_EQ(edges.size(), 12u);
     float minX = 1e9f, maxX = -1e9f, minY = 1e9f, maxY = -1e9f;
     for (const ImageSegment& e : edges) {
@@ -42,10 +50,10 @@ TEST(SelectionBox, TheBoxInFrontProjectsAroundItsCentre) {
 
 TEST(SelectionBox, NothingBehindTheCameraOrUnselected) {
     const Scene scene = twoBoxes();
-    EXPECT_TRUE(selectionBoxInImage(scene, 1, -1, 100, 100).empty()) << "the box behind the camera";
-    EXPECT_EQ(selectionBoxInImage(scene, -1, 0, 100, 100).size(), 12u) << "an instance by index";
-    EXPECT_TRUE(selectionBoxInImage(scene, -1, -1, 100, 100).empty());
-    EXPECT_TRUE(selectionBoxInImage(scene, 7, -1, 100, 100).empty());
+    EXPECT_TRUE(outline(scene, 1, -1).empty()) << "the box behind the camera";
+    EXPECT_EQ(outline(scene, -1, 0).size(), 12u) << "an instance by index";
+    EXPECT_FALSE(selectionBounds(scene, -1, -1).has_value());
+    EXPECT_FALSE(selectionBounds(scene, 7, -1).has_value());
 }
 
 }  // namespace
