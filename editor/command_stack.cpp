@@ -16,6 +16,15 @@ SceneChangeMask CommandStack::execute(Document& doc, std::unique_ptr<EditCommand
     return changes;
 }
 
+SceneChangeMask CommandStack::cancelMerge(Document& doc) {
+    if (!mergeOpen_ || undo_.empty()) return SceneChanges::None;
+    mergeOpen_ = false;
+    const SceneChangeMask changes = undo_.back().command->revert(doc);
+    undo_.pop_back();
+    ++revision_;
+    return changes;
+}
+
 SceneChangeMask CommandStack::undo(Document& doc) {
     mergeOpen_ = false;
     if (undo_.empty()) return SceneChanges::None;

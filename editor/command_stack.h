@@ -17,6 +17,9 @@ public:
     SceneChangeMask undo(Document& doc);  // None when there is nothing to undo
     SceneChangeMask redo(Document& doc);
     void closeMerge() { mergeOpen_ = false; }
+    // Reverts the open drag's step and forgets it, as if the drag never happened (Esc during a
+    // gizmo drag): no redo entry is left. None where no drag is open.
+    SceneChangeMask cancelMerge(Document& doc);
     void clear();
 
     bool canUndo() const { return !undo_.empty(); }

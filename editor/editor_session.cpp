@@ -70,6 +70,16 @@ bool EditorSession::undo() {
     return true;
 }
 
+bool EditorSession::cancelDrag() {
+    const auto start = Clock::now();
+    const std::string label = "Cancel " + history_.undoLabel();
+    const size_t depth = history_.undoDepth();
+    const SceneChangeMask changes = history_.cancelMerge(doc_);
+    if (history_.undoDepth() == depth) return false;
+    noteEdit(label, changes, start);
+    return true;
+}
+
 bool EditorSession::redo() {
     if (!history_.canRedo()) return false;
     const auto start = Clock::now();

@@ -51,6 +51,8 @@ public:
     bool undo();
     bool redo();
     void endDrag() { history_.closeMerge(); }
+    // The drag under way undone and forgotten (Esc during a gizmo drag); false where none is open.
+    bool cancelDrag();
     // Renders at width x height without making that an edit (the editor's --size, or a render
     // that follows the viewport): saving writes the file's own resolution unless the user
     // changes the resolution afterwards.

@@ -1,6 +1,10 @@
 #include "editor/object_edits.h"
 
 #include <algorithm>
+#include <cmath>
+
+#include "editor/selection_box.h"
+#include "render/integrator/camera.h"
 
 namespace pt::editor {
 namespace {
@@ -123,11 +127,30 @@ std::unique_ptr<EditCommand> deleteObject(const Document& doc, uint32_t object) 
     return layoutCommand(doc, "Delete " + before.objects.at(object).name, changes, std::move(after));
 }
 
-std::unique_ptr<EditCommand> duplicateObject(const Document& doc, uint32_t object) {
+Vec3 duplicateOffset(const Scene& scene, uint32_t object) {
+    const std::optional<WorldBox> box = selectionBounds(scene, int32_t(object), -1);
+    if (!box) return Vec3(0.0f);
+    const RenderCamera camera = makeRenderCamera(scene.camera, 1, 1);
+    const Vec3 right = normalize(camera.right), extent = box->hi - box->lo;
+    const float width =
+        std::fabs(right.x) * extent.x + std::fabs(right.y) * extent.y + std::fabs(right.z) * extent.z;
+    // Toward the middle of the view, where there is room to see it.
+    const float x = projectToImage(camera, 0.5f * (box->lo + box->hi), 1, 1, nullptr).x;
+    return right * (x > 0.5f ? -1.1f * width : 1.1f * width);
+}
+
+std::unique_ptr<EditCommand> duplicateObject(const Document& doc, uint32_t object, Vec3 offset) {
     SceneLayout after = layoutOf(doc.scene);
     const int32_t source = int32_t(object);
     const int32_t copy = int32_t(after.objects.size());
     SceneObject duplicate = after.objects.at(object);
+    ObjectTransform& moved = duplicate.transform;
+    if (moved.useMatrix) {
+        for (int axis = 0; axis < 3; ++axis) moved.matrix[12 + axis] += offset[axis];
+    } else {
+        moved.translate += offset;
+    }
+    const Affine3 shift = translationTransform(offset);
     const std::string oldName = duplicate.name;
     duplicate.name = (oldName.empty() ? std::string("object") : oldName) + " copy";
     after.objects.push_back(duplicate);
@@ -137,6 +160,7 @@ std::unique_ptr<EditCommand> duplicateObject(const Document& doc, uint32_t objec
         Instance instance = after.instances[i];
         instance.object = copy;
         instance.name += " copy";
+        instance.objectToWorld = shift * instance.objectToWorld;
         after.instances.push_back(std::move(instance));
     }
     const size_t lightCount = after.lights.size();
@@ -144,6 +168,7 @@ std::unique_ptr<EditCommand> duplicateObject(const Document& doc, uint32_t objec
         if (after.lights[i].object != source) continue;
         Light light = after.lights[i];
         light.object = copy;
+        light.position += offset;
         after.lights.push_back(std::move(light));
     }
     const SceneChangeMask changes =

@@ -13,8 +13,13 @@ std::unique_ptr<EditCommand> renameObject(const Document& doc, uint32_t object, 
 // Hidden objects are not traced; hiding is a view state and is not saved in scene JSON.
 std::unique_ptr<EditCommand> setObjectHidden(const Document& doc, uint32_t object, bool hidden);
 std::unique_ptr<EditCommand> deleteObject(const Document& doc, uint32_t object);
-// The copy sits where the original is, named "<name> copy", sharing its meshes and materials.
-std::unique_ptr<EditCommand> duplicateObject(const Document& doc, uint32_t object);
+// The copy, named "<name> copy", shares the original's meshes and materials and stands `offset`
+// (world) from it, with everything it placed (instances, the file's lights).
+std::unique_ptr<EditCommand> duplicateObject(const Document& doc, uint32_t object, Vec3 offset = Vec3(0.0f));
+// Where a copy is seen beside the original rather than inside it: along the camera's right or
+// left, toward the middle of the view, by the object's width in that direction and a tenth more
+// (zero for an object without geometry).
+Vec3 duplicateOffset(const Scene& scene, uint32_t object);
 // Shows material variant `variant` of a glTF object (KHR_materials_variants; -1: the file's
 // default materials); saved with the scene.
 std::unique_ptr<EditCommand> setObjectVariant(const Document& doc, uint32_t object, int32_t variant);

@@ -73,25 +73,25 @@ std::unique_ptr<EditCommand> setMaterial(const Document& doc, uint32_t material,
         [material](Document& d, const Material& m) { d.scene.materials.at(material).params = m; });
 }
 
-std::unique_ptr<EditCommand> setObjectTransform(const Document& doc, uint32_t object, const ObjectTransform& after) {
+std::unique_ptr<EditCommand> setObjectTransform(const Document& doc, uint32_t object,
+                                                const ObjectTransform& after, const std::string& verb) {
     const ObjectPlacement before = placementOf(doc.scene, object);
     // Lights placed by the object move with it: the light table follows the transform.
     const SceneChangeMask changes =
         SceneChanges::Transforms | (before.lights.empty() ? SceneChanges::None : SceneChanges::Lights);
-    return makeValueCommand<ObjectPlacement>("Move " + doc.scene.objects.at(object).name, key("object-transform", object),
-                                             changes, before, movedPlacement(before, after),
-                                             [object](Document& d, const ObjectPlacement& p) {
-                                                 assignPlacement(d.scene, object, p);
-                                             });
+    return makeValueCommand<ObjectPlacement>(
+        verb + " " + doc.scene.objects.at(object).name, key("object-transform", object), changes, before,
+        movedPlacement(before, after),
+        [object](Document& d, const ObjectPlacement& p) { assignPlacement(d.scene, object, p); });
 }
 
-std::unique_ptr<EditCommand> setInstanceTransform(const Document& doc, uint32_t instance, const Affine3& after) {
+std::unique_ptr<EditCommand> setInstanceTransform(const Document& doc, uint32_t instance,
+                                                  const Affine3& after, const std::string& verb) {
     const Instance& target = doc.scene.instances.at(instance);
-    return makeValueCommand<Affine3>("Move " + target.name, key("instance-transform", instance),
-                                     SceneChanges::Transforms, target.objectToWorld, after,
-                                     [instance](Document& d, const Affine3& m) {
-                                         d.scene.instances.at(instance).objectToWorld = m;
-                                     });
+    return makeValueCommand<Affine3>(
+        verb + " " + target.name, key("instance-transform", instance), SceneChanges::Transforms,
+        target.objectToWorld, after,
+        [instance](Document& d, const Affine3& m) { d.scene.instances.at(instance).objectToWorld = m; });
 }
 
 std::unique_ptr<EditCommand> setLight(const Document& doc, uint32_t light, const Light& after) {

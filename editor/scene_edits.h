@@ -13,10 +13,14 @@
 namespace pt::editor {
 
 std::unique_ptr<EditCommand> setMaterial(const Document& doc, uint32_t material, const Material& after);
-// Moves the object and everything placed under it (its instances and its file's lights).
-std::unique_ptr<EditCommand> setObjectTransform(const Document& doc, uint32_t object, const ObjectTransform& after);
+// Moves the object and everything placed under it (its instances and its file's lights). `verb`
+// names the step in the history ("Move", "Rotate", "Scale": what the gizmo did).
+std::unique_ptr<EditCommand> setObjectTransform(const Document& doc, uint32_t object,
+                                                const ObjectTransform& after,
+                                                const std::string& verb = "Move");
 // For instances no object owns (scenes built in code).
-std::unique_ptr<EditCommand> setInstanceTransform(const Document& doc, uint32_t instance, const Affine3& after);
+std::unique_ptr<EditCommand> setInstanceTransform(const Document& doc, uint32_t instance,
+                                                  const Affine3& after, const std::string& verb = "Move");
 std::unique_ptr<EditCommand> setLight(const Document& doc, uint32_t light, const Light& after);
 std::unique_ptr<EditCommand> setCamera(const Document& doc, const Camera& after);
 std::unique_ptr<EditCommand> setRenderSettings(const Document& doc, const RenderSettings& after);

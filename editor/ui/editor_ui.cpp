@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "assets/input_error.h"
+#include "editor/object_edits.h"
 #include "editor/ui/recent_files.h"
 
 namespace pt::editor {
@@ -31,6 +32,17 @@ void EditorUi::apply(std::unique_ptr<EditCommand> command) {
 void EditorUi::endDrag() {
     queued_.push_back([](EditorSession& s) { s.endDrag(); });
     flushEdits();
+}
+
+void EditorUi::cancelDrag() {
+    queued_.push_back([](EditorSession& s) { s.cancelDrag(); });
+    flushEdits();
+}
+
+void EditorUi::duplicateBeside(uint32_t object) {
+    const int32_t copy = int32_t(doc().scene.objects.size());
+    apply(duplicateObject(doc(), object, duplicateOffset(doc().scene, object)));
+    selection = {Selection::Kind::Object, copy, -1};
 }
 
 void EditorUi::undo() {

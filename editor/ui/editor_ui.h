@@ -57,6 +57,9 @@ public:
     // Edits go through here: applied now when the render thread allows, else queued in order.
     void apply(std::unique_ptr<EditCommand> command);
     void endDrag();  // after ImGui::IsItemDeactivatedAfterEdit(): closes the undo step
+    void cancelDrag();  // the open step undone and forgotten (Esc during a gizmo drag)
+    // Duplicate (Ctrl+D): the copy beside the original as the camera sees it, and selected.
+    void duplicateBeside(uint32_t object);
     void undo();
     void redo();
     void flushEdits();  // once per frame: applies what was queued

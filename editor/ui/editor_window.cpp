@@ -325,9 +325,12 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
         followViewport(ui, resolution, viewWidth * scale, viewHeight * scale, input.moving());
         drawPanels(ui, view, float(ww), float(wh) - top);  // the status bar is a frame high, as the menu bar
         drawStatusBar(ui, float(ww), float(wh));
-        if (!view.hasImage()) drawViewportStatus(ui, viewWidth, viewHeight);
-        else
+        if (!view.hasImage()) {
+            drawViewportStatus(ui, viewWidth, viewHeight);
+        } else {
             drawSelectionOutline(ui, outline, image);
+            input.gizmo().draw(ui, image);
+        }
         drawDialogs(ui);
         ImGui::Render();
         glViewport(0, 0, fbw, fbh);

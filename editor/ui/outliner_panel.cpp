@@ -18,7 +18,7 @@ void objectContextMenu(EditorUi& ui, uint32_t object) {
     if (inputName("Name", name)) ui.apply(renameObject(ui.doc(), object, name));
     const bool hidden = objectHidden(scene, object);
     if (ImGui::MenuItem(hidden ? "Show" : "Hide", "H")) ui.apply(setObjectHidden(ui.doc(), object, !hidden));
-    if (ImGui::MenuItem("Duplicate", "Ctrl+D")) ui.apply(duplicateObject(ui.doc(), object));
+    if (ImGui::MenuItem("Duplicate", "Ctrl+D")) ui.duplicateBeside(object);
     if (ImGui::MenuItem("Delete", "Del")) {
         ui.apply(deleteObject(ui.doc(), object));
         ui.selection = {};

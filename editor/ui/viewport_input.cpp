@@ -115,7 +115,7 @@ bool ViewportInput::shortcuts(EditorUi& ui) {
         ui.apply(deleteObject(ui.doc(), object));
         ui.selection = {};
     } else if (keys.chord(GLFW_KEY_D, kModCtrl)) {
-        ui.apply(duplicateObject(ui.doc(), object));
+        ui.duplicateBeside(object);
     } else if (keys.chord(GLFW_KEY_H, 0) || keys.chord(GLFW_KEY_H, kModShift)) {
         ui.apply(setObjectHidden(ui.doc(), object, !objectHidden(ui.doc().scene, object)));
     }
@@ -123,8 +123,11 @@ bool ViewportInput::shortcuts(EditorUi& ui) {
 }
 
 bool ViewportInput::handle(EditorUi& ui, const ImageRect& image, float frameSeconds) {
-    navigate(ui, image, frameSeconds);
-    clickTools(ui, image);
+    // A camera drag under way keeps the mouse; else the gizmo may take it.
+    if (dragging_ || !gizmo_.handle(ui, image)) {
+        navigate(ui, image, frameSeconds);
+        clickTools(ui, image);
+    }
     return shortcuts(ui);
 }
 

@@ -128,6 +128,28 @@ TEST(CommandStack, CloseMergeEndsTheStep) {
     EXPECT_EQ(exposure(doc), 0.0f);
 }
 
+TEST(CommandStack, CancelMergeForgetsTheOpenDragOnly) {
+    Document doc;
+    CommandStack stack;
+    stack.execute(doc, setExposure(doc, 1.0f));  // a step of its own: no drag is open
+    EXPECT_EQ(stack.cancelMerge(doc), SceneChanges::None);
+    EXPECT_EQ(stack.undoDepth(), 1u);
+    stack.execute(doc, setExposure(doc, 2.0f, "exposure"));
+    stack.execute(doc, setExposure(doc, 3.0f, "exposure"));
+    const uint64_t revision = stack.revision();
+    EXPECT_EQ(stack.cancelMerge(doc), SceneChanges::Display);
+    EXPECT_EQ(exposure(doc), 1.0f) << "back to before the drag";
+    EXPECT_EQ(stack.undoDepth(), 1u);
+    EXPECT_FALSE(stack.canRedo()) << "nothing to redo: the drag never happened";
+    EXPECT_GT(stack.revision(), revision);
+    EXPECT_EQ(stack.cancelMerge(doc), SceneChanges::None) << "a second cancel leaves the step before alone";
+    EXPECT_EQ(stack.undoDepth(), 1u);
+    stack.execute(doc, setExposure(doc, 4.0f, "exposure"));
+    stack.closeMerge();
+    EXPECT_EQ(stack.cancelMerge(doc), SceneChanges::None) << "a finished drag is undone, not cancelled";
+    EXPECT_EQ(exposure(doc), 4.0f);
+}
+
 TEST(CommandStack, DifferentOrEmptyKeysDoNotFold) {
     Document doc;
     CommandStack stack;

@@ -12,6 +12,7 @@
 #include "assets/scene_test_helpers.h"
 #include "editor/command_stack.h"
 #include "editor/scene_equality.h"
+#include "editor/selection_box.h"
 #include "support/load_scene.h"
 #include "support/test_paths.h"
 
@@ -248,6 +249,51 @@ TEST(ObjectEdits, DuplicateAShape) {
         instance.object = 4;
         s.instances.push_back(instance);
     });
+}
+
+TEST(ObjectEdits, ADuplicateStandsBesideTheOriginal) {
+    Document doc = fileDocument();
+    doc.scene.camera.position = {0, 0, 10};
+    doc.scene.camera.lookAt = {0, 0, 0};  // the camera's right is +X
+    const Vec3 offset = duplicateOffset(doc.scene, kBall);
+    const std::optional<WorldBox> box = selectionBounds(doc.scene, kBall, -1);
+    ASSERT_TRUE(box.has_value());
+    EXPECT_NEAR(offset.x, -1.1f * (box->hi.x - box->lo.x), 1e-5f)
+        << "its width and a tenth, to the left: it stands right of the middle";
+    EXPECT_EQ(offset.y, 0.0f);
+    EXPECT_EQ(offset.z, 0.0f);
+    CommandStack stack;
+    stack.execute(doc, duplicateObject(doc, kBall, offset));
+    const std::optional<WorldBox> copy = selectionBounds(doc.scene, 4, -1);
+    ASSERT_TRUE(copy.has_value());
+    EXPECT_LT(copy->hi.x, box->lo.x) << "the copy's box clears the original's";
+    EXPECT_NEAR(copy->lo.y, box->lo.y, 1e-5f);
+    EXPECT_NEAR(doc.scene.objects[4].transform.translate.x,
+                doc.scene.objects[kBall].transform.translate.x + offset.x, 1e-5f)
+        << "saved where it is seen";
+    // Left of the middle: to the right.
+    doc.scene.camera.position = {4, 0, 10};
+    doc.scene.camera.lookAt = {4, 0, 0};
+    EXPECT_NEAR(duplicateOffset(doc.scene, kBall).x, 1.1f * (box->hi.x - box->lo.x), 1e-5f);
+}
+
+TEST(ObjectEdits, ADuplicatesLightsMoveWithIt) {
+    Document doc = fileDocument();
+    const size_t lights = doc.scene.lights.size();
+    const Vec3 offset{0, 0, 3};
+    CommandStack stack;
+    stack.execute(doc, duplicateObject(doc, kLamps, offset));
+    std::vector<Vec3> original, copied;
+    for (const Light& light : doc.scene.lights) {
+        if (light.object == kLamps) original.push_back(light.position);
+        if (light.object == 4) copied.push_back(light.position);
+    }
+    ASSERT_EQ(doc.scene.lights.size(), lights + 3);
+    ASSERT_EQ(copied.size(), original.size());
+    for (size_t i = 0; i < copied.size(); ++i) {
+        EXPECT_NEAR(copied[i].z, original[i].z + 3.0f, 1e-5f);
+        EXPECT_EQ(copied[i].x, original[i].x);
+    }
 }
 
 TEST(ObjectEdits, RenameLight) {
