@@ -9,6 +9,7 @@
 
 #include "assets/exr_layers.h"
 #include "editor/scene_edits.h"
+#include "editor/ui/file_picker.h"
 #include "editor/ui/input_events.h"
 #include "editor/ui/widgets.h"
 
@@ -17,19 +18,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A text field holding a path between frames.
-struct PathField {
-    char text[1024] = {};
-    void set(const std::string& s) { std::snprintf(text, sizeof(text), "%s", s.c_str()); }
-};
+constexpr float kFieldWidth = 620.0f, kListHeight = 260.0f;
 
-// A path field that Return confirms. ImGui 1.86 sees Return only if it is down when a frame
-// starts, so a quick press and release within one slow frame was lost (the file was not saved
-// or opened); the press event (InputEvents) counts too while the field has the keyboard.
-bool pathFieldEntered(const char* label, PathField& path) {
-    const bool entered =
-        ImGui::InputText(label, path.text, sizeof(path.text), ImGuiInputTextFlags_EnterReturnsTrue);
-    return entered || (ImGui::IsItemActive() && inputEvents().tapped(GLFW_KEY_ENTER));
+// The folder the document's file is in ("" for a scene never saved).
+std::string sceneFolder(const EditorUi& ui) {
+    const std::string& source = ui.doc().scene.sourcePath;
+    return source.empty() ? std::string() : fs::absolute(source).parent_path().string();
 }
 
 std::string defaultScenePath(const Scene& scene) {
@@ -61,45 +55,46 @@ void errorDialog(EditorUi& ui) {
 }
 
 void openDialog(EditorUi& ui) {
-    static PathField path;
+    static FilePicker picker({".json", ".gltf", ".glb", ".obj"}, false);
     if (ui.showOpenDialog) {
+        // Where the last Open left off (what was typed stays), else the scene's folder.
+        const std::string folder = sceneFolder(ui);
+        const std::string last = picker.path();
+        picker.start(!last.empty() ? last : folder.empty() ? std::string() : folder + "/", folder);
         ImGui::OpenPopup("Open scene");
         ui.showOpenDialog = false;
     }
     if (!ImGui::BeginPopupModal("Open scene", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
     ImGui::TextUnformatted(".json, .gltf, .glb or .obj (or drop a file on the window)");
-    ImGui::SetNextItemWidth(500);
-    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();  // type, then Return
-    const bool enter = pathFieldEntered("Path", path);
+    const bool chosen = picker.draw("Path", kFieldWidth, kListHeight);
+    if (!ui.recentFiles.empty()) ImGui::TextDisabled("Recent:");
     for (const std::string& recent : ui.recentFiles) {
-        if (ImGui::Selectable(recent.c_str())) path.set(recent);
+        if (ImGui::Selectable(recent.c_str())) picker.setPath(recent);
     }
-    if (ImGui::Button("Open") || enter) {
-        ui.openScene(path.text);
+    if (ImGui::Button("Open") || chosen) {
+        ui.openScene(picker.path());
         ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
-    if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+    if (dialogCancelled()) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
 }
 
 void saveDialog(EditorUi& ui) {
-    static PathField path;
+    static FilePicker picker({".json"}, true);
     if (ui.showSaveDialog) {
-        path.set(defaultScenePath(ui.doc().scene));
+        picker.start(fs::absolute(defaultScenePath(ui.doc().scene)).string(), sceneFolder(ui));
         ImGui::OpenPopup("Save scene");
         ui.showSaveDialog = false;
     }
     if (ImGui::BeginPopupModal("Save scene", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        ImGui::SetNextItemWidth(500);
-        if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-        const bool enter = pathFieldEntered("JSON path", path);
-        if (ImGui::Button("Save") || enter) {
-            ui.saveScene(path.text, false);
+        const bool chosen = picker.draw("JSON path", kFieldWidth, kListHeight);
+        if (ImGui::Button("Save") || chosen) {
+            ui.saveScene(picker.path(), false);
             ImGui::CloseCurrentPopup();
         }
         ImGui::SameLine();
-        if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+        if (dialogCancelled()) ImGui::CloseCurrentPopup();
         ImGui::EndPopup();
     }
     if (!ui.pendingOverwrite.empty()) ImGui::OpenPopup("Replace file?");
@@ -112,7 +107,7 @@ void saveDialog(EditorUi& ui) {
             ImGui::CloseCurrentPopup();
         }
         ImGui::SameLine();
-        if (ImGui::Button("Cancel")) {
+        if (dialogCancelled()) {
             ui.pendingOverwrite.clear();
             ImGui::CloseCurrentPopup();
         }
@@ -166,11 +161,14 @@ void exrLayerChoice(EditorUi& ui) {
     }
 }
 
+// The EXR's path is the picker's; the display image's follows it into the folder it browses to,
+// and takes a clicked PNG, JPEG or TIFF.
 void exportDialog(EditorUi& ui) {
-    static PathField exr, display;
+    static FilePicker exr({".exr", ".png", ".jpg", ".jpeg", ".tif", ".tiff"}, true);
+    static PathField display;
     if (ui.showExportDialog) {
-        const fs::path base = fs::path(defaultScenePath(ui.doc().scene)).replace_extension("");
-        exr.set(base.string() + ".exr");
+        const fs::path base = fs::absolute(defaultScenePath(ui.doc().scene)).replace_extension("");
+        exr.start(base.string() + ".exr", sceneFolder(ui));
         display.set(base.string() + ".png");
         ImGui::OpenPopup("Export render");
         ui.showExportDialog = false;
@@ -179,20 +177,26 @@ void exportDialog(EditorUi& ui) {
     ImGui::TextUnformatted("Scene-linear EXR with AOV layers, and a display-referred image (PNG, JPEG or TIFF by");
     ImGui::TextUnformatted("extension, through the current display settings). Leave a path empty to skip that file.");
     ImGui::TextUnformatted("Existing files are replaced.");
-    ImGui::SetNextItemWidth(500);
-    ImGui::InputText("EXR", exr.text, sizeof(exr.text));
-    ImGui::SetNextItemWidth(500);
+    const std::string before = exr.path();
+    exr.draw("EXR", kFieldWidth, 0.6f * kListHeight);
+    if (exr.fileClicked() && fs::path(exr.path()).extension() != ".exr") {
+        display.set(exr.path());  // a display image clicked: it is that field's, the EXR's stays
+        exr.setPath(before);
+    } else if (exr.folderChanged() && display.text[0] != '\0') {
+        display.set((fs::path(exr.browser().folder()) / fs::path(display.text).filename()).string());
+    }
+    ImGui::SetNextItemWidth(kFieldWidth);
     ImGui::InputText("Display image", display.text, sizeof(display.text));
     ImGui::Separator();
     exrLayerChoice(ui);
     ImGui::Separator();
     ImGui::Text("%u samples per pixel so far", ui.lastFrame.stats.samplesPerPixel);
     if (ImGui::Button("Export")) {
-        ui.exportRender(exr.text, display.text);
+        ui.exportRender(exr.path(), display.text);
         ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
-    if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+    if (dialogCancelled()) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
 }
 
