@@ -19,7 +19,7 @@ float focalLength(const Camera& c) {
 
 void depthOfField(EditorUi& ui, Camera& c, bool& changed) {
     static bool useFStop = false;
-    ImGui::Checkbox("Aperture as f-stop", &useFStop);
+    checkbox("Aperture as f-stop", &useFStop);
     if (useFStop) {
         // f-number N = focal length / aperture diameter.
         float n = c.apertureRadius > 0.0f ? focalLength(c) / (2.0f * c.apertureRadius) : 0.0f;

@@ -52,7 +52,11 @@ void drawReference(EditorUi& ui) {
 bool comboOfNames(const char* label, std::string& value, const std::vector<std::string>& names,
                   const char* none = nullptr) {
     bool changed = false;
-    if (!ImGui::BeginCombo(label, value.empty() && none ? none : value.c_str())) return false;
+    const bool open = ImGui::BeginCombo(label, value.empty() && none ? none : value.c_str());
+    if (!open) {
+        tooltipIfCut(label);
+        return false;
+    }
     if (none && ImGui::Selectable(none, value.empty())) value.clear(), changed = true;
     for (const std::string& name : names) {
         if (ImGui::Selectable(name.c_str(), name == value)) value = name, changed = true;
@@ -93,7 +97,9 @@ void drawDisplayPanel(EditorUi& ui, const DisplayView& view) {
     ViewerSettings v = ui.doc().viewer;
     bool changed = false;
     const std::string current = v.aov < 0 ? "beauty" : aovName(Aov(v.aov));
-    if (ImGui::BeginCombo("AOV", current.c_str())) {
+    const bool aovOpen = ImGui::BeginCombo("AOV", current.c_str());
+    if (!aovOpen) tooltipIfCut("AOV");
+    if (aovOpen) {
         if (ImGui::Selectable("beauty", v.aov < 0)) v.aov = -1, changed = true;
         for (int32_t a = 0; a < int32_t(Aov::Count); ++a) {
             if (ImGui::Selectable(aovName(Aov(a)), v.aov == a)) v.aov = a, changed = true;
@@ -101,7 +107,7 @@ void drawDisplayPanel(EditorUi& ui, const DisplayView& view) {
         ImGui::EndCombo();
     }
     // Turning it on restarts the accumulation once, for the guides; after that it is a display switch.
-    changed |= ImGui::Checkbox("Denoise (a-trous, guided by albedo, normal, depth)", &v.denoise);
+    changed |= checkbox("Denoise (a-trous, guided by albedo, normal, depth)", &v.denoise);
     // [Auto][slider] Exposure: the button before the slider, so the label stays in its column.
     const float autoWidth = ImGui::CalcTextSize("Auto").x + 2.0f * ImGui::GetStyle().FramePadding.x;
     const float sliderWidth = ImGui::CalcItemWidth() - autoWidth - ImGui::GetStyle().ItemInnerSpacing.x;
@@ -119,13 +125,15 @@ void drawDisplayPanel(EditorUi& ui, const DisplayView& view) {
     const ColorView& color = ui.colorView;
     if (color.config) {
         bool ocio = !v.builtinDisplay;
-        if (ImGui::Checkbox("OpenColorIO view", &ocio)) v.builtinDisplay = !ocio, changed = true;
+        if (checkbox("OpenColorIO view", &ocio)) v.builtinDisplay = !ocio, changed = true;
     }
     if (color.config && !v.builtinDisplay) {
         drawColorView(ui, color);
     } else {
         int op = int(v.display.toneMapper);
-        if (ImGui::Combo("Tone mapper", &op, "Standard (sRGB)\0Reinhard\0ACES fitted\0AgX\0")) {
+        const bool picked = ImGui::Combo("Tone mapper", &op, "Standard (sRGB)\0Reinhard\0ACES fitted\0AgX\0");
+        tooltipIfCut("Tone mapper");
+        if (picked) {
             v.display.toneMapper = ToneMapper(op);
             changed = true;
         }
@@ -134,7 +142,7 @@ void drawDisplayPanel(EditorUi& ui, const DisplayView& view) {
                                    ImGuiSliderFlags_Logarithmic);
         }
     }
-    changed |= ImGui::Checkbox("Dither", &v.display.dither);
+    changed |= checkbox("Dither", &v.display.dither);
     if (!color.error.empty()) ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "%s", color.error.c_str());
     if (!view.shaderError().empty()) {
         ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "Built-in operators shown: %s", view.shaderError().c_str());

@@ -126,6 +126,8 @@ void drawRenderPanel(EditorUi& ui);
 void drawEnvironmentPanel(EditorUi& ui);
 void drawDisplayPanel(EditorUi& ui, const DisplayView& view);
 void drawStatsPanel(EditorUi& ui);
+// The main figures over the viewport's top right corner (PanelLayout::statsOverlay).
+void drawStatsOverlay(EditorUi& ui, const ImageRect& image);
 void drawDialogs(EditorUi& ui);
 // The bar at the window's foot: the last notice, and the render's progress. It is a frame high
 // (ImGui::GetFrameHeight(), as the menu bar), which the viewport leaves free.

@@ -20,6 +20,7 @@
 #include "editor/ui/redraw_policy.h"
 #include "editor/ui/screenshot.h"
 #include "editor/ui/viewport_input.h"
+#include "editor/ui/viewport_toolbar.h"
 #include "editor/viewport_resolution.h"
 #if defined(PT_HAVE_CUDA)
 #include "render/backend/cuda/cuda_device.h"
@@ -330,6 +331,7 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
         } else {
             drawSelectionOutline(ui, outline, image);
             input.gizmo().draw(ui, image);
+            drawViewportToolbar(ui, input.gizmo(), image);
         }
         drawDialogs(ui);
         ImGui::Render();

@@ -42,6 +42,7 @@ void drawEnvironmentPanel(EditorUi& ui) {
     } else {
         changed |=
             ImGui::ColorEdit3("Colour", &e.color.x, ImGuiColorEditFlags_HDR | ImGuiColorEditFlags_Float);
+        tooltipIfCut("Colour");
         closeStepIfReleased(ui);
     }
     static FilePicker picker({".hdr", ".exr"}, false);

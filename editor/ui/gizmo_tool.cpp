@@ -161,13 +161,7 @@ bool GizmoTool::handle(EditorUi& ui, const ImageRect& image) {
     return true;
 }
 
-void GizmoTool::toolbar(const ImageRect& image) {
-    ImGui::SetNextWindowPos(ImVec2(image.x + 6.0f, image.y + 6.0f));
-    ImGui::SetNextWindowBgAlpha(0.65f);
-    ImGui::Begin("##gizmo toolbar", nullptr,
-                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
-                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
-                     ImGuiWindowFlags_NoFocusOnAppearing);
+void GizmoTool::toolbarItems() {
     const struct {
         GizmoMode mode;
         const char* label;
@@ -202,12 +196,10 @@ void GizmoTool::toolbar(const ImageRect& image) {
         ImGui::DragFloat("scale step", &steps_.scale, 0.01f, 0.01f, 10.0f, "%.2f");
         ImGui::EndPopup();
     }
-    ImGui::End();
 }
 
 void GizmoTool::draw(const EditorUi& ui, const ImageRect& image) {
     if (image.imageWidth == 0) return;
-    toolbar(image);
     // Where the selection is now (during a drag too: the gizmo follows what it moves).
     const std::optional<Target> selected = target(ui);
     const std::optional<Gizmo> gizmo = selected ? place(ui, image, *selected) : std::nullopt;

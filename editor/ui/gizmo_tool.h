@@ -1,8 +1,8 @@
 #pragma once
 // The transform gizmo in the viewport: its handles drawn over the selected object or instance,
 // a drag of one that moves, turns or scales it as one undo step (each frame of the drag a
-// command that folds into the step; Esc or a right click cancels the drag), and its toolbar at
-// the viewport's top left (mode, world or local axes, snapping and its steps). Keys: 1 move,
+// command that folds into the step; Esc or a right click cancels the drag), and its items of the
+// viewport's toolbar (mode, world or local axes, snapping and its steps). Keys: 1 move,
 // 2 rotate, 3 scale, L world/local; Ctrl held during a drag flips snapping. The geometry is
 // editor/transform_gizmo.h.
 #include <optional>
@@ -19,6 +19,8 @@ public:
     // a handle, or its drag), which is then no click to select or orbit.
     bool handle(EditorUi& ui, const ImageRect& image);
     void draw(const EditorUi& ui, const ImageRect& image);
+    // Mode, world or local axes, snapping and its steps: the viewport toolbar's first items.
+    void toolbarItems();
     bool dragging() const { return drag_.has_value(); }
 
 private:
@@ -28,7 +30,6 @@ private:
     };
     std::optional<Target> target(const EditorUi& ui) const;
     std::optional<Gizmo> place(const EditorUi& ui, const ImageRect& image, const Target& target) const;
-    void toolbar(const ImageRect& image);
     void keys();
     void dragTo(EditorUi& ui, const ImageRect& image);
 

@@ -21,7 +21,7 @@ bool textureToggle(EditorUi& ui, uint32_t material, int slot, const char* label,
     bool on = ref.present();
     const std::string name = ref.present() ? scene.textures[size_t(ref.texture)].name : std::string("off");
     const std::string text = std::string(label) + " texture (" + name + ")";
-    if (!ImGui::Checkbox(text.c_str(), &on)) return false;
+    if (!checkbox(text.c_str(), &on)) return false;
     if (on) {
         ref.texture = off[key];
         off.erase(key);
@@ -61,13 +61,15 @@ void materialEditor(EditorUi& ui, uint32_t index) {
         changed |= dragFloat(ui, "Attenuation distance", &m.attenuationDistance, 0.01f, 1e-4f, kInf);
         changed |= sliderFloat(ui, "Alpha", &m.alpha, 0.0f, 1.0f);
         int mode = int(m.alphaMode);
-        if (ImGui::Combo("Alpha mode", &mode, "opaque\0mask\0blend\0")) {
+        const bool picked = ImGui::Combo("Alpha mode", &mode, "opaque\0mask\0blend\0");
+        tooltipIfCut("Alpha mode");
+        if (picked) {
             m.alphaMode = AlphaMode(mode);
             changed = true;
         }
         changed |= sliderFloat(ui, "Alpha cutoff", &m.alphaCutoff, 0.0f, 1.0f);
         bool doubleSided = m.doubleSided != 0;
-        if (ImGui::Checkbox("Double sided", &doubleSided)) {
+        if (checkbox("Double sided", &doubleSided)) {
             m.doubleSided = doubleSided ? 1u : 0u;
             changed = true;
         }
@@ -113,7 +115,10 @@ void variantEditor(EditorUi& ui, uint32_t object) {
     const SceneObject& o = ui.doc().scene.objects[object];
     if (o.variants.empty()) return;
     const char* shown = o.variant >= 0 ? o.variants[size_t(o.variant)].c_str() : "(default materials)";
-    if (!ImGui::BeginCombo("Material variant", shown)) return;
+    if (!ImGui::BeginCombo("Material variant", shown)) {
+        tooltipIfCut("Material variant");
+        return;
+    }
     int32_t chosen = o.variant;
     for (int32_t v = -1; v < int32_t(o.variants.size()); ++v) {
         ImGui::PushID(v);
@@ -134,7 +139,7 @@ void objectInspector(EditorUi& ui) {
     std::string name = scene.objects[object].name;
     if (inputName("Name", name)) ui.apply(renameObject(ui.doc(), object, name));
     bool hidden = objectHidden(scene, object);
-    if (ImGui::Checkbox("Hidden", &hidden)) ui.apply(setObjectHidden(ui.doc(), object, hidden));
+    if (checkbox("Hidden", &hidden)) ui.apply(setObjectHidden(ui.doc(), object, hidden));
     transformEditor(ui, object);
     variantEditor(ui, object);
     const int32_t instance = ui.selection.instance;

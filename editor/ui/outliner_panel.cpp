@@ -97,7 +97,9 @@ void drawOutliner(EditorUi& ui) {
         ImGui::PopID();
     }
     ImGui::EndChild();
-    ImGui::TextDisabled("Right-click an item to rename, hide, duplicate or delete it.");
+    ImGui::PushTextWrapPos(0.0f);  // wrapped at the column's edge, not cut
+    ImGui::TextDisabled("Right-click: rename, hide, duplicate, delete.");
+    ImGui::PopTextWrapPos();
 }
 
 }  // namespace pt::editor

@@ -22,6 +22,7 @@ float PanelLayout::clampedWidth(float windowWidth) const {
 std::string PanelLayout::serialize() const {
     std::ostringstream out;
     out << "panel_width " << std::lround(width / scale) << "\n";
+    out << "stats_overlay " << (statsOverlay ? 1 : 0) << "\n";
     return out.str();
 }
 
@@ -35,6 +36,7 @@ PanelLayout PanelLayout::parse(const std::string& text, float scale) {
     while (in >> key >> value) {
         if (key == "panel_width" && std::isfinite(value) && value >= kMinWidth && value <= 4096.0f)
             layout.width = value * scale;
+        if (key == "stats_overlay") layout.statsOverlay = value == 1.0f;
     }
     return layout;
 }

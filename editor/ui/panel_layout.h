@@ -1,7 +1,8 @@
 #pragma once
 // The panels' column: its width, which the user drags at its left edge and the editor
-// remembers between runs ($XDG_CONFIG_HOME/pathtracer/layout.txt), and the scale of the whole
-// interface on a high-DPI screen (GLFW's content scale: fonts and sizes grow with it).
+// remembers between runs (with whether the Stats overlay is shown) ($XDG_CONFIG_HOME/pathtracer/layout.txt),
+// and the scale of the whole interface on a high-DPI screen (GLFW's content scale: fonts and sizes grow with
+// it).
 #include <string>
 
 namespace pt::editor {
@@ -14,10 +15,11 @@ struct PanelLayout {
     float width = kDefaultWidth;
     float scale = 1.0f;
     bool resizing = false;  // the user is dragging the column's edge
+    bool statsOverlay = false;  // the Stats figures over the viewport (the toolbar's "Stats")
 
     // The width kept within [kMinWidth, window - kMinViewport] (scaled).
     float clampedWidth(float windowWidth) const;
-    std::string serialize() const;                                   // "panel_width 400\n", unscaled
+    std::string serialize() const;  // "panel_width 400\nstats_overlay 0\n", unscaled
     static PanelLayout parse(const std::string& text, float scale);  // defaults where absent
 };
 

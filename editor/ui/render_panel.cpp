@@ -12,30 +12,32 @@ namespace {
 void backendChoice(EditorUi& ui) {
     const char* names[] = {"cpu", "cuda"};
     int current = ui.backendName == "cuda" ? 1 : 0;
-    if (ImGui::Combo("Backend", &current, names, 2) && names[current] != ui.backendName) ui.switchBackend(names[current]);
+    const bool picked = ImGui::Combo("Backend", &current, names, 2);
+    tooltipIfCut("Backend");
+    if (picked && names[current] != ui.backendName) ui.switchBackend(names[current]);
 }
 
 void integratorSwitches(EditorUi& ui) {
     IntegratorToggles t = ui.doc().toggles;
     bool changed = false;
-    changed |= ImGui::Checkbox("Next-event estimation", &t.nextEventEstimation);
-    changed |= ImGui::Checkbox("Multiple importance sampling", &t.multipleImportance);
-    changed |= ImGui::Checkbox("Russian roulette", &t.russianRoulette);
-    changed |= ImGui::Checkbox("Pixel jitter (antialiasing)", &t.pixelJitter);
-    changed |= ImGui::Checkbox("BVH off (brute force)", &t.bruteForce);
-    changed |= ImGui::Checkbox("Merge small instances (one world-space BLAS)", &t.mergeInstances);
+    changed |= checkbox("Next-event estimation", &t.nextEventEstimation);
+    changed |= checkbox("Multiple importance sampling", &t.multipleImportance);
+    changed |= checkbox("Russian roulette", &t.russianRoulette);
+    changed |= checkbox("Pixel jitter (antialiasing)", &t.pixelJitter);
+    changed |= checkbox("BVH off (brute force)", &t.bruteForce);
+    changed |= checkbox("Merge small instances (one world-space BLAS)", &t.mergeInstances);
     changed |= sliderFloat(ui, "Firefly clamp (0 = off)", &t.clampRadiance, 0.0f, 100.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
     if (ui.backendName == "cuda") {
         ImGui::Separator();
         ImGui::TextUnformatted("GPU scheduling");
-        changed |= ImGui::Checkbox("Auto schedule (time both, run the faster)", &t.autoSchedule);
+        changed |= checkbox("Auto schedule (time both, run the faster)", &t.autoSchedule);
         ImGui::BeginDisabled(t.autoSchedule);
-        changed |= ImGui::Checkbox("Megakernel (else wavefront)", &t.megakernel);
+        changed |= checkbox("Megakernel (else wavefront)", &t.megakernel);
         ImGui::EndDisabled();
-        changed |= ImGui::Checkbox("Path regeneration (megakernel)", &t.pathRegeneration);
-        changed |= ImGui::Checkbox("Stream compaction", &t.streamCompaction);
-        changed |= ImGui::Checkbox("Material sort", &t.materialSort);
-        changed |= ImGui::Checkbox("First-hit cache", &t.firstHitCache);
+        changed |= checkbox("Path regeneration (megakernel)", &t.pathRegeneration);
+        changed |= checkbox("Stream compaction", &t.streamCompaction);
+        changed |= checkbox("Material sort", &t.materialSort);
+        changed |= checkbox("First-hit cache", &t.firstHitCache);
         changed |= sliderFloat(ui, "Rebuild at SAH ratio", &t.rebuildSahRatio, 1.0f, 4.0f);
     }
     if (changed) ui.apply(setToggles(ui.doc(), t));
@@ -55,7 +57,7 @@ void renderSize(EditorUi& ui) {
         return;
     }
     ViewerSettings v = ui.doc().viewer;
-    bool changed = ImGui::Checkbox("Follow the viewport", &v.followViewport);
+    bool changed = checkbox("Follow the viewport", &v.followViewport);
     constexpr float kScales[] = {1.0f, 0.75f, 0.5f, 0.25f};
     const char* names[] = {"100%", "75%", "50%", "25%"};
     int current = 0;
@@ -63,7 +65,9 @@ void renderSize(EditorUi& ui) {
     ImGui::SameLine();
     ImGui::SetNextItemWidth(80.0f);
     ImGui::BeginDisabled(!v.followViewport);
-    if (ImGui::Combo("Scale", &current, names, 4)) {
+    const bool picked = ImGui::Combo("Scale", &current, names, 4);
+    tooltipIfCut("Scale");
+    if (picked) {
         v.resolutionScale = kScales[current];
         changed = true;
     }
@@ -82,13 +86,17 @@ void drawRenderPanel(EditorUi& ui) {
     int depth = int(r.maxDepth);
     bool changed = false;
     ImGui::BeginDisabled(ui.followsViewport());
-    if (ImGui::InputInt2("Resolution", size, ImGuiInputTextFlags_EnterReturnsTrue) && size[0] > 0 && size[1] > 0) {
+    const bool typed = ImGui::InputInt2("Resolution", size, ImGuiInputTextFlags_EnterReturnsTrue);
+    tooltipIfCut("Resolution");
+    if (typed && size[0] > 0 && size[1] > 0) {
         r.width = uint32_t(size[0]);
         r.height = uint32_t(size[1]);
         changed = true;
     }
     ImGui::EndDisabled();
-    if (ImGui::SliderInt("Max depth", &depth, 1, 64)) {
+    const bool slid = ImGui::SliderInt("Max depth", &depth, 1, 64);
+    tooltipIfCut("Max depth");
+    if (slid) {
         r.maxDepth = uint32_t(depth);
         changed = true;
     }
@@ -97,12 +105,14 @@ void drawRenderPanel(EditorUi& ui) {
     ViewerSettings v = ui.doc().viewer;
     int perFrame = int(std::max(v.samplesPerFrame, 1u)), target = int(v.targetSpp);
     bool autoPasses = v.samplesPerFrame == 0;
-    bool viewerChanged = ImGui::Checkbox("Automatic samples per frame", &autoPasses);
+    bool viewerChanged = checkbox("Automatic samples per frame", &autoPasses);
     ImGui::BeginDisabled(autoPasses);
     viewerChanged |= ImGui::SliderInt("Samples per frame", &perFrame, 1, 64);
+    tooltipIfCut("Samples per frame");
     ImGui::EndDisabled();
     closeStepIfReleased(ui);
     viewerChanged |= ImGui::InputInt("Stop at spp (0 = never)", &target);
+    tooltipIfCut("Stop at spp (0 = never)");
     closeStepIfReleased(ui);
     if (viewerChanged) {
         v.samplesPerFrame = autoPasses ? 0u : uint32_t(std::max(perFrame, 1));

@@ -1,5 +1,6 @@
 // Stats: samples, frame times, throughput, scene features and the kernel variant, what the last
-// edit made the backend do and how long it took to reach the screen, memory.
+// edit made the backend do and how long it took to reach the screen, memory. The overlay keeps
+// the main figures in the viewport's corner, seen whatever panels are open above Stats.
 #include <algorithm>
 #include <numeric>
 #include <string>
@@ -64,7 +65,43 @@ void drawFeatures(const BackendStats& s) {
     }
 }
 
+float meanFrameMillis(const EditorUi& ui) {
+    if (ui.frameMillis.empty()) return 0.0f;
+    return std::accumulate(ui.frameMillis.begin(), ui.frameMillis.end(), 0.0f) / float(ui.frameMillis.size());
+}
+
+double megaraysPerSecond(const BackendStats& s) {
+    return s.renderSeconds > 0 ? double(s.rays) / s.renderSeconds / 1e6 : 0.0;
+}
+
 }  // namespace
+
+void drawStatsOverlay(EditorUi& ui, const ImageRect& image) {
+    if (!ui.layout.statsOverlay || image.imageWidth == 0) return;
+    const WorkerStatus status = ui.worker.status();
+    const BackendStats& s = ui.lastFrame.stats;
+    ImGui::SetNextWindowPos(ImVec2(image.x + image.width - 6.0f, image.y + 6.0f), ImGuiCond_Always,
+                            ImVec2(1.0f, 0.0f));
+    ImGui::SetNextWindowBgAlpha(0.55f);
+    ImGui::Begin("##stats overlay", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                     ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
+    ImGui::Text("%s %ux%u  %u spp%s", ui.backendName.c_str(), ui.lastFrame.width, ui.lastFrame.height,
+                s.samplesPerPixel, status.converged ? " (done)" : "");
+    ImGui::Text("%.1f ms/pass  %.1f Mrays/s  UI %.1f ms", status.secondsPerPass * 1e3, megaraysPerSecond(s),
+                double(meanFrameMillis(ui)));
+    const EditLatency edit = ui.session.lastEdit();
+    if (!edit.label.empty()) {
+        if (edit.complete)
+            ImGui::Text("%s: first frame %.1f ms", edit.label.c_str(), edit.toFrameSeconds * 1e3);
+        else
+            ImGui::Text("%s: ...", edit.label.c_str());
+    }
+    if (status.deviceMemoryBytes > 0)
+        ImGui::Text("GPU %.1f MiB", double(status.deviceMemoryBytes) / (1024.0 * 1024.0));
+    ImGui::End();
+}
 
 void drawStatsPanel(EditorUi& ui) {
     if (!ImGui::CollapsingHeader("Stats", ImGuiTreeNodeFlags_DefaultOpen)) return;
@@ -74,13 +111,12 @@ void drawStatsPanel(EditorUi& ui) {
     if (!ui.framePath.empty()) ImGui::TextWrapped("Frames: %s", ui.framePath.c_str());
     ImGui::Text("Samples: %u spp%s", s.samplesPerPixel, status.converged ? " (target reached)" : "");
     if (!ui.frameMillis.empty()) {
-        const float mean = std::accumulate(ui.frameMillis.begin(), ui.frameMillis.end(), 0.0f) / float(ui.frameMillis.size());
+        const float mean = meanFrameMillis(ui);
         ImGui::Text("UI: %.1f ms/frame (%.0f frames/s)", double(mean), mean > 0 ? 1000.0 / double(mean) : 0.0);
         ImGui::PlotLines("##frame ms", ui.frameMillis.data(), int(ui.frameMillis.size()), 0, "ms per UI frame", 0.0f,
                          100.0f, ImVec2(0, 40));
     }
-    ImGui::Text("Render: %.1f ms/pass, %.1f Mrays/s", status.secondsPerPass * 1e3,
-                s.renderSeconds > 0 ? double(s.rays) / s.renderSeconds / 1e6 : 0.0);
+    ImGui::Text("Render: %.1f ms/pass, %.1f Mrays/s", status.secondsPerPass * 1e3, megaraysPerSecond(s));
     if (ui.doc().viewer.denoise && status.denoiseSeconds > 0.0) {
         ImGui::Text("Denoise: %.2f ms a frame", status.denoiseSeconds * 1e3);
     }

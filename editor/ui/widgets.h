@@ -5,11 +5,31 @@
 #include <imgui.h>
 
 #include <cstdio>
+#include <cstring>
 #include <string>
 
 #include "editor/ui/editor_ui.h"
 
 namespace pt::editor {
+
+// Call right after a widget with its label at its right: where the column is too narrow for the
+// label (the user drags it narrow; long labels at the default width), the label is cut at the
+// window's edge, so hovering the widget shows the whole label.
+inline void tooltipIfCut(const char* label) {
+    if (!ImGui::IsItemHovered()) return;
+    const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    if (ImGui::GetItemRectMax().x <= right + 0.5f) return;
+    const char* hidden = std::strstr(label, "##");
+    const std::string shown = hidden ? std::string(label, hidden) : std::string(label);
+    if (!shown.empty()) ImGui::SetTooltip("%s", shown.c_str());
+}
+
+// ImGui::Checkbox with tooltipIfCut.
+inline bool checkbox(const char* label, bool* v) {
+    const bool changed = ImGui::Checkbox(label, v);
+    tooltipIfCut(label);
+    return changed;
+}
 
 // Call right after a widget: ends the undo step when its drag or text edit finished.
 inline void closeStepIfReleased(EditorUi& ui) {
@@ -20,6 +40,7 @@ inline void closeStepIfReleased(EditorUi& ui) {
 inline bool sliderFloat(EditorUi& ui, const char* label, float* v, float lo, float hi, const char* format = "%.3f",
                         ImGuiSliderFlags flags = 0) {
     const bool changed = ImGui::SliderFloat(label, v, lo, hi, format, flags);
+    tooltipIfCut(label);
     closeStepIfReleased(ui);
     return changed;
 }
@@ -27,6 +48,7 @@ inline bool sliderFloat(EditorUi& ui, const char* label, float* v, float lo, flo
 inline bool dragFloat(EditorUi& ui, const char* label, float* v, float speed, float lo = 0.0f, float hi = 0.0f,
                       const char* format = "%.3f") {
     const bool changed = ImGui::DragFloat(label, v, speed, lo, hi, format);
+    tooltipIfCut(label);
     closeStepIfReleased(ui);
     return changed;
 }
@@ -34,6 +56,7 @@ inline bool dragFloat(EditorUi& ui, const char* label, float* v, float speed, fl
 inline bool dragVec3(EditorUi& ui, const char* label, Vec3* v, float speed, const char* format = "%.3f") {
     float a[3] = {v->x, v->y, v->z};
     const bool changed = ImGui::DragFloat3(label, a, speed, 0.0f, 0.0f, format);
+    tooltipIfCut(label);
     closeStepIfReleased(ui);
     if (changed) *v = Vec3(a[0], a[1], a[2]);
     return changed;
@@ -42,6 +65,7 @@ inline bool dragVec3(EditorUi& ui, const char* label, Vec3* v, float speed, cons
 inline bool colorEdit(EditorUi& ui, const char* label, Vec3* v, ImGuiColorEditFlags flags = ImGuiColorEditFlags_Float) {
     float a[3] = {v->x, v->y, v->z};
     const bool changed = ImGui::ColorEdit3(label, a, flags);
+    tooltipIfCut(label);
     closeStepIfReleased(ui);
     if (changed) *v = Vec3(a[0], a[1], a[2]);
     return changed;

@@ -1,6 +1,7 @@
 // End to end: the real `pathtracer` window under a private Xvfb, driven by X input events
 // (xdotool through XTEST), checked through its own F12 screenshots and the file it saves.
-// Select the glass sphere by clicking it, drag its Roughness slider, undo, redo, save, quit.
+// Select the glass sphere by clicking it, drag its Roughness slider, undo, redo, move it with the
+// transform gizmo (one undo step; a drag cancelled with Escape leaves nothing), save, quit.
 //
 // Sections: layout (where the editor draws what: derived from its code and ImGui's default
 // style, not from pixels of one run) - images - the driver (process, input, screenshots,
@@ -387,6 +388,23 @@ protected:
         return endX;
     }
 
+    // A left drag from `from` by `dx` pixels to the right in six steps; `beforeRelease` runs with
+    // the button still down (e.g. Escape to cancel the drag).
+    void leftDrag(Point from, float dx, const std::vector<std::string>& beforeRelease = {}) {
+        moveTo(from);
+        sleepSeconds(hold());
+        xdo({"mousedown", "1"});
+        sleepSeconds(hold());
+        for (int step = 1; step <= 6; ++step) {
+            moveTo({from.x + dx * float(step) / 6.0f, from.y});
+            sleepSeconds(frameSeconds);
+        }
+        sleepSeconds(hold());
+        if (!beforeRelease.empty()) chord(beforeRelease.front());
+        xdo({"mouseup", "1"});
+        sleepSeconds(hold());
+    }
+
     // Ctrl+S, Return (saving over the scene's own file asks nothing), then Ctrl+Q; waits for
     // the file to change and the editor to end with status 0.
     void saveAndQuit(const fs::path& scene) {
@@ -543,6 +561,38 @@ TEST_F(EditorEndToEnd, ClickDragUndoRedoSaveQuit) {
     const double redoDiff = meanAbsDiff(dragged, redone, view);
     EXPECT_LE(redoDiff, 0.05) << "ctrl+shift+z did not bring the edit back" << editorOutput();
 
+    // 5b. The transform gizmo: the X arrow runs 90 pixels right of the sphere's centre. Dragging
+    // it 40 pixels moves the sphere along X by what 40 pixels span at its depth, in one undo step;
+    // a second drag cancelled with Escape leaves nothing behind (not even a redo).
+    const Vec3 centre = sphere->objectToWorld.translation();
+    const float pixelsPerUnit =
+        (projectToRender(original.scene->camera, centre + Vec3(1, 0, 0), kRender, kRender).x -
+         projectToRender(original.scene->camera, centre, kRender, kRender).x) *
+        layout.scale();
+    constexpr float kGizmoDrag = 40.0f;
+    const Point arrow{std::round(sphereAt.x + 50.0f), std::round(sphereAt.y)};
+    leftDrag(arrow, kGizmoDrag);
+    moveTo(layout.restingPoint());
+    const Image moved = converged("after the gizmo drag", &redone, layout);
+    ASSERT_FALSE(HasFailure());
+    const double moveChange = meanAbsDiff(redone, moved, view);
+    EXPECT_GT(moveChange, 1.0) << "the gizmo drag did not move the sphere" << editorOutput();
+    leftDrag({arrow.x + kGizmoDrag, arrow.y}, 30.0f, {"Escape"});
+    moveTo(layout.restingPoint());
+    const Image cancelled = converged("after a cancelled gizmo drag", nullptr, layout);
+    ASSERT_FALSE(HasFailure());
+    EXPECT_LE(meanAbsDiff(moved, cancelled, view), 0.05)
+        << "Escape did not cancel the drag" << editorOutput();
+    chord("ctrl+z");
+    const Image unmoved = converged("after ctrl+z of the gizmo drag", &cancelled, layout);
+    ASSERT_FALSE(HasFailure());
+    EXPECT_LE(meanAbsDiff(redone, unmoved, view), 0.05)
+        << "one ctrl+z did not undo the whole gizmo drag (or undid the roughness too)" << editorOutput();
+    chord("ctrl+shift+z");
+    const Image removed = converged("after ctrl+shift+z of the gizmo drag", &unmoved, layout);
+    ASSERT_FALSE(HasFailure());
+    EXPECT_LE(meanAbsDiff(moved, removed, view), 0.05) << "the gizmo drag did not redo" << editorOutput();
+
     // 6. Quitting with unsaved edits asks first: the title marks them, ctrl+q leaves the editor
     // running with the "Unsaved edits" dialog up, and Escape cancels (the scene stays).
     EXPECT_EQ(windowName(), "*cornell.json - pathtracer") << editorOutput();
@@ -556,23 +606,38 @@ TEST_F(EditorEndToEnd, ClickDragUndoRedoSaveQuit) {
     saveAndQuit(scenePath);
     ASSERT_FALSE(HasFailure());
 
-    // 8. The file holds the redone roughness; everything else is what the original held.
+    // 8. The file holds the redone roughness and the gizmo's move; everything else is what the
+    // original held.
     LoadResult saved = loadScene(scenePath.string());
     ASSERT_TRUE(saved.ok()) << saved.error << "\n" << readText(scenePath);
     const int32_t savedGlass = saved.scene->findMaterial("glass");
     ASSERT_GE(savedGlass, 0);
     const float roughness = saved.scene->materials[size_t(savedGlass)].params.roughness;
     EXPECT_NEAR(roughness, expectedRoughness, 0.0015) << "the slider's value for a release at x = " << endX;
+    const auto savedSphere = std::find_if(saved.scene->objects.begin(), saved.scene->objects.end(),
+                                          [](const SceneObject& o) { return o.name == "glass sphere"; });
+    ASSERT_NE(savedSphere, saved.scene->objects.end());
+    const float movedBy = savedSphere->transform.translate.x - centre.x;
+    EXPECT_NEAR(movedBy, kGizmoDrag / pixelsPerUnit, 0.5f / pixelsPerUnit)
+        << "the gizmo moved the sphere " << movedBy << " units for " << kGizmoDrag << " pixels";
     Scene expected = std::move(*original.scene);
     expected.materials[size_t(glass)].params.roughness = roughness;
+    for (SceneObject& o : expected.objects) {
+        if (o.name == "glass sphere") o.transform = savedSphere->transform;
+    }
+    for (size_t i = 0; i < expected.instances.size(); ++i) {
+        if (expected.instances[i].name == "glass sphere")
+            expected.instances[i].objectToWorld = saved.scene->instances[i].objectToWorld;
+    }
     // --size is a viewing choice: the file keeps its own resolution (checked by the equality).
     expectScenesEqual(expected, *saved.scene);
 
     std::printf(
         "[ measured ] inspector change %.2f, drag change %.3f, undo diff %.3f, redo diff %.3f levels; "
-        "roughness %.3f; outline %.3f; last F12 latency %.0f ms; idle CPU %.2f%% of a core; %.1f s in all\n",
-        inspectorChange, dragChange, undoDiff, redoDiff, double(roughness), outline, frameSeconds * 1e3,
-        idleCores * 100.0, secondsSince(testStart));
+        "roughness %.3f; outline %.3f; gizmo move %.3f units (%.3f levels); last F12 latency %.0f ms; "
+        "idle CPU %.2f%% of a core; %.1f s in all\n",
+        inspectorChange, dragChange, undoDiff, redoDiff, double(roughness), outline, double(movedBy),
+        moveChange, frameSeconds * 1e3, idleCores * 100.0, secondsSince(testStart));
     // The screenshots (about 45, 4 MB) stay only when something failed, for a look at them.
     if (!HasFailure()) fs::remove_all(dir);
 }

@@ -15,7 +15,17 @@ TEST(PanelLayout, TheWidthRoundTripsAtEveryScale) {
     // Saved at scale 2 (1040 px), opened at 1: the same column in points.
     PanelLayout hiDpi = PanelLayout::parse("panel_width 520\n", 2.0f);
     EXPECT_EQ(hiDpi.width, 1040.0f);
-    EXPECT_EQ(hiDpi.serialize(), "panel_width 520\n");
+    EXPECT_EQ(hiDpi.serialize(), "panel_width 520\nstats_overlay 0\n");
+}
+
+TEST(PanelLayout, TheStatsOverlayIsRemembered) {
+    EXPECT_FALSE(PanelLayout::parse("panel_width 520\n", 1.0f).statsOverlay) << "off unless asked";
+    PanelLayout layout = PanelLayout::parse("", 1.0f);
+    layout.statsOverlay = true;
+    const PanelLayout read = PanelLayout::parse(layout.serialize(), 1.0f);
+    EXPECT_TRUE(read.statsOverlay);
+    EXPECT_EQ(read.width, layout.width);
+    EXPECT_FALSE(PanelLayout::parse("stats_overlay 7\n", 1.0f).statsOverlay);
 }
 
 TEST(PanelLayout, DamagedOrExtremeFilesGiveTheDefault) {
