@@ -67,6 +67,49 @@ std::string screenshotPath(const std::string& base, int n) {
     return (p.parent_path() / (p.stem().string() + "-" + std::to_string(n) + p.extension().string())).string();
 }
 
+// Panel `index` of kPanelNames, where it is (the column or its own window).
+void drawPanel(EditorUi& ui, const DisplayView& view, int index) {
+    switch (index) {
+        case 0:
+            drawOutliner(ui);
+            break;
+        case 1:
+            drawInspector(ui);
+            break;
+        case 2:
+            drawCameraPanel(ui);
+            break;
+        case 3:
+            drawRenderPanel(ui);
+            break;
+        case 4:
+            drawEnvironmentPanel(ui);
+            break;
+        case 5:
+            drawDisplayPanel(ui, view);
+            break;
+        default:
+            drawStatsPanel(ui);
+            break;
+    }
+}
+
+// Panels taken out of the column (Window menu): each a window the user moves and sizes, first
+// placed over the viewport's left, staggered; its close button puts it back in the column.
+void drawFloatingPanels(EditorUi& ui, const DisplayView& view) {
+    const float s = ui.layout.scale;
+    for (int i = 0; i < kPanelCount; ++i) {
+        if (!ui.layout.floats(kPanelNames[i])) continue;
+        ImGui::SetNextWindowPos(ImVec2((40.0f + 30.0f * float(i)) * s, (60.0f + 30.0f * float(i)) * s),
+                                ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(ImVec2(380.0f * s, 420.0f * s), ImGuiCond_FirstUseEver);
+        bool open = true;
+        if (ImGui::Begin(kPanelNames[i], &open)) drawPanel(ui, view, i);
+        ImGui::End();
+        if (!open) ui.layout.setFloating(kPanelNames[i], false);
+    }
+}
+
 // The panels' column at the window's right, `height` tall below the menu bar; dragging its left
 // edge resizes it (remembered when the editor closes: panel_layout.h). The drag starts where the
 // press was (InputEvents), not where the pointer is when a slow frame looks.
@@ -97,14 +140,11 @@ void drawPanels(EditorUi& ui, const DisplayView& view, float width, float height
     ImGui::SetNextWindowSize(ImVec2(panelWidth, height - top));
     ImGui::Begin("Panels", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoTitleBar |
                                         ImGuiWindowFlags_NoCollapse);
-    drawOutliner(ui);
-    drawInspector(ui);
-    drawCameraPanel(ui);
-    drawRenderPanel(ui);
-    drawEnvironmentPanel(ui);
-    drawDisplayPanel(ui, view);
-    drawStatsPanel(ui);
+    for (int i = 0; i < kPanelCount; ++i) {
+        if (!ui.layout.floats(kPanelNames[i])) drawPanel(ui, view, i);
+    }
     ImGui::End();
+    drawFloatingPanels(ui, view);
 }
 
 // The render's size, where it follows the viewport (viewport_resolution.h): the viewport's

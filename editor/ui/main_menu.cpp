@@ -1,5 +1,6 @@
 // The menu bar: File (open, recent, save, export, quit), Edit (undo/redo with the command's
-// name, and the history list).
+// name, and the history list), Window (panels floating in windows of their own, the Stats
+// overlay).
 #include <GLFW/glfw3.h>
 
 #include <string>
@@ -60,6 +61,18 @@ void drawMainMenu(EditorUi& ui) {
         if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, history.canUndo())) ui.undo();
         if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z", false, history.canRedo())) ui.redo();
         drawHistory(ui);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Window")) {
+        // A checked panel floats in a window of its own; closing that window docks it back.
+        for (const char* panel : kPanelNames) {
+            if (ImGui::MenuItem(panel, nullptr, ui.layout.floats(panel)))
+                ui.layout.setFloating(panel, !ui.layout.floats(panel));
+        }
+        if (ImGui::MenuItem("Dock all panels", nullptr, false, !ui.layout.floating.empty()))
+            ui.layout.floating.clear();
+        ImGui::Separator();
+        ImGui::MenuItem("Stats overlay", nullptr, &ui.layout.statsOverlay);
         ImGui::EndMenu();
     }
     ImGui::EndMainMenuBar();

@@ -18,6 +18,23 @@ TEST(PanelLayout, TheWidthRoundTripsAtEveryScale) {
     EXPECT_EQ(hiDpi.serialize(), "panel_width 520\nstats_overlay 0\n");
 }
 
+TEST(PanelLayout, FloatingPanelsAreRemembered) {
+    PanelLayout layout = PanelLayout::parse("", 1.0f);
+    EXPECT_TRUE(layout.floating.empty());
+    layout.setFloating("Render settings", true);
+    layout.setFloating("Stats", true);
+    layout.setFloating("Stats", true);  // once only
+    const PanelLayout read = PanelLayout::parse(layout.serialize(), 1.0f);
+    EXPECT_EQ(read.floating, (std::vector<std::string>{"Render settings", "Stats"}));
+    EXPECT_TRUE(read.floats("Render settings"));
+    EXPECT_FALSE(read.floats("Outliner"));
+    layout.setFloating("Render settings", false);
+    EXPECT_EQ(layout.floating, std::vector<std::string>{"Stats"});
+    EXPECT_TRUE(PanelLayout::parse("floating Nonsense\nfloating\n", 1.0f).floating.empty())
+        << "names that are no panel are dropped";
+    EXPECT_EQ(PanelLayout::parse("floating Stats\npanel_width 500\n", 1.0f).width, 500.0f);
+}
+
 TEST(PanelLayout, TheStatsOverlayIsRemembered) {
     EXPECT_FALSE(PanelLayout::parse("panel_width 520\n", 1.0f).statsOverlay) << "off unless asked";
     PanelLayout layout = PanelLayout::parse("", 1.0f);
