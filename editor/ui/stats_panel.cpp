@@ -80,8 +80,10 @@ void drawStatsOverlay(EditorUi& ui, const ImageRect& image) {
     if (!ui.layout.statsOverlay || image.imageWidth == 0) return;
     const WorkerStatus status = ui.worker.status();
     const BackendStats& s = ui.lastFrame.stats;
-    ImGui::SetNextWindowPos(ImVec2(image.x + image.width - 6.0f, image.y + 6.0f), ImGuiCond_Always,
-                            ImVec2(1.0f, 0.0f));
+    // The bottom right corner: the toolbar holds the top left, and a narrow viewport puts the
+    // top right next to it.
+    ImGui::SetNextWindowPos(ImVec2(image.x + image.width - 6.0f, image.y + image.height - 6.0f),
+                            ImGuiCond_Always, ImVec2(1.0f, 1.0f));
     ImGui::SetNextWindowBgAlpha(0.55f);
     ImGui::Begin("##stats overlay", nullptr,
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |

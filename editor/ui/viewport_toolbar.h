@@ -6,7 +6,7 @@
 namespace pt::editor {
 
 // The toolbar over the viewport's top left corner (the gizmo's mode, axes and snapping; the
-// Stats overlay switch) and, where switched on, the Stats overlay at the top right.
+// Stats overlay switch) and, where switched on, the Stats overlay at the bottom right.
 void drawViewportToolbar(EditorUi& ui, GizmoTool& gizmo, const ImageRect& image);
 
 }  // namespace pt::editor
