@@ -220,6 +220,8 @@ std::vector<float> readGltfFloats(const GltfContext& ctx, int accessor, int comp
                                   " components per element, expected " +
                                   std::to_string(components));
     }
+    if (auto decoded = ctx.decodedFloats.find(accessor); decoded != ctx.decodedFloats.end())
+        return decoded->second;
     const int type = acc.componentType;
     const bool normalized = acc.normalized;
     return readAll<float>(ctx, accessor, use, [type, normalized](const uint8_t* p) {

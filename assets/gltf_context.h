@@ -47,6 +47,10 @@ struct GltfContext {
     std::map<int, int32_t> images;
     std::map<std::tuple<int, WrapMode, WrapMode, bool>, int32_t> textures;
     std::set<int> textureWarnings;                       // textures already warned about
+    // Attribute values decoded from a compressed primitive (KHR_draco_mesh_compression:
+    // gltf_draco.h), returned by the accessor reader in place of the accessor's (absent) buffer
+    // data. Filled as the primitive that owns them is read, hence mutable.
+    mutable std::map<int, std::vector<float>> decodedFloats;  // the accessor's components each
 
     const tinygltf::Model& model() const { return doc.model; }
 

@@ -5,14 +5,14 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "assets/file_state.h"
 #include "assets/gltf_json_check.h"
+#include "assets/gltf_tinygltf_compat.h"
 #include "assets/json_depth.h"
 
 namespace pt {
@@ -47,6 +47,7 @@ uint32_t readU32(const std::vector<uint8_t>& bytes, size_t offset) {
 struct GlbChunks {
     std::string json;
     size_t binBytes = 0;
+    size_t binChunk = 0;  // where the BIN chunk's header starts (0: no BIN chunk)
 };
 
 GlbChunks splitGlb(const std::vector<uint8_t>& bytes, const std::string& label) {
@@ -74,7 +75,33 @@ GlbChunks splitGlb(const std::vector<uint8_t>& bytes, const std::string& label) 
     }
     if (binHeader + 8 + binLength > length) fail("chunk 1: length runs past the file");
     chunks.binBytes = size_t(binLength);
+    chunks.binChunk = size_t(binHeader);
     return chunks;
+}
+
+void appendU32(std::vector<uint8_t>& out, uint32_t v) {
+    const uint8_t* p = reinterpret_cast<const uint8_t*>(&v);
+    out.insert(out.end(), p, p + 4);
+}
+
+// The .glb with its JSON chunk replaced by `json` (padded with spaces to 4 bytes, as the
+// spec asks) and its BIN chunk as it was.
+std::vector<uint8_t> replaceGlbJson(const std::vector<uint8_t>& bytes, const GlbChunks& chunks,
+                                    std::string json) {
+    while (json.size() % 4 != 0) json += ' ';
+    const size_t binChunkBytes = chunks.binChunk ? 8 + chunks.binBytes : 0;
+    std::vector<uint8_t> out;
+    out.reserve(20 + json.size() + binChunkBytes);
+    out.insert(out.end(), bytes.begin(), bytes.begin() + 8);  // magic, version
+    appendU32(out, uint32_t(20 + json.size() + binChunkBytes));
+    appendU32(out, uint32_t(json.size()));
+    appendU32(out, 0x4E4F534Au);
+    out.insert(out.end(), json.begin(), json.end());
+    if (chunks.binChunk) {
+        const auto bin = bytes.begin() + std::ptrdiff_t(chunks.binChunk);
+        out.insert(out.end(), bin, bin + std::ptrdiff_t(binChunkBytes));
+    }
+    return out;
 }
 
 // tinygltf image callback: keeps encoded bytes (from a data URI or an external file) in
@@ -126,11 +153,11 @@ GltfDocument loadGltfDocument(const std::string& path) {
     const std::string parent = std::filesystem::path(path).parent_path().string();
     doc.baseDir = parent.empty() ? "." : parent;
 
-    const std::vector<uint8_t> bytes = readWholeFile(path, doc.label);
+    std::vector<uint8_t> bytes = readWholeFile(path, doc.label);
     const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
     std::optional<GlbChunks> glb;
     if (binary) glb = splitGlb(bytes, doc.label);
-    const std::string jsonText =
+    std::string jsonText =
         binary ? glb->json : std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
 
     checkJsonDepth(jsonText, doc.label);  // before nlohmann and tinygltf recurse over it
@@ -142,6 +169,10 @@ GltfDocument loadGltfDocument(const std::string& path) {
     }
     checkGltfJson(root, {doc.label, doc.baseDir,
                          binary ? std::optional<size_t>(glb->binBytes) : std::nullopt});
+    if (adaptGltfForTinygltf(root)) {
+        jsonText = root.dump();
+        if (binary) bytes = replaceGlbJson(bytes, *glb, jsonText);
+    }
 
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&keepEncodedImage, nullptr);

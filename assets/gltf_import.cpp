@@ -6,6 +6,7 @@
 #include <set>
 
 #include "assets/gltf_document.h"
+#include "assets/gltf_draco.h"
 #include "assets/gltf_lights.h"
 #include "assets/gltf_materials.h"
 #include "assets/gltf_mesh.h"
@@ -38,7 +39,8 @@ void warnAboutUnsupported(const GltfContext& ctx) {
     const auto& model = ctx.model();
     std::set<std::string> reported;
     auto report = [&](const std::string& name, bool required) {
-        if (kSupportedExtensions.count(name) || !reported.insert(name).second) return;
+        const bool decoded = name == kDracoExtension && gltfDracoAvailable();
+        if (kSupportedExtensions.count(name) || decoded || !reported.insert(name).second) return;
         std::string what = (required ? "required extension " : "extension ") + name +
                            " is not supported";
         what += required ? "; loading without it, parts may be missing" : "; ignored";
@@ -101,7 +103,7 @@ ImportedFile importGltf(const std::string& path, int32_t object, Scene& scene,
     reportProgress(progress, "load glTF", 0.0);
     SceneAppendGuard guard(scene);
     const GltfDocument doc = loadGltfDocument(path);
-    GltfContext ctx{doc, scene, object, {}, {}, {}, {}, {}, {}};
+    GltfContext ctx{doc, scene, object, {}, {}, {}, {}, {}, {}, {}};
     warnAboutUnsupported(ctx);
     ctx.variants = gltfVariantNames(ctx);
     const std::vector<GltfNodeVisit> visits = walkGltfScene(ctx);

@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "assets/gltf_accessors.h"
+#include "assets/gltf_draco.h"
 #include "assets/mesh_normals.h"
 
 namespace pt {
@@ -77,21 +78,25 @@ std::vector<float> readVertexAttribute(const GltfContext& ctx, int accessor, int
     return values;
 }
 
+// The primitive's corners: Draco's decoded ones, its indices, or (neither) 0, 1, 2, ...; each
+// checked against the vertex count.
 std::vector<uint32_t> readCorners(const GltfContext& ctx, const tinygltf::Primitive& primitive,
-                                  size_t vertexCount, const std::string& element) {
-    if (primitive.indices < 0) {
+                                  std::optional<std::vector<uint32_t>> draco, size_t vertexCount,
+                                  const std::string& element) {
+    if (!draco && primitive.indices < 0) {
         std::vector<uint32_t> corners(vertexCount);
         std::iota(corners.begin(), corners.end(), 0u);
         return corners;
     }
+    const std::string source = draco ? std::string("Draco corner")
+                                     : "indices accessor " + std::to_string(primitive.indices) + " element";
     std::vector<uint32_t> corners =
-        readGltfIndices(ctx, primitive.indices, {element, std::string("indices")});
+        draco ? std::move(*draco)
+              : readGltfIndices(ctx, primitive.indices, {element, std::string("indices")});
     for (size_t i = 0; i < corners.size(); ++i) {
         if (corners[i] >= vertexCount) {
-            ctx.fail(element, "indices accessor " + std::to_string(primitive.indices) +
-                                  " element " + std::to_string(i) + " is " +
-                                  std::to_string(corners[i]) + ", past the vertex count " +
-                                  std::to_string(vertexCount));
+            ctx.fail(element, source + " " + std::to_string(i) + " is " + std::to_string(corners[i]) +
+                                  ", past the vertex count " + std::to_string(vertexCount));
         }
     }
     return corners;
@@ -224,13 +229,26 @@ std::optional<PrimitiveGeometry> readGltfPrimitive(const GltfContext& ctx, size_
     const auto& primitive = ctx.model().meshes[meshIndex].primitives[primitiveIndex];
     const std::string element = gltfPath("meshes", meshIndex) + ".primitives[" +
                                 std::to_string(primitiveIndex) + "]";
-    // No primitive extension changes how geometry is read (KHR_materials_variants maps
-    // materials; gltf_variants reads it). Any other optional one (Draco with uncompressed
-    // fallback data) is ignored, as the glTF specification asks, and the primitive is read as
-    // it stands; the file-level warning names it. Only one the file requires is a reason to
-    // skip: its data is not readable without it.
+    // Draco-compressed attributes and indices are decoded first; the accessor readers then
+    // return them (gltf_draco.h). No other primitive extension changes how geometry is read
+    // (KHR_materials_variants maps materials; gltf_variants reads it). Any other optional one is
+    // ignored, as the glTF specification asks, and the primitive is read as it stands; the
+    // file-level warning names it. Only one the file requires is a reason to skip: its data is
+    // not readable without it.
     const auto& required = ctx.model().extensionsRequired;
+    std::optional<std::vector<uint32_t>> draco;
+    try {
+        draco = decodeGltfDraco(ctx, primitive, element);
+    } catch (const InputError& e) {
+        // Like an undecodable texture: one warning, and the rest of the file still shows. An
+        // optional extension's primitive is read from its uncompressed fallback instead.
+        const bool needed = std::find(required.begin(), required.end(), kDracoExtension) != required.end();
+        ctx.scene.warnings.push_back(std::string(e.what()) +
+                                     (needed ? "; primitive skipped" : "; read without it"));
+        if (needed) return std::nullopt;
+    }
     for (const auto& extension : primitive.extensions) {
+        if (extension.first == kDracoExtension && (draco || gltfDracoAvailable())) continue;
         if (std::find(required.begin(), required.end(), extension.first) != required.end()) {
             ctx.warn(element, "requires extension " + extension.first + ", which is not supported; primitive skipped");
             return std::nullopt;
@@ -251,7 +269,7 @@ std::optional<PrimitiveGeometry> readGltfPrimitive(const GltfContext& ctx, size_
     const std::vector<float> p = readFiniteFloats(ctx, position, 3, element, "POSITION");
     const size_t vertexCount = p.size() / 3;
     g.positions = toVec3s(p);
-    g.indices = toTriangleList(ctx, readCorners(ctx, primitive, vertexCount, element),
+    g.indices = toTriangleList(ctx, readCorners(ctx, primitive, std::move(draco), vertexCount, element),
                                primitive.mode, element);
     if (g.indices.empty()) {
         ctx.warn(element, "has no triangles; skipped");
