@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include "assets/gltf_meshopt.h"
+
 namespace pt {
 namespace {
 
@@ -56,25 +58,30 @@ const uint8_t* viewRange(const GltfContext& ctx, int viewIndex, size_t offset, s
     const auto& model = ctx.model();
     const auto& view = gltfElement(ctx, model.bufferViews, viewIndex, use.element,
                                    (what + " bufferView").c_str());
-    const auto& buffer = gltfElement(ctx, model.buffers, view.buffer, use.element,
-                                     ("bufferView " + std::to_string(viewIndex) + " buffer").c_str());
-    const size_t bufferBytes = buffer.data.size();
-    if (view.byteOffset > bufferBytes || view.byteLength > bufferBytes - view.byteOffset) {
-        ctx.fail(use.element, "bufferView " + std::to_string(viewIndex) +
-                                  " runs past the end of buffer " + std::to_string(view.buffer) +
-                                  " (" + std::to_string(bufferBytes) + " bytes)");
+    const uint8_t* viewData = nullptr;
+    size_t viewBytes = view.byteLength;
+    if (const std::vector<uint8_t>* decoded = meshoptView(ctx, viewIndex)) {
+        viewData = decoded->data();  // its bytes as decoded; the fallback buffer may hold none
+        viewBytes = std::min(decoded->size(), view.byteLength);
+    } else {
+        const auto& buffer = gltfElement(ctx, model.buffers, view.buffer, use.element,
+                                         ("bufferView " + std::to_string(viewIndex) + " buffer").c_str());
+        const size_t bufferBytes = buffer.data.size();
+        if (view.byteOffset > bufferBytes || view.byteLength > bufferBytes - view.byteOffset) {
+            ctx.fail(use.element, "bufferView " + std::to_string(viewIndex) +
+                                      " runs past the end of buffer " + std::to_string(view.buffer) + " (" +
+                                      std::to_string(bufferBytes) + " bytes)");
+        }
+        viewData = buffer.data.data() + view.byteOffset;
     }
-    const size_t available = offset <= view.byteLength ? view.byteLength - offset : 0;
-    if (offset > view.byteLength || elementBytes > available ||
-        count - 1 > (available - elementBytes) / stride) {
-        ctx.fail(use.element, what + " reads past the end of bufferView " +
-                                  std::to_string(viewIndex) + " (" + std::to_string(count) +
-                                  " elements of " + std::to_string(elementBytes) +
+    const size_t available = offset <= viewBytes ? viewBytes - offset : 0;
+    if (offset > viewBytes || elementBytes > available || count - 1 > (available - elementBytes) / stride) {
+        ctx.fail(use.element, what + " reads past the end of bufferView " + std::to_string(viewIndex) + " (" +
+                                  std::to_string(count) + " elements of " + std::to_string(elementBytes) +
                                   " bytes, stride " + std::to_string(stride) + ", from byte " +
-                                  std::to_string(offset) + " of " +
-                                  std::to_string(view.byteLength) + ")");
+                                  std::to_string(offset) + " of " + std::to_string(viewBytes) + ")");
     }
-    return buffer.data.data() + view.byteOffset + offset;
+    return viewData + offset;
 }
 
 Layout layoutOf(const GltfContext& ctx, int index, const AccessorUse& use) {

@@ -51,6 +51,9 @@ struct GltfContext {
     // gltf_draco.h), returned by the accessor reader in place of the accessor's (absent) buffer
     // data. Filled as the primitive that owns them is read, hence mutable.
     mutable std::map<int, std::vector<float>> decodedFloats;  // the accessor's components each
+    // BufferViews decoded from their compressed bytes (EXT_meshopt_compression: gltf_meshopt.h),
+    // decoded on first read.
+    mutable std::map<int, std::vector<uint8_t>> decodedViews;
 
     const tinygltf::Model& model() const { return doc.model; }
 

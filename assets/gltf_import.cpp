@@ -10,6 +10,7 @@
 #include "assets/gltf_lights.h"
 #include "assets/gltf_materials.h"
 #include "assets/gltf_mesh.h"
+#include "assets/gltf_meshopt.h"
 #include "assets/gltf_nodes.h"
 #include "assets/gltf_variants.h"
 #include "assets/model_import.h"
@@ -39,7 +40,8 @@ void warnAboutUnsupported(const GltfContext& ctx) {
     const auto& model = ctx.model();
     std::set<std::string> reported;
     auto report = [&](const std::string& name, bool required) {
-        const bool decoded = name == kDracoExtension && gltfDracoAvailable();
+        const bool decoded = (name == kDracoExtension && gltfDracoAvailable()) ||
+                             (name == kMeshoptExtension && gltfMeshoptAvailable());
         if (kSupportedExtensions.count(name) || decoded || !reported.insert(name).second) return;
         std::string what = (required ? "required extension " : "extension ") + name +
                            " is not supported";
@@ -103,7 +105,7 @@ ImportedFile importGltf(const std::string& path, int32_t object, Scene& scene,
     reportProgress(progress, "load glTF", 0.0);
     SceneAppendGuard guard(scene);
     const GltfDocument doc = loadGltfDocument(path);
-    GltfContext ctx{doc, scene, object, {}, {}, {}, {}, {}, {}, {}};
+    GltfContext ctx{doc, scene, object, {}, {}, {}, {}, {}, {}, {}, {}};
     warnAboutUnsupported(ctx);
     ctx.variants = gltfVariantNames(ctx);
     const std::vector<GltfNodeVisit> visits = walkGltfScene(ctx);

@@ -6,9 +6,10 @@
 #include <functional>
 #include <vector>
 
+#include "assets/gltf_tinygltf_compat.h"
+#include "assets/gltf_uri.h"
 #include "assets/input_error.h"
 #include "assets/message_text.h"
-#include "assets/gltf_uri.h"
 
 // Sections: the document's shape; index references; byte counts; bufferView extents;
 // buffer sources.
@@ -345,7 +346,9 @@ void checkBufferSources(const json& root, const GltfJsonSource& source) {
         const std::string path = "buffers[" + std::to_string(i) + "]";
         const uint64_t byteLength = buffer.at("byteLength").get<uint64_t>();
         auto uri = buffer.find("uri");
-        if (uri == buffer.end()) {
+        if (uri == buffer.end() && isMeshoptFallbackBuffer(buffer)) {
+            continue;  // no bytes: the views on it are decoded from another (gltf_meshopt.h)
+        } else if (uri == buffer.end()) {
             if (!source.glbBinBytes || i != 0) {
                 fail(source, path, "has no uri (only the first buffer of a .glb may omit it)");
             }

@@ -13,9 +13,36 @@ bool hasBufferView(const nlohmann::json& root, const nlohmann::json& index) {
 
 }  // namespace
 
-bool adaptGltfForTinygltf(nlohmann::json& root) {
+bool isMeshoptFallbackBuffer(const nlohmann::json& buffer) {
+    if (!buffer.is_object() || !buffer.contains("extensions")) return false;
+    const nlohmann::json& extensions = buffer["extensions"];
+    if (!extensions.is_object() || !extensions.contains("EXT_meshopt_compression")) return false;
+    const nlohmann::json& meshopt = extensions["EXT_meshopt_compression"];
+    if (!meshopt.is_object() || !meshopt.contains("fallback")) return false;
+    const nlohmann::json& fallback = meshopt["fallback"];
+    return fallback.is_boolean() && fallback.get<bool>();
+}
+
+namespace {
+
+bool emptyFallbackBuffers(nlohmann::json& root) {
     bool changed = false;
-    if (!root.is_object() || !root.contains("meshes") || !root["meshes"].is_array()) return false;
+    if (!root.contains("buffers") || !root["buffers"].is_array()) return false;
+    for (nlohmann::json& buffer : root["buffers"]) {
+        if (!isMeshoptFallbackBuffer(buffer) || buffer.contains("uri")) continue;
+        buffer["uri"] = "data:application/octet-stream;base64,AAAAAA==";  // tinygltf decodes no empty one
+        buffer["byteLength"] = 4;
+        changed = true;
+    }
+    return changed;
+}
+
+}  // namespace
+
+bool adaptGltfForTinygltf(nlohmann::json& root) {
+    if (!root.is_object()) return false;
+    bool changed = emptyFallbackBuffers(root);
+    if (!root.contains("meshes") || !root["meshes"].is_array()) return changed;
     for (nlohmann::json& mesh : root["meshes"]) {
         if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
         for (nlohmann::json& primitive : mesh["primitives"]) {

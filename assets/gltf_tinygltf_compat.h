@@ -4,10 +4,17 @@
 //    are in the Draco data), and tinygltf fails on that ("accessor[N] invalid bufferView").
 //    The primitive's "indices" moves into its extension object (as "indices"), where
 //    gltf_draco.cpp finds it.
+//  - EXT_meshopt_compression: a fallback buffer (one whose views are all compressed into
+//    another) may have no uri and no bytes; tinygltf fails on a buffer without a uri outside a
+//    .glb, and in a .glb gives it the BIN chunk's bytes or fails. It becomes a data URI of four
+//    zero bytes (tinygltf decodes no empty one).
 // Internal to pt_assets.
 #include <nlohmann/json.hpp>
 
 namespace pt {
+
+// A buffer marked {"extensions": {"EXT_meshopt_compression": {"fallback": true}}}.
+bool isMeshoptFallbackBuffer(const nlohmann::json& buffer);
 
 // True where `root` was changed.
 bool adaptGltfForTinygltf(nlohmann::json& root);
