@@ -12,6 +12,7 @@
 #include "assets/gltf_mesh.h"
 #include "assets/gltf_meshopt.h"
 #include "assets/gltf_nodes.h"
+#include "assets/gltf_textures.h"
 #include "assets/gltf_variants.h"
 #include "assets/model_import.h"
 #include "assets/scene_append_guard.h"
@@ -41,7 +42,8 @@ void warnAboutUnsupported(const GltfContext& ctx) {
     std::set<std::string> reported;
     auto report = [&](const std::string& name, bool required) {
         const bool decoded = (name == kDracoExtension && gltfDracoAvailable()) ||
-                             (name == kMeshoptExtension && gltfMeshoptAvailable());
+                             (name == kMeshoptExtension && gltfMeshoptAvailable()) ||
+                             (name == kWebpExtension && gltfWebpAvailable());
         if (kSupportedExtensions.count(name) || decoded || !reported.insert(name).second) return;
         std::string what = (required ? "required extension " : "extension ") + name +
                            " is not supported";

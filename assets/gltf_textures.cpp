@@ -110,7 +110,25 @@ void applyTransform(const GltfContext& ctx, const GltfTextureSlot& slot, Texture
     texCoord = int(set);
 }
 
+// The image a texture shows: its EXT_texture_webp source where this build decodes WebP
+// (OpenImageIO's WebP reader), else its PNG or JPEG one, else (no other) the WebP one anyway,
+// whose decoding then warns; -1 where it has none.
+int textureSource(const GltfContext& ctx, const tinygltf::Texture& texture, const std::string& element) {
+    int webp = -1;
+    if (auto it = texture.extensions.find(kWebpExtension); it != texture.extensions.end()) {
+        const tinygltf::Value& source = it->second.Get("source");
+        if (!source.IsInt()) ctx.fail(element + ".extensions." + kWebpExtension, "needs a source image");
+        webp = source.GetNumberAsInt();
+        gltfElement(ctx, ctx.model().images, webp, element + ".extensions." + kWebpExtension + ".source",
+                    "image");
+    }
+    if (webp >= 0 && (gltfWebpAvailable() || texture.source < 0)) return webp;
+    return texture.source;
+}
+
 }  // namespace
+
+bool gltfWebpAvailable() { return PT_HAVE_OIIO != 0; }
 
 GltfTextureSlot gltfTextureSlot(const tinygltf::TextureInfo& info, std::string element) {
     return {info.index, info.texCoord, findTransform(info.extensions), std::move(element)};
@@ -151,7 +169,8 @@ TextureRef importGltfTexture(GltfContext& ctx, const GltfTextureSlot& slot) {
         return ref;
     }
     const std::string textureElement = gltfPath("textures", size_t(slot.index));
-    if (texture.source < 0) {
+    const int source = textureSource(ctx, texture, textureElement);
+    if (source < 0) {
         if (ctx.textureWarnings.insert(slot.index).second) {
             ctx.warn(textureElement, "has no PNG or JPEG source image (only an extension's); "
                                      "materials using it fall back to their factors");
@@ -173,8 +192,7 @@ TextureRef importGltfTexture(GltfContext& ctx, const GltfTextureSlot& slot) {
         }
         nearest = sampler.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
     }
-    ref.texture = sceneTexture(ctx, texture.source, wrapS, wrapT, nearest,
-                               textureElement + ".source");
+    ref.texture = sceneTexture(ctx, source, wrapS, wrapT, nearest, textureElement + ".source");
     return ref;
 }
 

@@ -11,6 +11,12 @@
 
 namespace pt {
 
+constexpr const char* kWebpExtension = "EXT_texture_webp";
+
+// Whether this build decodes WebP images (through OpenImageIO; without it, a texture's PNG or
+// JPEG fallback is shown where it has one).
+bool gltfWebpAvailable();
+
 // A material's reference to a texture, from a core textureInfo or one inside an extension.
 struct GltfTextureSlot {
     int index = -1;                              // glTF texture; -1: the slot is empty

@@ -48,6 +48,7 @@ Texture decodeGuarded(const std::vector<uint8_t>& bytes, const std::string& exte
 std::string mimeExtension(const std::string& mimeType) {
     if (mimeType == "image/png") return "png";
     if (mimeType == "image/jpeg") return "jpg";
+    if (mimeType == "image/webp") return "webp";
     return "";
 }
 
