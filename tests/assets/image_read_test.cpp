@@ -81,8 +81,11 @@ TEST(ImageRead, UndecodableBytesGiveInputErrorsNamingTheImage) {
     EXPECT_NE(decodeError(fileBytes(test::testDataPath("gltf/broken.png")), "broken")
                   .find("broken: "),
               std::string::npos);
-    EXPECT_NE(decodeError({1, 2, 3, 4, 5}, "junk", "image/webp").find("junk: not an image format"),
+    EXPECT_NE(decodeError({1, 2, 3, 4, 5}, "junk", "image/x-unknown").find("junk: not an image format"),
               std::string::npos);
+    // A known type (glTF's EXT_texture_webp) whose bytes are not one: the reader's error, named.
+    const std::string webp = decodeError({1, 2, 3, 4, 5}, "junk.webp", "image/webp");
+    EXPECT_EQ(webp.rfind("junk.webp: ", 0), 0u) << webp;
     EXPECT_NE(decodeError({}, "empty").find("empty: image is empty"), std::string::npos);
 }
 
