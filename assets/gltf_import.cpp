@@ -44,7 +44,9 @@ void warnAboutUnsupported(const GltfContext& ctx) {
         const bool decoded = (name == kDracoExtension && gltfDracoAvailable()) ||
                              (name == kMeshoptExtension && gltfMeshoptAvailable()) ||
                              (name == kWebpExtension && gltfWebpAvailable());
-        if (kSupportedExtensions.count(name) || decoded || !reported.insert(name).second) return;
+        const bool honoured = kSupportedExtensions.count(name) || decoded;
+        ctx.scene.gltfExtensions[name] = honoured;
+        if (honoured || !reported.insert(name).second) return;
         std::string what = (required ? "required extension " : "extension ") + name +
                            " is not supported";
         what += required ? "; loading without it, parts may be missing" : "; ignored";

@@ -36,6 +36,11 @@ nlohmann::ordered_json describe(const Scene& scene, const CompiledScene& compile
         if (!object.variants.empty()) variants[objectDisplayName(object)] = object.variants;
     }
     if (!variants.empty()) j["material_variants"] = std::move(variants);
+    // glTF extensions the model files use: {"KHR_draco_mesh_compression": "honoured", ...}.
+    nlohmann::ordered_json extensions = nlohmann::ordered_json::object();
+    for (const auto& [name, honoured] : scene.gltfExtensions)
+        extensions[name] = honoured ? "honoured" : "ignored";
+    if (!extensions.empty()) j["gltf_extensions"] = std::move(extensions);
     // What the scene uses (scene_features.h); the CUDA backend picks its kernel variant by it.
     j["features"] = featureNames(compiled.features);
     j["bounds"] = {{"min", {lo.x, lo.y, lo.z}}, {"max", {hi.x, hi.y, hi.z}}};
@@ -45,6 +50,17 @@ nlohmann::ordered_json describe(const Scene& scene, const CompiledScene& compile
     j["blas_nodes"] = s.blasNodes;
     j["warnings"] = scene.warnings.size();
     return j;
+}
+
+// "KHR_materials_variants, KHR_texture_transform; ignored: KHR_materials_sheen".
+std::string extensionsText(const nlohmann::ordered_json& extensions) {
+    std::string honoured, ignored;
+    for (const auto& [name, state] : extensions.items()) {
+        std::string& list = state == "honoured" ? honoured : ignored;
+        list += (list.empty() ? "" : ", ") + name;
+    }
+    return honoured +
+           (ignored.empty() ? "" : (honoured.empty() ? "" : "; ") + std::string("ignored: ") + ignored);
 }
 
 }  // namespace
@@ -62,9 +78,10 @@ int runInfo(const std::vector<std::string>& args) {
         return 0;
     }
     for (const auto& [key, value] : j.items()) {
-        const std::string text = key == "features"   ? describeFeatures(compiled.features)
-                                 : value.is_string() ? value.get<std::string>()
-                                                     : value.dump();
+        const std::string text = key == "features"          ? describeFeatures(compiled.features)
+                                 : key == "gltf_extensions" ? extensionsText(value)
+                                 : value.is_string()        ? value.get<std::string>()
+                                                            : value.dump();
         std::printf("%-20s %s\n", key.c_str(), text.c_str());
     }
     return 0;

@@ -198,6 +198,9 @@ struct Scene {
     Environment environment;
     ColorSettings color;
     std::vector<std::string> warnings;  // non-fatal import messages, each naming file and element
+    // Every glTF extension the scene's model files declare, and whether this build honours it
+    // (pt-render info lists them). Import information, not rendered.
+    std::map<std::string, bool> gltfExtensions;
 
     int32_t findMaterial(const std::string& name) const;
     // Bounds of all visible instances in world space; empty scenes give a unit box.

@@ -239,6 +239,22 @@ TEST(PtRenderCli, InfoListsMaterialVariants) {
               (std::vector<std::string>{"Leather", "Linen", "variant 2"}));
 }
 
+// Which glTF extensions a file declares and whether they are honoured (issue 18), as JSON and as
+// one line.
+TEST(PtRenderCli, InfoListsTheGltfExtensionsAndWhetherTheyAreHonoured) {
+    const std::string path = "'" + test::testDataPath("gltf/primitive_extensions.gltf") + "'";
+    const auto r = runCli("info --json " + path);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto info = nlohmann::json::parse(r.out);
+    ASSERT_TRUE(info.contains("gltf_extensions")) << r.out;
+    EXPECT_EQ(info["gltf_extensions"]["KHR_materials_variants"], "honoured");
+    EXPECT_EQ(info["gltf_extensions"].size(), 2u);
+    const auto text = runCli("info --quiet " + path);
+    EXPECT_NE(text.out.find("KHR_materials_variants"), std::string::npos) << text.out;
+    EXPECT_EQ(runCli("info --json " + cornell()).out.find("gltf_extensions"), std::string::npos)
+        << "a scene without model files lists none";
+}
+
 // OpenImageIO (about 260 shared libraries) is loaded on the first image read or written, not at
 // start-up (issue 17: every start took 0.2-0.75 s, --help included). The dynamic loader's own
 // log (LD_DEBUG=files) says which libraries a run opened.
