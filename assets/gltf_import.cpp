@@ -33,6 +33,7 @@ const std::set<std::string> kSupportedExtensions = {
     "KHR_mesh_quantization",
     "KHR_lights_punctual",
     "KHR_materials_variants",
+    "KHR_materials_unlit",
 };
 
 // One warning per unsupported extension the file declares, and per feature it uses that is

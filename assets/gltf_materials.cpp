@@ -107,6 +107,8 @@ void readExtensions(GltfContext& ctx, const tinygltf::Material& src, const std::
         m.clearcoat = unit(gltfNumber(ctx, *e, "clearcoatFactor", 0.0, where));
         m.clearcoatRoughness = unit(gltfNumber(ctx, *e, "clearcoatRoughnessFactor", 0.0, where));
     }
+    // KHR_materials_unlit: an empty object; its presence is the whole of it.
+    if (extension(src, "KHR_materials_unlit")) m.unlit = 1;
     if (const auto* e = extension(src, "KHR_materials_specular")) {
         const std::string where = base + "KHR_materials_specular";
         m.specular = unit(gltfNumber(ctx, *e, "specularFactor", 1.0, where));

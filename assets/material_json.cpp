@@ -149,6 +149,7 @@ Material readMaterialParams(ObjectReader& object, const TextureLoader& loadTextu
     if (auto cutoff = object.get("alphaCutoff")) m.alphaCutoff = cutoff->asFloat(NumberRange::Unit);
     if (auto scale = object.get("normalScale")) m.normalScale = scale->asFloat();
     if (auto sided = object.get("doubleSided")) m.doubleSided = sided->asBool() ? 1u : 0u;
+    if (auto unlit = object.get("unlit")) m.unlit = unlit->asBool() ? 1u : 0u;
     for (const TextureKey& texture : kTextureKeys) {
         if (std::optional<JsonValue> value = object.get(texture.key)) {
             m.*texture.slot = readTextureSlot(*value, loadTexture);
@@ -167,6 +168,7 @@ void writeMaterialParams(const Material& m, const TexturePathFn& texturePath, Js
     putIfChanged(out, "alphaCutoff", m.alphaCutoff, defaults.alphaCutoff);
     putIfChanged(out, "normalScale", m.normalScale, defaults.normalScale);
     if ((m.doubleSided != 0) != (defaults.doubleSided != 0)) out["doubleSided"] = m.doubleSided != 0;
+    if (m.unlit != 0) out["unlit"] = true;
     for (const TextureKey& texture : kTextureKeys) {
         const TextureRef& ref = m.*texture.slot;
         if (ref.present()) out[texture.key] = textureSlotToJson(ref, texturePath(ref.texture, texture.key));

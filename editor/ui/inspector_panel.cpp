@@ -37,6 +37,13 @@ void materialEditor(EditorUi& ui, uint32_t index) {
     Material m = scene.materials[index].params;
     bool changed = false;
     ImGui::PushID(int(index));
+    bool unlit = m.unlit != 0;
+    if (checkbox("Unlit (shows its base color as is)", &unlit)) {
+        m.unlit = unlit ? 1u : 0u;
+        changed = true;
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("KHR_materials_unlit: baked or stylised looks; no light, no shading");
     changed |= colorEdit(ui, "Base color", &m.baseColor);
     changed |= textureToggle(ui, index, 0, "Base color", m.baseColorTexture);
     changed |= sliderFloat(ui, "Metallic", &m.metallic, 0.0f, 1.0f);

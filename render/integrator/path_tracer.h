@@ -159,11 +159,19 @@ PT_HD ShadowRay shadeSurface(const RenderScene& scene, PathState& state, const H
     // Until the first bounce, lastVertex is still the camera ray's origin.
     if (aov && state.depth == 0) recordAovSurface(scene, surface, state.lastVertex, *aov);
     addSurfaceEmission<kF>(scene, state, surface);
+    const Material& m = scene.materials[surface.material];
+    if (hasFeature<kF>(feature::kUnlit) && m.unlit) {
+        // KHR_materials_unlit: what the path sees is the base colour, and nothing lies beyond it
+        // (no light is sampled for it, so no MIS weight applies).
+        const Vec3 color = bsdfParamsAt<kF>(scene, m, surface.uv).baseColor;
+        state.radiance += clampIndirect(scene, state.throughput * color, state.depth >= 2);
+        state.alive = false;
+        return shadow;
+    }
     if (state.depth >= scene.settings.maxDepth) {
         state.alive = false;
         return shadow;
     }
-    const Material& m = scene.materials[surface.material];
     const BsdfParams bsdf = bsdfParamsAt<kF>(scene, m, surface.uv);
     // Shade the side the ray arrived on, except for glass, which needs to know in from out.
     const bool twoSidedFlip =

@@ -43,6 +43,9 @@ struct Material {
     float alphaCutoff = 0.5f;
     float normalScale = 1.0f;
     uint32_t doubleSided = 1;          // back faces shade as front faces with a flipped normal
+    // KHR_materials_unlit: the surface shows its base colour (factor times texture) as radiance
+    // and scatters no light; the path ends there (path_tracer.h).
+    uint32_t unlit = 0;
 
     TextureRef baseColorTexture;       // sRGB
     TextureRef metallicRoughnessTexture;  // linear: G = roughness, B = metallic

@@ -13,6 +13,12 @@ uint32_t materialFeatures(const Material& m) {
     using namespace feature;
     uint32_t f = 0;
     if (m.baseColorTexture.present()) f |= kBaseColorTexture;
+    if (m.unlit) {  // its base colour and alpha are all that is read of it
+        f |= kUnlit;
+        if (materialMayBeTransparent(m)) f |= m.alphaMode == AlphaMode::Mask ? kAlphaMask : kAlphaBlend;
+        if (cullsBackFaces(m)) f |= kBackfaceCulling;
+        return f;
+    }
     if (m.metallicRoughnessTexture.present()) f |= kMetallicRoughnessTexture;
     if (m.emissiveTexture.present() && m.isEmissive()) f |= kEmissiveTexture;
     if (m.transmissionTexture.present()) f |= kTransmissionTexture;
@@ -95,7 +101,8 @@ const char* featureName(uint32_t bit) {
                                                         "spheres",
                                                         "aovs",
                                                         "brute_force",
-                                                        "glossy_reflection"};
+                                                        "glossy_reflection",
+                                                        "unlit"};
     for (uint32_t i = 0; i < feature::kCount; ++i) {
         if (bit == (1u << i)) return kNames[i];
     }

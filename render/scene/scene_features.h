@@ -48,7 +48,9 @@ constexpr uint32_t kBruteForce = 1u << 24;         // the "BVH off" toggle (set 
 // without it every reflection lobe is a delta lobe, and the GGX sampling and evaluation code of
 // the specular lobe is left out.
 constexpr uint32_t kGlossyReflection = 1u << 25;
-constexpr uint32_t kCount = 26;
+// KHR_materials_unlit surfaces: they end the path with their base colour.
+constexpr uint32_t kUnlit = 1u << 26;
+constexpr uint32_t kCount = 27;
 
 // Groups the kernels test.
 constexpr uint32_t kTextures =

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "assets/gltf_quad_json.h"
 #include "assets/input_error.h"
 #include "assets/model_import.h"
 #include "support/test_paths.h"
@@ -389,6 +390,26 @@ TEST(GltfObjDispatch, PicksTheImporterByExtensionIgnoringCase) {
         EXPECT_NE(std::string(e.what()).find("model.fbx: unsupported model format '.fbx'"),
                   std::string::npos) << e.what();
     }
+}
+
+// KHR_materials_unlit: the material is marked unlit, and the extension is honoured (no warning).
+TEST(GltfImport, UnlitMaterials) {
+    const std::string path = test::writeTempFile("unlit.gltf", R"({"asset": {"version": "2.0"},
+  "extensionsUsed": ["KHR_materials_unlit"],
+  "materials": [{"name": "baked", "pbrMetallicRoughness": {"baseColorFactor": [0.3, 0.6, 0.9, 1]},
+                 "extensions": {"KHR_materials_unlit": {}}}, {"name": "lit"}],
+  )" + test::quadGltfGeometry() + R"(,
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 3, "material": 0},
+                             {"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 3, "material": 1}]}],
+  "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})");
+    Scene scene;
+    importGltf(path, 0, scene);
+    ASSERT_EQ(scene.materials.size(), 2u);
+    EXPECT_EQ(scene.materials[0].params.unlit, 1u);
+    EXPECT_EQ(scene.materials[0].params.baseColor, Vec3(0.3f, 0.6f, 0.9f));
+    EXPECT_EQ(scene.materials[1].params.unlit, 0u);
+    EXPECT_TRUE(scene.gltfExtensions.at("KHR_materials_unlit"));
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
 }
 
 }  // namespace

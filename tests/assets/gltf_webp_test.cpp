@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "assets/gltf_quad_json.h"
 #include "assets/model_import.h"
 #include "assets/scene_test_helpers.h"
 #if PT_TEST_HAVE_WEBP
@@ -38,13 +39,8 @@ std::string quadGltf(int texture) {
                {"extensions": {"EXT_texture_webp": {"source": 0}}}],
   "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": )" +
                                std::to_string(texture) + R"(}}}],
-  "buffers": [{"byteLength": 140, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAACAPwAAgD8AAAAAAAAAAAAAgD8AAAAAAAAAAAAAAAAAAIA/AAAAAAAAAAAAAIA/AAAAAAAAAAAAAIA/AAAAAAAAAAAAAIA/AAAAAAAAgD8AAIA/AACAPwAAgD8AAAAAAAAAAAAAAAAAAAEAAgAAAAIAAwA="}],
-  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 48},
-                  {"buffer": 0, "byteOffset": 96, "byteLength": 32}, {"buffer": 0, "byteOffset": 128, "byteLength": 12}],
-  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
-                {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"},
-                {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC2"},
-                {"bufferView": 3, "componentType": 5123, "count": 6, "type": "SCALAR"}],
+  )" + test::quadGltfGeometry() +
+                               R"(,
   "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}, "indices": 3, "material": 0}]}],
   "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})");
 }

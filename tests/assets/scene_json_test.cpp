@@ -67,6 +67,8 @@ TEST(SceneJson, EveryKeyIsRead) {
     EXPECT_NEAR(plastic.metallicRoughnessTexture.rotation, kPi / 6.0f, 1e-6f)
         << "degrees in JSON, radians inside";
     EXPECT_EQ(plastic.transmissionTexture.texture, plastic.baseColorTexture.texture);
+    EXPECT_EQ(plastic.unlit, 0u);
+    EXPECT_EQ(scene.materials[size_t(findSceneMaterial(scene, "poster"))].params.unlit, 1u);
 
     ASSERT_EQ(scene.objects.size(), 5u);
     EXPECT_EQ(scene.objects[0].materialOverrides.at("paint"), "chrome");

@@ -38,9 +38,10 @@ constexpr uint32_t kLean = kLeanSingle | kMultipleInstances;
 constexpr uint32_t kGlossySingle =
     kLeanSingle | kGlossyReflection | kRoughTransmission | kBaseColorTexture | kMetallicRoughnessTexture;
 constexpr uint32_t kGlossy = kGlossySingle | kMultipleInstances;
-// What glTF scenes usually bring on top: textures, normal maps, alpha, an HDR sky, depth of field.
+// What glTF scenes usually bring on top: textures, normal maps, alpha, an HDR sky, depth of field,
+// unlit (baked or stylised) materials.
 constexpr uint32_t kTextured =
-    kGlossy | kTextures | kNormalMap | kTransparency | kImageEnvironment | kThinLens;
+    kGlossy | kTextures | kNormalMap | kTransparency | kImageEnvironment | kThinLens | kUnlit;
 }  // namespace variant_features
 
 inline constexpr KernelVariant kKernelVariants[] = {

@@ -201,6 +201,55 @@ TEST(Volume, BeerLambertAttenuatesAlongThePathInside) {
 
 // The clamp limits indirect contributions only: with a tiny limit, a scene renders as its
 // direct lighting plus at most that limit per bounce.
+// KHR_materials_unlit: the camera sees the base colour, exactly, whatever lights the scene; a
+// lit (diffuse) quad of that colour under the same sky does not look like it.
+TEST(Unlit, TheCameraSeesTheBaseColourAsIs) {
+    Material poster = diffuse({0.2f, 0.5f, 0.9f});
+    poster.unlit = 1;
+    Scene scene = quadInFrontOfSky(poster, Vec3(3.0f));
+    addLight(scene, LightType::Point, {1, 1, 1}, 50.0f, {0, 0, 2});
+    CpuBackend backend;
+    backend.sync(scene, SceneChanges::All, {});
+    backend.render(4);
+    EXPECT_NE(backend.stats().features & feature::kUnlit, 0u);
+    const std::vector<float> image = test::beautyOf(backend);
+    for (size_t i = 0; i < image.size(); i += 4) {
+        ASSERT_NEAR(image[i], 0.2f, 1e-6f) << "pixel " << i / 4;
+        ASSERT_NEAR(image[i + 1], 0.5f, 1e-6f);
+        ASSERT_NEAR(image[i + 2], 0.9f, 1e-6f);
+    }
+    poster.unlit = 0;
+    const std::vector<float> lit = test::renderCpu(quadInFrontOfSky(poster, Vec3(3.0f)), 4, kNeeMis);
+    EXPECT_GT(std::fabs(meanChannel(lit, 0) - 0.2), 0.1) << "a lit quad is shaded";
+}
+
+// Paths that meet an unlit surface end there with its colour: a floor under an unlit ceiling,
+// with no light in the scene, is lit by it (BSDF sampling finds it; it is no light NEE samples);
+// the same ceiling lit normally leaves the floor black.
+TEST(Unlit, LightsWhatSeesItButIsNoLight) {
+    for (const bool unlit : {true, false}) {
+        Scene scene = floorPointScene(0.5f, 2);
+        scene.environment.color = Vec3(0.0f);
+        Material ceiling = diffuse({1.0f, 1.0f, 1.0f});
+        ceiling.unlit = unlit ? 1u : 0u;
+        addShape(scene, ObjectKind::Quad, trs({0, 2, 0}, {180, 0, 0}, {100, 1, 100}),
+                 addMaterial(scene, "ceiling", ceiling), "ceiling");
+        CpuBackend backend;
+        backend.setToggles(kNeeMis);
+        backend.sync(scene, SceneChanges::All, {});
+        backend.render(64);
+        EXPECT_EQ(backend.stats().nonfiniteSamples, 0u);
+        const double floor = meanChannel(test::beautyOf(backend), 0);
+        if (unlit) {
+            // A ceiling filling the hemisphere at radiance 1 over a 0.5 floor: 0.5, less the
+            // ceiling's far edge (100 units wide, 2 up: a few thousandths).
+            EXPECT_NEAR(floor, 0.5, 0.03);
+        } else {
+            EXPECT_EQ(floor, 0.0);
+        }
+    }
+}
+
 TEST(FireflyClamp, LimitsIndirectLightOnly) {
     Scene scene = floorPointScene(kAlbedo, 6);
     scene.camera.position = {0, 0.5f, 0.3f};
