@@ -37,13 +37,6 @@ void materialEditor(EditorUi& ui, uint32_t index) {
     Material m = scene.materials[index].params;
     bool changed = false;
     ImGui::PushID(int(index));
-    bool unlit = m.unlit != 0;
-    if (checkbox("Unlit (shows its base color as is)", &unlit)) {
-        m.unlit = unlit ? 1u : 0u;
-        changed = true;
-    }
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("KHR_materials_unlit: baked or stylised looks; no light, no shading");
     changed |= colorEdit(ui, "Base color", &m.baseColor);
     changed |= textureToggle(ui, index, 0, "Base color", m.baseColorTexture);
     changed |= sliderFloat(ui, "Metallic", &m.metallic, 0.0f, 1.0f);
@@ -62,6 +55,13 @@ void materialEditor(EditorUi& ui, uint32_t index) {
     changed |= textureToggle(ui, index, 3, "Emission", m.emissiveTexture);
     changed |= textureToggle(ui, index, 2, "Normal", m.normalTexture);
     changed |= sliderFloat(ui, "Normal scale", &m.normalScale, 0.0f, 2.0f);
+    bool unlit = m.unlit != 0;
+    if (checkbox("Unlit (shows its base color as is)", &unlit)) {
+        m.unlit = unlit ? 1u : 0u;
+        changed = true;
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("KHR_materials_unlit: baked or stylised looks; no light, no shading");
     if (ImGui::TreeNode("Volume and alpha")) {
         changed |= sliderFloat(ui, "Thickness", &m.thickness, 0.0f, 10.0f);
         changed |= colorEdit(ui, "Attenuation color", &m.attenuationColor);
