@@ -34,5 +34,6 @@ const DracoDecoder& dracoDecoder();
 
 }  // namespace pt
 
-// The one symbol the module exports: its table of functions.
-extern "C" const pt::DracoDecoder* ptDracoDecoder();
+// The one symbol the module exports: its table of functions (a DracoDecoder), typed as
+// plugin_module.h calls it.
+extern "C" const void* ptDracoDecoder();

@@ -42,7 +42,7 @@ DracoMesh decodeDraco(const uint8_t* bytes, size_t size) {
 }  // namespace
 }  // namespace pt
 
-extern "C" const pt::DracoDecoder* ptDracoDecoder() {
+extern "C" const void* ptDracoDecoder() {
     static const pt::DracoDecoder table{pt::decodeDraco};
     return &table;
 }

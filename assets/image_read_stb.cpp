@@ -74,14 +74,27 @@ size_t hdrPixelsStart(const std::vector<uint8_t>& bytes) {
 // #1224; 2.28 refuses a count of 0). So the rows are walked here first, as stb_image will
 // read them, and a count of 0, which the file's end reads as, is refused. Whatever else is
 // wrong with the rows (a run past the row's end, a length other than the width) stb reports.
+//
+// Rows stb reads flat (4 bytes a pixel) must be in the file: stb reads a cut-off file's missing
+// pixels as zeros, so a few bytes claiming 11111 x 11111 pixels had it allocate 2 GB (twice:
+// its buffer and ours), which the fuzzer found.
 void checkHdrRunLengths(const std::vector<uint8_t>& bytes, int width, int height, const std::string& name) {
-    if (width < 8 || width >= 32768) return;  // stb reads such rows flat, never encoded
     size_t pos = hdrPixelsStart(bytes);
+    // The rows from `row` on, read flat from `start`, end inside the file.
+    const auto flatRest = [&](int row, size_t start) {
+        const uint64_t needed = uint64_t(height - row) * uint64_t(width) * 4u;
+        if (start > bytes.size() || bytes.size() - start < needed) {
+            throw InputError(name + ": cannot decode: the pixels end before row " + std::to_string(height) +
+                             " (cut off at row " + std::to_string(row) + " or after)");
+        }
+    };
+    if (width < 8 || width >= 32768) return flatRest(0, pos);  // stb reads such rows flat, never encoded
     const auto next = [&]() -> int { return pos < bytes.size() ? bytes[pos++] : 0; };  // as stb
     for (int row = 0; row < height; ++row) {
+        const size_t rowStart = pos;
         const int c1 = next(), c2 = next(), high = next();
-        // Not an encoded row: stb reads the rest as flat pixels, which ends.
-        if (c1 != 2 || c2 != 2 || (high & 0x80)) return;
+        // Not an encoded row: stb reads the rest as flat pixels.
+        if (c1 != 2 || c2 != 2 || (high & 0x80)) return flatRest(row, rowStart);
         if (((high << 8) | next()) != width) return;
         for (int channel = 0; channel < 4; ++channel) {
             for (int x = 0; x < width;) {

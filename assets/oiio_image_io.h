@@ -35,4 +35,4 @@ const OiioImageIo& oiioImageIo();
 }  // namespace pt
 
 // The one symbol the module exports: its table of functions.
-extern "C" const pt::OiioImageIo* ptOiioImageIo();
+extern "C" const void* ptOiioImageIo();  // an OiioImageIo, typed as plugin_module.h calls it

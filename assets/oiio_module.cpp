@@ -3,7 +3,7 @@
 #include "assets/image_write_oiio.h"
 #include "assets/oiio_image_io.h"
 
-extern "C" const pt::OiioImageIo* ptOiioImageIo() {
+extern "C" const void* ptOiioImageIo() {
     static const pt::OiioImageIo table{pt::oiio::decodeTexture,     pt::oiio::writeExrChannels,
                                        pt::oiio::writeDisplayImage, pt::oiio::readImageRgba,
                                        pt::oiio::readExrChannels,   pt::oiio::readImageMetadata};

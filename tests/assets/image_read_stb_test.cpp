@@ -261,6 +261,25 @@ TEST(ImageReadStb, CutOffRunLengthHdrRowIsAnErrorNotAHang) {
               "zero.hdr: cannot decode: bad run-length data in row 0 (cut off, or a count of 0)");
 }
 
+// A few bytes claiming 11111 x 11111 flat pixels (found by fuzz_image: stb reads the missing
+// pixels as zeros, allocating 2 GB twice) are refused before stb allocates anything; a flat
+// file that holds its pixels decodes.
+TEST(ImageReadStb, CutOffFlatHdrIsAnErrorNotAHugeImage) {
+    const std::string huge = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 11111 +X 11111\n\xa0";
+    EXPECT_EQ(inputErrorOf(
+                  [&] { decodeTextureWithStb(std::vector<uint8_t>(huge.begin(), huge.end()), "huge.hdr"); }),
+              "huge.hdr: cannot decode: the pixels end before row 11111 (cut off at row 0 or after)");
+    const std::string header = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 3\n";  // narrow: flat
+    std::vector<uint8_t> flat(header.begin(), header.end());
+    for (int i = 0; i < 6; ++i) flat.insert(flat.end(), {128, 128, 128, 129});
+    EXPECT_EQ(decodeTextureWithStb(flat, "flat.hdr").texelsF, std::vector<float>(3 * 2 * 4, 1.0f));
+    flat.resize(flat.size() - 4);
+    EXPECT_NE(inputErrorOf([&] {
+                  decodeTextureWithStb(flat, "short.hdr");
+              }).find("short.hdr: cannot decode: the pixels end"),
+              std::string::npos);
+}
+
 // Debian's stb_image 2.27 decodes a 16-bit PGM into a buffer of half the size its 16-bit result
 // has (CVE-2021-42716); under a name stb is asked for (here .tga, which has no signature) it
 // was read past its end. Formats we do not ask stb for never reach it.
