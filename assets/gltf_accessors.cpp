@@ -24,7 +24,9 @@ size_t componentBytes(int componentType) {
     }
 }
 
-int componentsOf(int type) {
+}  // namespace
+
+int gltfTypeComponents(int type) {
     switch (type) {
         case TINYGLTF_TYPE_SCALAR: return 1;
         case TINYGLTF_TYPE_VEC2: return 2;
@@ -36,6 +38,8 @@ int componentsOf(int type) {
         default: return 0;
     }
 }
+
+namespace {
 
 // Elements of one accessor (or of one half of its sparse block) as laid out in memory.
 struct Layout {
@@ -90,7 +94,7 @@ Layout layoutOf(const GltfContext& ctx, int index, const AccessorUse& use) {
                                   (use.role + " accessor").c_str());
     Layout layout;
     layout.componentType = acc.componentType;
-    layout.components = componentsOf(acc.type);
+    layout.components = gltfTypeComponents(acc.type);
     layout.normalized = acc.normalized;
     layout.count = acc.count;
     const size_t elementBytes = componentBytes(acc.componentType) * size_t(layout.components);
@@ -221,11 +225,10 @@ std::vector<float> readGltfFloats(const GltfContext& ctx, int accessor, int comp
                                   const AccessorUse& use) {
     const auto& acc = gltfElement(ctx, ctx.model().accessors, accessor, use.element,
                                   (use.role + " accessor").c_str());
-    if (componentsOf(acc.type) != components) {
+    if (gltfTypeComponents(acc.type) != components) {
         ctx.fail(use.element, accessorName(use, accessor) + " has " +
-                                  std::to_string(componentsOf(acc.type)) +
-                                  " components per element, expected " +
-                                  std::to_string(components));
+                                  std::to_string(gltfTypeComponents(acc.type)) +
+                                  " components per element, expected " + std::to_string(components));
     }
     if (auto decoded = ctx.decodedFloats.find(accessor); decoded != ctx.decodedFloats.end())
         return decoded->second;
@@ -241,9 +244,8 @@ std::vector<uint32_t> readGltfIndices(const GltfContext& ctx, int accessor,
     const auto& acc = gltfElement(ctx, ctx.model().accessors, accessor, use.element,
                                   (use.role + " accessor").c_str());
     const int type = acc.componentType;
-    if (componentsOf(acc.type) != 1 ||
-        (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-         type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+    if (gltfTypeComponents(acc.type) != 1 ||
+        (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
          type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)) {
         ctx.fail(use.element, accessorName(use, accessor) +
                                   " must be a SCALAR of unsigned bytes, shorts or ints");

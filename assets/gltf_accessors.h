@@ -34,6 +34,9 @@ std::vector<uint32_t> readGltfIndices(const GltfContext& ctx, int accessor, cons
 std::vector<uint8_t> readGltfBufferView(const GltfContext& ctx, int view,
                                         const std::string& element);
 
+// Components per element of an accessor type (TINYGLTF_TYPE_VEC3: 3); 0 for none.
+int gltfTypeComponents(int type);
+
 // The accessor's element count, after checking that the accessor exists.
 size_t gltfAccessorCount(const GltfContext& ctx, int accessor, const AccessorUse& use);
 

@@ -20,21 +20,6 @@ const DracoDecoder& dracoDecoder() {
 
 namespace {
 
-int componentsOfType(int type) {
-    switch (type) {
-        case TINYGLTF_TYPE_SCALAR:
-            return 1;
-        case TINYGLTF_TYPE_VEC2:
-            return 2;
-        case TINYGLTF_TYPE_VEC3:
-            return 3;
-        case TINYGLTF_TYPE_VEC4:
-            return 4;
-        default:
-            return 0;
-    }
-}
-
 // The attribute `name` (Draco attribute id `id`) as the floats of its accessor.
 void takeAttribute(const GltfContext& ctx, const tinygltf::Primitive& primitive, DracoMesh& mesh,
                    const std::string& name, int id, const std::string& element) {
@@ -48,7 +33,7 @@ void takeAttribute(const GltfContext& ctx, const tinygltf::Primitive& primitive,
                                         [id](const DracoMesh::Attribute& a) { return int64_t(a.id) == id; });
     if (attribute == mesh.attributes.end())
         ctx.fail(element, "attribute " + name + ": the Draco data has no attribute " + std::to_string(id));
-    const int components = componentsOfType(acc.type);
+    const int components = gltfTypeComponents(acc.type);
     if (components == 0 || attribute->components != components) {
         ctx.fail(element, "attribute " + name + " has " + std::to_string(attribute->components) +
                               " components in the Draco data, " + std::to_string(components) +

@@ -26,8 +26,7 @@ float distance2d(Vec2 a, Vec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
 // The pinhole ray through an image point (pixels, y down; outside the image too, where a drag
 // goes on) from the lens centre: the ray every thin-lens ray through it meets at the focal plane.
 // generateCameraRay's direction, at a continuous point.
-Ray cursorRay(const GizmoView& view, Vec2 cursor) {
-    const RenderCamera camera = makeRenderCamera(view.camera, view.width, view.height);
+Ray cursorRay(const RenderCamera& camera, const GizmoView& view, Vec2 cursor) {
     const float ndcX = 2.0f * cursor.x / float(view.width) - 1.0f;
     const float ndcY = 1.0f - 2.0f * cursor.y / float(view.height);
     Ray ray;
@@ -36,11 +35,14 @@ Ray cursorRay(const GizmoView& view, Vec2 cursor) {
     return ray;
 }
 
+RenderCamera renderCameraOf(const GizmoView& view) {
+    return makeRenderCamera(view.camera, view.width, view.height);
+}
+
 // Where `p` lands in the image; none behind the camera.
-std::optional<Vec2> toImage(const GizmoView& view, Vec3 p) {
+std::optional<Vec2> toImage(const RenderCamera& camera, const GizmoView& view, Vec3 p) {
     float depth = 0.0f;
-    const Vec2 at = projectToImage(makeRenderCamera(view.camera, view.width, view.height), p, view.width,
-                                   view.height, &depth);
+    const Vec2 at = projectToImage(camera, p, view.width, view.height, &depth);
     if (!(depth > 0.0f)) return std::nullopt;
     return at;
 }
@@ -106,7 +108,7 @@ std::optional<Gizmo> placeGizmo(const Affine3& placement, GizmoMode mode, GizmoS
         if (!(lengthSquared(axis) > 1e-20f)) return std::nullopt;
         g.axes[i] = normalize(axis);
     }
-    const RenderCamera camera = makeRenderCamera(view.camera, view.width, view.height);
+    const RenderCamera camera = renderCameraOf(view);
     float depth = 0.0f;
     projectToImage(camera, g.pivot, view.width, view.height, &depth);
     if (!(depth > 0.0f)) return std::nullopt;
@@ -118,7 +120,8 @@ std::optional<Gizmo> placeGizmo(const Affine3& placement, GizmoMode mode, GizmoS
 
 std::vector<GizmoShape> gizmoShapes(const Gizmo& gizmo, const GizmoView& view) {
     std::vector<GizmoShape> shapes;
-    const std::optional<Vec2> pivot = toImage(view, gizmo.pivot);
+    const RenderCamera camera = renderCameraOf(view);  // once: a ring projects 64 points
+    const std::optional<Vec2> pivot = toImage(camera, view, gizmo.pivot);
     if (!pivot) return shapes;
     for (int i = 0; i < 3; ++i) {
         const Vec3 axis = gizmo.axes[i];
@@ -132,13 +135,13 @@ std::vector<GizmoShape> gizmoShapes(const Gizmo& gizmo, const GizmoView& view) {
             for (int k = 0; k < kRingSegments; ++k) {
                 const float a = 2.0f * kPi * float(k) / float(kRingSegments);
                 const std::optional<Vec2> p =
-                    toImage(view, gizmo.pivot + (u * std::cos(a) + v * std::sin(a)) * gizmo.size);
+                    toImage(camera, view, gizmo.pivot + (u * std::cos(a) + v * std::sin(a)) * gizmo.size);
                 if (p) shape.points.push_back(*p);
                 whole = whole && p.has_value();
             }
             shape.closed = whole;
         } else {
-            const std::optional<Vec2> end = toImage(view, gizmo.pivot + axis * gizmo.size);
+            const std::optional<Vec2> end = toImage(camera, view, gizmo.pivot + axis * gizmo.size);
             // Seen end-on, or its tip behind the camera: not a handle one can drag along.
             if (!end || distance2d(*pivot, *end) < 0.2f * gizmo.pixels) continue;
             shape.points = {*pivot, *end};
@@ -165,14 +168,13 @@ int gizmoHandleAt(const Gizmo& gizmo, const GizmoView& view, Vec2 cursor, float 
 }
 
 GizmoDrag::GizmoDrag(const Gizmo& gizmo, int handle, const GizmoView& view, Vec2 press)
-    : gizmo_(gizmo), handle_(handle), view_(view), press_(press) {
-    pivotPixel_ = toImage(view, gizmo.pivot).value_or(press);
+    : gizmo_(gizmo), handle_(handle), view_(view), camera_(renderCameraOf(view)), press_(press) {
+    pivotPixel_ = toImage(camera_, view, gizmo.pivot).value_or(press);
     if (handle_ >= 0 && handle_ < 3) pressParameter_ = axisParameter(press);
     lastAngle_ = screenAngle(press);
-    const Ray ray = cursorRay(view, press);
-    const Vec3 facing = makeRenderCamera(view.camera, view.width, view.height).forward;
-    const float across = dot(ray.direction, facing);
-    pressPoint_ = ray.origin + ray.direction * (dot(gizmo.pivot - ray.origin, facing) / across);
+    const Ray ray = cursorRay(camera_, view, press);
+    const float across = dot(ray.direction, camera_.forward);
+    pressPoint_ = ray.origin + ray.direction * (dot(gizmo.pivot - ray.origin, camera_.forward) / across);
 }
 
 float GizmoDrag::axisParameter(Vec2 cursor) const {
@@ -180,13 +182,13 @@ float GizmoDrag::axisParameter(Vec2 cursor) const {
     // line nearest that ray (both directions unit length). Without the slide, a cursor off the
     // line would meet the axis where the skew lines pass closest, not where it looks.
     const Vec3 a = gizmo_.axes[handle_];
-    const std::optional<Vec2> tip = toImage(view_, gizmo_.pivot + a * gizmo_.size);
+    const std::optional<Vec2> tip = toImage(camera_, view_, gizmo_.pivot + a * gizmo_.size);
     if (tip) {
         const Vec2 along = *tip - pivotPixel_, off = cursor - pivotPixel_;
         const float lengthSq = along.x * along.x + along.y * along.y;
         if (lengthSq > 0.0f) cursor = pivotPixel_ + along * ((off.x * along.x + off.y * along.y) / lengthSq);
     }
-    const Ray ray = cursorRay(view_, cursor);
+    const Ray ray = cursorRay(camera_, view_, cursor);
     const Vec3 w = gizmo_.pivot - ray.origin;
     const float b = dot(a, ray.direction), denominator = 1.0f - b * b;
     if (denominator < 1e-6f) return pressParameter_;  // the axis along the ray: no movement
@@ -206,8 +208,8 @@ GizmoEdit GizmoDrag::moveTo(Vec2 cursor, const GizmoSnap* snap) {
                 const float amount = axisParameter(cursor) - pressParameter_;
                 edit.translate = gizmo_.axes[handle_] * (snap ? snapTo(amount, snap->translate) : amount);
             } else {
-                const Ray ray = cursorRay(view_, cursor);
-                const Vec3 facing = makeRenderCamera(view_.camera, view_.width, view_.height).forward;
+                const Ray ray = cursorRay(camera_, view_, cursor);
+                const Vec3 facing = camera_.forward;
                 const Vec3 at = ray.origin + ray.direction * (dot(pressPoint_ - ray.origin, facing) /
                                                               dot(ray.direction, facing));
                 Vec3 d = at - pressPoint_;

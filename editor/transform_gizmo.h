@@ -15,6 +15,7 @@
 #include <optional>
 #include <vector>
 
+#include "render/scene/render_scene.h"
 #include "render/scene/scene.h"
 
 namespace pt::editor {
@@ -90,6 +91,7 @@ private:
     Gizmo gizmo_;
     int handle_;
     GizmoView view_;
+    RenderCamera camera_;  // view_'s, made once
     Vec2 press_, pivotPixel_;
     float pressParameter_ = 0.0f;
     Vec3 pressPoint_;  // the centre's drag: the press on the view plane
