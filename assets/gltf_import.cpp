@@ -34,6 +34,8 @@ const std::set<std::string> kSupportedExtensions = {
     "KHR_lights_punctual",
     "KHR_materials_variants",
     "KHR_materials_unlit",
+    "KHR_materials_diffuse_transmission",
+    "KHR_materials_sheen",
 };
 
 // One warning per unsupported extension the file declares, and per feature it uses that is

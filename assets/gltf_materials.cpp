@@ -43,6 +43,13 @@ const tinygltf::Value* extension(const tinygltf::Material& material, const char*
     return it == material.extensions.end() ? nullptr : &it->second;
 }
 
+// The texture slot `key` of a material extension's object, where it has one.
+TextureRef extensionTexture(GltfContext& ctx, const tinygltf::Value& extensionObject, const char* key,
+                            const std::string& where) {
+    if (!extensionObject.IsObject() || !extensionObject.Has(key)) return {};
+    return importGltfTexture(ctx, gltfTextureSlot(extensionObject.Get(key), where + "." + key));
+}
+
 void readCore(GltfContext& ctx, const tinygltf::Material& src, const std::string& element,
               Material& m) {
     const auto& pbr = src.pbrMetallicRoughness;
@@ -90,10 +97,7 @@ void readExtensions(GltfContext& ctx, const tinygltf::Material& src, const std::
     if (const auto* e = extension(src, "KHR_materials_transmission")) {
         const std::string where = base + "KHR_materials_transmission";
         m.transmission = unit(gltfNumber(ctx, *e, "transmissionFactor", 0.0, where));
-        if (e->IsObject() && e->Has("transmissionTexture")) {
-            m.transmissionTexture = importGltfTexture(
-                ctx, gltfTextureSlot(e->Get("transmissionTexture"), where + ".transmissionTexture"));
-        }
+        m.transmissionTexture = extensionTexture(ctx, *e, "transmissionTexture", where);
     }
     if (const auto* e = extension(src, "KHR_materials_volume")) {
         const std::string where = base + "KHR_materials_volume";
@@ -106,6 +110,22 @@ void readExtensions(GltfContext& ctx, const tinygltf::Material& src, const std::
         const std::string where = base + "KHR_materials_clearcoat";
         m.clearcoat = unit(gltfNumber(ctx, *e, "clearcoatFactor", 0.0, where));
         m.clearcoatRoughness = unit(gltfNumber(ctx, *e, "clearcoatRoughnessFactor", 0.0, where));
+    }
+    if (const auto* e = extension(src, "KHR_materials_diffuse_transmission")) {
+        const std::string where = base + "KHR_materials_diffuse_transmission";
+        m.diffuseTransmission = unit(gltfNumber(ctx, *e, "diffuseTransmissionFactor", 0.0, where));
+        m.diffuseTransmissionColor =
+            unit3(gltfNumbers(ctx, *e, "diffuseTransmissionColorFactor", {1, 1, 1}, where));
+        m.diffuseTransmissionTexture = extensionTexture(ctx, *e, "diffuseTransmissionTexture", where);
+        m.diffuseTransmissionColorTexture =
+            extensionTexture(ctx, *e, "diffuseTransmissionColorTexture", where);
+    }
+    if (const auto* e = extension(src, "KHR_materials_sheen")) {
+        const std::string where = base + "KHR_materials_sheen";
+        m.sheenColor = unit3(gltfNumbers(ctx, *e, "sheenColorFactor", {0, 0, 0}, where));
+        m.sheenRoughness = unit(gltfNumber(ctx, *e, "sheenRoughnessFactor", 0.0, where));
+        m.sheenColorTexture = extensionTexture(ctx, *e, "sheenColorTexture", where);
+        m.sheenRoughnessTexture = extensionTexture(ctx, *e, "sheenRoughnessTexture", where);
     }
     // KHR_materials_unlit: an empty object; its presence is the whole of it.
     if (extension(src, "KHR_materials_unlit")) m.unlit = 1;

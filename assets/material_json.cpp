@@ -29,6 +29,10 @@ constexpr ParamKey kParamKeys[] = {
     {"specularColor", nullptr, &Material::specularColor, NumberRange::NonNegative},
     {"clearcoat", &Material::clearcoat, nullptr, NumberRange::Unit},
     {"clearcoatRoughness", &Material::clearcoatRoughness, nullptr, NumberRange::Unit},
+    {"diffuseTransmission", &Material::diffuseTransmission, nullptr, NumberRange::Unit},
+    {"diffuseTransmissionColor", nullptr, &Material::diffuseTransmissionColor, NumberRange::Unit},
+    {"sheenColor", nullptr, &Material::sheenColor, NumberRange::Unit},
+    {"sheenRoughness", &Material::sheenRoughness, nullptr, NumberRange::Unit},
     {"thickness", &Material::thickness, nullptr, NumberRange::NonNegative},
     {"attenuationColor", nullptr, &Material::attenuationColor, NumberRange::Unit},
     // Infinity (no absorption) is the default and cannot be written in JSON: leave it out.
@@ -46,6 +50,10 @@ constexpr TextureKey kTextureKeys[] = {
     {"normalTexture", &Material::normalTexture},
     {"emissiveTexture", &Material::emissiveTexture},
     {"transmissionTexture", &Material::transmissionTexture},
+    {"diffuseTransmissionTexture", &Material::diffuseTransmissionTexture},
+    {"diffuseTransmissionColorTexture", &Material::diffuseTransmissionColorTexture},
+    {"sheenColorTexture", &Material::sheenColorTexture},
+    {"sheenRoughnessTexture", &Material::sheenRoughnessTexture},
 };
 
 constexpr const char* kAlphaModeNames[] = {"opaque", "mask", "blend"};

@@ -49,6 +49,14 @@ void materialEditor(EditorUi& ui, uint32_t index) {
     changed |= textureToggle(ui, index, 4, "Transmission", m.transmissionTexture);
     changed |= sliderFloat(ui, "Clearcoat", &m.clearcoat, 0.0f, 1.0f);
     changed |= sliderFloat(ui, "Clearcoat roughness", &m.clearcoatRoughness, 0.0f, 1.0f);
+    changed |= sliderFloat(ui, "Diffuse transmission", &m.diffuseTransmission, 0.0f, 1.0f);
+    changed |= textureToggle(ui, index, 5, "Diffuse transmission", m.diffuseTransmissionTexture);
+    changed |= colorEdit(ui, "Diffuse transmission color", &m.diffuseTransmissionColor);
+    changed |= textureToggle(ui, index, 6, "Diffuse transmission color", m.diffuseTransmissionColorTexture);
+    changed |= colorEdit(ui, "Sheen color", &m.sheenColor);
+    changed |= textureToggle(ui, index, 7, "Sheen color", m.sheenColorTexture);
+    changed |= sliderFloat(ui, "Sheen roughness", &m.sheenRoughness, 0.0f, 1.0f);
+    changed |= textureToggle(ui, index, 8, "Sheen roughness", m.sheenRoughnessTexture);
     changed |= colorEdit(ui, "Emission", &m.emission);
     changed |= sliderFloat(ui, "Emission strength", &m.emissionStrength, 0.0f, 1000.0f, "%.3f",
                            ImGuiSliderFlags_Logarithmic);

@@ -5,10 +5,15 @@
 //
 //   coat      w = clearcoat Fresnel(N.V)            white GGX, clearcoat.h (front only)
 //   and, scaled by 1 - w:
+//   sheen     c = sheenColor, normalised            Charlie fibres, sheen.h (front only)
+//   and, scaled by 1 - max(c) E_sheen(N.V) (front only):
 //   specular  metallic + (1-m)(1-t) layer           GGX reflection, Schlick F0/F90,
 //                                                   microfacet_reflection.h (front only)
-//   diffuse   (1-m)(1-t)                            Lambert under the specular layer,
+//   diffuse   (1-m)(1-t)(1-d)                       Lambert under the specular layer,
 //                                                   layered_diffuse.h (front only)
+//   diffuse   (1-m)(1-t) d                          KHR_materials_diffuse_transmission: Lambert
+//   transm.                                         into the other hemisphere, tinted, through
+//                                                   the specular layer at wo (front only)
 //   glass     (1-m) t                               rough dielectric BSDF, rough_dielectric.h
 //
 // Metal and the dielectric specular layer share one GGX lobe: Schlick's F is linear in F0 and
@@ -19,10 +24,13 @@
 //
 // kF, a scene feature set (scene_features.h), leaves out the coat without feature::kClearcoat
 // and the glass lobe without feature::kTransmission: kernels specialised on a scene with
-// neither carry no code for them. The parameters must then have clearcoat 0 and transmission 0.
+// neither carry no code for them, the diffuse transmission lobe without
+// feature::kDiffuseTransmission and the sheen without feature::kSheen. The parameters must then
+// have clearcoat 0, transmission 0, diffuse transmission 0 and a black sheen.
 #include "render/materials/clearcoat.h"
 #include "render/materials/layered_diffuse.h"
 #include "render/materials/rough_dielectric.h"
+#include "render/materials/sheen.h"
 #include "render/math/frame.h"
 #include "render/sampling/warp.h"
 #include "render/scene/scene_features.h"
@@ -41,6 +49,10 @@ struct BsdfParams {
     Vec3 specularColor{1.0f, 1.0f, 1.0f};
     float clearcoat = 0.0f;
     float clearcoatRoughness = 0.0f;
+    float diffuseTransmission = 0.0f;  // KHR_materials_diffuse_transmission factor
+    Vec3 diffuseTransmissionColor{1.0f, 1.0f, 1.0f};
+    Vec3 sheenColor{0.0f, 0.0f, 0.0f};  // KHR_materials_sheen; black: no sheen
+    float sheenRoughness = 0.0f;
 };
 
 struct BsdfSample {
@@ -49,6 +61,7 @@ struct BsdfSample {
     float pdf;       // solid-angle density; meaningless when `delta`
     bool delta;      // from a specular lobe: no light sampling, no MIS
     bool transmitted;
+    bool refracted;  // through the dielectric interface (radiance scales by eta^2), not diffusely
 };
 
 // Whether the BSDF can refract: the integrator keeps the geometric sidedness of such surfaces
@@ -59,10 +72,41 @@ PT_HD bool isTransmissive(const BsdfParams& p) {
 
 namespace bsdf_detail {
 
-enum Lobe : int { kCoat = 0, kSpecular = 1, kDiffuse = 2, kGlass = 3, kLobeCount = 4 };
+enum Lobe : int {
+    kCoat = 0,
+    kSpecular = 1,
+    kDiffuse = 2,
+    kGlass = 3,
+    kDiffuseTransmission = 4,
+    kSheen = 5,
+    kLobeCount = 6
+};
 
-// Everything that depends on the parameters and wo only, in the shading frame.
-struct Lobes {
+// The lobes code compiled for kF walks: the rare lobes (feature::kRareLobes) come last, and
+// loops stop before those kF leaves out.
+template <uint32_t kF>
+constexpr int lobesFor() {
+    return hasFeature<kF>(feature::kSheen)                 ? kLobeCount
+           : hasFeature<kF>(feature::kDiffuseTransmission) ? kSheen
+                                                           : kDiffuseTransmission;
+}
+
+// The rare lobes' weights: members of Lobes only in code compiled for them.
+template <bool kRare>
+struct RareLobeWeights {};
+template <>
+struct RareLobeWeights<true> {
+    Vec3 diffuseTransmitted;  // its albedo: color * mix weight * the layer's transmittance at wo
+    Vec3 sheen;               // sheenColor * mix weight / max(1, E_sheen(mu_o))
+    float sheenAlpha;
+};
+
+// Everything that depends on the parameters and wo only, in the shading frame. It holds only
+// what kF can use: sampleBsdf indexes its probabilities with the lobe it picked, which keeps
+// the whole of it in local memory, so every member more is stack traffic (the rare lobes'
+// seven floats cost the lean shading kernel 24 bytes of stack, 2 registers and 1.7% before).
+template <uint32_t kF>
+struct Lobes : RareLobeWeights<(kF & feature::kRareLobes) != 0u> {
     float coat;             // mix weight of the coat (0 from the back)
     float coatAlpha;
     Vec3 specF0, specF90;   // the shared GGX reflection lobe, mix weights folded in
@@ -71,7 +115,7 @@ struct Lobes {
     Vec3 diffuse;           // baseColor * mix weight * (1 - E(mu_o)) / (1 - E_avg)
     float glass;            // mix weight of the dielectric interface
     DielectricInterface interface;
-    float probability[kLobeCount];
+    float probability[lobesFor<kF>()];
 };
 
 PT_HD bool isZero(Vec3 v) { return !(maxComponent(v) > 0.0f); }
@@ -79,7 +123,7 @@ PT_HD bool isZero(Vec3 v) { return !(maxComponent(v) > 0.0f); }
 // Without feature::kGlossyReflection (kRoughTransmission) in kF, the scene's reflection (glass)
 // lobes are all smooth, so the rough lobes' code is left out.
 template <uint32_t kF>
-PT_HD bool isDeltaLobe(const Lobes& l, int lobe) {
+PT_HD bool isDeltaLobe(const Lobes<kF>& l, int lobe) {
     switch (lobe) {
         case kCoat: return ggxIsSmooth(l.coatAlpha);
         case kSpecular:
@@ -91,10 +135,12 @@ PT_HD bool isDeltaLobe(const Lobes& l, int lobe) {
 }
 
 template <uint32_t kF = kAllFeatures>
-PT_HD Lobes resolveLobes(const BsdfParams& p, Vec3 wo) {
+PT_HD Lobes<kF> resolveLobes(const BsdfParams& p, Vec3 wo) {
     constexpr bool kCoatLobe = hasFeature<kF>(feature::kClearcoat);
     constexpr bool kGlassLobe = hasFeature<kF>(feature::kTransmission);
-    Lobes l{};
+    constexpr bool kDiffuseTransmissionLobe = hasFeature<kF>(feature::kDiffuseTransmission);
+    constexpr bool kSheenLobe = hasFeature<kF>(feature::kSheen);
+    Lobes<kF> l{};
     const bool front = wo.z > 0.0f;
     const float muO = front ? wo.z : 0.0f;
     const float metallic = clampf(p.metallic, 0.0f, 1.0f);
@@ -105,15 +151,28 @@ PT_HD Lobes resolveLobes(const BsdfParams& p, Vec3 wo) {
     l.alpha = ggxAlpha(p.roughness);
     l.coatAlpha = kCoatLobe ? ggxAlpha(p.clearcoatRoughness) : 0.0f;
     l.coat = kCoatLobe ? clearcoatWeight(p.clearcoat, muO) : 0.0f;
-    const float base = 1.0f - l.coat;
+    float base = 1.0f - l.coat;
+    float a[lobesFor<kF>()] = {};  // estimated albedos at wo: lobe selection in proportion to them
+    if constexpr (kSheenLobe) {
+        if (front && maxComponent(p.sheenColor) > 0.0f) {
+            // The Charlie sheen reflects more than it receives at grazing views of smooth
+            // fibres (sheen.h): there it is scaled to reflect all, and no more. What it
+            // reflects the layers under it lose (the extension's albedo scaling).
+            const float albedo = sheenAlbedo(muO, p.sheenRoughness);
+            const float color = fminf(maxComponent(p.sheenColor), 1.0f);
+            l.sheenAlpha = sheenAlpha(p.sheenRoughness);
+            l.sheen = vmin(p.sheenColor, Vec3(1.0f)) * (base / fmaxf(albedo, 1.0f));
+            a[kSheen] = base * color * fminf(albedo, 1.0f);
+            base *= 1.0f - color * fminf(albedo, 1.0f);
+        }
+    }
 
     // KHR_materials_specular: F0 = min(F0(ior) specularColor, 1) specular, F90 = specular.
     l.layer.layerF0 = vmin(Vec3(dielectricF0(ior)) * vmax(p.specularColor, Vec3(0.0f)), Vec3(1.0f)) * specular;
     l.layer.layerF90 = Vec3(specular);
     l.layer.layerAlpha = l.alpha;
 
-    // Lobe selection in proportion to estimated albedos at wo.
-    float a[kLobeCount] = {0.0f, 0.0f, 0.0f, 0.0f};
+    const float transmitted = kDiffuseTransmissionLobe ? clampf(p.diffuseTransmission, 0.0f, 1.0f) : 0.0f;
     if (front) {
         const Vec3 metalF0 = vmin(vmax(p.baseColor, Vec3(0.0f)), Vec3(1.0f));
         l.specF0 = (metalF0 * metallic + l.layer.layerF0 * opaque) * base;
@@ -122,8 +181,16 @@ PT_HD Lobes resolveLobes(const BsdfParams& p, Vec3 wo) {
         a[kSpecular] = maxComponent(schlickAlbedo(albedoO, l.specF0, l.specF90));
         if (opaque > 0.0f) {
             const Vec3 transmittanceO = layerTransmittance(l.layer, albedoO);
-            l.diffuse = p.baseColor * (base * opaque) * diffuseLayerScale(l.layer, transmittanceO);
-            a[kDiffuse] = base * opaque * maxComponent(p.baseColor * transmittanceO);
+            const float reflected = base * opaque * (1.0f - transmitted);
+            l.diffuse = p.baseColor * reflected * diffuseLayerScale(l.layer, transmittanceO);
+            a[kDiffuse] = reflected * maxComponent(p.baseColor * transmittanceO);
+            if constexpr (kDiffuseTransmissionLobe) {
+                if (transmitted > 0.0f) {
+                    l.diffuseTransmitted = vmax(p.diffuseTransmissionColor, Vec3(0.0f)) *
+                                           (base * opaque * transmitted) * transmittanceO;
+                    a[kDiffuseTransmission] = maxComponent(l.diffuseTransmitted);
+                }
+            }
         }
         if (kCoatLobe && l.coat > 0.0f) {
             const SpecularAlbedo coatAlbedo = ggxSpecularAlbedo(muO, l.coatAlpha);
@@ -141,14 +208,14 @@ PT_HD Lobes resolveLobes(const BsdfParams& p, Vec3 wo) {
                                     0.1f * transmit);
     }
     float sum = 0.0f;
-    for (int i = 0; i < kLobeCount; ++i) sum += a[i] > 0.0f ? a[i] : 0.0f;
-    for (int i = 0; i < kLobeCount; ++i) l.probability[i] = sum > 0.0f && a[i] > 0.0f ? a[i] / sum : 0.0f;
+    for (int i = 0; i < lobesFor<kF>(); ++i) sum += a[i] > 0.0f ? a[i] : 0.0f;
+    for (int i = 0; i < lobesFor<kF>(); ++i) l.probability[i] = sum > 0.0f && a[i] > 0.0f ? a[i] / sum : 0.0f;
     return l;
 }
 
 // f * |cos(wi)| and the mixture pdf over the non-delta lobes, in the shading frame.
 template <uint32_t kF = kAllFeatures>
-PT_HD Vec3 evalLobes(const Lobes& l, Vec3 wo, Vec3 wi) {
+PT_HD Vec3 evalLobes(const Lobes<kF>& l, Vec3 wo, Vec3 wi) {
     Vec3 f(0.0f);
     if (wo.z > 0.0f && wi.z > 0.0f) {
         if (hasFeature<kF>(feature::kClearcoat) && l.coat > 0.0f && !isDeltaLobe<kF>(l, kCoat))
@@ -158,13 +225,20 @@ PT_HD Vec3 evalLobes(const Lobes& l, Vec3 wo, Vec3 wi) {
         }
         if (!isZero(l.diffuse)) f += evalLayeredDiffuse(l.layer, l.diffuse, wi);
     }
+    if constexpr (hasFeature<kF>(feature::kDiffuseTransmission)) {
+        if (wo.z > 0.0f && wi.z < 0.0f && !isZero(l.diffuseTransmitted))
+            f += l.diffuseTransmitted * (-wi.z * kInvPi);
+    }
+    if constexpr (hasFeature<kF>(feature::kSheen)) {
+        if (!isZero(l.sheen)) f += l.sheen * evalSheen(wo, wi, l.sheenAlpha);
+    }
     if (hasFeature<kF>(feature::kTransmission) && l.glass > 0.0f && !isDeltaLobe<kF>(l, kGlass))
         f += evalRoughDielectric(l.interface, wo, wi) * l.glass;
     return f;
 }
 
 template <uint32_t kF = kAllFeatures>
-PT_HD float pdfLobes(const Lobes& l, Vec3 wo, Vec3 wi) {
+PT_HD float pdfLobes(const Lobes<kF>& l, Vec3 wo, Vec3 wi) {
     float pdf = 0.0f;
     if (wo.z > 0.0f && wi.z > 0.0f) {
         if (hasFeature<kF>(feature::kClearcoat) && l.probability[kCoat] > 0.0f &&
@@ -176,6 +250,13 @@ PT_HD float pdfLobes(const Lobes& l, Vec3 wo, Vec3 wi) {
         }
         pdf += l.probability[kDiffuse] * cosineHemispherePdf(wi.z);
     }
+    if constexpr (hasFeature<kF>(feature::kDiffuseTransmission)) {
+        if (wo.z > 0.0f && wi.z < 0.0f)
+            pdf += l.probability[kDiffuseTransmission] * cosineHemispherePdf(-wi.z);
+    }
+    if constexpr (hasFeature<kF>(feature::kSheen)) {
+        if (wo.z > 0.0f && wi.z > 0.0f) pdf += l.probability[kSheen] * cosineHemispherePdf(wi.z);
+    }
     if (hasFeature<kF>(feature::kTransmission) && l.probability[kGlass] > 0.0f &&
         !isDeltaLobe<kF>(l, kGlass)) {
         pdf += l.probability[kGlass] * pdfRoughDielectric(l.interface, wo, wi);
@@ -183,9 +264,33 @@ PT_HD float pdfLobes(const Lobes& l, Vec3 wo, Vec3 wi) {
     return pdf;
 }
 
+// The rare lobes, both cosine-weighted. The sheen's lobe is broad, and sampling its half vectors
+// would send most directions below the horizon (its distribution peaks at grazing h).
+template <uint32_t kF>
+PT_HD LobeSample sampleRareLobe(const Lobes<kF>& l, int lobe, Vec3 wo, Vec2 uDir) {
+    LobeSample s{};
+    s.wi = squareToCosineHemisphere(uDir);
+    if (lobe == kDiffuseTransmission) {
+        s.wi.z = -s.wi.z;  // into the other hemisphere
+        s.valid = wo.z > 0.0f && s.wi.z < 0.0f;
+        s.pdf = cosineHemispherePdf(-s.wi.z);
+        s.weight = l.diffuseTransmitted;  // the cos / pi cancel
+        s.transmitted = true;
+        return s;
+    }
+    s.valid = wo.z > 0.0f && s.wi.z > 0.0f;
+    s.pdf = cosineHemispherePdf(s.wi.z);
+    s.weight = s.valid ? l.sheen * (evalSheen(wo, s.wi, l.sheenAlpha) / s.pdf) : Vec3(0.0f);
+    return s;
+}
+
 // Samples the chosen lobe alone; the weight includes the lobe's mix weight.
 template <uint32_t kF = kAllFeatures>
-PT_HD LobeSample sampleLobe(const Lobes& l, int lobe, Vec3 wo, float uChoice, Vec2 uDir) {
+PT_HD LobeSample sampleLobe(const Lobes<kF>& l, int lobe, Vec3 wo, float uChoice, Vec2 uDir) {
+    // Tested apart, so that code without them keeps the switch it had before they came.
+    if constexpr ((kF & feature::kRareLobes) != 0u) {
+        if (lobe >= kDiffuseTransmission) return sampleRareLobe(l, lobe, wo, uDir);
+    }
     LobeSample s{};
     switch (lobe) {
         case kCoat:
@@ -216,9 +321,9 @@ PT_HD LobeSample sampleLobe(const Lobes& l, int lobe, Vec3 wo, float uChoice, Ve
 
 // How many non-delta lobes can be picked.
 template <uint32_t kF>
-PT_HD int nonDeltaLobeCount(const Lobes& l) {
+PT_HD int nonDeltaLobeCount(const Lobes<kF>& l) {
     int n = 0;
-    for (int i = 0; i < kLobeCount; ++i) n += l.probability[i] > 0.0f && !isDeltaLobe<kF>(l, i) ? 1 : 0;
+    for (int i = 0; i < lobesFor<kF>(); ++i) n += l.probability[i] > 0.0f && !isDeltaLobe<kF>(l, i) ? 1 : 0;
     return n;
 }
 
@@ -246,7 +351,7 @@ struct BsdfEval {
 template <uint32_t kF = kAllFeatures>
 PT_HD BsdfEval evalBsdfWithPdf(const BsdfParams& p, const Frame& frame, Vec3 woWorld, Vec3 wiWorld) {
     const Vec3 wo = frame.toLocal(woWorld), wi = frame.toLocal(wiWorld);
-    const bsdf_detail::Lobes lobes = bsdf_detail::resolveLobes<kF>(p, wo);
+    const bsdf_detail::Lobes<kF> lobes = bsdf_detail::resolveLobes<kF>(p, wo);
     return {bsdf_detail::evalLobes<kF>(lobes, wo, wi), bsdf_detail::pdfLobes<kF>(lobes, wo, wi)};
 }
 
@@ -259,9 +364,13 @@ PT_HD bool hasNonDeltaLobes(const BsdfParams& p) {
     const float opaque = (1.0f - metallic) * (1.0f - transmission);
     const float alpha = ggxAlpha(p.roughness);
     if (opaque > 0.0f && maxComponent(p.baseColor) > 0.0f) return true;
+    if (hasFeature<kF>(feature::kDiffuseTransmission) && opaque > 0.0f && p.diffuseTransmission > 0.0f &&
+        maxComponent(p.diffuseTransmissionColor) > 0.0f)
+        return true;
     if (hasFeature<kF>(feature::kClearcoat) && p.clearcoat > 0.0f &&
         !ggxIsSmooth(ggxAlpha(p.clearcoatRoughness)))
         return true;
+    if (hasFeature<kF>(feature::kSheen) && maxComponent(p.sheenColor) > 0.0f) return true;
     if (ggxIsSmooth(alpha)) return false;
     const float ior = p.ior > 0.0f ? p.ior : 1.0f;
     return metallic > 0.0f || (opaque > 0.0f && p.specular > 0.0f) ||
@@ -274,11 +383,11 @@ template <uint32_t kF = kAllFeatures>
 PT_HD BsdfSample sampleBsdf(const BsdfParams& p, const Frame& frame, Vec3 woWorld, float uLobe, Vec2 uDir) {
     using namespace bsdf_detail;
     const Vec3 wo = frame.toLocal(woWorld);
-    const Lobes l = resolveLobes<kF>(p, wo);
+    const Lobes<kF> l = resolveLobes<kF>(p, wo);
     BsdfSample s{};
     int lobe = -1;
     float start = 0.0f, next = 0.0f;
-    for (int i = 0; i < kLobeCount; ++i) {
+    for (int i = 0; i < lobesFor<kF>(); ++i) {
         if (l.probability[i] <= 0.0f) continue;
         lobe = i;  // the last lobe with a probability catches rounding past the sum
         start = next;
@@ -291,6 +400,7 @@ PT_HD BsdfSample sampleBsdf(const BsdfParams& p, const Frame& frame, Vec3 woWorl
     if (!ls.valid) return s;
     s.wi = frame.toWorld(ls.wi);
     s.transmitted = ls.transmitted;
+    s.refracted = ls.transmitted && ((kF & feature::kDiffuseTransmission) == 0u || lobe == kGlass);
     if (ls.delta) {
         s.delta = true;
         s.weight = ls.weight * (1.0f / l.probability[lobe]);

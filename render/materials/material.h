@@ -53,6 +53,17 @@ struct Material {
     TextureRef emissiveTexture;        // sRGB
     TextureRef transmissionTexture;    // linear, R
 
+    // The rare lobes' parameters (scene_features.h, kRareLobes) come after the fields every
+    // kernel reads, which keep the offsets they had before these were added.
+    float diffuseTransmission = 0.0f;  // KHR_materials_diffuse_transmission: diffuseTransmissionFactor
+    Vec3 diffuseTransmissionColor{1.0f, 1.0f, 1.0f};
+    TextureRef diffuseTransmissionTexture;       // linear, A
+    TextureRef diffuseTransmissionColorTexture;  // sRGB
+    Vec3 sheenColor{0.0f, 0.0f, 0.0f};           // KHR_materials_sheen: sheenColorFactor; black: no sheen
+    float sheenRoughness = 0.0f;
+    TextureRef sheenColorTexture;      // sRGB
+    TextureRef sheenRoughnessTexture;  // linear, A
+
     PT_HD Vec3 emittedRadiance() const { return emission * emissionStrength; }
     PT_HD bool isEmissive() const { return maxComponent(emission) * emissionStrength > 0.0f; }
 };

@@ -34,6 +34,27 @@ PT_HD BsdfParams bsdfParamsAt(const RenderScene& scene, const Material& m, Vec2 
     p.specular = clampf(p.specular, 0.0f, 1.0f);
     p.clearcoat = clampf(p.clearcoat, 0.0f, 1.0f);
     p.clearcoatRoughness = clampf(p.clearcoatRoughness, 0.0f, 1.0f);
+    if (hasFeature<kF>(feature::kDiffuseTransmission)) {
+        p.diffuseTransmission = m.diffuseTransmission;
+        p.diffuseTransmissionColor = m.diffuseTransmissionColor;
+        if (m.diffuseTransmissionTexture.present())
+            p.diffuseTransmission *= sampleTexture(scene, m.diffuseTransmissionTexture, uv, false).w;
+        if (m.diffuseTransmissionColorTexture.present())
+            p.diffuseTransmissionColor *=
+                sampleTexture(scene, m.diffuseTransmissionColorTexture, uv, true).xyz();
+        p.diffuseTransmission = clampf(p.diffuseTransmission, 0.0f, 1.0f);
+        p.diffuseTransmissionColor = vmax(p.diffuseTransmissionColor, Vec3(0.0f));
+    }
+    if (hasFeature<kF>(feature::kSheen)) {
+        p.sheenColor = m.sheenColor;
+        p.sheenRoughness = m.sheenRoughness;
+        if (m.sheenColorTexture.present())
+            p.sheenColor *= sampleTexture(scene, m.sheenColorTexture, uv, true).xyz();
+        if (m.sheenRoughnessTexture.present())
+            p.sheenRoughness *= sampleTexture(scene, m.sheenRoughnessTexture, uv, false).w;
+        p.sheenColor = vmin(vmax(p.sheenColor, Vec3(0.0f)), Vec3(1.0f));
+        p.sheenRoughness = clampf(p.sheenRoughness, 0.0f, 1.0f);
+    }
     return p;
 }
 

@@ -39,6 +39,8 @@ uint32_t materialFeatures(const Material& m) {
         if (isVolumeBoundary(m) && maxComponent(absorptionCoefficient(m)) > 0.0f) f |= kVolume;
     }
     if (m.clearcoat > 0.0f) f |= kClearcoat;
+    if (m.diffuseTransmission > 0.0f && m.metallic < 1.0f) f |= kDiffuseTransmission;
+    if (maxComponent(m.sheenColor) > 0.0f) f |= kSheen;  // a black factor disables the layer
     if (m.specular != 1.0f || m.specularColor.x != 1.0f || m.specularColor.y != 1.0f ||
         m.specularColor.z != 1.0f) {
         f |= kSpecularLayer;
@@ -102,7 +104,9 @@ const char* featureName(uint32_t bit) {
                                                         "aovs",
                                                         "brute_force",
                                                         "glossy_reflection",
-                                                        "unlit"};
+                                                        "unlit",
+                                                        "diffuse_transmission",
+                                                        "sheen"};
     for (uint32_t i = 0; i < feature::kCount; ++i) {
         if (bit == (1u << i)) return kNames[i];
     }

@@ -50,13 +50,20 @@ constexpr uint32_t kBruteForce = 1u << 24;         // the "BVH off" toggle (set 
 constexpr uint32_t kGlossyReflection = 1u << 25;
 // KHR_materials_unlit surfaces: they end the path with their base colour.
 constexpr uint32_t kUnlit = 1u << 26;
-constexpr uint32_t kCount = 27;
+// KHR_materials_diffuse_transmission: a Lambertian lobe into the other hemisphere.
+constexpr uint32_t kDiffuseTransmission = 1u << 27;
+// KHR_materials_sheen: a Charlie fibre lobe over the rest (fabric, velvet).
+constexpr uint32_t kSheen = 1u << 28;
+constexpr uint32_t kCount = 29;
 
 // Groups the kernels test.
 constexpr uint32_t kTextures =
     kBaseColorTexture | kMetallicRoughnessTexture | kEmissiveTexture | kTransmissionTexture;
 constexpr uint32_t kTransparency = kAlphaMask | kAlphaBlend | kBackfaceCulling;
 constexpr uint32_t kTransmission = kSmoothTransmission | kRoughTransmission;
+// Lobes of glTF material extensions few scenes use: only the generic ("full") kernels carry
+// them, so every other scene runs the code it ran before they were written.
+constexpr uint32_t kRareLobes = kDiffuseTransmission | kSheen;
 // Features no kernel code depends on: every variant has them. (AOVs select the generic
 // kernels: recording them is a debugging and export path, not worth a variant of its own.)
 constexpr uint32_t kUngated =

@@ -272,8 +272,8 @@ TEST(GltfImport, UnsupportedExtensionsWarnAndStillLoad) {
     EXPECT_EQ(r.file.placements.size(), 1u);
     // KHR_lights_punctual is supported (gltf_lights_test.cpp): declaring it is not a warning.
     EXPECT_EQ(warningsContaining(r.scene, "KHR_lights_punctual"), 0u);
-    EXPECT_EQ(warningsContaining(r.scene, "required extension KHR_materials_sheen"), 1u);
-    EXPECT_EQ(warningsContaining(r.scene, "KHR_materials_sheen"), 1u);  // once, not per list
+    EXPECT_EQ(warningsContaining(r.scene, "required extension EXT_lights_image_based"), 1u);
+    EXPECT_EQ(warningsContaining(r.scene, "EXT_lights_image_based"), 1u);  // once, not per list
     EXPECT_EQ(warningsContaining(r.scene, "KHR_texture_transform"), 0u);
 }
 
@@ -392,12 +392,20 @@ TEST(GltfObjDispatch, PicksTheImporterByExtensionIgnoringCase) {
     }
 }
 
-// KHR_materials_unlit: the material is marked unlit, and the extension is honoured (no warning).
-TEST(GltfImport, UnlitMaterials) {
+// KHR_materials_unlit, _diffuse_transmission and _sheen: read, honoured (no warning), with
+// the extensions' textures.
+TEST(GltfImport, UnlitAndDiffuseTransmissionMaterials) {
     const std::string path = test::writeTempFile("unlit.gltf", R"({"asset": {"version": "2.0"},
-  "extensionsUsed": ["KHR_materials_unlit"],
+  "extensionsUsed": ["KHR_materials_unlit", "KHR_materials_diffuse_transmission", "KHR_materials_sheen"],
   "materials": [{"name": "baked", "pbrMetallicRoughness": {"baseColorFactor": [0.3, 0.6, 0.9, 1]},
-                 "extensions": {"KHR_materials_unlit": {}}}, {"name": "lit"}],
+                 "extensions": {"KHR_materials_unlit": {}}},
+                {"name": "lit", "extensions": {"KHR_materials_diffuse_transmission": {
+                    "diffuseTransmissionFactor": 0.25, "diffuseTransmissionColorFactor": [0.5, 1, 0.2],
+                    "diffuseTransmissionColorTexture": {"index": 0}},
+                  "KHR_materials_sheen": {"sheenColorFactor": [0.9, 0.8, 0.7], "sheenRoughnessFactor": 0.3,
+                    "sheenColorTexture": {"index": 0}, "sheenRoughnessTexture": {"index": 0}}}}],
+  "textures": [{"source": 0}],
+  "images": [{"uri": "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR42mP8z8DwHwAFBQIAX8jx0gAAAABJRU5ErkJggg=="}],
   )" + test::quadGltfGeometry() + R"(,
   "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 3, "material": 0},
                              {"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 3, "material": 1}]}],
@@ -408,6 +416,16 @@ TEST(GltfImport, UnlitMaterials) {
     EXPECT_EQ(scene.materials[0].params.unlit, 1u);
     EXPECT_EQ(scene.materials[0].params.baseColor, Vec3(0.3f, 0.6f, 0.9f));
     EXPECT_EQ(scene.materials[1].params.unlit, 0u);
+    EXPECT_EQ(scene.materials[1].params.diffuseTransmission, 0.25f);
+    EXPECT_EQ(scene.materials[1].params.diffuseTransmissionColor, Vec3(0.5f, 1.0f, 0.2f));
+    EXPECT_EQ(scene.materials[0].params.diffuseTransmission, 0.0f);
+    EXPECT_TRUE(scene.materials[1].params.diffuseTransmissionColorTexture.present());
+    EXPECT_FALSE(scene.materials[1].params.diffuseTransmissionTexture.present());
+    EXPECT_EQ(scene.materials[1].params.sheenColor, Vec3(0.9f, 0.8f, 0.7f));
+    EXPECT_EQ(scene.materials[1].params.sheenRoughness, 0.3f);
+    EXPECT_TRUE(scene.materials[1].params.sheenColorTexture.present());
+    EXPECT_TRUE(scene.materials[1].params.sheenRoughnessTexture.present());
+    EXPECT_TRUE(scene.gltfExtensions.at("KHR_materials_sheen"));
     EXPECT_TRUE(scene.gltfExtensions.at("KHR_materials_unlit"));
     EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
 }

@@ -68,6 +68,14 @@ TEST(SceneJson, EveryKeyIsRead) {
         << "degrees in JSON, radians inside";
     EXPECT_EQ(plastic.transmissionTexture.texture, plastic.baseColorTexture.texture);
     EXPECT_EQ(plastic.unlit, 0u);
+    EXPECT_EQ(plastic.diffuseTransmission, 0.4f);
+    EXPECT_EQ(plastic.diffuseTransmissionColor, Vec3(0.3f, 0.9f, 0.5f));
+    EXPECT_EQ(plastic.sheenColor, Vec3(0.8f, 0.7f, 0.6f));
+    EXPECT_EQ(plastic.sheenRoughness, 0.45f);
+    for (const TextureRef* slot :
+         {&plastic.diffuseTransmissionTexture, &plastic.diffuseTransmissionColorTexture,
+          &plastic.sheenColorTexture, &plastic.sheenRoughnessTexture})
+        EXPECT_EQ(slot->texture, plastic.baseColorTexture.texture);
     EXPECT_EQ(scene.materials[size_t(findSceneMaterial(scene, "poster"))].params.unlit, 1u);
 
     ASSERT_EQ(scene.objects.size(), 5u);

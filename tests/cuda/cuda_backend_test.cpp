@@ -247,29 +247,43 @@ TEST(CudaBackend, EveryKernelVariantMatchesTheCpu) {
             EXPECT_LT(double(differing), 0.02 * pixels) << v.name;
             EXPECT_NEAR(sumGpu / sumCpu, 1.0, 2e-3) << v.name;
         }
-        // Cornell: lean, glossy, textured, full; the glossy grid: glossy-single and up.
-        EXPECT_GE(covering, 4) << describeFeatures(features);
+        // Cornell: lean, glossy, textured, layered, full; the glossy grid: glossy-single and up.
+        EXPECT_GE(covering, 5) << describeFeatures(features);
     }
 }
 
-// KHR_materials_unlit on the GPU: the Cornell box with its red wall unlit (the camera and every
-// bounce see its colour, nothing lights it) renders as on the CPU at equal samples, on the
-// leanest variant that covers it ("textured": unlit is a glTF scene's feature).
-TEST(CudaBackend, UnlitSurfacesMatchTheCpu) {
+// KHR_materials_unlit, _diffuse_transmission and _sheen on the GPU: the Cornell box with its
+// red wall unlit (the camera and every bounce see its colour, nothing lights it), its white
+// surfaces letting 40% through diffusely and its green wall velvet renders as on the CPU at
+// equal samples, on the leanest variant that covers it ("full": diffuse transmission and sheen
+// are rare lobes; unlit alone runs "textured").
+TEST(CudaBackend, UnlitDiffuseTransmissionAndSheenMatchTheCpu) {
     PT_REQUIRE_CUDA_DEVICE();
     Scene scene = cornell(48);
     scene.materials[size_t(scene.findMaterial("red"))].params.unlit = 1;
+    Material& white = scene.materials[size_t(scene.findMaterial("white"))].params;
+    white.diffuseTransmission = 0.4f;
+    white.diffuseTransmissionColor = {0.9f, 0.8f, 0.7f};
+    Material& green = scene.materials[size_t(scene.findMaterial("green"))].params;
+    green.sheenColor = {1.0f, 0.5f, 0.8f};
+    green.sheenRoughness = 0.4f;
     CpuBackend cpuBackend;
     cuda::CudaBackend gpuBackend;
     const std::vector<float> cpu = renderWith(cpuBackend, scene, 16);
     const std::vector<float> gpu = renderWith(gpuBackend, scene, 16);
     ASSERT_NE(cpuBackend.stats().features & feature::kUnlit, 0u);
-    EXPECT_EQ(gpuBackend.stats().kernelVariant, "textured");
+    ASSERT_NE(cpuBackend.stats().features & feature::kDiffuseTransmission, 0u);
+    ASSERT_NE(cpuBackend.stats().features & feature::kSheen, 0u);
+    EXPECT_EQ(gpuBackend.stats().kernelVariant, "full");
+    const uint32_t withoutRareLobes = cpuBackend.stats().features & ~feature::kRareLobes;
+    EXPECT_STREQ(cuda::kKernelVariants[cuda::chooseKernelVariant(withoutRareLobes)].name, "textured");
     double sumCpu = 0.0, sumGpu = 0.0;
     for (size_t i = 0; i < cpu.size(); i += 4) {
         for (int c = 0; c < 3; ++c) sumCpu += cpu[i + size_t(c)], sumGpu += gpu[i + size_t(c)];
     }
-    std::cout << "[ figures  ] unlit red wall, Cornell 48x48 at 16 spp: largest CPU/CUDA deviation "
+    std::cout << "[ figures  ] unlit red wall, diffusely transmitting white, velvet green, Cornell 48x48 "
+                 "at 16 spp: "
+                 "largest CPU/CUDA deviation "
               << maxAbsDifference(cpu, gpu) << ", image means ratio " << sumGpu / sumCpu << "\n";
     EXPECT_NEAR(sumGpu / sumCpu, 1.0, 2e-3);
     // The wall's middle row, seen directly: exactly its colour on both.
@@ -277,6 +291,39 @@ TEST(CudaBackend, UnlitSurfacesMatchTheCpu) {
     EXPECT_NEAR(gpu[pixel], 0.63f, 1e-5f);
     EXPECT_NEAR(gpu[pixel + 1], 0.065f, 1e-5f);
     EXPECT_NEAR(cpu[pixel + 2], gpu[pixel + 2], 1e-5f);
+}
+
+// scenes/extensions.json (a sheen cloth with a colour/roughness texture, a diffusely
+// transmitting leaf, glTF files of this project) renders on the GPU as on the CPU.
+TEST(CudaBackend, ExtensionSamplesMatchTheCpu) {
+    PT_REQUIRE_CUDA_DEVICE();
+    Scene scene = test::loadSceneOrFail(test::projectPath("scenes/extensions.json"));
+    scene.render.width = 96;
+    scene.render.height = 60;
+    CpuBackend cpuBackend;
+    cuda::CudaBackend gpuBackend;
+    const std::vector<float> cpu = renderWith(cpuBackend, scene, 16);
+    const std::vector<float> gpu = renderWith(gpuBackend, scene, 16);
+    ASSERT_NE(cpuBackend.stats().features & feature::kSheen, 0u);
+    double sumCpu = 0.0, sumGpu = 0.0;
+    size_t differing = 0;
+    for (size_t i = 0; i < cpu.size(); i += 4) {
+        const float scale = std::max(1e-3f, std::max(cpu[i], std::max(cpu[i + 1], cpu[i + 2])));
+        bool differs = false;
+        for (int c = 0; c < 3; ++c) {
+            sumCpu += cpu[i + size_t(c)];
+            sumGpu += gpu[i + size_t(c)];
+            differs |= std::fabs(cpu[i + size_t(c)] - gpu[i + size_t(c)]) > 1e-3f * scale;
+        }
+        differing += differs ? 1 : 0;
+    }
+    const double pixels = double(cpu.size() / 4);
+    std::cout << "[ figures  ] extension samples 96x60 at 16 spp on " << gpuBackend.stats().kernelVariant
+              << ": " << differing << " of " << pixels
+              << " pixels differ from the CPU by more than 1e-3, largest deviation "
+              << maxAbsDifference(cpu, gpu) << ", image means ratio " << sumGpu / sumCpu << "\n";
+    EXPECT_LT(double(differing), 0.02 * pixels);
+    EXPECT_NEAR(sumGpu / sumCpu, 1.0, 2e-3);
 }
 
 // Independent samples (other seeds) on the GPU against the CPU: an unbiasedness check by a

@@ -13,7 +13,7 @@ using VariantFeatures = std::integral_constant<uint32_t, kKernelVariants[kIndex]
 
 template <class Fn>
 void forKernelVariant(uint32_t variant, Fn&& fn) {
-    static_assert(kKernelVariantCount == 6, "one case per kernel variant");
+    static_assert(kKernelVariantCount == 7, "one case per kernel variant");
     switch (variant) {
         case 0:
             fn(VariantFeatures<0>{});
@@ -29,6 +29,9 @@ void forKernelVariant(uint32_t variant, Fn&& fn) {
             return;
         case 4:
             fn(VariantFeatures<4>{});
+            return;
+        case 5:
+            fn(VariantFeatures<5>{});
             return;
         default:
             fn(VariantFeatures<kFullVariant>{});

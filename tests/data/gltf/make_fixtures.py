@@ -333,9 +333,9 @@ def missing_image():
 
 def unsupported_extensions():
     doc = single_quad()
-    doc.json["extensionsUsed"] = ["KHR_lights_punctual", "KHR_materials_sheen",
+    doc.json["extensionsUsed"] = ["KHR_lights_punctual", "EXT_lights_image_based",
                                   "KHR_texture_transform"]
-    doc.json["extensionsRequired"] = ["KHR_materials_sheen"]
+    doc.json["extensionsRequired"] = ["EXT_lights_image_based"]
     doc.save_gltf("unsupported_extensions.gltf")
 
 

@@ -1,11 +1,13 @@
 // Integrator features beyond plain BSDFs: alpha coverage (MASK, BLEND) for camera, bounce and
 // shadow rays; tangent-space normal maps (file tangents and UV-derived ones); Beer-Lambert
-// absorption inside volumes; and the firefly clamp.
+// absorption inside volumes; unlit, diffusely transmitting and sheen surfaces; and the firefly
+// clamp.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "render/integrator/path_tracer.h"
+#include "render/materials/sheen.h"
 #include "support/render_cpu.h"
 #include "support/scene_builder.h"
 
@@ -247,6 +249,54 @@ TEST(Unlit, LightsWhatSeesItButIsNoLight) {
         } else {
             EXPECT_EQ(floor, 0.0);
         }
+    }
+}
+
+// KHR_materials_diffuse_transmission: a black sheet (no diffuse reflection, no specular layer)
+// that transmits diffusely with colour 0.5, in front of a sky of 2 on every side, shows the sky
+// behind it: 0.5 * 2 = 1. Without the transmission it is black.
+TEST(DiffuseTransmission, ASheetShowsTheLightBehindIt) {
+    for (const float share : {1.0f, 0.0f}) {
+        Material sheet = diffuse(Vec3(0.0f));
+        sheet.specular = 0.0f;
+        sheet.diffuseTransmission = share;
+        sheet.diffuseTransmissionColor = Vec3(0.5f);
+        Scene scene = quadInFrontOfSky(sheet, Vec3(2.0f));
+        scene.render.maxDepth = 2;
+        CpuBackend backend;
+        backend.setToggles(kNeeMis);
+        backend.sync(scene, SceneChanges::All, {});
+        backend.render(256);
+        EXPECT_EQ(share > 0.0f, (backend.stats().features & feature::kDiffuseTransmission) != 0u);
+        EXPECT_NEAR(meanChannel(test::beautyOf(backend), 1), share, 0.02) << "share " << share;
+    }
+}
+
+// KHR_materials_sheen: a white sheen on a black base without a specular layer, under a sky of
+// 2 on every side, seen at 60 degrees from its normal (the camera's field is 10 degrees, so the
+// middle pixels see it within a degree of that) reflects the sky times the sheen's albedo there;
+// without the sheen it is black.
+TEST(Sheen, ReflectsTheSkyByItsAlbedo) {
+    for (const float sheenRoughness : {0.3f, 1.0f}) {
+        Material velvet = diffuse(Vec3(0.0f));
+        velvet.specular = 0.0f;
+        velvet.sheenColor = Vec3(1.0f);
+        velvet.sheenRoughness = sheenRoughness;
+        Scene scene = quadInFrontOfSky(velvet, Vec3(2.0f));
+        scene.instances[0].objectToWorld = trs({0, 0, 0}, {30, 0, 0}).toAffine();
+        scene.render.maxDepth = 2;
+        CpuBackend backend;
+        backend.setToggles(kNeeMis);
+        backend.sync(scene, SceneChanges::All, {});
+        backend.render(512);
+        EXPECT_NE(backend.stats().features & feature::kSheen, 0u);
+        const std::vector<float> image = test::beautyOf(backend);
+        double sum = 0.0;
+        for (uint32_t y = 6; y < 10; ++y) {
+            for (uint32_t x = 6; x < 10; ++x) sum += image[(y * 16 + x) * 4 + 1];
+        }
+        const double expected = 2.0 * sheenAlbedo(0.5f, sheenRoughness);
+        EXPECT_NEAR(sum / 16.0, expected, 0.02 + 0.03 * expected) << "sheen roughness " << sheenRoughness;
     }
 }
 

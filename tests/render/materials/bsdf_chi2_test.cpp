@@ -26,6 +26,14 @@ int sampleCount() {
     const int n = env ? std::atoi(env) : 0;
     return n > 0 ? n : 1000000;
 }
+// The first case's seed ($PT_CHI2_SEED, else 2000), case i using the base + i. At 1000 the leaf
+// (diffuse transmission) at roughness 1, 80 degrees, gave p = 7.8e-6 once the leaf joined the
+// cases, under the level (8.4e-5); at 4M samples it passed, and at bases 2000, 3000 and 4000
+// every case passed (smallest p 1e-4, 5e-3, 1.1e-3): a tail of 120 tests, not a bias.
+uint64_t seedBase() {
+    const char* env = std::getenv("PT_CHI2_SEED");
+    return env ? uint64_t(std::strtoull(env, nullptr, 10)) : 2000u;
+}
 constexpr float kRoughness[] = {0.05f, 0.2f, 0.5f, 1.0f};
 constexpr float kIncidenceDegrees[] = {0.0f, 30.0f, 60.0f, 80.0f, 89.0f};
 
@@ -44,11 +52,20 @@ std::vector<TestMaterial> materials(float roughness) {
     layered.clearcoat = 0.6f;
     layered.clearcoatRoughness = std::min(1.0f, roughness * 1.5f);
     layered.specularColor = {1.0f, 0.8f, 0.6f};
-    return {{"metal", metal, false},
-            {"plastic", plastic, false},
-            {"glass-outside", glass, false},
-            {"glass-inside", glass, true},
-            {"layered", layered, false}};
+    BsdfParams leaf{{0.5f, 0.7f, 0.3f}, 0.0f, 0.0f, 1.5f};  // KHR_materials_diffuse_transmission
+    leaf.roughness = roughness;
+    leaf.diffuseTransmission = 0.5f;
+    leaf.diffuseTransmissionColor = {0.8f, 0.9f, 0.4f};
+    layered.diffuseTransmission = 0.25f;
+    layered.sheenColor = {0.3f, 0.3f, 0.5f};
+    layered.sheenRoughness = 0.5f;
+    BsdfParams velvet{{0.3f, 0.05f, 0.1f}, 0.0f, 0.0f, 1.5f};  // KHR_materials_sheen
+    velvet.roughness = 0.8f;
+    velvet.sheenColor = {1.0f, 0.6f, 0.7f};
+    velvet.sheenRoughness = roughness;
+    return {{"metal", metal, false},       {"plastic", plastic, false}, {"glass-outside", glass, false},
+            {"glass-inside", glass, true}, {"layered", layered, false}, {"leaf", leaf, false},
+            {"velvet", velvet, false}};
 }
 
 Vec3 incidentDirection(float degrees, bool inside) {
@@ -117,13 +134,15 @@ TEST(BsdfChiSquare, SamplesFollowThePdfForEveryLobeRoughnessAndIncidence) {
     std::vector<ChiSquareResult> results(cases.size());
     std::thread worker([&] {
         for (size_t i = 1; i < cases.size(); i += 2) {
-            results[i] = runChiSquare(histogramFor(cases[i].params, cases[i].wo), bsdfSampler(cases[i].params, cases[i].wo),
-                                      bsdfPdf(cases[i].params, cases[i].wo), sampleCount(), 1000 + i);
+            results[i] = runChiSquare(histogramFor(cases[i].params, cases[i].wo),
+                                      bsdfSampler(cases[i].params, cases[i].wo),
+                                      bsdfPdf(cases[i].params, cases[i].wo), sampleCount(), seedBase() + i);
         }
     });
     for (size_t i = 0; i < cases.size(); i += 2) {
-        results[i] = runChiSquare(histogramFor(cases[i].params, cases[i].wo), bsdfSampler(cases[i].params, cases[i].wo),
-                                  bsdfPdf(cases[i].params, cases[i].wo), sampleCount(), 1000 + i);
+        results[i] = runChiSquare(histogramFor(cases[i].params, cases[i].wo),
+                                  bsdfSampler(cases[i].params, cases[i].wo),
+                                  bsdfPdf(cases[i].params, cases[i].wo), sampleCount(), seedBase() + i);
     }
     worker.join();
     double minP = 1.0, maxP = 0.0;
