@@ -196,7 +196,7 @@ PT_HD ShadowRay shadeSurface(const RenderScene& scene, PathState& state, const H
     state.throughput *= s.weight;
     if (s.transmitted) {
         // Only a diffusely transmitting lobe passes without refracting: without one in kF, this
-        // is the branch it always was (the extra test cost the lean kernels 4 registers).
+        // is the branch it always was.
         const bool refracted = !hasFeature<kF>(feature::kDiffuseTransmission) || s.refracted;
         if (refracted) {
             const float eta = surface.frontFace ? bsdf.ior : 1.0f / bsdf.ior;

@@ -125,6 +125,31 @@ float maxAbsDifference(const std::vector<float>& a, const std::vector<float>& b)
     return worst;
 }
 
+// How a GPU image (RGBA) agrees with the CPU's at equal samples: the pixels where a channel
+// differs by more than 1e-3 of the pixel's brightest CPU channel, and the ratio of the means.
+struct CpuAgreement {
+    size_t differingPixels = 0;
+    double pixels = 0.0;
+    double meansRatio = 0.0;
+};
+CpuAgreement agreementWithCpu(const std::vector<float>& cpu, const std::vector<float>& gpu) {
+    CpuAgreement agreement;
+    double sumCpu = 0.0, sumGpu = 0.0;
+    for (size_t i = 0; i < cpu.size(); i += 4) {
+        const float scale = std::max(1e-3f, std::max(cpu[i], std::max(cpu[i + 1], cpu[i + 2])));
+        bool differs = false;
+        for (size_t c = 0; c < 3; ++c) {
+            sumCpu += cpu[i + c];
+            sumGpu += gpu[i + c];
+            differs |= std::fabs(cpu[i + c] - gpu[i + c]) > 1e-3f * scale;
+        }
+        agreement.differingPixels += differs ? 1 : 0;
+    }
+    agreement.pixels = double(cpu.size() / 4);
+    agreement.meansRatio = sumGpu / sumCpu;
+    return agreement;
+}
+
 TEST(CudaBackend, CameraRaysHitWhatTheCpuHits) {
     PT_REQUIRE_CUDA_DEVICE();
     const Scene scene = cornell(128);
@@ -228,24 +253,12 @@ TEST(CudaBackend, EveryKernelVariantMatchesTheCpu) {
                 continue;
             }
             EXPECT_EQ(gpuBackend.stats().kernelVariant, v.name);
-            double sumCpu = 0.0, sumGpu = 0.0;
-            size_t differing = 0;
-            for (size_t i = 0; i < cpu.size(); i += 4) {
-                const float scale = std::max(1e-3f, std::max(cpu[i], std::max(cpu[i + 1], cpu[i + 2])));
-                bool differs = false;
-                for (int c = 0; c < 3; ++c) {
-                    sumCpu += cpu[i + c];
-                    sumGpu += gpu[i + c];
-                    differs |= std::fabs(cpu[i + c] - gpu[i + c]) > 1e-3f * scale;
-                }
-                differing += differs ? 1 : 0;
-            }
-            const double pixels = double(cpu.size() / 4);
+            const CpuAgreement a = agreementWithCpu(cpu, gpu);
             std::cout << "[ figures  ] variant " << v.name << ", " << scene.instances.size()
-                      << " instance(s): " << differing << " of " << pixels
+                      << " instance(s): " << a.differingPixels << " of " << a.pixels
                       << " pixels differ from the CPU by more than 1e-3\n";
-            EXPECT_LT(double(differing), 0.02 * pixels) << v.name;
-            EXPECT_NEAR(sumGpu / sumCpu, 1.0, 2e-3) << v.name;
+            EXPECT_LT(double(a.differingPixels), 0.02 * a.pixels) << v.name;
+            EXPECT_NEAR(a.meansRatio, 1.0, 2e-3) << v.name;
         }
         // Cornell: lean, glossy, textured, layered, full; the glossy grid: glossy-single and up.
         EXPECT_GE(covering, 5) << describeFeatures(features);
@@ -277,15 +290,11 @@ TEST(CudaBackend, UnlitDiffuseTransmissionAndSheenMatchTheCpu) {
     EXPECT_EQ(gpuBackend.stats().kernelVariant, "full");
     const uint32_t withoutRareLobes = cpuBackend.stats().features & ~feature::kRareLobes;
     EXPECT_STREQ(cuda::kKernelVariants[cuda::chooseKernelVariant(withoutRareLobes)].name, "textured");
-    double sumCpu = 0.0, sumGpu = 0.0;
-    for (size_t i = 0; i < cpu.size(); i += 4) {
-        for (int c = 0; c < 3; ++c) sumCpu += cpu[i + size_t(c)], sumGpu += gpu[i + size_t(c)];
-    }
+    const double meansRatio = agreementWithCpu(cpu, gpu).meansRatio;
     std::cout << "[ figures  ] unlit red wall, diffusely transmitting white, velvet green, Cornell 48x48 "
-                 "at 16 spp: "
-                 "largest CPU/CUDA deviation "
-              << maxAbsDifference(cpu, gpu) << ", image means ratio " << sumGpu / sumCpu << "\n";
-    EXPECT_NEAR(sumGpu / sumCpu, 1.0, 2e-3);
+                 "at 16 spp: largest CPU/CUDA deviation "
+              << maxAbsDifference(cpu, gpu) << ", image means ratio " << meansRatio << "\n";
+    EXPECT_NEAR(meansRatio, 1.0, 2e-3);
     // The wall's middle row, seen directly: exactly its colour on both.
     const size_t pixel = (24 * 48 + 2) * 4;
     EXPECT_NEAR(gpu[pixel], 0.63f, 1e-5f);
@@ -305,25 +314,13 @@ TEST(CudaBackend, ExtensionSamplesMatchTheCpu) {
     const std::vector<float> cpu = renderWith(cpuBackend, scene, 16);
     const std::vector<float> gpu = renderWith(gpuBackend, scene, 16);
     ASSERT_NE(cpuBackend.stats().features & feature::kSheen, 0u);
-    double sumCpu = 0.0, sumGpu = 0.0;
-    size_t differing = 0;
-    for (size_t i = 0; i < cpu.size(); i += 4) {
-        const float scale = std::max(1e-3f, std::max(cpu[i], std::max(cpu[i + 1], cpu[i + 2])));
-        bool differs = false;
-        for (int c = 0; c < 3; ++c) {
-            sumCpu += cpu[i + size_t(c)];
-            sumGpu += gpu[i + size_t(c)];
-            differs |= std::fabs(cpu[i + size_t(c)] - gpu[i + size_t(c)]) > 1e-3f * scale;
-        }
-        differing += differs ? 1 : 0;
-    }
-    const double pixels = double(cpu.size() / 4);
+    const CpuAgreement a = agreementWithCpu(cpu, gpu);
     std::cout << "[ figures  ] extension samples 96x60 at 16 spp on " << gpuBackend.stats().kernelVariant
-              << ": " << differing << " of " << pixels
+              << ": " << a.differingPixels << " of " << a.pixels
               << " pixels differ from the CPU by more than 1e-3, largest deviation "
-              << maxAbsDifference(cpu, gpu) << ", image means ratio " << sumGpu / sumCpu << "\n";
-    EXPECT_LT(double(differing), 0.02 * pixels);
-    EXPECT_NEAR(sumGpu / sumCpu, 1.0, 2e-3);
+              << maxAbsDifference(cpu, gpu) << ", image means ratio " << a.meansRatio << "\n";
+    EXPECT_LT(double(a.differingPixels), 0.02 * a.pixels);
+    EXPECT_NEAR(a.meansRatio, 1.0, 2e-3);
 }
 
 // Independent samples (other seeds) on the GPU against the CPU: an unbiasedness check by a

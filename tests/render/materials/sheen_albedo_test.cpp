@@ -13,10 +13,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "render/materials/sheen.h"
+#include "support/table_generation.h"
 
 namespace pt {
 namespace {
@@ -67,25 +67,16 @@ double gridRoughnessAt(double y) {
     return kMinSheenRoughness + (1.0 - kMinSheenRoughness) * y / (kRoughnessCount - 1);
 }
 
-template <typename F>
-void parallelFor(int n, F f) {
-    std::thread other([&] {
-        for (int k = 1; k < n; k += 2) f(k);
-    });
-    for (int k = 0; k < n; k += 2) f(k);
-    other.join();
-}
-
 TEST(SheenAlbedo, DISABLED_GenerateTable) {
     constexpr int kNx = kMuCount, kNy = kRoughnessCount;
     std::vector<double> nodes(kNx * kNy);
-    parallelFor(kNx * kNy, [&](int k) {
+    test::parallelFor(kNx * kNy, [&](int k) {
         nodes[k] = albedoQuadrature(gridMuAt(double(k % kNx) / (kNx - 1)), gridRoughnessAt(k / kNx), 512);
     });
     // The largest amount by which the albedo exceeds the bilinear interpolant inside each cell.
     const double fractions[3] = {0.25, 0.5, 0.75};
     std::vector<double> excess((kNx - 1) * (kNy - 1));
-    parallelFor((kNx - 1) * (kNy - 1), [&](int k) {
+    test::parallelFor((kNx - 1) * (kNy - 1), [&](int k) {
         const int i = k % (kNx - 1), j = k / (kNx - 1);
         double worst = 0.0;
         for (double fy : fractions) {
@@ -140,15 +131,7 @@ TEST(SheenAlbedo, DISABLED_GenerateTable) {
     }
     text += "    // clang-format on\n}};\n\n}  // namespace pt\n";
     std::printf("largest conservative raise %.5f\n", largestRaise);
-    const char* path = std::getenv("PT_SHEEN_TABLE_OUT");
-    if (!path) {
-        std::fputs(text.c_str(), stdout);
-        return;
-    }
-    FILE* file = std::fopen(path, "w");
-    ASSERT_NE(file, nullptr) << path;
-    std::fputs(text.c_str(), file);
-    std::fclose(file);
+    test::writeGeneratedTable(text, "PT_SHEEN_TABLE_OUT");
 }
 
 // Off the grid, at random: above the reference (no energy gain) and within 0.02 of it.

@@ -13,11 +13,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
-#include <thread>
 #include <utility>
 #include <vector>
 
 #include "render/materials/ggx_albedo_reference.h"
+#include "support/table_generation.h"
 
 namespace pt {
 namespace {
@@ -28,16 +28,6 @@ using test::ggxAlbedoQuadrature;
 
 double gridMuAt(double x) { return x * x * x; }
 double gridRoughnessAt(double y) { return kMinRoughness + (1.0 - kMinRoughness) * y / (kRoughnessCount - 1); }
-
-// Runs f(k) for k in [0, n) on two threads.
-template <typename F>
-void parallelFor(int n, F f) {
-    std::thread other([&] {
-        for (int k = 1; k < n; k += 2) f(k);
-    });
-    for (int k = 0; k < n; k += 2) f(k);
-    other.join();
-}
 
 // 6 * integral of v(x) x^5 over [0, 1] for v piecewise linear on the mu grid: the average
 // 2 * integral of E(mu) mu dmu with mu = x^3. Four-point Gauss-Legendre is exact per segment.
@@ -59,7 +49,7 @@ double hemisphericalAverage(const float* v) {
 TEST(SpecularAlbedo, DISABLED_GenerateTable) {
     constexpr int kNx = kMuCount, kNy = kRoughnessCount;
     std::vector<AlbedoPair> nodes(kNx * kNy);
-    parallelFor(kNx * kNy, [&](int k) {
+    test::parallelFor(kNx * kNy, [&](int k) {
         const int i = k % kNx, j = k / kNx;
         const double r = gridRoughnessAt(j);
         nodes[k] = ggxAlbedoQuadrature(gridMuAt(double(i) / (kNx - 1)), r * r, 512, 4096);
@@ -67,7 +57,7 @@ TEST(SpecularAlbedo, DISABLED_GenerateTable) {
     // Largest amount by which the true albedo exceeds the bilinear interpolant inside each cell.
     const double fractions[3] = {0.25, 0.5, 0.75};
     std::vector<AlbedoPair> excess((kNx - 1) * (kNy - 1));
-    parallelFor((kNx - 1) * (kNy - 1), [&](int k) {
+    test::parallelFor((kNx - 1) * (kNy - 1), [&](int k) {
         const int i = k % (kNx - 1), j = k / (kNx - 1);
         AlbedoPair worst{0.0, 0.0};
         for (double fy : fractions) {
@@ -146,15 +136,7 @@ TEST(SpecularAlbedo, DISABLED_GenerateTable) {
     text += table(out.p) + table(out.b);
     text += "    " + row(out.pAverage, kNy) + ",\n    " + row(out.bAverage, kNy) + ",\n";
     text += "    // clang-format on\n};\n\n}  // namespace pt\n";
-    const char* path = std::getenv("PT_ALBEDO_TABLE_OUT");
-    if (!path) {
-        std::fputs(text.c_str(), stdout);
-        return;
-    }
-    FILE* file = std::fopen(path, "w");
-    ASSERT_NE(file, nullptr) << path;
-    std::fputs(text.c_str(), file);
-    std::fclose(file);
+    test::writeGeneratedTable(text, "PT_ALBEDO_TABLE_OUT");
 }
 
 // The interpolated table must bound the reference from above (so a layer scaled by 1 - E never
