@@ -36,6 +36,9 @@ const std::set<std::string> kSupportedExtensions = {
     "KHR_materials_unlit",
     "KHR_materials_diffuse_transmission",
     "KHR_materials_sheen",
+    "KHR_materials_anisotropy",
+    "KHR_materials_iridescence",
+    "KHR_materials_dispersion",
 };
 
 // One warning per unsupported extension the file declares, and per feature it uses that is

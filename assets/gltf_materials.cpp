@@ -1,7 +1,9 @@
 #include "assets/gltf_materials.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
+#include <cstdio>
 
 #include "assets/gltf_textures.h"
 #include "assets/gltf_values.h"
@@ -43,6 +45,19 @@ const tinygltf::Value* extension(const tinygltf::Material& material, const char*
     return it == material.extensions.end() ? nullptr : &it->second;
 }
 
+// A number of an extension object that the extension bounds to [lo, hi]: a value outside is
+// clamped with one warning naming it (a non-finite one is an error, as for every number).
+float boundedNumber(GltfContext& ctx, const tinygltf::Value& object, const char* key, double fallback,
+                    double lo, double hi, const std::string& element) {
+    const double v = gltfNumber(ctx, object, key, fallback, element);
+    if (v >= lo && v <= hi) return float(v);
+    const double bound = v < lo ? lo : hi;
+    char text[96];
+    std::snprintf(text, sizeof text, "%g is %s %g; %g used", v, v < lo ? "below" : "above", bound, bound);
+    ctx.warn(element + "." + key, text);
+    return float(bound);
+}
+
 // The texture slot `key` of a material extension's object, where it has one.
 TextureRef extensionTexture(GltfContext& ctx, const tinygltf::Value& extensionObject, const char* key,
                             const std::string& where) {
@@ -79,6 +94,34 @@ void readCore(GltfContext& ctx, const tinygltf::Material& src, const std::string
         importGltfTexture(ctx, gltfTextureSlot(src.normalTexture, element + ".normalTexture"));
     m.emissiveTexture =
         importGltfTexture(ctx, gltfTextureSlot(src.emissiveTexture, element + ".emissiveTexture"));
+}
+
+// KHR_materials_anisotropy, _iridescence and _dispersion, with the extensions' defaults.
+void readAnisotropyIridescenceDispersion(GltfContext& ctx, const tinygltf::Material& src,
+                                         const std::string& base, Material& m) {
+    constexpr double kMax = double(FLT_MAX);
+    if (const auto* e = extension(src, "KHR_materials_anisotropy")) {
+        const std::string where = base + "KHR_materials_anisotropy";
+        m.anisotropyStrength = boundedNumber(ctx, *e, "anisotropyStrength", 0.0, 0.0, 1.0, where);
+        // Any angle: radians, counter-clockwise in tangent space.
+        m.anisotropyRotation = float(gltfNumber(ctx, *e, "anisotropyRotation", 0.0, where));
+        m.anisotropyTexture = extensionTexture(ctx, *e, "anisotropyTexture", where);
+    }
+    if (const auto* e = extension(src, "KHR_materials_iridescence")) {
+        const std::string where = base + "KHR_materials_iridescence";
+        m.iridescence = boundedNumber(ctx, *e, "iridescenceFactor", 0.0, 0.0, 1.0, where);
+        m.iridescenceIor = boundedNumber(ctx, *e, "iridescenceIor", 1.3, 1.0, kMax, where);
+        m.iridescenceThicknessMin =
+            boundedNumber(ctx, *e, "iridescenceThicknessMinimum", 100.0, 0.0, kMax, where);
+        m.iridescenceThicknessMax =
+            boundedNumber(ctx, *e, "iridescenceThicknessMaximum", 400.0, 0.0, kMax, where);
+        m.iridescenceTexture = extensionTexture(ctx, *e, "iridescenceTexture", where);
+        m.iridescenceThicknessTexture = extensionTexture(ctx, *e, "iridescenceThicknessTexture", where);
+    }
+    if (const auto* e = extension(src, "KHR_materials_dispersion")) {
+        m.dispersion =
+            boundedNumber(ctx, *e, "dispersion", 0.0, 0.0, kMax, base + "KHR_materials_dispersion");
+    }
 }
 
 void readExtensions(GltfContext& ctx, const tinygltf::Material& src, const std::string& element,
@@ -127,6 +170,7 @@ void readExtensions(GltfContext& ctx, const tinygltf::Material& src, const std::
         m.sheenColorTexture = extensionTexture(ctx, *e, "sheenColorTexture", where);
         m.sheenRoughnessTexture = extensionTexture(ctx, *e, "sheenRoughnessTexture", where);
     }
+    readAnisotropyIridescenceDispersion(ctx, src, base, m);
     // KHR_materials_unlit: an empty object; its presence is the whole of it.
     if (extension(src, "KHR_materials_unlit")) m.unlit = 1;
     if (const auto* e = extension(src, "KHR_materials_specular")) {

@@ -8,12 +8,14 @@ namespace pt {
 
 namespace {
 
-// A scalar or color parameter: exactly one of `scalar` and `color` is set.
+// A scalar or color parameter: exactly one of `scalar` and `color` is set. An angle is
+// written in degrees, as every angle of scene JSON, and held in radians.
 struct ParamKey {
     const char* key;
     float Material::*scalar;
     Vec3 Material::*color;
     NumberRange range;
+    bool angle = false;
 };
 
 constexpr ParamKey kParamKeys[] = {
@@ -33,6 +35,13 @@ constexpr ParamKey kParamKeys[] = {
     {"diffuseTransmissionColor", nullptr, &Material::diffuseTransmissionColor, NumberRange::Unit},
     {"sheenColor", nullptr, &Material::sheenColor, NumberRange::Unit},
     {"sheenRoughness", &Material::sheenRoughness, nullptr, NumberRange::Unit},
+    {"anisotropyStrength", &Material::anisotropyStrength, nullptr, NumberRange::Unit},
+    {"anisotropyRotation", &Material::anisotropyRotation, nullptr, NumberRange::Any, true},
+    {"iridescence", &Material::iridescence, nullptr, NumberRange::Unit},
+    {"iridescenceIor", &Material::iridescenceIor, nullptr, NumberRange::AtLeastOne},
+    {"iridescenceThicknessMin", &Material::iridescenceThicknessMin, nullptr, NumberRange::NonNegative},
+    {"iridescenceThicknessMax", &Material::iridescenceThicknessMax, nullptr, NumberRange::NonNegative},
+    {"dispersion", &Material::dispersion, nullptr, NumberRange::NonNegative},
     {"thickness", &Material::thickness, nullptr, NumberRange::NonNegative},
     {"attenuationColor", nullptr, &Material::attenuationColor, NumberRange::Unit},
     // Infinity (no absorption) is the default and cannot be written in JSON: leave it out.
@@ -54,6 +63,9 @@ constexpr TextureKey kTextureKeys[] = {
     {"diffuseTransmissionColorTexture", &Material::diffuseTransmissionColorTexture},
     {"sheenColorTexture", &Material::sheenColorTexture},
     {"sheenRoughnessTexture", &Material::sheenRoughnessTexture},
+    {"anisotropyTexture", &Material::anisotropyTexture},
+    {"iridescenceTexture", &Material::iridescenceTexture},
+    {"iridescenceThicknessTexture", &Material::iridescenceThicknessTexture},
 };
 
 constexpr const char* kAlphaModeNames[] = {"opaque", "mask", "blend"};
@@ -146,7 +158,9 @@ Material readMaterialParams(ObjectReader& object, const TextureLoader& loadTextu
     Material m = type ? presetMaterial(*type) : Material{};
     for (const ParamKey& param : kParamKeys) {
         if (std::optional<JsonValue> value = object.get(param.key)) {
-            if (param.scalar) {
+            if (param.angle) {
+                m.*param.scalar = degreesToRadians(value->asFloat(param.range));
+            } else if (param.scalar) {
                 m.*param.scalar = value->asFloat(param.range);
             } else {
                 m.*param.color = value->asVec3(param.range);
@@ -169,7 +183,13 @@ Material readMaterialParams(ObjectReader& object, const TextureLoader& loadTextu
 void writeMaterialParams(const Material& m, const TexturePathFn& texturePath, Json& out) {
     const Material defaults;
     for (const ParamKey& param : kParamKeys) {
-        if (param.scalar) putIfChanged(out, param.key, m.*param.scalar, defaults.*param.scalar);
+        if (param.angle) {
+            const float radians = m.*param.scalar;
+            if (!sameBits(radians, defaults.*param.scalar))
+                out[param.key] = floatToJson(radiansToDegrees(radians));
+        } else if (param.scalar) {
+            putIfChanged(out, param.key, m.*param.scalar, defaults.*param.scalar);
+        }
         if (param.color) putIfChanged(out, param.key, m.*param.color, defaults.*param.color);
     }
     if (m.alphaMode != defaults.alphaMode) out["alphaMode"] = kAlphaModeNames[uint32_t(m.alphaMode) % 3];
@@ -190,7 +210,14 @@ Material withinFileRanges(const Material& material) {
         if (!(v == fallback)) v = nearestInRange(v, range);
     };
     for (const ParamKey& k : kParamKeys) {
-        if (k.scalar) hold(m.*k.scalar, defaults.*k.scalar, k.range);
+        if (k.angle) {
+            // Any angle, but one whose degrees a float cannot hold is taken modulo a turn.
+            float& radians = m.*k.scalar;
+            if (!(std::fabs(radians) < 1e30f))
+                radians = std::isfinite(radians) ? std::remainder(radians, 2.0f * kPi) : 0.0f;
+        } else if (k.scalar) {
+            hold(m.*k.scalar, defaults.*k.scalar, k.range);
+        }
         if (k.color) {
             Vec3& c = m.*k.color;
             const Vec3& d = defaults.*k.color;

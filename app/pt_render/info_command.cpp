@@ -52,7 +52,7 @@ nlohmann::ordered_json describe(const Scene& scene, const CompiledScene& compile
     return j;
 }
 
-// "KHR_materials_variants, KHR_texture_transform; ignored: KHR_materials_sheen".
+// "KHR_materials_variants, KHR_texture_transform; ignored: EXT_lights_image_based".
 std::string extensionsText(const nlohmann::ordered_json& extensions) {
     std::string honoured, ignored;
     for (const auto& [name, state] : extensions.items()) {

@@ -57,6 +57,19 @@ void materialEditor(EditorUi& ui, uint32_t index) {
     changed |= textureToggle(ui, index, 7, "Sheen color", m.sheenColorTexture);
     changed |= sliderFloat(ui, "Sheen roughness", &m.sheenRoughness, 0.0f, 1.0f);
     changed |= textureToggle(ui, index, 8, "Sheen roughness", m.sheenRoughnessTexture);
+    changed |= sliderFloat(ui, "Anisotropy", &m.anisotropyStrength, 0.0f, 1.0f);
+    changed |= sliderAngle(ui, "Anisotropy rotation", &m.anisotropyRotation, -180.0f, 180.0f);
+    changed |= textureToggle(ui, index, 9, "Anisotropy", m.anisotropyTexture);
+    changed |= sliderFloat(ui, "Iridescence", &m.iridescence, 0.0f, 1.0f);
+    changed |= textureToggle(ui, index, 10, "Iridescence", m.iridescenceTexture);
+    changed |= sliderFloat(ui, "Iridescence IOR", &m.iridescenceIor, 1.0f, 2.5f);
+    changed |=
+        sliderFloat(ui, "Iridescence thickness min (nm)", &m.iridescenceThicknessMin, 0.0f, 1200.0f, "%.0f");
+    changed |=
+        sliderFloat(ui, "Iridescence thickness max (nm)", &m.iridescenceThicknessMax, 0.0f, 1200.0f, "%.0f");
+    changed |= textureToggle(ui, index, 11, "Iridescence thickness", m.iridescenceThicknessTexture);
+    // Ctrl+click types a value past the slider's end (glTF allows any dispersion >= 0).
+    changed |= sliderFloat(ui, "Dispersion (20/Abbe)", &m.dispersion, 0.0f, 1.0f);
     changed |= colorEdit(ui, "Emission", &m.emission);
     changed |= sliderFloat(ui, "Emission strength", &m.emissionStrength, 0.0f, 1000.0f, "%.3f",
                            ImGuiSliderFlags_Logarithmic);

@@ -45,6 +45,14 @@ inline bool sliderFloat(EditorUi& ui, const char* label, float* v, float lo, flo
     return changed;
 }
 
+// An angle held in radians, shown and edited in degrees over [loDegrees, hiDegrees].
+inline bool sliderAngle(EditorUi& ui, const char* label, float* radians, float loDegrees, float hiDegrees) {
+    const bool changed = ImGui::SliderAngle(label, radians, loDegrees, hiDegrees, "%.1f deg");
+    tooltipIfCut(label);
+    closeStepIfReleased(ui);
+    return changed;
+}
+
 inline bool dragFloat(EditorUi& ui, const char* label, float* v, float speed, float lo = 0.0f, float hi = 0.0f,
                       const char* format = "%.3f") {
     const bool changed = ImGui::DragFloat(label, v, speed, lo, hi, format);

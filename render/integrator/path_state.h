@@ -42,6 +42,9 @@ struct PathState {
     float lastBsdfPdf;         // solid-angle pdf of the sample that made `ray`
     bool lastWasDelta;         // `ray` came from a specular lobe (or the camera)
     bool alive;
+    // The wavelength the first dispersive surface gave the path (dispersion.h's packing; 0: none
+    // yet): in the two bytes the bools leave, so the state keeps its size.
+    uint16_t wavelength;
 };
 // What the wavefront keeps per path between stages (with Hit and ShadowRay; pt-render bench
 // reports the total).

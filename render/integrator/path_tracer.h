@@ -13,6 +13,7 @@
 // the CUDA backend instantiates them per kernel variant, so a scene without textures, volumes,
 // clearcoat, ... runs code without them; the default, kAllFeatures, is the generic code.
 #include "render/bvh/traversal.h"
+#include "render/integrator/anisotropy_frame.h"
 #include "render/integrator/aov.h"
 #include "render/integrator/camera.h"
 #include "render/integrator/medium.h"
@@ -23,6 +24,7 @@
 #include "render/lights/environment.h"
 #include "render/lights/light_sample.h"
 #include "render/materials/bsdf.h"
+#include "render/materials/dispersion.h"
 #include "render/materials/material_eval.h"  // bsdfParamsAt
 #include "render/materials/texture_sample.h"
 
@@ -134,6 +136,18 @@ PT_HD ShadowRay sampleDirectLight(const RenderScene& scene, const PathState& sta
     return shadow;
 }
 
+// KHR_materials_dispersion: a transmitting surface with dispersion refracts with the index of the
+// path's wavelength, which the first such surface draws (and weights the throughput by).
+template <uint32_t kF = kAllFeatures>
+PT_HD void disperse(PathState& state, const Material& m, BsdfParams& bsdf, uint32_t dims) {
+    if (!hasFeature<kF>(feature::kDispersion) || !(m.dispersion > 0.0f) || !isTransmissive(bsdf)) return;
+    if (state.wavelength == 0) {
+        state.wavelength = packWavelength(state.sampler.get(dims + SampleDims::kWavelength));
+        state.throughput *= wavelengthWeight(unpackWavelength(state.wavelength));
+    }
+    bsdf.ior = dispersedIor(bsdf.ior, m.dispersion, unpackWavelength(state.wavelength));
+}
+
 PT_HD bool surviveRoulette(const RenderScene& scene, PathState& state, uint32_t dims) {
     if (!scene.settings.russianRoulette || state.depth < scene.settings.russianRouletteDepth) return true;
     const float q = fminf(maxComponent(state.throughput) * state.etaScale, 1.0f);
@@ -172,13 +186,16 @@ PT_HD ShadowRay shadeSurface(const RenderScene& scene, PathState& state, const H
         state.alive = false;
         return shadow;
     }
-    const BsdfParams bsdf = bsdfParamsAt<kF>(scene, m, surface.uv);
+    const uint32_t dims = SampleDims::bounce(state.depth);
+    BsdfParams bsdf = bsdfParamsAt<kF>(scene, m, surface.uv);
+    disperse<kF>(state, m, bsdf, dims);
     // Shade the side the ray arrived on, except for glass, which needs to know in from out.
     const bool twoSidedFlip =
         !surface.frontFace && !(hasFeature<kF>(feature::kTransmission) && isTransmissive(bsdf));
-    const Frame frame = Frame::fromNormal(twoSidedFlip ? -surface.shadingNormal : surface.shadingNormal);
+    const Frame frame = anisotropicFrame<kF>(
+        scene, hit, surface, bsdf,
+        Frame::fromNormal(twoSidedFlip ? -surface.shadingNormal : surface.shadingNormal));
     const Vec3 wo = -state.ray.direction;
-    const uint32_t dims = SampleDims::bounce(state.depth);
 
     if (neeEnabled(scene) && hasNonDeltaLobes<kF>(bsdf)) {
         shadow = sampleDirectLight<kF>(scene, state, surface, bsdf, frame, wo, dims);

@@ -27,7 +27,13 @@
 // neither carry no code for them, the diffuse transmission lobe without
 // feature::kDiffuseTransmission and the sheen without feature::kSheen. The parameters must then
 // have clearcoat 0, transmission 0, diffuse transmission 0 and a black sheen.
+//
+// KHR_materials_anisotropy stretches the GGX alpha of the specular and glass lobes along the
+// frame's x (feature::kAnisotropy); KHR_materials_iridescence puts a thin film (iridescence.h)
+// on the Fresnel terms of the specular and glass lobes (feature::kIridescence), and the diffuse
+// base under it gets what the film lets through at wo.
 #include "render/materials/clearcoat.h"
+#include "render/materials/iridescence.h"
 #include "render/materials/layered_diffuse.h"
 #include "render/materials/rough_dielectric.h"
 #include "render/materials/sheen.h"
@@ -53,6 +59,13 @@ struct BsdfParams {
     Vec3 diffuseTransmissionColor{1.0f, 1.0f, 1.0f};
     Vec3 sheenColor{0.0f, 0.0f, 0.0f};  // KHR_materials_sheen; black: no sheen
     float sheenRoughness = 0.0f;
+    // KHR_materials_anisotropy: alpha along the shading frame's x is mix(alpha, 1, strength^2)
+    // (the integrator turns the frame to the direction, anisotropy_frame.h).
+    float anisotropy = 0.0f;
+    Vec2 anisotropyDirection{1.0f, 0.0f};  // in tangent space, unit
+    float iridescence = 0.0f;              // KHR_materials_iridescence: the film's weight
+    float iridescenceIor = 1.3f;
+    float iridescenceThickness = 400.0f;  // nanometres
 };
 
 struct BsdfSample {
@@ -91,7 +104,7 @@ constexpr int lobesFor() {
                                                            : kDiffuseTransmission;
 }
 
-// The rare lobes' weights: members of Lobes only in code compiled for them.
+// The rare lobes' weights and parameters: members of Lobes only in code compiled for them.
 template <bool kRare>
 struct RareLobeWeights {};
 template <>
@@ -99,6 +112,8 @@ struct RareLobeWeights<true> {
     Vec3 diffuseTransmitted;  // its albedo: color * mix weight * the layer's transmittance at wo
     Vec3 sheen;               // sheenColor * mix weight / max(1, E_sheen(mu_o))
     float sheenAlpha;
+    float alphaT;           // GGX alpha along the anisotropy direction (x); `alpha` is along y
+    FilmedSpecular filmed;  // the thin film on the specular and glass lobes
 };
 
 // Everything that depends on the parameters and wo only, in the shading frame. It holds only
@@ -120,6 +135,36 @@ struct Lobes : RareLobeWeights<(kF & feature::kRareLobes) != 0u> {
 
 PT_HD bool isZero(Vec3 v) { return !(maxComponent(v) > 0.0f); }
 
+// The specular (and glass) lobe's GGX alpha: stretched along x where kF has anisotropy.
+template <uint32_t kF>
+PT_HD auto specularAlpha(const Lobes<kF>& l) {
+    if constexpr (hasFeature<kF>(feature::kAnisotropy)) {
+        return GgxAlpha2{l.alphaT, l.alpha};
+    } else {
+        return l.alpha;
+    }
+}
+
+// Calls `use` with the glass lobe's Fresnel term: the exact one, or the exact one under a thin
+// film where kF has iridescence and the material a film.
+template <uint32_t kF, class Use>
+PT_HD auto withGlassFresnel(const Lobes<kF>& l, const Use& use) {
+    if constexpr (hasFeature<kF>(feature::kIridescence)) {
+        if (l.filmed.film.weight > 0.0f) return use(FilmedDielectricFresnel{l.filmed});
+    }
+    return use(ExactDielectricFresnel{});
+}
+
+// The specular lobe's Fresnel term: Schlick's, under a thin film where kF has iridescence.
+template <uint32_t kF>
+PT_HD auto specularFresnel(const Lobes<kF>& l) {
+    if constexpr (hasFeature<kF>(feature::kIridescence)) {
+        return IridescentFresnel{l.specF0, l.specF90, l.filmed};
+    } else {
+        return SchlickFresnel{l.specF0, l.specF90};
+    }
+}
+
 // Without feature::kGlossyReflection (kRoughTransmission) in kF, the scene's reflection (glass)
 // lobes are all smooth, so the rough lobes' code is left out.
 template <uint32_t kF>
@@ -140,6 +185,7 @@ PT_HD Lobes<kF> resolveLobes(const BsdfParams& p, Vec3 wo) {
     constexpr bool kGlassLobe = hasFeature<kF>(feature::kTransmission);
     constexpr bool kDiffuseTransmissionLobe = hasFeature<kF>(feature::kDiffuseTransmission);
     constexpr bool kSheenLobe = hasFeature<kF>(feature::kSheen);
+    constexpr bool kFilm = hasFeature<kF>(feature::kIridescence);
     Lobes<kF> l{};
     const bool front = wo.z > 0.0f;
     const float muO = front ? wo.z : 0.0f;
@@ -149,6 +195,12 @@ PT_HD Lobes<kF> resolveLobes(const BsdfParams& p, Vec3 wo) {
     const float ior = p.ior > 0.0f ? p.ior : 1.0f;
     const float opaque = (1.0f - metallic) * (1.0f - transmission);
     l.alpha = ggxAlpha(p.roughness);
+    if constexpr (hasFeature<kF>(feature::kAnisotropy)) {
+        // KHR_materials_anisotropy: alpha_t = mix(alpha, 1, strength^2), alpha_b = alpha, and
+        // a lobe rough in either direction is rough in both (no zero alpha in D).
+        l.alphaT = ggxAnisotropicAlpha(l.alpha, p.anisotropy);
+        if (!ggxIsSmooth(l.alphaT)) l.alpha = fmaxf(l.alpha, kGgxSmoothAlpha);
+    }
     l.coatAlpha = kCoatLobe ? ggxAlpha(p.clearcoatRoughness) : 0.0f;
     l.coat = kCoatLobe ? clearcoatWeight(p.clearcoat, muO) : 0.0f;
     float base = 1.0f - l.coat;
@@ -173,14 +225,38 @@ PT_HD Lobes<kF> resolveLobes(const BsdfParams& p, Vec3 wo) {
     l.layer.layerAlpha = l.alpha;
 
     const float transmitted = kDiffuseTransmissionLobe ? clampf(p.diffuseTransmission, 0.0f, 1.0f) : 0.0f;
+    if constexpr (kFilm) {  // on the specular layer, the metal and the glass (from both sides)
+        const float weight = p.iridescenceThickness > 0.0f ? clampf(p.iridescence, 0.0f, 1.0f) : 0.0f;
+        if (weight > 0.0f) {
+            l.filmed.film = {weight, fmaxf(p.iridescenceIor, 1.0f), p.iridescenceThickness};
+            l.filmed.dielectricF0 =
+                vmin(Vec3(dielectricF0(ior)) * vmax(p.specularColor, Vec3(0.0f)), Vec3(1.0f));
+        }
+    }
     if (front) {
         const Vec3 metalF0 = vmin(vmax(p.baseColor, Vec3(0.0f)), Vec3(1.0f));
         l.specF0 = (metalF0 * metallic + l.layer.layerF0 * opaque) * base;
         l.specF90 = (Vec3(metallic) + l.layer.layerF90 * opaque) * base;
+        float filmTransmittance = 1.0f;  // what the film lets through of what the layer would
+        if constexpr (kFilm) {
+            const float weight = l.filmed.film.weight;
+            if (weight > 0.0f) {
+                l.filmed.metalF0 = metalF0;
+                l.filmed.metalWeight = metallic * base;
+                l.filmed.dielectricWeight = opaque * specular * base;
+                // The film reflects more than the bare layer at some angles: the diffuse base
+                // gets what it lets through at wo (as the specification's Fresnel mix does).
+                const float bare = maxComponent(fresnelSchlick(l.layer.layerF0, l.layer.layerF90, muO));
+                const Vec3 film = thinFilmFresnel(l.filmed.film, l.filmed.dielectricF0, muO) * specular;
+                const float filmed = (1.0f - weight) * bare + weight * maxComponent(film);
+                if (filmed > bare)
+                    filmTransmittance = bare < 1.0f ? fmaxf(1.0f - filmed, 0.0f) / (1.0f - bare) : 0.0f;
+            }
+        }
         const SpecularAlbedo albedoO = ggxSpecularAlbedo(muO, l.alpha);
         a[kSpecular] = maxComponent(schlickAlbedo(albedoO, l.specF0, l.specF90));
         if (opaque > 0.0f) {
-            const Vec3 transmittanceO = layerTransmittance(l.layer, albedoO);
+            const Vec3 transmittanceO = layerTransmittance(l.layer, albedoO) * filmTransmittance;
             const float reflected = base * opaque * (1.0f - transmitted);
             l.diffuse = p.baseColor * reflected * diffuseLayerScale(l.layer, transmittanceO);
             a[kDiffuse] = reflected * maxComponent(p.baseColor * transmittanceO);
@@ -221,7 +297,7 @@ PT_HD Vec3 evalLobes(const Lobes<kF>& l, Vec3 wo, Vec3 wi) {
         if (hasFeature<kF>(feature::kClearcoat) && l.coat > 0.0f && !isDeltaLobe<kF>(l, kCoat))
             f += evalClearcoat(wo, wi, l.coatAlpha) * l.coat;
         if (!isZero(l.specF90 + l.specF0) && !isDeltaLobe<kF>(l, kSpecular)) {
-            f += evalGgxReflection(wo, wi, l.alpha, l.specF0, l.specF90);
+            f += evalGgxReflection(wo, wi, specularAlpha(l), specularFresnel(l));
         }
         if (!isZero(l.diffuse)) f += evalLayeredDiffuse(l.layer, l.diffuse, wi);
     }
@@ -233,7 +309,11 @@ PT_HD Vec3 evalLobes(const Lobes<kF>& l, Vec3 wo, Vec3 wi) {
         if (!isZero(l.sheen)) f += l.sheen * evalSheen(wo, wi, l.sheenAlpha);
     }
     if (hasFeature<kF>(feature::kTransmission) && l.glass > 0.0f && !isDeltaLobe<kF>(l, kGlass))
-        f += evalRoughDielectric(l.interface, wo, wi) * l.glass;
+        f += withGlassFresnel(l,
+                              [&](const auto& fresnel) {
+                                  return evalRoughDielectric(l.interface, wo, wi, specularAlpha(l), fresnel);
+                              }) *
+             l.glass;
     return f;
 }
 
@@ -246,7 +326,7 @@ PT_HD float pdfLobes(const Lobes<kF>& l, Vec3 wo, Vec3 wi) {
             pdf += l.probability[kCoat] * pdfGgxReflection(wo, wi, l.coatAlpha);
         }
         if (l.probability[kSpecular] > 0.0f && !isDeltaLobe<kF>(l, kSpecular)) {
-            pdf += l.probability[kSpecular] * pdfGgxReflection(wo, wi, l.alpha);
+            pdf += l.probability[kSpecular] * pdfGgxReflection(wo, wi, specularAlpha(l));
         }
         pdf += l.probability[kDiffuse] * cosineHemispherePdf(wi.z);
     }
@@ -259,7 +339,9 @@ PT_HD float pdfLobes(const Lobes<kF>& l, Vec3 wo, Vec3 wi) {
     }
     if (hasFeature<kF>(feature::kTransmission) && l.probability[kGlass] > 0.0f &&
         !isDeltaLobe<kF>(l, kGlass)) {
-        pdf += l.probability[kGlass] * pdfRoughDielectric(l.interface, wo, wi);
+        pdf += l.probability[kGlass] * withGlassFresnel(l, [&](const auto& fresnel) {
+                   return pdfRoughDielectric(l.interface, wo, wi, specularAlpha(l), fresnel);
+               });
     }
     return pdf;
 }
@@ -302,8 +384,8 @@ PT_HD LobeSample sampleLobe(const Lobes<kF>& l, int lobe, Vec3 wo, float uChoice
             return s;
         case kSpecular:
             if (!isDeltaLobe<kF>(l, kSpecular))
-                return sampleGgxReflection(wo, l.alpha, l.specF0, l.specF90, uDir);
-            return sampleSmoothReflection(wo, l.specF0, l.specF90);
+                return sampleGgxReflection(wo, specularAlpha(l), specularFresnel(l), uDir);
+            return sampleSmoothReflection(wo, specularFresnel(l));
         case kDiffuse:
             s.wi = squareToCosineHemisphere(uDir);
             s.valid = wo.z > 0.0f && s.wi.z > 0.0f;
@@ -312,8 +394,11 @@ PT_HD LobeSample sampleLobe(const Lobes<kF>& l, int lobe, Vec3 wo, float uChoice
             return s;
         default:
             if (!hasFeature<kF>(feature::kTransmission)) return s;
-            s = isDeltaLobe<kF>(l, kGlass) ? sampleSmoothDielectric(l.interface, wo, uChoice)
-                                           : sampleRoughDielectric(l.interface, wo, uChoice, uDir);
+            s = withGlassFresnel(l, [&](const auto& fresnel) {
+                return isDeltaLobe<kF>(l, kGlass)
+                           ? sampleSmoothDielectric(l.interface, wo, uChoice, fresnel)
+                           : sampleRoughDielectric(l.interface, wo, uChoice, uDir, specularAlpha(l), fresnel);
+            });
             s.weight *= l.glass;
             return s;
     }
@@ -362,7 +447,9 @@ PT_HD bool hasNonDeltaLobes(const BsdfParams& p) {
     const float transmission =
         hasFeature<kF>(feature::kTransmission) ? clampf(p.transmission, 0.0f, 1.0f) : 0.0f;
     const float opaque = (1.0f - metallic) * (1.0f - transmission);
-    const float alpha = ggxAlpha(p.roughness);
+    float alpha = ggxAlpha(p.roughness);
+    if (hasFeature<kF>(feature::kAnisotropy))
+        alpha = ggxAnisotropicAlpha(alpha, p.anisotropy);  // the rougher
     if (opaque > 0.0f && maxComponent(p.baseColor) > 0.0f) return true;
     if (hasFeature<kF>(feature::kDiffuseTransmission) && opaque > 0.0f && p.diffuseTransmission > 0.0f &&
         maxComponent(p.diffuseTransmissionColor) > 0.0f)

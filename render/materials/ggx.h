@@ -2,7 +2,10 @@
 // The isotropic Trowbridge-Reitz (GGX) microfacet distribution with the height-correlated
 // Smith masking-shadowing function, and sampling of its visible normals.
 //
-// Directions live in the shading frame (z = macro normal). glTF maps roughness r to
+// Directions live in the shading frame (z = macro normal). KHR_materials_anisotropy's
+// anisotropic form takes GgxAlpha2, one alpha along the frame's x and one along its y (Heitz
+// 2014, "Understanding the Masking-Shadowing Function", eqs. 85 and 86); the float overloads are
+// the isotropic functions every other lobe uses, unchanged. glTF maps roughness r to
 // alpha = r^2. Below kGgxSmoothAlpha a lobe is treated as perfectly smooth (a delta lobe):
 // the density of the rough model would exceed what float can resolve (pbrt-v4 does the same).
 //
@@ -36,7 +39,8 @@ PT_HD float ggxMaskingTerm(Vec3 w, float alpha) {
 }
 
 // Height-correlated G2(o, i) (Heitz 2014, eq. 99); both cosines taken in absolute value.
-PT_HD float ggxG2(Vec3 wo, Vec3 wi, float alpha) {
+template <class Alpha>
+PT_HD float ggxG2(Vec3 wo, Vec3 wi, Alpha alpha) {
     const float muO = fabsf(wo.z), muI = fabsf(wi.z);
     const float denom = muI * ggxMaskingTerm(wo, alpha) + muO * ggxMaskingTerm(wi, alpha);
     return denom > 0.0f ? 2.0f * muO * muI / denom : 0.0f;
@@ -44,7 +48,8 @@ PT_HD float ggxG2(Vec3 wo, Vec3 wi, float alpha) {
 
 // Density of visible normals m seen from wo (wo.z >= 0), per solid angle of m:
 // G1(wo) max(0, wo.m) D(m) / cos(wo).
-PT_HD float ggxVisibleNormalPdf(Vec3 wo, Vec3 m, float alpha) {
+template <class Alpha>
+PT_HD float ggxVisibleNormalPdf(Vec3 wo, Vec3 m, Alpha alpha) {
     const float cosOM = dot(wo, m);
     if (cosOM <= 0.0f) return 0.0f;
     return 2.0f * cosOM * ggxD(m, alpha) / (wo.z + ggxMaskingTerm(wo, alpha));
@@ -62,6 +67,46 @@ PT_HD Vec3 sampleGgxVisibleNormal(Vec3 wo, float alpha, Vec2 u) {
     const Vec3 h = Vec3{sinTheta * cosf(phi), sinTheta * sinf(phi), z} + v;
     // Unstretch; h.z >= 0 by construction, and only a measure-zero set of u gives h == 0.
     const Vec3 m{alpha * h.x, alpha * h.y, fmaxf(h.z, 0.0f)};
+    const float len2 = lengthSquared(m);
+    if (!(len2 > 1e-30f)) return {0.0f, 0.0f, 1.0f};
+    return m * (1.0f / sqrtf(len2));
+}
+
+// Anisotropic roughness: alpha along the shading frame's x (the anisotropy direction) and y.
+struct GgxAlpha2 {
+    float x, y;
+};
+
+// KHR_materials_anisotropy's alpha along its direction: mix(alpha, 1, strength^2).
+PT_HD float ggxAnisotropicAlpha(float alpha, float strength) {
+    const float s = clampf(strength, 0.0f, 1.0f);
+    return alpha + (1.0f - alpha) * s * s;
+}
+
+// Smooth only if smooth in both directions; a rough anisotropic lobe keeps both alphas at or
+// above kGgxSmoothAlpha (bsdf.h).
+PT_HD bool ggxIsSmooth(GgxAlpha2 alpha) { return ggxIsSmooth(fmaxf(alpha.x, alpha.y)); }
+
+PT_HD float ggxD(Vec3 m, GgxAlpha2 alpha) {
+    if (m.z <= 0.0f) return 0.0f;
+    const float sx = m.x / alpha.x, sy = m.y / alpha.y;
+    const float d = sx * sx + sy * sy + m.z * m.z;
+    return 1.0f / (kPi * alpha.x * alpha.y * d * d);
+}
+
+PT_HD float ggxMaskingTerm(Vec3 w, GgxAlpha2 alpha) {
+    const float sx = alpha.x * w.x, sy = alpha.y * w.y;
+    return sqrtf(w.z * w.z + sx * sx + sy * sy);
+}
+
+// Dupuy and Benyoub's sampling in the configuration stretched by each alpha along its axis.
+PT_HD Vec3 sampleGgxVisibleNormal(Vec3 wo, GgxAlpha2 alpha, Vec2 u) {
+    const Vec3 v = normalize(Vec3{alpha.x * wo.x, alpha.y * wo.y, wo.z});
+    const float phi = 2.0f * kPi * u.x;
+    const float z = (1.0f - u.y) * (1.0f + v.z) - v.z;
+    const float sinTheta = sqrtf(clampf(1.0f - z * z, 0.0f, 1.0f));
+    const Vec3 h = Vec3{sinTheta * cosf(phi), sinTheta * sinf(phi), z} + v;
+    const Vec3 m{alpha.x * h.x, alpha.y * h.y, fmaxf(h.z, 0.0f)};
     const float len2 = lengthSquared(m);
     if (!(len2 > 1e-30f)) return {0.0f, 0.0f, 1.0f};
     return m * (1.0f / sqrtf(len2));

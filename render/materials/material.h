@@ -63,6 +63,19 @@ struct Material {
     float sheenRoughness = 0.0f;
     TextureRef sheenColorTexture;      // sRGB
     TextureRef sheenRoughnessTexture;  // linear, A
+    // KHR_materials_anisotropy: GGX roughness stretched along a direction of the tangent plane.
+    float anisotropyStrength = 0.0f;  // 0: isotropic
+    float anisotropyRotation = 0.0f;  // radians, counter-clockwise from the tangent (increasing U)
+    TextureRef anisotropyTexture;     // linear: RG direction in tangent space ([-1, 1]), B strength
+    // KHR_materials_iridescence: a thin film over the specular layer and the metal.
+    float iridescence = 0.0f;                // iridescenceFactor; 0: no film
+    float iridescenceIor = 1.3f;             // the film's index
+    float iridescenceThicknessMin = 100.0f;  // nanometres, at thickness texture G = 0
+    float iridescenceThicknessMax = 400.0f;  // nanometres, at G = 1 and without a texture
+    TextureRef iridescenceTexture;           // linear, R
+    TextureRef iridescenceThicknessTexture;  // linear, G
+    // KHR_materials_dispersion: 20 / Abbe number of the transmitting interior; 0: none.
+    float dispersion = 0.0f;
 
     PT_HD Vec3 emittedRadiance() const { return emission * emissionStrength; }
     PT_HD bool isEmissive() const { return maxComponent(emission) * emissionStrength > 0.0f; }

@@ -55,6 +55,39 @@ PT_HD BsdfParams bsdfParamsAt(const RenderScene& scene, const Material& m, Vec2 
         p.sheenColor = vmin(vmax(p.sheenColor, Vec3(0.0f)), Vec3(1.0f));
         p.sheenRoughness = clampf(p.sheenRoughness, 0.0f, 1.0f);
     }
+    if (hasFeature<kF>(feature::kAnisotropy) && m.anisotropyStrength > 0.0f) {
+        // KHR_materials_anisotropy: the texture's RG is a direction in [-1, 1] tangent space, B
+        // scales the strength; the rotation turns the direction counter-clockwise.
+        Vec2 direction{1.0f, 0.0f};
+        p.anisotropy = m.anisotropyStrength;
+        if (m.anisotropyTexture.present()) {
+            const Vec4 t = sampleTexture(scene, m.anisotropyTexture, uv, false);
+            direction = {2.0f * t.x - 1.0f, 2.0f * t.y - 1.0f};
+            p.anisotropy *= t.z;
+        }
+        const float c = cosf(m.anisotropyRotation), s = sinf(m.anisotropyRotation);
+        const Vec2 turned{c * direction.x - s * direction.y, s * direction.x + c * direction.y};
+        const float length = sqrtf(turned.x * turned.x + turned.y * turned.y);
+        p.anisotropyDirection = length > 0.0f ? turned * (1.0f / length) : Vec2{c, s};
+        p.anisotropy = clampf(p.anisotropy, 0.0f, 1.0f);
+    }
+    if (hasFeature<kF>(feature::kIridescence) && m.iridescence > 0.0f) {
+        // KHR_materials_iridescence: R scales the weight, G picks the thickness between the
+        // minimum and the maximum (the maximum without a texture).
+        p.iridescence = m.iridescence;
+        p.iridescenceIor = m.iridescenceIor;
+        p.iridescenceThickness = m.iridescenceThicknessMax;
+        if (m.iridescenceTexture.present())
+            p.iridescence *= sampleTexture(scene, m.iridescenceTexture, uv, false).x;
+        if (m.iridescenceThicknessTexture.present()) {
+            const float g = sampleTexture(scene, m.iridescenceThicknessTexture, uv, false).y;
+            p.iridescenceThickness =
+                m.iridescenceThicknessMin + (m.iridescenceThicknessMax - m.iridescenceThicknessMin) * g;
+        }
+        p.iridescence = clampf(p.iridescence, 0.0f, 1.0f);
+        p.iridescenceIor = p.iridescenceIor >= 1.0f ? p.iridescenceIor : 1.0f;
+        p.iridescenceThickness = clampf(p.iridescenceThickness, 0.0f, 1e5f);  // also maps NaN to 0
+    }
     return p;
 }
 

@@ -88,6 +88,7 @@ struct SampleDims {
     static constexpr uint32_t kBsdfLobe = 3;    //   1: which lobe / reflect or refract
     static constexpr uint32_t kBsdfDir = 4;     //   2: BSDF direction
     static constexpr uint32_t kRoulette = 6;    //   1: Russian roulette
+    static constexpr uint32_t kWavelength = 7;  //   1: a dispersive surface's wavelength (dispersion.h)
     PT_HD static uint32_t bounce(uint32_t depth) { return kFirstBounce + depth * kPerBounce; }
     // Stochastic transparency (alpha blend) draws one number per surface a segment passes, up
     // to kAlphaLayers per segment; these dimensions lie beyond any path's own, so they are

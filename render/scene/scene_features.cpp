@@ -41,6 +41,10 @@ uint32_t materialFeatures(const Material& m) {
     if (m.clearcoat > 0.0f) f |= kClearcoat;
     if (m.diffuseTransmission > 0.0f && m.metallic < 1.0f) f |= kDiffuseTransmission;
     if (maxComponent(m.sheenColor) > 0.0f) f |= kSheen;  // a black factor disables the layer
+    if (m.anisotropyStrength > 0.0f && (m.metallic > 0.0f || m.specular > 0.0f || mayTransmit))
+        f |= kAnisotropy;
+    if (m.iridescence > 0.0f && (m.metallic > 0.0f || m.specular > 0.0f)) f |= kIridescence;
+    if (m.dispersion > 0.0f && mayTransmit) f |= kDispersion;
     if (m.specular != 1.0f || m.specularColor.x != 1.0f || m.specularColor.y != 1.0f ||
         m.specularColor.z != 1.0f) {
         f |= kSpecularLayer;
@@ -106,7 +110,10 @@ const char* featureName(uint32_t bit) {
                                                         "glossy_reflection",
                                                         "unlit",
                                                         "diffuse_transmission",
-                                                        "sheen"};
+                                                        "sheen",
+                                                        "anisotropy",
+                                                        "iridescence",
+                                                        "dispersion"};
     for (uint32_t i = 0; i < feature::kCount; ++i) {
         if (bit == (1u << i)) return kNames[i];
     }

@@ -54,7 +54,14 @@ constexpr uint32_t kUnlit = 1u << 26;
 constexpr uint32_t kDiffuseTransmission = 1u << 27;
 // KHR_materials_sheen: a Charlie fibre lobe over the rest (fabric, velvet).
 constexpr uint32_t kSheen = 1u << 28;
-constexpr uint32_t kCount = 29;
+// KHR_materials_anisotropy: the GGX reflection and refraction lobes stretched along a direction.
+constexpr uint32_t kAnisotropy = 1u << 29;
+// KHR_materials_iridescence: thin-film interference on the Fresnel term of the specular lobe.
+constexpr uint32_t kIridescence = 1u << 30;
+// KHR_materials_dispersion: refraction whose index depends on the wavelength a path carries.
+constexpr uint32_t kDispersion = 1u << 31;
+// Every bit of the 32 is taken: the next feature widens the set to 64 bits.
+constexpr uint32_t kCount = 32;
 
 // Groups the kernels test.
 constexpr uint32_t kTextures =
@@ -63,14 +70,14 @@ constexpr uint32_t kTransparency = kAlphaMask | kAlphaBlend | kBackfaceCulling;
 constexpr uint32_t kTransmission = kSmoothTransmission | kRoughTransmission;
 // Lobes of glTF material extensions few scenes use: only the generic ("full") kernels carry
 // them, so every other scene runs the code it ran before they were written.
-constexpr uint32_t kRareLobes = kDiffuseTransmission | kSheen;
+constexpr uint32_t kRareLobes = kDiffuseTransmission | kSheen | kAnisotropy | kIridescence | kDispersion;
 // Features no kernel code depends on: every variant has them. (AOVs select the generic
 // kernels: recording them is a debugging and export path, not worth a variant of its own.)
 constexpr uint32_t kUngated =
     kSpecularLayer | kMetal | kEmissiveTriangles | kConstantEnvironment | kMorphTargets;
 }  // namespace feature
 
-constexpr uint32_t kAllFeatures = (1u << feature::kCount) - 1u;
+constexpr uint32_t kAllFeatures = ~0u >> (32u - feature::kCount);
 
 // Whether code compiled for feature set kFeatures may meet `bits` (any of them).
 template <uint32_t kFeatures>

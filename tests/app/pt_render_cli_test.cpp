@@ -255,6 +255,23 @@ TEST(PtRenderCli, InfoListsTheGltfExtensionsAndWhetherTheyAreHonoured) {
         << "a scene without model files lists none";
 }
 
+// The material extensions read last (issue 18) are listed as honoured, with the features they
+// turn on, for the scene that shows them (scenes/extensions.json).
+TEST(PtRenderCli, InfoListsAnisotropyIridescenceAndDispersionAsHonoured) {
+    const auto r = runCli("info --json '" + test::projectPath("scenes/extensions.json") + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto info = nlohmann::json::parse(r.out);
+    for (const char* name :
+         {"KHR_materials_anisotropy", "KHR_materials_iridescence", "KHR_materials_dispersion",
+          "KHR_materials_sheen", "KHR_materials_diffuse_transmission"})
+        EXPECT_EQ(info["gltf_extensions"][name], "honoured") << name << ": " << r.out;
+    const auto features = info["features"].get<std::vector<std::string>>();
+    for (const char* feature : {"anisotropy", "iridescence", "dispersion"})
+        EXPECT_NE(std::find(features.begin(), features.end(), feature), features.end())
+            << feature << ": " << r.out;
+    EXPECT_EQ(info["warnings"], 0) << r.err;
+}
+
 // OpenImageIO (about 260 shared libraries) is loaded on the first image read or written, not at
 // start-up (issue 17: every start took 0.2-0.75 s, --help included). The dynamic loader's own
 // log (LD_DEBUG=files) says which libraries a run opened.

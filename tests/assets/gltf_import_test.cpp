@@ -430,5 +430,125 @@ TEST(GltfImport, UnlitAndDiffuseTransmissionMaterials) {
     EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
 }
 
+// A file whose quad has one primitive per material of `materials` (`count` JSON objects), with
+// `extensions` declared used and one texture, a 1x1 PNG.
+std::string materialsGltf(const std::string& name, const std::string& extensions,
+                          const std::string& materials, size_t count) {
+    std::string primitives;
+    for (size_t i = 0; i < count; ++i) {
+        if (i > 0) primitives += ", ";
+        primitives += R"({"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}, "indices": 3, )";
+        primitives += R"("material": )" + std::to_string(i) + "}";
+    }
+    std::string json = R"({"asset": {"version": "2.0"}, "extensionsUsed": [)" + extensions + "],\n";
+    json += R"("materials": [)" + materials + "],\n";
+    json += R"("textures": [{"source": 0}], "images": [{"uri": "data:image/png;base64,)";
+    json +=
+        R"(iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR42mP8z8DwHwAFBQIAX8jx0gAAAABJRU5ErkJggg=="}],)";
+    json += test::quadGltfGeometry() + R"(, "meshes": [{"primitives": [)" + primitives + "]}],\n";
+    json += R"("nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})";
+    return test::writeTempFile(name, json);
+}
+
+// KHR_materials_anisotropy, _iridescence and _dispersion: every factor and texture read, and
+// the extensions' defaults where an object leaves them out; honoured, so no warning.
+TEST(GltfImport, AnisotropyIridescenceAndDispersionMaterials) {
+    const std::string path = materialsGltf(
+        "anisotropy_iridescence_dispersion.gltf",
+        R"("KHR_materials_anisotropy", "KHR_materials_iridescence", "KHR_materials_dispersion")",
+        R"({"name": "all", "extensions": {
+             "KHR_materials_anisotropy": {"anisotropyStrength": 0.6, "anisotropyRotation": 2.5,
+                                          "anisotropyTexture": {"index": 0}},
+             "KHR_materials_iridescence": {"iridescenceFactor": 0.7, "iridescenceTexture": {"index": 0},
+               "iridescenceIor": 1.45, "iridescenceThicknessMinimum": 150, "iridescenceThicknessMaximum": 900,
+               "iridescenceThicknessTexture": {"index": 0}},
+             "KHR_materials_dispersion": {"dispersion": 0.4}}},
+           {"name": "empty objects", "extensions": {"KHR_materials_anisotropy": {},
+             "KHR_materials_iridescence": {}, "KHR_materials_dispersion": {}}},
+           {"name": "none"})",
+        3);
+    Scene scene;
+    importGltf(path, 0, scene);
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    for (const char* name :
+         {"KHR_materials_anisotropy", "KHR_materials_iridescence", "KHR_materials_dispersion"})
+        EXPECT_TRUE(scene.gltfExtensions.at(name)) << name;
+    ASSERT_EQ(scene.materials.size(), 3u);
+    const Material& all = scene.materials[0].params;
+    EXPECT_EQ(all.anisotropyStrength, 0.6f);
+    EXPECT_EQ(all.anisotropyRotation, 2.5f) << "radians, as in the file";
+    EXPECT_TRUE(all.anisotropyTexture.present());
+    EXPECT_EQ(all.iridescence, 0.7f);
+    EXPECT_EQ(all.iridescenceIor, 1.45f);
+    EXPECT_EQ(all.iridescenceThicknessMin, 150.0f);
+    EXPECT_EQ(all.iridescenceThicknessMax, 900.0f);
+    EXPECT_TRUE(all.iridescenceTexture.present());
+    EXPECT_TRUE(all.iridescenceThicknessTexture.present());
+    EXPECT_EQ(all.dispersion, 0.4f);
+    for (size_t i : {1u, 2u}) {
+        SCOPED_TRACE(scene.materials[i].name);
+        const Material& m = scene.materials[i].params;
+        EXPECT_EQ(m.anisotropyStrength, 0.0f);
+        EXPECT_EQ(m.anisotropyRotation, 0.0f);
+        EXPECT_FALSE(m.anisotropyTexture.present());
+        EXPECT_EQ(m.iridescence, 0.0f);
+        EXPECT_EQ(m.iridescenceIor, 1.3f);
+        EXPECT_EQ(m.iridescenceThicknessMin, 100.0f);
+        EXPECT_EQ(m.iridescenceThicknessMax, 400.0f);
+        EXPECT_FALSE(m.iridescenceTexture.present());
+        EXPECT_FALSE(m.iridescenceThicknessTexture.present());
+        EXPECT_EQ(m.dispersion, 0.0f);
+    }
+}
+
+// Values outside what the extensions allow are clamped with one warning each, naming the value;
+// one no float holds is an error, as for every number.
+TEST(GltfImport, AnisotropyIridescenceAndDispersionOutOfRangeWarnOnceEach) {
+    const std::string extensions =
+        R"("KHR_materials_anisotropy", "KHR_materials_iridescence", "KHR_materials_dispersion")";
+    const std::string path = materialsGltf("out_of_range_extensions.gltf", extensions,
+                                           R"({"extensions": {
+             "KHR_materials_anisotropy": {"anisotropyStrength": 1.5, "anisotropyRotation": -7},
+             "KHR_materials_iridescence": {"iridescenceFactor": -0.25, "iridescenceIor": 0.5,
+               "iridescenceThicknessMinimum": -10, "iridescenceThicknessMaximum": 300},
+             "KHR_materials_dispersion": {"dispersion": -1}}})",
+                                           1);
+    Scene scene;
+    importGltf(path, 0, scene);
+    const Material& m = scene.materials.at(0).params;
+    EXPECT_EQ(m.anisotropyStrength, 1.0f);
+    EXPECT_EQ(m.anisotropyRotation, -7.0f) << "any angle";
+    EXPECT_EQ(m.iridescence, 0.0f);
+    EXPECT_EQ(m.iridescenceIor, 1.0f);
+    EXPECT_EQ(m.iridescenceThicknessMin, 0.0f);
+    EXPECT_EQ(m.iridescenceThicknessMax, 300.0f);
+    EXPECT_EQ(m.dispersion, 0.0f);
+    EXPECT_EQ(scene.warnings.size(), 5u);
+    const std::string base = "out_of_range_extensions.gltf: materials[0].extensions.";
+    for (const char* warning :
+         {"KHR_materials_anisotropy.anisotropyStrength: 1.5 is above 1; 1 used",
+          "KHR_materials_iridescence.iridescenceFactor: -0.25 is below 0; 0 used",
+          "KHR_materials_iridescence.iridescenceIor: 0.5 is below 1; 1 used",
+          "KHR_materials_iridescence.iridescenceThicknessMinimum: -10 is below 0; 0 used",
+          "KHR_materials_dispersion.dispersion: -1 is below 0; 0 used"}) {
+        EXPECT_EQ(warningsContaining(scene, base + warning), 1u) << warning;
+    }
+
+    const std::string huge =
+        materialsGltf("huge_dispersion.gltf", extensions,
+                      R"({"extensions": {"KHR_materials_dispersion": {"dispersion": 1e39}}})", 1);
+    Scene other;
+    try {
+        importGltf(huge, 0, other);
+        ADD_FAILURE() << "a dispersion beyond float range imported";
+    } catch (const InputError& e) {
+        EXPECT_NE(
+            std::string(e.what()).find(
+                "materials[0].extensions.KHR_materials_dispersion.dispersion: expected a finite number"),
+            std::string::npos)
+            << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace pt

@@ -98,18 +98,25 @@ TEST(GltfSharedAssets, SimpleSkinGetsTheDefaultMaterialAndGeneratedNormals) {
 TEST(GltfSharedAssets, AnisotropyBarnLampWarnsOncePerUndecodableImageAndLoads) {
     PT_REQUIRE_SHARED_ASSET("AnisotropyBarnLamp/AnisotropyBarnLamp.gltf");
     const Imported r = importShared("AnisotropyBarnLamp/AnisotropyBarnLamp.gltf");
-    // The normal and metallic-roughness slots use two .ktx2 images (the first also through
-    // clearcoatNormalTexture, the second through occlusionTexture): one warning each. The
-    // third .ktx2 is only used by KHR_materials_anisotropy, which is not imported, so it is
-    // never decoded; the extension's own warning covers it.
+    // The normal, metallic-roughness and anisotropy slots use three .ktx2 images (the first
+    // also through clearcoatNormalTexture, the second through occlusionTexture): one warning
+    // each. KHR_materials_anisotropy itself is honoured: its strength is read, its texture
+    // slot falls back to none like the others.
     EXPECT_EQ(warningsContaining(r.scene, "AnisotropyBarnLamp_normalbump.ktx2"), 1u);
     EXPECT_EQ(warningsContaining(r.scene, "AnisotropyBarnLamp_occlusionroughnessmetal.ktx2"), 1u);
-    EXPECT_EQ(warningsContaining(r.scene, ".ktx2"), 2u);
-    EXPECT_EQ(warningsContaining(r.scene, "extension KHR_materials_anisotropy is not supported"), 1u);
+    EXPECT_EQ(warningsContaining(r.scene, "AnisotropyBarnLamp_anisotropy.ktx2"), 1u);
+    EXPECT_EQ(warningsContaining(r.scene, ".ktx2"), 3u);
+    EXPECT_EQ(warningsContaining(r.scene, "KHR_materials_anisotropy"), 0u);
+    EXPECT_TRUE(r.scene.gltfExtensions.at("KHR_materials_anisotropy"));
     const Material& metal = r.scene.materials[r.file.placements.at(0).materials.at(0)].params;
     EXPECT_TRUE(metal.baseColorTexture.present());
     EXPECT_FALSE(metal.normalTexture.present());
     EXPECT_FALSE(metal.metallicRoughnessTexture.present());
+    EXPECT_FALSE(metal.anisotropyTexture.present());
+    EXPECT_FLOAT_EQ(metal.anisotropyStrength, 1.0f);
+    EXPECT_FLOAT_EQ(metal.anisotropyRotation, 0.0f);
+    EXPECT_TRUE(std::any_of(r.scene.materials.begin(), r.scene.materials.end(),
+                            [](const NamedMaterial& m) { return m.params.anisotropyStrength > 0.0f; }));
     EXPECT_FLOAT_EQ(metal.clearcoat, 0.25f);
     const Material& glass = r.scene.materials[r.file.placements.at(2).materials.at(0)].params;
     EXPECT_FLOAT_EQ(glass.transmission, 1.0f);

@@ -72,9 +72,17 @@ TEST(SceneJson, EveryKeyIsRead) {
     EXPECT_EQ(plastic.diffuseTransmissionColor, Vec3(0.3f, 0.9f, 0.5f));
     EXPECT_EQ(plastic.sheenColor, Vec3(0.8f, 0.7f, 0.6f));
     EXPECT_EQ(plastic.sheenRoughness, 0.45f);
+    EXPECT_EQ(plastic.anisotropyStrength, 0.65f);
+    EXPECT_NEAR(plastic.anisotropyRotation, -kPi / 3.0f, 1e-6f) << "degrees in JSON, radians inside";
+    EXPECT_EQ(plastic.iridescence, 0.9f);
+    EXPECT_EQ(plastic.iridescenceIor, 1.8f);
+    EXPECT_EQ(plastic.iridescenceThicknessMin, 250.0f);
+    EXPECT_EQ(plastic.iridescenceThicknessMax, 750.0f);
+    EXPECT_EQ(plastic.dispersion, 2.5f);
     for (const TextureRef* slot :
          {&plastic.diffuseTransmissionTexture, &plastic.diffuseTransmissionColorTexture,
-          &plastic.sheenColorTexture, &plastic.sheenRoughnessTexture})
+          &plastic.sheenColorTexture, &plastic.sheenRoughnessTexture, &plastic.anisotropyTexture,
+          &plastic.iridescenceTexture, &plastic.iridescenceThicknessTexture})
         EXPECT_EQ(slot->texture, plastic.baseColorTexture.texture);
     EXPECT_EQ(scene.materials[size_t(findSceneMaterial(scene, "poster"))].params.unlit, 1u);
 
@@ -221,6 +229,7 @@ TEST(SceneJson, EveryKeyRoundTripsAndOutputIsStable) {
     // Floats print as their shortest exact decimal, not as the double nearest the float.
     EXPECT_NE(text.find("\"baseColor\": [0.9, 0.1, 0.2]"), std::string::npos) << text;
     EXPECT_NE(text.find("\"rotation\": 30.0"), std::string::npos) << text;
+    EXPECT_NE(text.find("\"anisotropyRotation\": -60.0"), std::string::npos) << "degrees, as read";
     EXPECT_NE(text.find("\"fov\": 33.3"), std::string::npos) << text;
     EXPECT_NE(text.find("\"scale\": 0.5"), std::string::npos) << "uniform scale stays one number";
     const std::string sky = fs::path(testDataPath("json/images/sky.hdr"))
@@ -228,6 +237,40 @@ TEST(SceneJson, EveryKeyRoundTripsAndOutputIsStable) {
                                 .lexically_relative(fs::path(folder) / "elsewhere")
                                 .generic_string();
     EXPECT_NE(text.find("\"image\": \"" + sky + "\""), std::string::npos) << "paths relative to the output";
+}
+
+// The keys of KHR_materials_anisotropy, _iridescence and _dispersion are written only where a
+// value differs from Material{}'s (the extensions' own defaults), and read back bit for bit.
+TEST(SceneJson, AnisotropyIridescenceAndDispersionKeysAreWrittenOnlyWhenSet) {
+    const std::string folder = testFolder();
+    const Scene scene = test::loadSceneOrFail(writeFile(folder, "in.json", R"({"version": 1, "materials": [
+        {"name": "lid", "anisotropyStrength": 0.8, "anisotropyRotation": 12.5},
+        {"name": "bubble", "iridescence": 1, "iridescenceThicknessMax": 600},
+        {"name": "flint", "type": "glass", "dispersion": 1},
+        {"name": "plain", "iridescenceIor": 1.3, "iridescenceThicknessMin": 100, "anisotropyRotation": 0}],
+      "objects": [{"shape": "sphere", "material": "lid"}, {"shape": "box", "material": "bubble"},
+                  {"shape": "quad", "material": "flint"}, {"shape": "sphere", "material": "plain"}]})"));
+    const std::string text = sceneToJson(scene, folder + "/out.json");
+    EXPECT_NE(text.find(R"("name": "lid",
+      "anisotropyStrength": 0.8,
+      "anisotropyRotation": 12.5
+    })"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find(R"("name": "bubble",
+      "iridescence": 1.0,
+      "iridescenceThicknessMax": 600.0
+    })"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find(R"("dispersion": 1.0)"), std::string::npos) << text;
+    EXPECT_NE(text.find(R"("name": "plain"
+    })"),
+              std::string::npos)
+        << "the defaults, written out in the input, are left out: " << text;
+    const Scene again = saveAndReload(scene, folder + "/out.json");
+    EXPECT_EQ(again.materials[size_t(findSceneMaterial(again, "lid"))].params.anisotropyRotation,
+              scene.materials[size_t(findSceneMaterial(scene, "lid"))].params.anisotropyRotation);
 }
 
 // Random values of every float kind (denormals, huge, negative zero, many digits) survive
@@ -360,6 +403,11 @@ const ErrorCase kErrorCases[] = {
      "scene.json: render.resolution: expected [width, height], got 640"},
     {"ParameterOutOfRange", "scene.json", R"({"version": 1, "materials": [{"name": "a", "roughness": 1.5}]})",
      "scene.json: materials[0].roughness: expected a number in [0, 1], got 1.5"},
+    {"NegativeDispersion", "scene.json", R"({"version": 1, "materials": [{"name": "a", "dispersion": -1}]})",
+     "scene.json: materials[0].dispersion: expected a number >= 0, got -1"},
+    {"IridescenceIorBelowOne", "scene.json",
+     R"({"version": 1, "materials": [{"name": "a", "iridescenceIor": 0.5}]})",
+     "scene.json: materials[0].iridescenceIor: expected a number >= 1, got 0.5"},
     {"FovOutOfRange", "scene.json", R"({"version": 1, "camera": {"fov": 180}})",
      "scene.json: camera.fov: expected a number in (0, 180), got 180"},
     {"CameraWithoutViewDirection", "scene.json", R"({"version": 1, "camera": {"position": [0, 0, 0]}})",
@@ -409,7 +457,8 @@ const ErrorCase kErrorCases[] = {
     {"ZeroLightDirection", "scene.json",
      R"({"version": 1, "lights": [{"type": "spot", "direction": [0, 0, 0]}]})",
      "scene.json: lights[0].direction: the direction is zero"},
-    {"NegativeLightIntensity", "scene.json", R"({"version": 1, "lights": [{"type": "point", "intensity": -1}]})",
+    {"NegativeLightIntensity", "scene.json",
+     R"({"version": 1, "lights": [{"type": "point", "intensity": -1}]})",
      "scene.json: lights[0].intensity: expected a number >= 0, got -1"},
     {"SyntaxErrorNamesLineAndColumn", "scene.json", "{\n  \"version\": 1,\n  \"objects\": [\n}",
      "scene.json: line 4, column 1: syntax error while parsing value - unexpected '}'; expected '[', '{', or "

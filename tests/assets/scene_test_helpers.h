@@ -112,6 +112,17 @@ inline void compareMaterial(Differences& d, const std::string& at, const Materia
     PT_CHECK_FIELD(specularColor);
     PT_CHECK_FIELD(clearcoat);
     PT_CHECK_FIELD(clearcoatRoughness);
+    PT_CHECK_FIELD(diffuseTransmission);
+    PT_CHECK_FIELD(diffuseTransmissionColor);
+    PT_CHECK_FIELD(sheenColor);
+    PT_CHECK_FIELD(sheenRoughness);
+    PT_CHECK_FIELD(anisotropyStrength);
+    PT_CHECK_FIELD(anisotropyRotation);
+    PT_CHECK_FIELD(iridescence);
+    PT_CHECK_FIELD(iridescenceIor);
+    PT_CHECK_FIELD(iridescenceThicknessMin);
+    PT_CHECK_FIELD(iridescenceThicknessMax);
+    PT_CHECK_FIELD(dispersion);
     PT_CHECK_FIELD(thickness);
     PT_CHECK_FIELD(attenuationColor);
     PT_CHECK_FIELD(attenuationDistance);
@@ -119,11 +130,19 @@ inline void compareMaterial(Differences& d, const std::string& at, const Materia
     PT_CHECK_FIELD(alphaCutoff);
     PT_CHECK_FIELD(normalScale);
     PT_CHECK_FIELD(doubleSided);
+    PT_CHECK_FIELD(unlit);
     PT_CHECK_FIELD(baseColorTexture);
     PT_CHECK_FIELD(metallicRoughnessTexture);
     PT_CHECK_FIELD(normalTexture);
     PT_CHECK_FIELD(emissiveTexture);
     PT_CHECK_FIELD(transmissionTexture);
+    PT_CHECK_FIELD(diffuseTransmissionTexture);
+    PT_CHECK_FIELD(diffuseTransmissionColorTexture);
+    PT_CHECK_FIELD(sheenColorTexture);
+    PT_CHECK_FIELD(sheenRoughnessTexture);
+    PT_CHECK_FIELD(anisotropyTexture);
+    PT_CHECK_FIELD(iridescenceTexture);
+    PT_CHECK_FIELD(iridescenceThicknessTexture);
 #undef PT_CHECK_FIELD
 }
 

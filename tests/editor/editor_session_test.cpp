@@ -596,7 +596,8 @@ TEST(EditorSession, SaveWritesTheSceneAndClearsModified) {
 }
 
 // Values typed past what the scene reader accepts (a field of view of 0, roughness -1, an IOR
-// of 0, a negative colour) are held in range by the edit, so the saved scene reopens with them.
+// of 0, a negative colour, an infinite angle) are held in range by the edit, so the saved scene
+// reopens with them.
 TEST(EditorSession, TypedValuesOutOfRangeAreHeldSoTheSavedSceneReopens) {
     Fixture f = startSession();
     EditorSession& session = *f.session;
@@ -617,6 +618,10 @@ TEST(EditorSession, TypedValuesOutOfRangeAreHeldSoTheSavedSceneReopens) {
     m.ior = 0.0f;
     m.baseColor = {2.0f, -1.0f, 0.5f};
     m.emissionStrength = std::nanf("");
+    m.dispersion = -1.0f;
+    m.iridescenceIor = 0.5f;
+    m.anisotropyStrength = 3.0f;
+    m.anisotropyRotation = kInf;  // degrees in the file: no finite number
     session.execute(setMaterial(session.document(), 0, m));
     const Material& held = session.document().scene.materials[0].params;
     EXPECT_EQ(held.roughness, 0.0f);
@@ -625,6 +630,10 @@ TEST(EditorSession, TypedValuesOutOfRangeAreHeldSoTheSavedSceneReopens) {
     EXPECT_EQ(held.baseColor.y, 0.0f);
     EXPECT_EQ(held.baseColor.z, 0.5f);
     EXPECT_EQ(held.emissionStrength, 0.0f);
+    EXPECT_EQ(held.dispersion, 0.0f);
+    EXPECT_EQ(held.iridescenceIor, 1.0f);
+    EXPECT_EQ(held.anisotropyStrength, 1.0f);
+    EXPECT_EQ(held.anisotropyRotation, 0.0f);
     EXPECT_EQ(held.attenuationDistance, Material{}.attenuationDistance) << "a default stays (infinity)";
 
     const std::string path = test::testFolder() + "/typed.json";
@@ -634,6 +643,7 @@ TEST(EditorSession, TypedValuesOutOfRangeAreHeldSoTheSavedSceneReopens) {
     EXPECT_EQ(reopened.scene->camera.verticalFovDegrees, kMaxEditedFov);
     EXPECT_EQ(reopened.scene->materials[0].params.ior, 1.0f);
     EXPECT_EQ(reopened.scene->materials[0].params.roughness, 0.0f);
+    EXPECT_EQ(reopened.scene->materials[0].params.anisotropyStrength, 1.0f);
 }
 
 // After Save As the document is the new file: an export names it (not the file it was opened

@@ -18,7 +18,14 @@ import sys
 SLOTS = [("pbrMetallicRoughness", "baseColorTexture"),
          ("pbrMetallicRoughness", "metallicRoughnessTexture"),
          (None, "normalTexture"), (None, "emissiveTexture"),
-         ("extensions/KHR_materials_transmission", "transmissionTexture")]
+         ("extensions/KHR_materials_transmission", "transmissionTexture"),
+         ("extensions/KHR_materials_diffuse_transmission", "diffuseTransmissionTexture"),
+         ("extensions/KHR_materials_diffuse_transmission", "diffuseTransmissionColorTexture"),
+         ("extensions/KHR_materials_sheen", "sheenColorTexture"),
+         ("extensions/KHR_materials_sheen", "sheenRoughnessTexture"),
+         ("extensions/KHR_materials_anisotropy", "anisotropyTexture"),
+         ("extensions/KHR_materials_iridescence", "iridescenceTexture"),
+         ("extensions/KHR_materials_iridescence", "iridescenceThicknessTexture")]
 
 
 def load(path):

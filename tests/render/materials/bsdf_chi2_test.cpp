@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <mutex>
@@ -41,6 +42,7 @@ struct TestMaterial {
     const char* name;
     BsdfParams params;
     bool inside;  // wo below the surface (inside a transmissive object)
+    float azimuthDegrees = 0.0f;  // of wo: off the anisotropy direction (x) for anisotropic lobes
 };
 
 std::vector<TestMaterial> materials(float roughness) {
@@ -63,9 +65,31 @@ std::vector<TestMaterial> materials(float roughness) {
     velvet.roughness = 0.8f;
     velvet.sheenColor = {1.0f, 0.6f, 0.7f};
     velvet.sheenRoughness = roughness;
-    return {{"metal", metal, false},       {"plastic", plastic, false}, {"glass-outside", glass, false},
-            {"glass-inside", glass, true}, {"layered", layered, false}, {"leaf", leaf, false},
-            {"velvet", velvet, false}};
+    BsdfParams brushed = metal;  // KHR_materials_anisotropy
+    brushed.anisotropy = 0.8f;
+    BsdfParams frosted = glass;
+    frosted.anisotropy = 0.5f;
+    BsdfParams soap = layered;  // KHR_materials_iridescence over metal, specular layer and glass
+    soap.iridescence = 0.8f;
+    soap.iridescenceIor = 1.8f;
+    soap.iridescenceThickness = 350.0f;
+    BsdfParams bubble = glass;  // the film on glass: one Fresnel term per channel
+    bubble.iridescence = 1.0f;
+    bubble.iridescenceIor = 1.33f;
+    bubble.iridescenceThickness = 300.0f;
+    return {{"metal", metal, false},
+            {"plastic", plastic, false},
+            {"glass-outside", glass, false},
+            {"glass-inside", glass, true},
+            {"layered", layered, false},
+            {"leaf", leaf, false},
+            {"velvet", velvet, false},
+            {"brushed", brushed, false, 35.0f},
+            {"frosted-outside", frosted, false, 35.0f},
+            {"frosted-inside", frosted, true, 35.0f},
+            {"soap", soap, false},
+            {"bubble-outside", bubble, false},
+            {"bubble-inside", bubble, true}};
 }
 
 Vec3 incidentDirection(float degrees, bool inside) {
@@ -121,7 +145,9 @@ std::vector<Case> allCases() {
                 char name[128];
                 std::snprintf(name, sizeof(name), "%s roughness %.2f incidence %.0f", m.name, double(roughness),
                               double(degrees));
-                cases.push_back({name, m.params, incidentDirection(degrees, m.inside)});
+                const Vec3 wo = incidentDirection(degrees, m.inside);
+                const float phi = m.azimuthDegrees * (kPi / 180.0f);
+                cases.push_back({name, m.params, {wo.x * cosf(phi), wo.x * sinf(phi), wo.z}});
             }
         }
     }

@@ -353,8 +353,17 @@ std::vector<std::pair<const char*, BsdfParams>> whiteMaterials(float roughness, 
     BsdfParams velvet = coated;       // KHR_materials_sheen, under the coat
     velvet.sheenColor = {1.0f, 1.0f, 1.0f};
     velvet.sheenRoughness = roughness;
-    return {{"metal", metal}, {"plastic", plastic}, {"glass", glass},  {"coated", coated},
-            {"mixed", mixed}, {"leaf", leaf},       {"velvet", velvet}};
+    BsdfParams brushed = metal;  // KHR_materials_anisotropy
+    brushed.anisotropy = 0.9f;
+    BsdfParams frosted = glass;
+    frosted.anisotropy = 0.6f;
+    BsdfParams soap = coated;  // KHR_materials_iridescence, a high-index film
+    soap.iridescence = 1.0f;
+    soap.iridescenceIor = 2.2f;
+    soap.iridescenceThickness = 250.0f;
+    return {{"metal", metal},     {"plastic", plastic}, {"glass", glass},   {"coated", coated},
+            {"mixed", mixed},     {"leaf", leaf},       {"velvet", velvet}, {"brushed", brushed},
+            {"frosted", frosted}, {"soap", soap}};
 }
 
 constexpr float kStiffRoughness[] = {0.0f, 1e-4f, 0.01f, 0.0316f, 0.0317f, 0.05f, 0.2f, 0.5f, 1.0f};

@@ -177,9 +177,12 @@ using DirectionPdf = std::function<double(Vec3)>;
 
 // Integral of f over [a0,a1] x [b0,b1]: 3 x 3 Gauss-Legendre, refined into quadrants until the
 // quadrants agree with their parent to `tolerance` (halved per level; depth-limited).
+// Adaptive 3x3 Gauss over [a0, a1] x [b0, b1], split at least minDepth times: a narrow lobe
+// between the nodes of a coarse pass would otherwise read as none (an anisotropic glass lobe,
+// alpha 0.0025 one way and 0.25 the other, did).
 template <typename F>
-double integrateAdaptive(const F& f, double a0, double a1, double b0, double b1, double whole, double tolerance,
-                         int depth) {
+double integrateAdaptive(const F& f, double a0, double a1, double b0, double b1, double whole,
+                         double tolerance, int depth, int minDepth) {
     auto gauss = [&](double x0, double x1, double y0, double y1) {
         const double node[3] = {-0.7745966692414834, 0.0, 0.7745966692414834};
         const double weight[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
@@ -195,10 +198,13 @@ double integrateAdaptive(const F& f, double a0, double a1, double b0, double b1,
     const double am = 0.5 * (a0 + a1), bm = 0.5 * (b0 + b1);
     const double q[4] = {gauss(a0, am, b0, bm), gauss(am, a1, b0, bm), gauss(a0, am, bm, b1), gauss(am, a1, bm, b1)};
     const double sum = q[0] + q[1] + q[2] + q[3];
-    if (depth <= 0 || std::fabs(sum - whole) <= tolerance) return sum;
+    if (depth <= 0 || (minDepth <= 0 && std::fabs(sum - whole) <= tolerance)) return sum;
     const double t = 0.5 * tolerance;
-    return integrateAdaptive(f, a0, am, b0, bm, q[0], t, depth - 1) + integrateAdaptive(f, am, a1, b0, bm, q[1], t, depth - 1) +
-           integrateAdaptive(f, a0, am, bm, b1, q[2], t, depth - 1) + integrateAdaptive(f, am, a1, bm, b1, q[3], t, depth - 1);
+    const int d = depth - 1, m = minDepth - 1;
+    return integrateAdaptive(f, a0, am, b0, bm, q[0], t, d, m) +
+           integrateAdaptive(f, am, a1, b0, bm, q[1], t, d, m) +
+           integrateAdaptive(f, a0, am, bm, b1, q[2], t, d, m) +
+           integrateAdaptive(f, am, a1, bm, b1, q[3], t, d, m);
 }
 
 // Expected probability of each cell under `pdf`.
@@ -220,7 +226,7 @@ inline std::vector<double> integrateCells(const LobeHistogram& h, const Directio
                 const double expected = std::max(5.0, std::fabs(coarse) * sampleCount);
                 const double tolerance = 0.05 * std::sqrt(expected) / sampleCount;
                 p[(side * LobeHistogram::kThetaBins + ia) * LobeHistogram::kPhiBins + ib] =
-                    integrateAdaptive(f, a0, a1, b0, b1, coarse, tolerance, 10);
+                    integrateAdaptive(f, a0, a1, b0, b1, coarse, tolerance, 10, 2);
             }
         }
     }

@@ -32,21 +32,39 @@ TEST(Ggx, DistributionIsNormalised) {
 }
 
 // The visible normals of any view integrate to 1 (Heitz 2014, eq. 18): Monte Carlo over
-// cosine-distributed normals, E[pdf(m) / (m.z / pi)].
+// cosine-distributed normals, E[pdf(m) / (m.z / pi)]. `alpha` is a float or a GgxAlpha2.
+template <class Alpha>
+double visibleNormalIntegral(Vec3 wo, Alpha alpha, test::Pcg32& rng) {
+    const int n = 400000;
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const float r = sqrtf(rng.uniform()), phi = 2.0f * kPi * rng.uniform();
+        const Vec3 m{r * cosf(phi), r * sinf(phi), sqrtf(fmaxf(0.0f, 1.0f - r * r))};
+        if (m.z <= 0.0f) continue;
+        sum += ggxVisibleNormalPdf(wo, m, alpha) / (m.z * kInvPi);
+    }
+    return sum / n;
+}
+
 TEST(Ggx, VisibleNormalsAreNormalised) {
     test::Pcg32 rng(9);
     for (float alpha : {0.2f, 0.5f, 1.0f}) {
         for (float cosTheta : {1.0f, 0.5f, 0.05f}) {
             const Vec3 wo{sqrtf(1.0f - cosTheta * cosTheta), 0.0f, cosTheta};
-            const int n = 400000;
-            double sum = 0.0;
-            for (int i = 0; i < n; ++i) {
-                const float r = sqrtf(rng.uniform()), phi = 2.0f * kPi * rng.uniform();
-                const Vec3 m{r * cosf(phi), r * sinf(phi), sqrtf(fmaxf(0.0f, 1.0f - r * r))};
-                if (m.z <= 0.0f) continue;
-                sum += ggxVisibleNormalPdf(wo, m, alpha) / (m.z * kInvPi);
-            }
-            EXPECT_NEAR(sum / n, 1.0, 0.02) << alpha << " " << cosTheta;
+            EXPECT_NEAR(visibleNormalIntegral(wo, alpha, rng), 1.0, 0.02) << alpha << " " << cosTheta;
+        }
+    }
+}
+
+// KHR_materials_anisotropy's stretched lobe, seen off its axes.
+TEST(Ggx, AnisotropicVisibleNormalsAreNormalised) {
+    test::Pcg32 rng(5);
+    for (GgxAlpha2 alpha : {GgxAlpha2{0.8f, 0.2f}, GgxAlpha2{0.2f, 0.6f}}) {
+        for (float cosTheta : {1.0f, 0.5f, 0.1f}) {
+            const float s = sqrtf(1.0f - cosTheta * cosTheta);
+            const Vec3 wo{s * 0.6f, s * 0.8f, cosTheta};
+            EXPECT_NEAR(visibleNormalIntegral(wo, alpha, rng), 1.0, 0.03)
+                << alpha.x << " " << alpha.y << " " << cosTheta;
         }
     }
 }

@@ -342,9 +342,10 @@ TEST(SceneFeatureNames, OneDistinctSnakeCaseNamePerBitInBitOrder) {
     }
     EXPECT_EQ(featureNames(kAllFeatures).size(), size_t(kCount));
     EXPECT_EQ(std::string(featureName(kClearcoat | kMetal)), "unknown");  // not one bit
-    EXPECT_EQ(std::string(featureName(1u << kCount)), "unknown");
+    const uint32_t pastLast = uint32_t(uint64_t{1} << kCount);            // 0 once all 32 bits are taken
+    EXPECT_EQ(std::string(featureName(pastLast)), "unknown");
     EXPECT_TRUE(featureNames(0u).empty());
-    EXPECT_TRUE(featureNames(1u << kCount).empty()) << "bits past kCount name nothing";
+    EXPECT_TRUE(featureNames(pastLast).empty()) << "bits past kCount name nothing";
 }
 
 TEST(SceneFeatureNames, DescribeJoinsTheNamesOrSaysNone) {

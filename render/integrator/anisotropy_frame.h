@@ -1,0 +1,37 @@
+#pragma once
+// KHR_materials_anisotropy's direction at a shading point: the BSDF stretches its roughness along
+// the shading frame's x (bsdf.h), so the frame is turned about its normal until x is the
+// material's direction, given in the tangent space of the mesh (the TANGENT attribute, or the
+// UV derivatives; surface_hit.h's objectTangent), as normal maps are.
+#include "render/integrator/surface_hit.h"
+#include "render/materials/bsdf.h"
+#include "render/math/frame.h"
+
+namespace pt {
+
+// `frame` turned so that its tangent is the anisotropy direction; `frame` itself where the
+// material is isotropic there or the surface has no tangent space (then the direction is
+// undefined: the one the frame happens to have stands in).
+template <uint32_t kF = kAllFeatures>
+PT_HD Frame anisotropicFrame(const RenderScene& scene, const Hit& hit, const SurfaceHit& s,
+                             const BsdfParams& p, const Frame& frame) {
+    if (!hasFeature<kF>(feature::kAnisotropy) || !(p.anisotropy > 0.0f)) return frame;
+    Vec3 tangentObject;
+    float w;
+    if (!objectTangent(scene, s, hit, tangentObject, w)) return frame;
+    const RenderInstance& inst = scene.instances[s.instance];
+    const Vec3 n = s.shadingNormal;
+    Vec3 t = inst.objectToWorld.transformVector(tangentObject);
+    t = t - n * dot(n, t);
+    if (!(lengthSquared(t) > 0.0f)) return frame;
+    t = normalize(t);
+    // The bitangent as normal maps take it (applyNormalMap); it reverses under mirroring.
+    const Vec3 b = cross(n, t) * (inst.flipsWinding ? -w : w);
+    Vec3 direction = t * p.anisotropyDirection.x + b * p.anisotropyDirection.y;
+    direction = direction - frame.normal * dot(frame.normal, direction);  // n or -n: one plane
+    if (!(lengthSquared(direction) > 0.0f) || !isFinite(direction)) return frame;
+    direction = normalize(direction);
+    return {direction, cross(frame.normal, direction), frame.normal};
+}
+
+}  // namespace pt
