@@ -7,6 +7,7 @@
 
 #include "assets/gltf_document.h"
 #include "assets/gltf_draco.h"
+#include "assets/gltf_instancing.h"
 #include "assets/gltf_lights.h"
 #include "assets/gltf_materials.h"
 #include "assets/gltf_mesh.h"
@@ -39,6 +40,7 @@ const std::set<std::string> kSupportedExtensions = {
     "KHR_materials_anisotropy",
     "KHR_materials_iridescence",
     "KHR_materials_dispersion",
+    "EXT_mesh_gpu_instancing",
 };
 
 // One warning per unsupported extension the file declares, and per feature it uses that is
@@ -108,6 +110,36 @@ std::optional<Placement> placeNode(GltfContext& ctx, const GltfNodeVisit& visit,
     return placement;
 }
 
+// The placements of `visit`'s mesh: one, or one per EXT_mesh_gpu_instancing instance (named
+// "<node> #i"), each under the node's transform. Instances of zero scale (hidden) are left out
+// with one warning for all of them.
+void placeNodeInstances(GltfContext& ctx, const GltfNodeVisit& visit, const ImportedMesh& mesh,
+                        std::vector<Placement>& placements) {
+    const std::vector<Affine3> instances = gltfInstanceTransforms(ctx, visit.node);
+    if (instances.empty()) {
+        if (auto placement = placeNode(ctx, visit, mesh)) placements.push_back(std::move(*placement));
+        return;
+    }
+    size_t hidden = 0;
+    for (size_t i = 0; i < instances.size(); ++i) {
+        GltfNodeVisit instance = visit;
+        instance.world = visit.world * instances[i];
+        if (instance.world.determinant() == 0.0f) {
+            ++hidden;
+            continue;
+        }
+        if (auto placement = placeNode(ctx, instance, mesh)) {
+            placement->name += " #" + std::to_string(i);
+            placements.push_back(std::move(*placement));
+        }
+    }
+    if (hidden > 0) {
+        ctx.warn(gltfPath("nodes", size_t(visit.node)),
+                 std::to_string(hidden) + " of " + std::to_string(instances.size()) +
+                     " EXT_mesh_gpu_instancing instances have zero scale; not placed");
+    }
+}
+
 }  // namespace
 
 ImportedFile importGltf(const std::string& path, int32_t object, Scene& scene,
@@ -135,9 +167,7 @@ ImportedFile importGltf(const std::string& path, int32_t object, Scene& scene,
         reportProgress(progress, "load glTF", double(++done) / double(meshNodes));
         if (!imported) continue;
         poseGltfMeshForNode(ctx, visit.node, *imported, posedMeshes.insert(imported->sceneMesh).second);
-        if (auto placement = placeNode(ctx, visit, *imported)) {
-            file.placements.push_back(std::move(*placement));
-        }
+        placeNodeInstances(ctx, visit, *imported, file.placements);
     }
     reportProgress(progress, "load glTF", 1.0);
     guard.commit();

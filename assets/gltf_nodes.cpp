@@ -36,11 +36,7 @@ Affine3 localTransform(const GltfContext& ctx, const tinygltf::Node& node,
     if (!node.rotation.empty()) {
         checkGltfNumbers(ctx, node.rotation, 4, element + ".rotation");
         const auto& q = node.rotation;
-        const double len = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-        if (!(len > 1e-6)) ctx.fail(element + ".rotation", "not a unit quaternion");
-        // Exporters write quaternions rounded to a few digits; renormalize, do not reject.
-        r = rotationTransform({float(q[0] / len), float(q[1] / len), float(q[2] / len),
-                               float(q[3] / len)});
+        r = gltfRotation(ctx, q[0], q[1], q[2], q[3], element + ".rotation");
     }
     if (!node.scale.empty()) {
         checkGltfNumbers(ctx, node.scale, 3, element + ".scale");
@@ -71,6 +67,14 @@ std::vector<int> rootNodes(const GltfContext& ctx) {
 }
 
 }  // namespace
+
+Affine3 gltfRotation(const GltfContext& ctx, double x, double y, double z, double w,
+                     const std::string& element) {
+    const double len = std::sqrt(x * x + y * y + z * z + w * w);
+    if (!(len > 1e-6)) ctx.fail(element, "not a unit quaternion");
+    // Exporters write quaternions rounded to a few digits; renormalize, do not reject.
+    return rotationTransform({float(x / len), float(y / len), float(z / len), float(w / len)});
+}
 
 std::vector<GltfNodeVisit> walkGltfScene(const GltfContext& ctx) {
     const auto& model = ctx.model();

@@ -16,6 +16,11 @@ struct GltfNodeVisit {
     Affine3 world;  // node to file root
 };
 
+// The rotation of quaternion (x, y, z, w), renormalised (exporters round them); an InputError
+// naming `element` when it has no length.
+Affine3 gltfRotation(const GltfContext& ctx, double x, double y, double z, double w,
+                     const std::string& element);
+
 // Pre-order, children in file order.
 std::vector<GltfNodeVisit> walkGltfScene(const GltfContext& ctx);
 
