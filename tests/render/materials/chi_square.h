@@ -176,10 +176,9 @@ using DirectionSampler = std::function<bool(Pcg32&, Vec3&)>;  // false: no (non-
 using DirectionPdf = std::function<double(Vec3)>;
 
 // Integral of f over [a0,a1] x [b0,b1]: 3 x 3 Gauss-Legendre, refined into quadrants until the
-// quadrants agree with their parent to `tolerance` (halved per level; depth-limited).
-// Adaptive 3x3 Gauss over [a0, a1] x [b0, b1], split at least minDepth times: a narrow lobe
-// between the nodes of a coarse pass would otherwise read as none (an anisotropic glass lobe,
-// alpha 0.0025 one way and 0.25 the other, did).
+// quadrants agree with their parent to `tolerance` (halved per level; depth-limited), and at
+// least minDepth times: a narrow lobe between the nodes of a coarse pass would otherwise read
+// as none (an anisotropic glass lobe, alpha 0.0025 one way and 0.25 the other, did).
 template <typename F>
 double integrateAdaptive(const F& f, double a0, double a1, double b0, double b1, double whole,
                          double tolerance, int depth, int minDepth) {
