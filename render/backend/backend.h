@@ -13,6 +13,7 @@
 #include "render/math/ray.h"
 #include "render/scene/scene.h"
 #include "render/scene/scene_changes.h"
+#include "render/scene/scene_features.h"
 #include "render/util/progress.h"
 
 namespace pt {
@@ -85,7 +86,7 @@ struct BackendStats {
     uint32_t instances = 0;
     // What the scene uses (render/scene/scene_features.h), with the AOVs and brute-force bits
     // this backend's outputs and toggles add; recomputed at every sync.
-    uint32_t features = 0;
+    FeatureSet features = 0;
     // GPU backends: the kernel variant that runs (render/backend/cuda/kernel_variants.h) and the
     // features it was compiled for; "" and 0 where code is not specialised (the CPU).
     std::string kernelVariant = "";

@@ -12,7 +12,7 @@ namespace pt {
 // Tests mesh-local primitive `local` of `blas` against (0, tMax); on a hit fills t, u, v and
 // primitive of `hit` (spheres set u = v = 0). Without feature::kSpheres in kF every BLAS holds
 // triangles.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD bool intersectBlasPrimitive(const RenderScene& scene, const BlasRef& blas, uint32_t local,
                                   const TraversalRay& ray, float tMax, Hit& hit) {
     const uint32_t global = blas.primitiveOffset + local;
@@ -36,7 +36,7 @@ PT_HD bool intersectBlasPrimitive(const RenderScene& scene, const BlasRef& blas,
 }
 
 // Leaf functor of walkBvh for one BLAS.
-template <uint32_t kF, class Count>
+template <FeatureSet kF, class Count>
 struct BlasLeaf {
     const RenderScene& scene;
     const BlasRef& blas;
@@ -63,7 +63,7 @@ struct BlasLeaf {
 // Closest (or, with anyHit, any) hit of `ray` (already in the BLAS's object space) with
 // t < tMax. On a hit, lowers tMax to it and fills hit.t/u/v/primitive; hit.instance is the
 // caller's business.
-template <uint32_t kF = kAllFeatures, class Count>
+template <FeatureSet kF = kAllFeatures, class Count>
 PT_HD bool traverseBlas(const RenderScene& scene, const BlasRef& blas, const TraversalRay& ray, float& tMax,
                         Hit& hit, Count count, bool anyHit) {
     if (blas.primitiveCount == 0 || blas.nodeCount == 0) return false;

@@ -15,7 +15,7 @@ PT_HD TraversalRay objectSpaceRay(const RenderInstance& inst, const Ray& worldRa
 }
 
 // Closest (or any) hit of the world ray in instance `index` alone; on a hit sets hit.instance.
-template <uint32_t kF, class Count>
+template <FeatureSet kF, class Count>
 PT_HD bool traverseInstance(const RenderScene& scene, uint32_t index, const Ray& worldRay, float& tMax,
                             Hit& hit, Count count, bool anyHit) {
     const RenderInstance& inst = scene.instances[index];
@@ -28,7 +28,7 @@ PT_HD bool traverseInstance(const RenderScene& scene, uint32_t index, const Ray&
 // Closest (or any) hit in the merged BLAS (merged_geometry.h), whose triangles are world-space
 // copies: the world ray walks it as it is, and a hit is reported as the instance triangle it
 // copies, so what follows never sees the merge.
-template <uint32_t kF, class Count>
+template <FeatureSet kF, class Count>
 PT_HD bool traverseMerged(const RenderScene& scene, const TraversalRay& worldRay, float& tMax, Hit& hit,
                           Count count, bool anyHit) {
     if (!traverseBlas<kF>(scene, scene.blases[scene.mergedBlas], worldRay, tMax, hit, count, anyHit))
@@ -41,7 +41,7 @@ PT_HD bool traverseMerged(const RenderScene& scene, const TraversalRay& worldRay
 
 // Leaf functor of walkBvh for the TLAS: each entry of a leaf is an instance, or (numbered
 // instances.count) the merged BLAS.
-template <uint32_t kF, class Count>
+template <FeatureSet kF, class Count>
 struct TlasLeaf {
     const RenderScene& scene;
     const Ray& worldRay;
@@ -70,7 +70,7 @@ struct TlasLeaf {
 // Closest (or any) hit over all instances with t < tMax; lowers tMax and fills `hit`. A scene
 // of one instance walks its BLAS alone: it has no TLAS to speak of (and kernels specialised
 // without feature::kMultipleInstances carry no TLAS code).
-template <uint32_t kF = kAllFeatures, class Count>
+template <FeatureSet kF = kAllFeatures, class Count>
 PT_HD bool traverseTlas(const RenderScene& scene, const Ray& worldRay, float& tMax, Hit& hit, Count count,
                         bool anyHit) {
     if (scene.instances.empty()) return false;

@@ -8,7 +8,7 @@
 namespace pt {
 
 // kF (scene_features.h): code specialised without feature::kBruteForce has no brute-force loop.
-template <uint32_t kF, class Count>
+template <FeatureSet kF, class Count>
 PT_HD bool traverseScene(const RenderScene& scene, const Ray& worldRay, float& tMax, Hit& hit, Count count,
                          bool anyHit) {
     if (hasFeature<kF>(feature::kBruteForce) && scene.bruteForce) {
@@ -20,7 +20,7 @@ PT_HD bool traverseScene(const RenderScene& scene, const Ray& worldRay, float& t
 // Closest hit with 0 < t < worldRay.tMax, t in the world ray's parametrisation. On a miss,
 // returns false and hit.instance == Hit::kNoHit. A non-null `stats` counts the work; it is
 // tested here once, and the uncounted walk carries no counters at all.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD bool intersectClosest(const RenderScene& scene, const Ray& worldRay, Hit& hit,
                             TraversalStats* stats = nullptr) {
     hit.t = worldRay.tMax;
@@ -33,7 +33,7 @@ PT_HD bool intersectClosest(const RenderScene& scene, const Ray& worldRay, Hit& 
 }
 
 // Whether anything lies at 0 < t < worldRay.tMax (shadow rays); stops at the first hit found.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD bool intersectAny(const RenderScene& scene, const Ray& worldRay, TraversalStats* stats = nullptr) {
     Hit hit;
     float tMax = worldRay.tMax;
@@ -45,7 +45,7 @@ PT_HD bool intersectAny(const RenderScene& scene, const Ray& worldRay, Traversal
 // the megakernel traces path segments and shadow rays at one call site, so a warp whose
 // threads trace both kinds walks the BVH together, and the kernel holds one copy of the walk.
 // As intersectClosest, hit.t starts at worldRay.tMax and hit.instance at Hit::kNoHit.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD bool intersectScene(const RenderScene& scene, const Ray& worldRay, bool anyHit, Hit& hit) {
     hit.t = worldRay.tMax;
     hit.u = hit.v = 0.0f;

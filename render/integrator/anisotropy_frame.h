@@ -12,7 +12,7 @@ namespace pt {
 // `frame` turned so that its tangent is the anisotropy direction; `frame` itself where the
 // material is isotropic there or the surface has no tangent space (then the direction is
 // undefined: the one the frame happens to have stands in).
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD Frame anisotropicFrame(const RenderScene& scene, const Hit& hit, const SurfaceHit& s,
                              const BsdfParams& p, const Frame& frame) {
     if (!hasFeature<kF>(feature::kAnisotropy) || !(p.anisotropy > 0.0f)) return frame;

@@ -20,7 +20,7 @@ PT_HD Vec3 absorptionCoefficient(const Material& m) {
 }
 
 // Transmittance over `distance` (may be infinite) inside the path's innermost volume.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD Vec3 mediumTransmittance(const RenderScene& scene, const MediumStack& media, float distance) {
     if (!hasFeature<kF>(feature::kVolume) || media.empty()) return Vec3(1.0f);
     const Vec3 sigma = absorptionCoefficient(scene.materials[media.innermost()]);
@@ -32,7 +32,7 @@ PT_HD Vec3 mediumTransmittance(const RenderScene& scene, const MediumStack& medi
 }
 
 // After a refraction through `material`: entering from its front face, or leaving by its back.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD void crossVolumeBoundary(const RenderScene& scene, MediumStack& media, uint32_t material,
                                bool entering) {
     // Without absorbing volumes (scene_features.cpp) the stack would only ever give 1.

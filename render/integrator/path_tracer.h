@@ -30,7 +30,7 @@
 
 namespace pt {
 
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD PathState generatePath(const RenderScene& scene, uint32_t x, uint32_t y, uint32_t sampleIndex) {
     const IntegratorSettings& s = scene.settings;
     PathState state{};
@@ -74,7 +74,7 @@ PT_HD float bsdfSampledLightWeight(const RenderScene& scene, const PathState& st
 // sky is an emitter, and the denoiser takes what the camera sees of it out before filtering, so
 // a pixel half on an object and half on the sky is not noisy in how much of each its samples
 // found.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD void shadeMiss(const RenderScene& scene, PathState& state, AovSample* aov = nullptr) {
     state.alive = false;
     state.throughput *= mediumTransmittance<kF>(scene, state.media, kInf);  // an unclosed volume
@@ -91,7 +91,7 @@ PT_HD void shadeMiss(const RenderScene& scene, PathState& state, AovSample* aov 
 }
 
 // Emission seen by the path's last segment, weighted against NEE where NEE could have found it.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD void addSurfaceEmission(const RenderScene& scene, PathState& state, const SurfaceHit& surface) {
     const Material& m = scene.materials[surface.material];
     if (!m.isEmissive() || !surface.frontFace) return;
@@ -114,7 +114,7 @@ PT_HD void addSurfaceEmission(const RenderScene& scene, PathState& state, const 
 // Next-event estimation: one light sample, MIS-weighted against the BSDF for area lights and
 // the environment, at full weight for delta (punctual) lights. The shadow ray is traced by
 // the scheduler; `contribution` counts if it is unoccluded.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD ShadowRay sampleDirectLight(const RenderScene& scene, const PathState& state, const SurfaceHit& surface,
                                   const BsdfParams& bsdf, const Frame& frame, Vec3 wo, uint32_t dims) {
     ShadowRay shadow{};
@@ -138,7 +138,7 @@ PT_HD ShadowRay sampleDirectLight(const RenderScene& scene, const PathState& sta
 
 // KHR_materials_dispersion: a transmitting surface with dispersion refracts with the index of the
 // path's wavelength, which the first such surface draws (and weights the throughput by).
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD void disperse(PathState& state, const Material& m, BsdfParams& bsdf, uint32_t dims) {
     if (!hasFeature<kF>(feature::kDispersion) || !(m.dispersion > 0.0f) || !isTransmissive(bsdf)) return;
     if (state.wavelength == 0) {
@@ -161,7 +161,7 @@ PT_HD bool surviveRoulette(const RenderScene& scene, PathState& state, uint32_t 
 // path). `hit` is the closest hit of `state.ray`. A surface that is alpha-transparent there
 // only moves the ray past it (transparency.h). On the camera segment, a non-null `aov`
 // receives the surface the camera sees (all but its cost); elsewhere it is left alone.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD ShadowRay shadeSurface(const RenderScene& scene, PathState& state, const Hit& hit,
                              AovSample* aov = nullptr) {
     ShadowRay shadow{};
@@ -243,7 +243,7 @@ PT_HD bool fusedPathDone(const PathState& state, const ShadowRay& shadow) {
     return !shadow.valid && !state.alive;
 }
 
-template <uint32_t kF>
+template <FeatureSet kF>
 PT_HD void traceFusedStep(const RenderScene& scene, PathState& state, ShadowRay& shadow,
                           PathCounters& counters) {
     const bool shadowTurn = shadow.valid;
@@ -262,7 +262,7 @@ PT_HD void traceFusedStep(const RenderScene& scene, PathState& state, ShadowRay&
     }
 }
 
-template <uint32_t kF>
+template <FeatureSet kF>
 PT_HD void traceFusedPath(const RenderScene& scene, PathState& state, PathCounters& counters) {
     ShadowRay shadow{};
     while (!fusedPathDone(state, shadow)) traceFusedStep<kF>(scene, state, shadow, counters);
@@ -278,7 +278,7 @@ PT_HD Vec3 finishedRadiance(const PathState& state, PathCounters& counters) {
 // One sample of pixel (x, y): the megakernel schedule of the stages above. With kAovs, `aov`
 // receives the sample's AOVs, the camera segment's traversal work included; without, it is
 // ignored and the loop is compiled with no AOV code at all (the choice is the caller's, once).
-template <bool kAovs = false, uint32_t kF = kAllFeatures>
+template <bool kAovs = false, FeatureSet kF = kAllFeatures>
 PT_HD Vec3 tracePath(const RenderScene& scene, uint32_t x, uint32_t y, uint32_t sampleIndex,
                      PathCounters& counters, AovSample* aovOut = nullptr) {
     AovSample* const aov = kAovs ? aovOut : nullptr;

@@ -29,7 +29,7 @@ struct SurfaceHit {
     GeometryKind kind;
 };
 
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD SurfaceHit triangleSurface(const RenderScene& scene, const RenderInstance& inst, const BlasRef& blas,
                                  const Hit& hit) {
     SurfaceHit s{};
@@ -83,7 +83,7 @@ PT_HD SurfaceHit sphereSurface(const RenderScene& scene, const RenderInstance& i
     return s;
 }
 
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD SurfaceHit surfaceAt(const RenderScene& scene, const Ray& worldRay, const Hit& hit) {
     const RenderInstance& inst = scene.instances[hit.instance];
     const BlasRef& blas = scene.blases[inst.blas];
@@ -138,7 +138,7 @@ PT_HD bool objectTangent(const RenderScene& scene, const SurfaceHit& s, const Hi
 
 // Tangent-space normal mapping (glTF normalTexture, scaled in X and Y by normalScale). The
 // result stays on the front side of the geometry, like interpolated vertex normals.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD void applyNormalMap(const RenderScene& scene, const Hit& hit, SurfaceHit& s) {
     if (!hasFeature<kF>(feature::kNormalMap)) return;
     const Material& m = scene.materials[s.material];

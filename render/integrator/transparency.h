@@ -33,7 +33,7 @@ PT_HD Ray continuePast(const Ray& ray, const SurfaceHit& surface, float hitT) {
 
 // After an any-hit query found something on the shadow ray `ray`: whether every surface on it
 // lets it through (alpha, culled back faces), walking them in order from the nearest.
-template <uint32_t kF>
+template <FeatureSet kF>
 PT_HD bool shadowRayPassesBlockers(const RenderScene& scene, Ray ray, const PathSampler& sampler,
                                    uint32_t depth, PathCounters& counters) {
     if constexpr (!hasFeature<kF>(feature::kTransparency)) {
@@ -57,7 +57,7 @@ PT_HD bool shadowRayPassesBlockers(const RenderScene& scene, Ray ray, const Path
 
 // Whether nothing opaque lies on `ray` (0 < t < tMax). `depth` names the bounce the ray
 // leaves from, for the stochastic-transparency numbers.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD bool shadowRayUnoccluded(const RenderScene& scene, Ray ray, const PathSampler& sampler, uint32_t depth,
                                PathCounters& counters) {
     ++counters.rays;
@@ -66,7 +66,7 @@ PT_HD bool shadowRayUnoccluded(const RenderScene& scene, Ray ray, const PathSamp
 }
 
 // If the surface `state.ray` hit is transparent there, moves the ray past it and returns true.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD bool passTransparentSurface(const RenderScene& scene, PathState& state, const SurfaceHit& surface,
                                   const Hit& hit) {
     if (!hasFeature<kF>(feature::kTransparency) || !scene.transparentMaterials ||

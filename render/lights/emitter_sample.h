@@ -61,7 +61,7 @@ PT_HD float triangleLightWeight(const WorldTriangle& tri, const Material& m) {
     return tri.area * luminance(m.emittedRadiance());
 }
 
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD Vec3 emittedRadiance(const RenderScene& scene, const Material& m, Vec2 uv) {
     Vec3 e = m.emittedRadiance();
     if (hasFeature<kF>(feature::kEmissiveTexture) && m.emissiveTexture.present())
@@ -78,7 +78,7 @@ struct EmitterSample {
 };
 
 // A uniform point on triangle `primitive` of instance `instanceIndex`.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD bool sampleEmitterTriangle(const RenderScene& scene, uint32_t instanceIndex, uint32_t primitive,
                                  Vec2 uPoint, EmitterSample& out) {
     const WorldTriangle tri = worldTriangle(scene, instanceIndex, primitive);

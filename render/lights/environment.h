@@ -23,7 +23,7 @@ PT_HD Vec3 equirectToDirection(Vec2 uv, float rotationRadians) {
     return {sinTheta * sinf(phi), cosf(theta), -sinTheta * cosf(phi)};
 }
 
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD Vec3 environmentRadiance(const RenderScene& scene, Vec3 direction) {
     const RenderEnvironment& env = scene.environment;
     if (!hasFeature<kF>(feature::kImageEnvironment) || env.texture < 0) return env.color;

@@ -34,14 +34,14 @@ PT_HD float samplePiecewiseConstant(const float* cdf, uint32_t n, float u, uint3
     return (float(index) + frac) / float(n);
 }
 
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD bool environmentIsImportanceSampled(const RenderScene& scene) {
     return hasFeature<kF>(feature::kImageEnvironment) && scene.environment.texture >= 0 &&
            scene.environment.distWidth > 0;
 }
 
 // Density over solid angle with which sampleEnvironmentDirection() picks `direction` (unit).
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD float environmentDirectionPdf(const RenderScene& scene, Vec3 direction) {
     const RenderEnvironment& env = scene.environment;
     if (!environmentIsImportanceSampled<kF>(scene)) return 1.0f / (4.0f * kPi);
@@ -55,7 +55,7 @@ PT_HD float environmentDirectionPdf(const RenderScene& scene, Vec3 direction) {
 }
 
 // A direction towards the environment and its solid-angle density; false when none.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD bool sampleEnvironmentDirection(const RenderScene& scene, Vec2 u, Vec3& direction, float& pdf) {
     const RenderEnvironment& env = scene.environment;
     if (!environmentIsImportanceSampled<kF>(scene)) {

@@ -28,7 +28,7 @@ PT_HD float lightPickProbability(const RenderScene& scene, float weight) {
     return scene.emitterTotalWeight > 0.0f ? weight / scene.emitterTotalWeight : 0.0f;
 }
 
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD bool sampleTriangleLight(const RenderScene& scene, const Emitter& e, Vec3 ref, Vec2 u,
                                LightSample& out) {
     EmitterSample s;
@@ -50,7 +50,7 @@ PT_HD bool sampleTriangleLight(const RenderScene& scene, const Emitter& e, Vec3 
     return isFinite(out.pdf) && out.pdf > 0.0f;
 }
 
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD bool sampleSphereLight(const RenderScene& scene, const Emitter& e, Vec3 ref, Vec2 u, LightSample& out) {
     WorldSphere sphere;
     if (!worldSphere(scene, e.instance, e.primitive, sphere)) return false;
@@ -69,7 +69,7 @@ PT_HD bool sampleSphereLight(const RenderScene& scene, const Emitter& e, Vec3 re
     return isFinite(out.pdf) && out.pdf > 0.0f;
 }
 
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD bool sampleEnvironmentLight(const RenderScene& scene, const Emitter& e, Vec2 u, LightSample& out) {
     float pdf;
     if (!sampleEnvironmentDirection<kF>(scene, u, out.wi, pdf)) return false;
@@ -85,7 +85,7 @@ PT_HD bool sampleEnvironmentLight(const RenderScene& scene, const Emitter& e, Ve
 
 // One light sample for shading point `ref`: `uPick` chooses the light, `uPoint` the point.
 // Kinds of light the kernel's feature set kF leaves out are never in the scene's table.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD bool sampleLight(const RenderScene& scene, Vec3 ref, float uPick, Vec2 uPoint, LightSample& out) {
     if (scene.emitterAlias.count == 0) return false;
     const Emitter& e = scene.emitters[sampleAliasTable(scene.emitterAlias, uPick)];
@@ -140,7 +140,7 @@ PT_HD float sphereLightPdf(const RenderScene& scene, uint32_t instance, uint32_t
 }
 
 // The same for a ray that left the scene in `direction` (unit).
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD float environmentLightPdf(const RenderScene& scene, Vec3 direction) {
     if (!hasFeature<kF>(feature::kConstantEnvironment | feature::kImageEnvironment)) return 0.0f;
     const float pick = lightPickProbability(scene, scene.environment.lightWeight);

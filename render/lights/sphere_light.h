@@ -102,7 +102,7 @@ PT_HD bool sampleSphereCone(const WorldSphere& sphere, Vec3 ref, Vec2 u, SphereC
 
 // Radiance leaving the front of sphere `primitive` of instance `instanceIndex` at world
 // `point`, times the surface's alpha coverage there (as NEE sees it; see emitter_sample.h).
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD Vec3 sphereEmittedRadiance(const RenderScene& scene, uint32_t instanceIndex, uint32_t primitive,
                                  Vec3 point) {
     const RenderInstance& inst = scene.instances[instanceIndex];

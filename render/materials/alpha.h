@@ -23,7 +23,7 @@ PT_HD bool materialMayBeTransparent(const Material& m) {
 }
 
 // baseColor alpha x the base colour texture's alpha at `uv`.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD float surfaceAlpha(const RenderScene& scene, const Material& m, Vec2 uv) {
     float alpha = m.alpha;
     if (hasFeature<kF>(feature::kBaseColorTexture) && m.baseColorTexture.present())
@@ -32,7 +32,7 @@ PT_HD float surfaceAlpha(const RenderScene& scene, const Material& m, Vec2 uv) {
 }
 
 // The expected fraction of rays the surface stops at `uv`: 0 or 1 for MASK, alpha for BLEND.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD float surfaceCoverage(const RenderScene& scene, const Material& m, Vec2 uv) {
     if (!hasFeature<kF>(feature::kAlphaMask | feature::kAlphaBlend) || !materialMayBeTransparent(m))
         return 1.0f;
@@ -47,7 +47,7 @@ PT_HD bool materialMayLetRaysThrough(const Material& m) { return materialMayBeTr
 // Whether one ray passes through `m` at `uv`, meeting its front face or not; `u` in [0, 1)
 // is the coin for blending (stochastic transparency: the surface stops a ray with
 // probability alpha).
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD bool passesThrough(const RenderScene& scene, const Material& m, Vec2 uv, bool frontFace, float u) {
     if (hasFeature<kF>(feature::kBackfaceCulling) && !frontFace && cullsBackFaces(m)) return true;
     if (!hasFeature<kF>(feature::kAlphaMask | feature::kAlphaBlend) || !materialMayBeTransparent(m))

@@ -97,7 +97,7 @@ enum Lobe : int {
 
 // The lobes code compiled for kF walks: the rare lobes (feature::kRareLobes) come last, and
 // loops stop before those kF leaves out.
-template <uint32_t kF>
+template <FeatureSet kF>
 constexpr int lobesFor() {
     return hasFeature<kF>(feature::kSheen)                 ? kLobeCount
            : hasFeature<kF>(feature::kDiffuseTransmission) ? kSheen
@@ -120,7 +120,7 @@ struct RareLobeWeights<true> {
 // what kF can use: sampleBsdf indexes its probabilities with the lobe it picked, which keeps
 // the whole of it in local memory, so every member more is stack traffic (the rare lobes'
 // seven floats cost the lean shading kernel 24 bytes of stack, 2 registers and 1.7% before).
-template <uint32_t kF>
+template <FeatureSet kF>
 struct Lobes : RareLobeWeights<(kF & feature::kRareLobes) != 0u> {
     float coat;             // mix weight of the coat (0 from the back)
     float coatAlpha;
@@ -136,7 +136,7 @@ struct Lobes : RareLobeWeights<(kF & feature::kRareLobes) != 0u> {
 PT_HD bool isZero(Vec3 v) { return !(maxComponent(v) > 0.0f); }
 
 // The specular (and glass) lobe's GGX alpha: stretched along x where kF has anisotropy.
-template <uint32_t kF>
+template <FeatureSet kF>
 PT_HD auto specularAlpha(const Lobes<kF>& l) {
     if constexpr (hasFeature<kF>(feature::kAnisotropy)) {
         return GgxAlpha2{l.alphaT, l.alpha};
@@ -147,7 +147,7 @@ PT_HD auto specularAlpha(const Lobes<kF>& l) {
 
 // Calls `use` with the glass lobe's Fresnel term: the exact one, or the exact one under a thin
 // film where kF has iridescence and the material a film.
-template <uint32_t kF, class Use>
+template <FeatureSet kF, class Use>
 PT_HD auto withGlassFresnel(const Lobes<kF>& l, const Use& use) {
     if constexpr (hasFeature<kF>(feature::kIridescence)) {
         if (l.filmed.film.weight > 0.0f) return use(FilmedDielectricFresnel{l.filmed});
@@ -156,7 +156,7 @@ PT_HD auto withGlassFresnel(const Lobes<kF>& l, const Use& use) {
 }
 
 // The specular lobe's Fresnel term: Schlick's, under a thin film where kF has iridescence.
-template <uint32_t kF>
+template <FeatureSet kF>
 PT_HD auto specularFresnel(const Lobes<kF>& l) {
     if constexpr (hasFeature<kF>(feature::kIridescence)) {
         return IridescentFresnel{l.specF0, l.specF90, l.filmed};
@@ -167,7 +167,7 @@ PT_HD auto specularFresnel(const Lobes<kF>& l) {
 
 // Without feature::kGlossyReflection (kRoughTransmission) in kF, the scene's reflection (glass)
 // lobes are all smooth, so the rough lobes' code is left out.
-template <uint32_t kF>
+template <FeatureSet kF>
 PT_HD bool isDeltaLobe(const Lobes<kF>& l, int lobe) {
     switch (lobe) {
         case kCoat: return ggxIsSmooth(l.coatAlpha);
@@ -179,7 +179,7 @@ PT_HD bool isDeltaLobe(const Lobes<kF>& l, int lobe) {
     }
 }
 
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD Lobes<kF> resolveLobes(const BsdfParams& p, Vec3 wo) {
     constexpr bool kCoatLobe = hasFeature<kF>(feature::kClearcoat);
     constexpr bool kGlassLobe = hasFeature<kF>(feature::kTransmission);
@@ -290,7 +290,7 @@ PT_HD Lobes<kF> resolveLobes(const BsdfParams& p, Vec3 wo) {
 }
 
 // f * |cos(wi)| and the mixture pdf over the non-delta lobes, in the shading frame.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD Vec3 evalLobes(const Lobes<kF>& l, Vec3 wo, Vec3 wi) {
     Vec3 f(0.0f);
     if (wo.z > 0.0f && wi.z > 0.0f) {
@@ -317,7 +317,7 @@ PT_HD Vec3 evalLobes(const Lobes<kF>& l, Vec3 wo, Vec3 wi) {
     return f;
 }
 
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD float pdfLobes(const Lobes<kF>& l, Vec3 wo, Vec3 wi) {
     float pdf = 0.0f;
     if (wo.z > 0.0f && wi.z > 0.0f) {
@@ -348,7 +348,7 @@ PT_HD float pdfLobes(const Lobes<kF>& l, Vec3 wo, Vec3 wi) {
 
 // The rare lobes, both cosine-weighted. The sheen's lobe is broad, and sampling its half vectors
 // would send most directions below the horizon (its distribution peaks at grazing h).
-template <uint32_t kF>
+template <FeatureSet kF>
 PT_HD LobeSample sampleRareLobe(const Lobes<kF>& l, int lobe, Vec3 wo, Vec2 uDir) {
     LobeSample s{};
     s.wi = squareToCosineHemisphere(uDir);
@@ -367,7 +367,7 @@ PT_HD LobeSample sampleRareLobe(const Lobes<kF>& l, int lobe, Vec3 wo, Vec2 uDir
 }
 
 // Samples the chosen lobe alone; the weight includes the lobe's mix weight.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD LobeSample sampleLobe(const Lobes<kF>& l, int lobe, Vec3 wo, float uChoice, Vec2 uDir) {
     // Tested apart, so that code without them keeps the switch it had before they came.
     if constexpr ((kF & feature::kRareLobes) != 0u) {
@@ -405,7 +405,7 @@ PT_HD LobeSample sampleLobe(const Lobes<kF>& l, int lobe, Vec3 wo, float uChoice
 }
 
 // How many non-delta lobes can be picked.
-template <uint32_t kF>
+template <FeatureSet kF>
 PT_HD int nonDeltaLobeCount(const Lobes<kF>& l) {
     int n = 0;
     for (int i = 0; i < lobesFor<kF>(); ++i) n += l.probability[i] > 0.0f && !isDeltaLobe<kF>(l, i) ? 1 : 0;
@@ -415,14 +415,14 @@ PT_HD int nonDeltaLobeCount(const Lobes<kF>& l) {
 }  // namespace bsdf_detail
 
 // f(wo, wi) |cos(wi)| for the non-delta lobes. wo, wi in world space.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD Vec3 evalBsdf(const BsdfParams& p, const Frame& frame, Vec3 woWorld, Vec3 wiWorld) {
     const Vec3 wo = frame.toLocal(woWorld);
     return bsdf_detail::evalLobes<kF>(bsdf_detail::resolveLobes<kF>(p, wo), wo, frame.toLocal(wiWorld));
 }
 
 // Solid-angle density with which sampleBsdf() picks wi through its non-delta lobes.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD float pdfBsdf(const BsdfParams& p, const Frame& frame, Vec3 woWorld, Vec3 wiWorld) {
     const Vec3 wo = frame.toLocal(woWorld);
     return bsdf_detail::pdfLobes<kF>(bsdf_detail::resolveLobes<kF>(p, wo), wo, frame.toLocal(wiWorld));
@@ -433,7 +433,7 @@ struct BsdfEval {
     Vec3 value;  // f(wo, wi) |cos(wi)|
     float pdf;   // as pdfBsdf()
 };
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD BsdfEval evalBsdfWithPdf(const BsdfParams& p, const Frame& frame, Vec3 woWorld, Vec3 wiWorld) {
     const Vec3 wo = frame.toLocal(woWorld), wi = frame.toLocal(wiWorld);
     const bsdf_detail::Lobes<kF> lobes = bsdf_detail::resolveLobes<kF>(p, wo);
@@ -441,7 +441,7 @@ PT_HD BsdfEval evalBsdfWithPdf(const BsdfParams& p, const Frame& frame, Vec3 woW
 }
 
 // Whether evalBsdf() can be non-zero for some pair of directions (light sampling pays off).
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD bool hasNonDeltaLobes(const BsdfParams& p) {
     const float metallic = clampf(p.metallic, 0.0f, 1.0f);
     const float transmission =
@@ -466,7 +466,7 @@ PT_HD bool hasNonDeltaLobes(const BsdfParams& p) {
 
 // Picks a lobe with `uLobe` (the remainder of which chooses reflection or refraction in the
 // glass lobe), then a direction with `uDir`. A zero weight means no sample.
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD BsdfSample sampleBsdf(const BsdfParams& p, const Frame& frame, Vec3 woWorld, float uLobe, Vec2 uDir) {
     using namespace bsdf_detail;
     const Vec3 wo = frame.toLocal(woWorld);

@@ -7,7 +7,7 @@
 
 namespace pt {
 
-template <uint32_t kF = kAllFeatures>
+template <FeatureSet kF = kAllFeatures>
 PT_HD BsdfParams bsdfParamsAt(const RenderScene& scene, const Material& m, Vec2 uv) {
     BsdfParams p{m.baseColor, m.metallic, m.transmission, m.ior};
     p.roughness = m.roughness;

@@ -61,7 +61,7 @@ struct CompiledScene {
     RenderCamera camera{};
     IntegratorSettings settings{};
     bool bruteForce = false;
-    uint32_t features = 0;  // sceneFeatures() as of the last compile or edit
+    FeatureSet features = 0;  // sceneFeatures() as of the last compile or edit
     CompileStats stats;
 
     // The view stays valid while this object lives and its vectors are not resized.

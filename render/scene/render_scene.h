@@ -186,7 +186,7 @@ struct RenderScene {
     RenderCamera camera;
     IntegratorSettings settings;
     uint32_t bruteForce = 0;               // validation: test every primitive, no BVH
-    uint32_t features = 0;                 // scene_features.h: what this scene uses (host decisions)
+    FeatureSet features = 0;               // scene_features.h: what this scene uses (host decisions)
 };
 
 }  // namespace pt

@@ -9,9 +9,9 @@ namespace pt {
 
 namespace {
 
-uint32_t materialFeatures(const Material& m) {
+FeatureSet materialFeatures(const Material& m) {
     using namespace feature;
-    uint32_t f = 0;
+    FeatureSet f = 0;
     if (m.baseColorTexture.present()) f |= kBaseColorTexture;
     if (m.unlit) {  // its base colour and alpha are all that is read of it
         f |= kUnlit;
@@ -54,9 +54,9 @@ uint32_t materialFeatures(const Material& m) {
 
 }  // namespace
 
-uint32_t sceneFeatures(const CompiledScene& scene, bool morphTargets) {
+FeatureSet sceneFeatures(const CompiledScene& scene, bool morphTargets) {
     using namespace feature;
-    uint32_t f = 0;
+    FeatureSet f = 0;
     // Only materials some traced instance uses: a library of unused materials costs nothing.
     std::vector<bool> used(scene.materials.size(), false);
     for (const uint32_t m : scene.instanceMaterials) {
@@ -81,7 +81,7 @@ uint32_t sceneFeatures(const CompiledScene& scene, bool morphTargets) {
     return f;
 }
 
-const char* featureName(uint32_t bit) {
+const char* featureName(FeatureSet bit) {
     static const char* const kNames[feature::kCount] = {"base_color_texture",
                                                         "metallic_roughness_texture",
                                                         "emissive_texture",
@@ -115,20 +115,20 @@ const char* featureName(uint32_t bit) {
                                                         "iridescence",
                                                         "dispersion"};
     for (uint32_t i = 0; i < feature::kCount; ++i) {
-        if (bit == (1u << i)) return kNames[i];
+        if (bit == (FeatureSet{1} << i)) return kNames[i];
     }
     return "unknown";
 }
 
-std::vector<std::string> featureNames(uint32_t features) {
+std::vector<std::string> featureNames(FeatureSet features) {
     std::vector<std::string> names;
     for (uint32_t i = 0; i < feature::kCount; ++i) {
-        if (features & (1u << i)) names.push_back(featureName(1u << i));
+        if (features & (FeatureSet{1} << i)) names.push_back(featureName(FeatureSet{1} << i));
     }
     return names;
 }
 
-std::string describeFeatures(uint32_t features) {
+std::string describeFeatures(FeatureSet features) {
     std::string s;
     for (const std::string& name : featureNames(features)) s += (s.empty() ? "" : ", ") + name;
     return s.empty() ? "none" : s;

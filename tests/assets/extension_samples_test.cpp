@@ -44,7 +44,7 @@ TEST(ExtensionSamples, LoadWithTheirExtensionsHonouredAndRenderFinite) {
     CpuBackend backend;
     backend.sync(scene, SceneChanges::All, {});
     backend.render(8);
-    const uint32_t features = backend.stats().features;
+    const FeatureSet features = backend.stats().features;
     EXPECT_NE(features & feature::kSheen, 0u);
     EXPECT_NE(features & feature::kDiffuseTransmission, 0u);
     EXPECT_NE(features & feature::kAnisotropy, 0u);

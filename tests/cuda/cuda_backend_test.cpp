@@ -238,7 +238,7 @@ TEST(CudaBackend, EveryKernelVariantMatchesTheCpu) {
     for (const Scene& scene : {cornell(48), oneInstance}) {
         CpuBackend cpuBackend;
         const std::vector<float> cpu = renderWith(cpuBackend, scene, 16);
-        const uint32_t features = cpuBackend.stats().features;
+        const FeatureSet features = cpuBackend.stats().features;
         cuda::CudaBackend gpuBackend;
         int covering = 0;
         for (const cuda::KernelVariant& v : cuda::kKernelVariants) {
@@ -288,7 +288,7 @@ TEST(CudaBackend, UnlitDiffuseTransmissionAndSheenMatchTheCpu) {
     ASSERT_NE(cpuBackend.stats().features & feature::kDiffuseTransmission, 0u);
     ASSERT_NE(cpuBackend.stats().features & feature::kSheen, 0u);
     EXPECT_EQ(gpuBackend.stats().kernelVariant, "full");
-    const uint32_t withoutRareLobes = cpuBackend.stats().features & ~feature::kRareLobes;
+    const FeatureSet withoutRareLobes = cpuBackend.stats().features & ~feature::kRareLobes;
     EXPECT_STREQ(cuda::kKernelVariants[cuda::chooseKernelVariant(withoutRareLobes)].name, "textured");
     const double meansRatio = agreementWithCpu(cpu, gpu).meansRatio;
     std::cout << "[ figures  ] unlit red wall, diffusely transmitting white, velvet green, Cornell 48x48 "
@@ -322,7 +322,7 @@ TEST(CudaBackend, AnisotropyIridescenceAndDispersionMatchTheCpu) {
     cuda::CudaBackend gpuBackend;
     const std::vector<float> cpu = renderWith(cpuBackend, scene, 16);
     const std::vector<float> gpu = renderWith(gpuBackend, scene, 16);
-    for (const uint32_t bit : {feature::kAnisotropy, feature::kIridescence, feature::kDispersion})
+    for (const FeatureSet bit : {feature::kAnisotropy, feature::kIridescence, feature::kDispersion})
         ASSERT_NE(cpuBackend.stats().features & bit, 0u) << featureName(bit);
     EXPECT_EQ(gpuBackend.stats().kernelVariant, "full");
     const CpuAgreement a = agreementWithCpu(cpu, gpu);

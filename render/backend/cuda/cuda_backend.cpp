@@ -397,7 +397,7 @@ void CudaBackend::resetAccumulation() {
     stats_.nonfiniteSamples = 0;
 }
 
-uint32_t CudaBackend::renderFeatures() const {
+FeatureSet CudaBackend::renderFeatures() const {
     return view_.features | (aovs_.mask != 0 ? feature::kAovs : 0u);
 }
 
@@ -412,7 +412,9 @@ uint64_t CudaBackend::scheduleKey(uint32_t samplesPerWave) const {
     const IntegratorSettings& s = view_.settings;
     uint32_t waveClass = 0;
     while ((samplesPerWave >> (waveClass + 1)) != 0) ++waveClass;
-    const uint32_t words[] = {renderFeatures(),
+    const FeatureSet features = renderFeatures();
+    const uint32_t words[] = {uint32_t(features),
+                              uint32_t(features >> 32),
                               waveClass,
                               s.width,
                               s.height,

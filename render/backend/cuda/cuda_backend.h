@@ -81,7 +81,7 @@ private:
     // The schedule of the next pass: the toggle's, or under the auto schedule the chooser's.
     bool runsMegakernel() const;
     // The scene's features with the AOVs accumulated now: what picks the kernel variant.
-    uint32_t renderFeatures() const;
+    FeatureSet renderFeatures() const;
     uint64_t scheduleKey(uint32_t samplesPerWave) const;
     bool firstHitCacheApplies(std::string* why) const;
 

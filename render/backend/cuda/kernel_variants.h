@@ -22,30 +22,30 @@ namespace pt::cuda {
 
 struct KernelVariant {
     const char* name;
-    uint32_t features;  // what its kernels can render
+    FeatureSet features;  // what its kernels can render
 };
 
 namespace variant_features {
 using namespace feature;
 // Untextured diffuse, mirrors and smooth glass, culled back faces, every light but the image
 // environment.
-constexpr uint32_t kLeanSingle =
+constexpr FeatureSet kLeanSingle =
     kUngated | kSmoothTransmission | kBackfaceCulling | kSpheres | kSphereLights | kPunctualLights;
-constexpr uint32_t kLean = kLeanSingle | kMultipleInstances;
+constexpr FeatureSet kLean = kLeanSingle | kMultipleInstances;
 // Rough metals, specular layers and glass on top, and the two texture slots glTF materials use
 // most (base colour, metallic-roughness): all texture lookups call one out-of-line sampler
 // (texture_sample.h), so a slot adds a call, not a copy of the sampler.
-constexpr uint32_t kGlossySingle =
+constexpr FeatureSet kGlossySingle =
     kLeanSingle | kGlossyReflection | kRoughTransmission | kBaseColorTexture | kMetallicRoughnessTexture;
-constexpr uint32_t kGlossy = kGlossySingle | kMultipleInstances;
+constexpr FeatureSet kGlossy = kGlossySingle | kMultipleInstances;
 // What glTF scenes usually bring on top: textures, normal maps, alpha, an HDR sky, depth of field,
 // unlit (baked or stylised) materials.
-constexpr uint32_t kTextured =
+constexpr FeatureSet kTextured =
     kGlossy | kTextures | kNormalMap | kTransparency | kImageEnvironment | kThinLens | kUnlit;
 // Everything but the rare lobes (clearcoat, volumes, every texture slot, ...) and the debugging
 // paths (AOVs, brute force): adding a rare lobe to "full" slowed a clearcoat golf ball by 5%
 // before this variant kept it out.
-constexpr uint32_t kLayered = kAllFeatures & ~(kRareLobes | kAovs | kBruteForce);
+constexpr FeatureSet kLayered = kAllFeatures & ~(kRareLobes | kAovs | kBruteForce);
 }  // namespace variant_features
 
 inline constexpr KernelVariant kKernelVariants[] = {
@@ -60,13 +60,13 @@ inline constexpr KernelVariant kKernelVariants[] = {
 constexpr uint32_t kKernelVariantCount = sizeof(kKernelVariants) / sizeof(kKernelVariants[0]);
 constexpr uint32_t kFullVariant = kKernelVariantCount - 1;
 
-constexpr bool variantCovers(uint32_t variant, uint32_t features) {
+constexpr bool variantCovers(uint32_t variant, FeatureSet features) {
     return (features & ~kKernelVariants[variant].features) == 0u;
 }
 
 // The variant that renders `features`: `requested` (an index, or -1 for none) where it covers
 // them, else the leanest that does (always found: the last covers all).
-constexpr uint32_t chooseKernelVariant(uint32_t features, int requested = -1) {
+constexpr uint32_t chooseKernelVariant(FeatureSet features, int requested = -1) {
     if (requested >= 0 && uint32_t(requested) < kKernelVariantCount &&
         variantCovers(uint32_t(requested), features)) {
         return uint32_t(requested);

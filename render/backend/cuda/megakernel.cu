@@ -66,7 +66,7 @@ __global__ void __launch_bounds__(kBlock, kMinBlocks)
 // longer runs with ever fewer lanes until its longest path ends; without, lanes wait for the
 // whole warp, as with one path a thread.
 // kF: the variant's feature set; the AOV kernel above alone has AOV code.
-template <uint32_t kF>
+template <FeatureSet kF>
 __global__ void __launch_bounds__(kBlock, kMinBlocks)
     megakernel(RenderScene scene, WaveBuffers b, WaveShape shape, bool regeneration) {
     const uint32_t width = scene.settings.width;

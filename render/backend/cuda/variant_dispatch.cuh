@@ -1,5 +1,5 @@
 #pragma once
-// forKernelVariant: calls fn(std::integral_constant<uint32_t, features>) with the feature set
+// forKernelVariant: calls fn(std::integral_constant<FeatureSet, features>) with the feature set
 // of a kernel variant (kernel_variants.h) as a compile-time constant, so a launcher instantiates
 // its kernel template once per variant and launches the one asked for.
 #include <type_traits>
@@ -9,7 +9,7 @@
 namespace pt::cuda {
 
 template <uint32_t kIndex>
-using VariantFeatures = std::integral_constant<uint32_t, kKernelVariants[kIndex].features>;
+using VariantFeatures = std::integral_constant<FeatureSet, kKernelVariants[kIndex].features>;
 
 template <class Fn>
 void forKernelVariant(uint32_t variant, Fn&& fn) {

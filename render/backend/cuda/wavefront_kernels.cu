@@ -23,7 +23,7 @@ uint32_t blocksFor(uint32_t count) { return (count + kBlock - 1) / kBlock; }
 
 __device__ __forceinline__ uint32_t threadIndex() { return blockIdx.x * blockDim.x + threadIdx.x; }
 
-template <uint32_t kF>
+template <FeatureSet kF>
 __global__ void generateKernel(RenderScene scene, WaveBuffers b, WaveShape shape) {
     const uint32_t i = threadIndex();
     if (i >= shape.pathCount) return;
@@ -54,9 +54,10 @@ __global__ void generateKernel(RenderScene scene, WaveBuffers b, WaveShape shape
 #define PT_SHADE_REGISTERS 128
 #endif
 
-template <uint32_t kF, bool kCost>
-__global__ void __launch_bounds__(kBlock, blocksPerSmFor(kBlock, PT_EXTEND_REGISTERS)) extendKernel(RenderScene scene, WaveBuffers b, WaveShape shape, const uint32_t* queue,
-                             QueueLength length, bool readCache, bool writeCache) {
+template <FeatureSet kF, bool kCost>
+__global__ void __launch_bounds__(kBlock, blocksPerSmFor(kBlock, PT_EXTEND_REGISTERS))
+    extendKernel(RenderScene scene, WaveBuffers b, WaveShape shape, const uint32_t* queue, QueueLength length,
+                 bool readCache, bool writeCache) {
     const uint32_t i = threadIndex();
     if (i >= length.value()) return;
     const uint32_t path = queue ? queue[i] : i;
@@ -106,9 +107,10 @@ __global__ void materialKeyKernel(RenderScene scene, WaveBuffers b, uint32_t cou
 }
 
 // kAovs: paths record AOVs; without, the kernel is the one that ran before AOVs existed.
-template <uint32_t kF, bool kAovs>
-__global__ void __launch_bounds__(kBlock, blocksPerSmFor(kBlock, PT_SHADE_REGISTERS)) shadeKernel(RenderScene scene, WaveBuffers b, const uint32_t* queue, QueueLength length,
-                            bool compaction, BounceCounts* out) {
+template <FeatureSet kF, bool kAovs>
+__global__ void __launch_bounds__(kBlock, blocksPerSmFor(kBlock, PT_SHADE_REGISTERS))
+    shadeKernel(RenderScene scene, WaveBuffers b, const uint32_t* queue, QueueLength length, bool compaction,
+                BounceCounts* out) {
     const uint32_t i = threadIndex();
     if (i >= length.value()) return;
     const uint32_t path = queue ? queue[i] : i;
@@ -139,9 +141,9 @@ __global__ void __launch_bounds__(kBlock, blocksPerSmFor(kBlock, PT_SHADE_REGIST
     }
 }
 
-template <uint32_t kF>
-__global__ void __launch_bounds__(kBlock, blocksPerSmFor(kBlock, PT_SHADOW_REGISTERS)) shadowKernel(RenderScene scene, WaveBuffers b, const uint32_t* queue, QueueLength length,
-                             bool consume) {
+template <FeatureSet kF>
+__global__ void __launch_bounds__(kBlock, blocksPerSmFor(kBlock, PT_SHADOW_REGISTERS))
+    shadowKernel(RenderScene scene, WaveBuffers b, const uint32_t* queue, QueueLength length, bool consume) {
     const uint32_t i = threadIndex();
     if (i >= length.value()) return;
     const uint32_t path = queue ? queue[i] : i;
@@ -195,7 +197,7 @@ __global__ void accumulateKernel(WaveBuffers b, WaveShape shape, double* sum) {
 WavefrontSymbols wavefrontSymbols(uint32_t variant) {
     WavefrontSymbols s{};
     forKernelVariant(variant, [&](auto features) {
-        constexpr uint32_t kF = decltype(features)::value;
+        constexpr FeatureSet kF = decltype(features)::value;
         s.extend = reinterpret_cast<const void*>(extendKernel<kF, false>);
         s.shade = reinterpret_cast<const void*>(shadeKernel<kF, false>);
         s.shadow = reinterpret_cast<const void*>(shadowKernel<kF>);

@@ -22,7 +22,7 @@ using test::addMaterial;
 using test::addShape;
 using test::trs;
 
-uint32_t featuresOf(const Scene& scene) { return compileRenderScene(scene).features; }
+FeatureSet featuresOf(const Scene& scene) { return compileRenderScene(scene).features; }
 
 // The default material made a smooth dielectric (roughness 0): no feature at all, where the
 // default roughness of 0.5 would be a glossy specular layer.
@@ -98,7 +98,7 @@ int32_t addTexture(Scene& scene) {
 }
 
 TEST(SceneFeatures, CornellBoxUsesGlassMirrorEmittersSpheresAndInstances) {
-    const uint32_t f = featuresOf(cornellBox());
+    const FeatureSet f = featuresOf(cornellBox());
     // Diffuse walls are specular 0 (off the KHR_materials_specular default of 1), the box a
     // smooth conductor, the sphere smooth glass and analytic, the lamp two emissive triangles.
     EXPECT_EQ(describeFeatures(f),
@@ -121,7 +121,7 @@ TEST(SceneFeatures, APlainQuadUsesNothing) {
 struct MaterialCase {
     const char* what;
     std::function<void(Material&, Scene&)> change;
-    uint32_t expected;
+    FeatureSet expected;
 };
 
 // Each case changes material 0 (used by the quad) and expects exactly these features; the same
@@ -334,15 +334,15 @@ TEST(SceneFeatures, UpdateFeaturesFollowsAnEditWithoutACompile) {
 TEST(SceneFeatureNames, OneDistinctSnakeCaseNamePerBitInBitOrder) {
     std::set<std::string> seen;
     for (uint32_t i = 0; i < kCount; ++i) {
-        const std::string name = featureName(1u << i);
+        const std::string name = featureName(FeatureSet{1} << i);
         EXPECT_NE(name, "unknown") << "bit " << i;
         EXPECT_TRUE(seen.insert(name).second) << name << " names two bits";
         EXPECT_EQ(name.find_first_not_of("abcdefghijklmnopqrstuvwxyz_"), std::string::npos) << name;
-        EXPECT_EQ(featureNames(1u << i), std::vector<std::string>{name});
+        EXPECT_EQ(featureNames(FeatureSet{1} << i), std::vector<std::string>{name});
     }
     EXPECT_EQ(featureNames(kAllFeatures).size(), size_t(kCount));
     EXPECT_EQ(std::string(featureName(kClearcoat | kMetal)), "unknown");  // not one bit
-    const uint32_t pastLast = uint32_t(uint64_t{1} << kCount);            // 0 once all 32 bits are taken
+    const FeatureSet pastLast = FeatureSet{1} << kCount;
     EXPECT_EQ(std::string(featureName(pastLast)), "unknown");
     EXPECT_TRUE(featureNames(0u).empty());
     EXPECT_TRUE(featureNames(pastLast).empty()) << "bits past kCount name nothing";
@@ -356,11 +356,11 @@ TEST(SceneFeatureNames, DescribeJoinsTheNamesOrSaysNone) {
     EXPECT_EQ(featureName(kAovs), std::string("aovs"));
     EXPECT_EQ(featureName(kBruteForce), std::string("brute_force"));
     // Every set round-trips: its names, mapped back to bits, give the set again.
-    for (const uint32_t f : {0u, kTextures, kTransparency | kVolume, kAllFeatures}) {
-        uint32_t back = 0;
+    for (const FeatureSet f : {FeatureSet{0}, kTextures, kTransparency | kVolume, kAllFeatures}) {
+        FeatureSet back = 0;
         for (const std::string& name : featureNames(f)) {
             for (uint32_t i = 0; i < kCount; ++i) {
-                if (name == featureName(1u << i)) back |= 1u << i;
+                if (name == featureName(FeatureSet{1} << i)) back |= FeatureSet{1} << i;
             }
         }
         EXPECT_EQ(back, f) << describeFeatures(f);
