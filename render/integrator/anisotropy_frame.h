@@ -16,19 +16,10 @@ template <FeatureSet kF = kAllFeatures>
 PT_HD Frame anisotropicFrame(const RenderScene& scene, const Hit& hit, const SurfaceHit& s,
                              const BsdfParams& p, const Frame& frame) {
     if (!hasFeature<kF>(feature::kAnisotropy) || !(p.anisotropy > 0.0f)) return frame;
-    Vec3 tangentObject;
-    float w;
-    if (!objectTangent(scene, s, hit, tangentObject, w)) return frame;
-    const RenderInstance& inst = scene.instances[s.instance];
-    const Vec3 n = s.shadingNormal;
-    Vec3 t = inst.objectToWorld.transformVector(tangentObject);
-    t = t - n * dot(n, t);
-    if (!(lengthSquared(t) > 0.0f)) return frame;
-    t = normalize(t);
-    // The bitangent as normal maps take it (applyNormalMap); it reverses under mirroring.
-    const Vec3 b = cross(n, t) * (inst.flipsWinding ? -w : w);
+    Vec3 t, b;
+    if (!worldTangentFrame(scene, hit, s, t, b)) return frame;
+    // In the tangent plane already: t and b are orthogonal to the normal, n or -n alike.
     Vec3 direction = t * p.anisotropyDirection.x + b * p.anisotropyDirection.y;
-    direction = direction - frame.normal * dot(frame.normal, direction);  // n or -n: one plane
     if (!(lengthSquared(direction) > 0.0f) || !isFinite(direction)) return frame;
     direction = normalize(direction);
     return {direction, cross(frame.normal, direction), frame.normal};

@@ -136,6 +136,25 @@ PT_HD bool objectTangent(const RenderScene& scene, const SurfaceHit& s, const Hi
     return isFinite(tangent) && lengthSquared(tangent) > 0.0f;
 }
 
+// The tangent space at the hit in world space, orthogonal to the shading normal: the frame that
+// normal maps and the anisotropy direction (anisotropy_frame.h) are given in. False where there
+// is none (objectTangent).
+PT_HD bool worldTangentFrame(const RenderScene& scene, const Hit& hit, const SurfaceHit& s, Vec3& t,
+                             Vec3& b) {
+    Vec3 tangentObject;
+    float w;
+    if (!objectTangent(scene, s, hit, tangentObject, w)) return false;
+    const RenderInstance& inst = scene.instances[s.instance];
+    const Vec3 n = s.shadingNormal;
+    t = inst.objectToWorld.transformVector(tangentObject);
+    t = t - n * dot(n, t);
+    if (!(lengthSquared(t) > 0.0f)) return false;
+    t = normalize(t);
+    // cross(n, t) of the world vectors reverses under a mirroring transform.
+    b = cross(n, t) * (inst.flipsWinding ? -w : w);
+    return true;
+}
+
 // Tangent-space normal mapping (glTF normalTexture, scaled in X and Y by normalScale). The
 // result stays on the front side of the geometry, like interpolated vertex normals.
 template <FeatureSet kF = kAllFeatures>
@@ -143,17 +162,9 @@ PT_HD void applyNormalMap(const RenderScene& scene, const Hit& hit, SurfaceHit& 
     if (!hasFeature<kF>(feature::kNormalMap)) return;
     const Material& m = scene.materials[s.material];
     if (!m.normalTexture.present()) return;
-    Vec3 tangentObject;
-    float w;
-    if (!objectTangent(scene, s, hit, tangentObject, w)) return;
-    const RenderInstance& inst = scene.instances[s.instance];
     const Vec3 n = s.shadingNormal;
-    Vec3 t = inst.objectToWorld.transformVector(tangentObject);
-    t = t - n * dot(n, t);
-    if (!(lengthSquared(t) > 0.0f)) return;
-    t = normalize(t);
-    // cross(n, t) of the world vectors reverses under a mirroring transform.
-    const Vec3 b = cross(n, t) * (inst.flipsWinding ? -w : w);
+    Vec3 t, b;
+    if (!worldTangentFrame(scene, hit, s, t, b)) return;
     const Vec3 texel = sampleTexture(scene, m.normalTexture, s.uv, false).xyz() * 2.0f - Vec3(1.0f);
     const Vec3 mapped = t * (texel.x * m.normalScale) + b * (texel.y * m.normalScale) + n * texel.z;
     if (!(lengthSquared(mapped) > 0.0f) || !isFinite(mapped)) return;

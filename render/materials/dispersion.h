@@ -20,7 +20,7 @@
 // The index follows Cauchy's equation n = A + B / lambda^2 through the material's ior at the
 // d line with the Abbe number V_d = 20 / dispersion, as the extension specifies:
 //   B = (n_d - 1) / (V_d (1/lambda_F^2 - 1/lambda_C^2)),  A = n_d - B / lambda_d^2.
-#include "render/math/vec.h"
+#include "render/math/cie_xyz.h"
 
 namespace pt {
 
@@ -37,37 +37,16 @@ PT_HD float dispersedIor(float ior, float dispersion, float wavelengthNm) {
 
 namespace dispersion_detail {
 
-// A Gaussian with different widths left and right of its mean (Wyman et al. 2013, eq. 1).
-PT_HD float piecewiseGaussian(float x, float mean, float sigmaLeft, float sigmaRight) {
-    const float t = (x - mean) / (x < mean ? sigmaLeft : sigmaRight);
-    return expf(-0.5f * t * t);
-}
-
 // Each channel's integral over 380-730 nm of the clipped response (numerical, 350 000 steps).
 constexpr float kChannelArea[3] = {176.17727f, 115.38126f, 109.31846f};
 
 }  // namespace dispersion_detail
 
-// CIE 1931 x-bar, y-bar, z-bar (Wyman, Sloan and Shirley 2013, the multi-lobe fit).
-PT_HD Vec3 cieColorMatching(float nm) {
-    using dispersion_detail::piecewiseGaussian;
-    return {1.056f * piecewiseGaussian(nm, 599.8f, 37.9f, 31.0f) +
-                0.362f * piecewiseGaussian(nm, 442.0f, 16.0f, 26.7f) -
-                0.065f * piecewiseGaussian(nm, 501.1f, 20.4f, 26.2f),
-            0.821f * piecewiseGaussian(nm, 568.8f, 46.9f, 40.5f) +
-                0.286f * piecewiseGaussian(nm, 530.9f, 16.3f, 31.1f),
-            1.217f * piecewiseGaussian(nm, 437.0f, 11.8f, 36.0f) +
-                0.681f * piecewiseGaussian(nm, 459.0f, 26.0f, 13.8f)};
-}
-
 // s_c(lambda) / pdf(lambda) for a wavelength drawn uniformly over the visible range: the factor a
 // path's throughput takes when it is given that wavelength. Its mean over the range is 1 in
 // every channel.
 PT_HD Vec3 wavelengthWeight(float nm) {
-    const Vec3 xyz = cieColorMatching(nm);
-    const Vec3 rgb{3.2404542f * xyz.x - 1.5371385f * xyz.y - 0.4985314f * xyz.z,
-                   -0.9692660f * xyz.x + 1.8760108f * xyz.y + 0.0415560f * xyz.z,
-                   0.0556434f * xyz.x - 0.2040259f * xyz.y + 1.0572252f * xyz.z};
+    const Vec3 rgb = xyzToLinearRec709(cieColorMatching(nm));
     constexpr float kRange = kVisibleMaxNm - kVisibleMinNm;
     using dispersion_detail::kChannelArea;
     return vmax(rgb, Vec3(0.0f)) *

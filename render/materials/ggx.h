@@ -19,6 +19,16 @@ namespace pt {
 
 constexpr float kGgxSmoothAlpha = 1e-3f;
 
+// Anisotropic roughness: alpha along the shading frame's x (the anisotropy direction) and y.
+struct GgxAlpha2 {
+    float x, y;
+};
+// The alpha along x and y of either kind.
+PT_HD float alphaX(float alpha) { return alpha; }
+PT_HD float alphaY(float alpha) { return alpha; }
+PT_HD float alphaX(GgxAlpha2 alpha) { return alpha.x; }
+PT_HD float alphaY(GgxAlpha2 alpha) { return alpha.y; }
+
 PT_HD float ggxAlpha(float roughness) {
     const float r = clampf(roughness, 0.0f, 1.0f);
     return r * r;
@@ -58,24 +68,21 @@ PT_HD float ggxVisibleNormalPdf(Vec3 wo, Vec3 m, Alpha alpha) {
 // A visible normal seen from wo (wo.z >= 0), distributed as ggxVisibleNormalPdf. Spherical-cap
 // formulation of Dupuy and Benyoub, "Sound and Robust Sampling of the GGX Distribution of
 // Visible Normals" (2023), which is exact at every incidence including wo.z == 0.
-PT_HD Vec3 sampleGgxVisibleNormal(Vec3 wo, float alpha, Vec2 u) {
+// `alpha` is a float or (stretched by each alpha along its axis) a GgxAlpha2.
+template <class Alpha>
+PT_HD Vec3 sampleGgxVisibleNormal(Vec3 wo, Alpha alpha, Vec2 u) {
     // Stretch the view into the configuration where alpha == 1 (a hemisphere of normals).
-    const Vec3 v = normalize(Vec3{alpha * wo.x, alpha * wo.y, wo.z});
+    const Vec3 v = normalize(Vec3{alphaX(alpha) * wo.x, alphaY(alpha) * wo.y, wo.z});
     const float phi = 2.0f * kPi * u.x;
     const float z = (1.0f - u.y) * (1.0f + v.z) - v.z;
     const float sinTheta = sqrtf(clampf(1.0f - z * z, 0.0f, 1.0f));
     const Vec3 h = Vec3{sinTheta * cosf(phi), sinTheta * sinf(phi), z} + v;
     // Unstretch; h.z >= 0 by construction, and only a measure-zero set of u gives h == 0.
-    const Vec3 m{alpha * h.x, alpha * h.y, fmaxf(h.z, 0.0f)};
+    const Vec3 m{alphaX(alpha) * h.x, alphaY(alpha) * h.y, fmaxf(h.z, 0.0f)};
     const float len2 = lengthSquared(m);
     if (!(len2 > 1e-30f)) return {0.0f, 0.0f, 1.0f};
     return m * (1.0f / sqrtf(len2));
 }
-
-// Anisotropic roughness: alpha along the shading frame's x (the anisotropy direction) and y.
-struct GgxAlpha2 {
-    float x, y;
-};
 
 // KHR_materials_anisotropy's alpha along its direction: mix(alpha, 1, strength^2).
 PT_HD float ggxAnisotropicAlpha(float alpha, float strength) {
@@ -97,19 +104,6 @@ PT_HD float ggxD(Vec3 m, GgxAlpha2 alpha) {
 PT_HD float ggxMaskingTerm(Vec3 w, GgxAlpha2 alpha) {
     const float sx = alpha.x * w.x, sy = alpha.y * w.y;
     return sqrtf(w.z * w.z + sx * sx + sy * sy);
-}
-
-// Dupuy and Benyoub's sampling in the configuration stretched by each alpha along its axis.
-PT_HD Vec3 sampleGgxVisibleNormal(Vec3 wo, GgxAlpha2 alpha, Vec2 u) {
-    const Vec3 v = normalize(Vec3{alpha.x * wo.x, alpha.y * wo.y, wo.z});
-    const float phi = 2.0f * kPi * u.x;
-    const float z = (1.0f - u.y) * (1.0f + v.z) - v.z;
-    const float sinTheta = sqrtf(clampf(1.0f - z * z, 0.0f, 1.0f));
-    const Vec3 h = Vec3{sinTheta * cosf(phi), sinTheta * sinf(phi), z} + v;
-    const Vec3 m{alpha.x * h.x, alpha.y * h.y, fmaxf(h.z, 0.0f)};
-    const float len2 = lengthSquared(m);
-    if (!(len2 > 1e-30f)) return {0.0f, 0.0f, 1.0f};
-    return m * (1.0f / sqrtf(len2));
 }
 
 }  // namespace pt

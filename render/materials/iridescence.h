@@ -11,6 +11,7 @@
 // The specular lobe evaluates it at each microfacet's cos(wo.h), as Belcour and Barla do; the
 // Sample Viewer, a rasteriser, takes cos(n.v) once a pixel.
 #include "render/materials/fresnel.h"
+#include "render/math/cie_xyz.h"
 
 namespace pt {
 
@@ -32,14 +33,11 @@ PT_HD Vec3 evalSensitivity(float opd, Vec3 shift) {
         return amplitude * sqrtf(2.0f * kPi * variance) * cosf(position * phase + s) *
                expf(-phase2 * variance);
     };
-    Vec3 xyz{term(5.4856e-13f, 1.6810e+06f, 4.3278e+09f, shift.x) +
-                 term(9.7470e-14f, 2.2399e+06f, 4.5282e+09f, shift.x),
-             term(4.4201e-13f, 1.7953e+06f, 9.3046e+09f, shift.y),
-             term(5.2481e-13f, 2.2084e+06f, 6.6121e+09f, shift.z)};
-    xyz = xyz * (1.0f / 1.0685e-7f);
-    return {3.2404542f * xyz.x - 1.5371385f * xyz.y - 0.4985314f * xyz.z,
-            -0.9692660f * xyz.x + 1.8760108f * xyz.y + 0.0415560f * xyz.z,
-            0.0556434f * xyz.x - 0.2040259f * xyz.y + 1.0572252f * xyz.z};
+    const Vec3 xyz{term(5.4856e-13f, 1.6810e+06f, 4.3278e+09f, shift.x) +
+                       term(9.7470e-14f, 2.2399e+06f, 4.5282e+09f, shift.x),
+                   term(4.4201e-13f, 1.7953e+06f, 9.3046e+09f, shift.y),
+                   term(5.2481e-13f, 2.2084e+06f, 6.6121e+09f, shift.z)};
+    return xyzToLinearRec709(xyz * (1.0f / 1.0685e-7f));
 }
 
 PT_HD float iorToF0(float transmitted, float incident) {

@@ -33,10 +33,7 @@ Vec3 spectralColour(double nFilm, double nBase, double d) {
     double sum[3] = {0, 0, 0}, area[3] = {0, 0, 0};
     for (int i = 0; i < n; ++i) {
         const double lambda = kVisibleMinNm + (i + 0.5) * (kVisibleMaxNm - kVisibleMinNm) / n;
-        const Vec3 xyz = cieColorMatching(float(lambda));
-        const double rgb[3] = {3.2404542 * xyz.x - 1.5371385 * xyz.y - 0.4985314 * xyz.z,
-                               -0.9692660 * xyz.x + 1.8760108 * xyz.y + 0.0415560 * xyz.z,
-                               0.0556434 * xyz.x - 0.2040259 * xyz.y + 1.0572252 * xyz.z};
+        const Vec3 rgb = xyzToLinearRec709(cieColorMatching(float(lambda)));
         const double r = airyReflectance(nFilm, nBase, d, lambda);
         for (int c = 0; c < 3; ++c) sum[c] += rgb[c] * r, area[c] += rgb[c];
     }
