@@ -40,6 +40,7 @@ const std::set<std::string> kSupportedExtensions = {
     "KHR_materials_anisotropy",
     "KHR_materials_iridescence",
     "KHR_materials_dispersion",
+    "KHR_materials_volume_scatter",
     "EXT_mesh_gpu_instancing",
 };
 

@@ -124,6 +124,21 @@ void readAnisotropyIridescenceDispersion(GltfContext& ctx, const tinygltf::Mater
     }
 }
 
+// The KHR_materials_volume_scatter proposal (glTF pull request 2453): the volume's interior
+// scatters. Its drafts name the colour multiscatterColor and, later, multiscatterColorFactor.
+void readVolumeScatter(GltfContext& ctx, const tinygltf::Material& src, const std::string& base,
+                       Material& m) {
+    const auto* e = extension(src, "KHR_materials_volume_scatter");
+    if (!e) return;
+    const std::string where = base + "KHR_materials_volume_scatter";
+    const char* colorKey =
+        e->Has("multiscatterColorFactor") ? "multiscatterColorFactor" : "multiscatterColor";
+    m.scatterColor = unit3(gltfNumbers(ctx, *e, colorKey, {0, 0, 0}, where));
+    m.scatterAnisotropy = boundedNumber(ctx, *e, "scatterAnisotropy", 0.0, -1.0, 1.0, where);
+    if (e->Has("multiscatterColorTexture"))
+        ctx.warn(where, "multiscatterColorTexture is not supported; the factor alone is used");
+}
+
 void readExtensions(GltfContext& ctx, const tinygltf::Material& src, const std::string& element,
                     Material& m) {
     const std::string base = element + ".extensions.";
@@ -171,6 +186,7 @@ void readExtensions(GltfContext& ctx, const tinygltf::Material& src, const std::
         m.sheenRoughnessTexture = extensionTexture(ctx, *e, "sheenRoughnessTexture", where);
     }
     readAnisotropyIridescenceDispersion(ctx, src, base, m);
+    readVolumeScatter(ctx, src, base, m);
     // KHR_materials_unlit: an empty object; its presence is the whole of it.
     if (extension(src, "KHR_materials_unlit")) m.unlit = 1;
     if (const auto* e = extension(src, "KHR_materials_specular")) {

@@ -105,6 +105,8 @@ const char* rangeText(NumberRange range) {
             return "a number >= 1";
         case NumberRange::Unit:
             return "a number in [0, 1]";
+        case NumberRange::SignedUnit:
+            return "a number in [-1, 1]";
     }
     return "a number";
 }
@@ -121,6 +123,8 @@ bool inRange(float v, NumberRange range) {
             return v >= 1.0f;
         case NumberRange::Unit:
             return v >= 0.0f && v <= 1.0f;
+        case NumberRange::SignedUnit:
+            return v >= -1.0f && v <= 1.0f;
     }
     return true;
 }
@@ -352,6 +356,10 @@ float nearestInRange(float v, NumberRange range) {
             break;
         case NumberRange::Unit:
             lo = 0.0f;
+            hi = 1.0f;
+            break;
+        case NumberRange::SignedUnit:
+            lo = -1.0f;
             hi = 1.0f;
             break;
     }

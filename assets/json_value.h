@@ -21,7 +21,7 @@ using Json = nlohmann::ordered_json;
 Json parseJsonText(const std::string& text, const std::string& fileName);
 
 // Allowed values of a number, stated in messages ("expected a number in [0, 1], got 1.5").
-enum class NumberRange { Any, NonNegative, Positive, AtLeastOne, Unit };
+enum class NumberRange { Any, NonNegative, Positive, AtLeastOne, Unit, SignedUnit };
 
 // The number in `range` nearest to v, finite (NaN: the range's lowest), so that an editor can
 // keep values the reader would refuse out of what it saves.

@@ -46,6 +46,12 @@ constexpr ParamKey kParamKeys[] = {
     {"attenuationColor", nullptr, &Material::attenuationColor, NumberRange::Unit},
     // Infinity (no absorption) is the default and cannot be written in JSON: leave it out.
     {"attenuationDistance", &Material::attenuationDistance, nullptr, NumberRange::Positive},
+    {"scatterColor", nullptr, &Material::scatterColor, NumberRange::Unit},
+    {"scatterAnisotropy", &Material::scatterAnisotropy, nullptr, NumberRange::SignedUnit},
+    {"subsurface", &Material::subsurface, nullptr, NumberRange::Unit},
+    {"subsurfaceColor", nullptr, &Material::subsurfaceColor, NumberRange::Unit},
+    {"subsurfaceRadius", &Material::subsurfaceRadius, nullptr, NumberRange::NonNegative},
+    {"subsurfaceRadiusScale", nullptr, &Material::subsurfaceRadiusScale, NumberRange::NonNegative},
 };
 
 struct TextureKey {
@@ -106,8 +112,21 @@ Material presetMaterial(const JsonValue& type) {
         m.roughness = 0.0f;
         m.metallic = 0.0f;
         m.ior = 1.5f;
+    } else if (name == "subsurface") {  // wax-like: a rough dielectric over a random walk
+        m.subsurface = 1.0f;
+        m.roughness = 0.4f;
+        m.ior = 1.4f;
+    } else if (name == "fog") {  // an index-matched box of white, scattering medium
+        m.transmission = 1.0f;
+        m.ior = 1.0f;
+        m.baseColor = Vec3(1.0f);
+        m.thickness = 1.0f;
+        m.attenuationDistance = 1.0f;
+        m.attenuationColor = Vec3(0.5f);
+        m.scatterColor = Vec3(1.0f);
     } else {
-        type.fail("unknown material type \"" + name + "\" (expected \"diffuse\", \"mirror\" or \"glass\")");
+        type.fail("unknown material type \"" + name +
+                  "\" (expected \"diffuse\", \"mirror\", \"glass\", \"subsurface\" or \"fog\")");
     }
     return m;
 }

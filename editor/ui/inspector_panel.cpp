@@ -70,6 +70,13 @@ void materialEditor(EditorUi& ui, uint32_t index) {
     changed |= textureToggle(ui, index, 11, "Iridescence thickness", m.iridescenceThicknessTexture);
     // Ctrl+click types a value past the slider's end (glTF allows any dispersion >= 0).
     changed |= sliderFloat(ui, "Dispersion (20/Abbe)", &m.dispersion, 0.0f, 1.0f);
+    changed |= sliderFloat(ui, "Subsurface", &m.subsurface, 0.0f, 1.0f);
+    changed |= colorEdit(ui, "Subsurface color", &m.subsurfaceColor);
+    // Mean free path in world units, scaled per channel: logarithmic, as skin (1e-3) and wax
+    // (1e-1) are both in reach.
+    changed |= sliderFloat(ui, "Subsurface radius", &m.subsurfaceRadius, 1e-4f, 10.0f, "%.4f",
+                           ImGuiSliderFlags_Logarithmic);
+    changed |= colorEdit(ui, "Subsurface radius scale", &m.subsurfaceRadiusScale);
     changed |= colorEdit(ui, "Emission", &m.emission);
     changed |= sliderFloat(ui, "Emission strength", &m.emissionStrength, 0.0f, 1000.0f, "%.3f",
                            ImGuiSliderFlags_Logarithmic);
@@ -87,6 +94,8 @@ void materialEditor(EditorUi& ui, uint32_t index) {
         changed |= sliderFloat(ui, "Thickness", &m.thickness, 0.0f, 10.0f);
         changed |= colorEdit(ui, "Attenuation color", &m.attenuationColor);
         changed |= dragFloat(ui, "Attenuation distance", &m.attenuationDistance, 0.01f, 1e-4f, kInf);
+        changed |= colorEdit(ui, "Scatter color", &m.scatterColor);
+        changed |= sliderFloat(ui, "Scatter anisotropy", &m.scatterAnisotropy, -0.99f, 0.99f);
         changed |= sliderFloat(ui, "Alpha", &m.alpha, 0.0f, 1.0f);
         int mode = int(m.alphaMode);
         const bool picked = ImGui::Combo("Alpha mode", &mode, "opaque\0mask\0blend\0");

@@ -12,6 +12,7 @@ namespace pt {
 // each in turn. Deeper nesting than kMaxNestedMedia keeps counting but stores no more; the
 // innermost stored medium then stands in for the deeper ones.
 constexpr uint32_t kMaxNestedMedia = 4;
+constexpr uint32_t kNoMedium = ~0u;  // a medium index meaning: none (vacuum)
 struct MediumStack {
     uint32_t materials[kMaxNestedMedia];
     uint32_t depth;  // volumes entered and not left
@@ -36,7 +37,8 @@ struct PathState {
     Vec3 lastVertex;           // where `ray` was scattered (MIS densities of lights it hits)
     PathSampler sampler;
     uint32_t depth;            // surface interactions so far
-    uint32_t transparentHits;  // alpha-transparent surfaces this segment has passed through
+    uint16_t transparentHits;  // surfaces this segment has passed through (alpha, index-matched)
+    uint16_t mediumBounces;    // scattering events inside media so far (medium_scattering.h)
     MediumStack media;
     float etaScale;            // product of eta^2 over refractions: undoes their 1/eta^2 for roulette
     float lastBsdfPdf;         // solid-angle pdf of the sample that made `ray`
@@ -50,13 +52,15 @@ struct PathState {
 // reports the total).
 static_assert(sizeof(PathState) == 116, "PathState: 116 bytes");
 
-// A shadow ray for next-event estimation: if nothing blocks it, `contribution` is added.
+// A shadow ray for next-event estimation: if nothing blocks it, `contribution` is added, times
+// the transmittance of the media it crosses (transparency.h).
 struct ShadowRay {
     Ray ray;                 // from the shading point to the light point; blocked if any hit has t < tMax
     Vec3 contribution;
+    uint32_t medium;  // the volume it starts in (material index), kNoMedium outside all
     bool valid;
 };
-static_assert(sizeof(ShadowRay) == 44, "ShadowRay: 44 bytes");
+static_assert(sizeof(ShadowRay) == 48, "ShadowRay: 48 bytes");
 
 // Counters a backend sums over all paths.
 struct PathCounters {

@@ -5,9 +5,10 @@
 // and spheres, punctual lights, the environment), combined with BSDF sampling by multiple
 // importance sampling (power heuristic; Veach 1997) wherever both strategies reach a light,
 // and Russian roulette. NEE, MIS, roulette and the firefly clamp are IntegratorSettings.
-// Alpha-transparent surfaces are passed through (alpha.h); paths inside volumetric
-// materials are attenuated by Beer-Lambert (medium.h). AOVs (aov.h) are recorded at the camera
-// ray's first visible surface where the caller passes an AovSample.
+// Alpha-transparent surfaces and index-matched volume boundaries are passed through
+// (transparency.h); paths inside volumetric materials are attenuated by Beer-Lambert (medium.h)
+// and, where the volume scatters, scatter inside it (medium_scattering.h). AOVs (aov.h) are recorded at the
+// camera ray's first visible surface where the caller passes an AovSample.
 //
 // Every stage takes the feature set kF it is compiled for (render/scene/scene_features.h):
 // the CUDA backend instantiates them per kernel variant, so a scene without textures, volumes,
@@ -17,6 +18,8 @@
 #include "render/integrator/aov.h"
 #include "render/integrator/camera.h"
 #include "render/integrator/medium.h"
+#include "render/integrator/medium_scattering.h"
+#include "render/integrator/next_event.h"
 #include "render/integrator/path_state.h"
 #include "render/integrator/spawn_ray.h"
 #include "render/integrator/surface_hit.h"
@@ -48,19 +51,6 @@ PT_HD PathState generatePath(const RenderScene& scene, uint32_t x, uint32_t y, u
     return state;
 }
 
-PT_HD bool neeEnabled(const RenderScene& scene) {
-    return scene.settings.nextEventEstimation && scene.emitterAlias.count > 0;
-}
-
-// The firefly clamp: an indirect contribution (light that reached the first hit through
-// another surface) keeps at most clampRadiance of luminance; direct light is never clamped.
-PT_HD Vec3 clampIndirect(const RenderScene& scene, Vec3 contribution, bool indirect) {
-    const float limit = scene.settings.clampRadiance;
-    if (!indirect || !(limit > 0.0f)) return contribution;
-    const float y = luminance(contribution);
-    return y > limit ? contribution * (limit / y) : contribution;
-}
-
 // MIS weight of light that the path's last BSDF sample found, against NEE's density
 // `lightPdf` for the same direction (0 where NEE cannot pick it). 0 when NEE alone counts it.
 PT_HD float bsdfSampledLightWeight(const RenderScene& scene, const PathState& state, float lightPdf) {
@@ -85,7 +75,7 @@ PT_HD void shadeMiss(const RenderScene& scene, PathState& state, AovSample* aov 
     const float weight = bsdfSampledLightWeight(scene, state, lightPdf);
     if (weight > 0.0f) {
         const Vec3 light = state.throughput * environmentRadiance<kF>(scene, direction) * weight;
-        state.radiance += clampIndirect(scene, light, state.depth >= 2);
+        state.radiance += clampIndirect(scene, light, pathVertices<kF>(state) >= 2);
         if (aov && state.depth == 0) aov->emission = light;
     }
 }
@@ -107,33 +97,26 @@ PT_HD void addSurfaceEmission(const RenderScene& scene, PathState& state, const 
     const float weight = bsdfSampledLightWeight(scene, state, lightPdf);
     if (weight > 0.0f) {
         const Vec3 light = state.throughput * emittedRadiance<kF>(scene, m, surface.uv) * weight;
-        state.radiance += clampIndirect(scene, light, state.depth >= 2);
+        state.radiance += clampIndirect(scene, light, pathVertices<kF>(state) >= 2);
     }
 }
 
-// Next-event estimation: one light sample, MIS-weighted against the BSDF for area lights and
-// the environment, at full weight for delta (punctual) lights. The shadow ray is traced by
-// the scheduler; `contribution` counts if it is unoccluded.
+// Next-event estimation at a surface (next_event.h), with the BSDF as the scattering function.
+// The shadow ray is traced by the scheduler; `contribution` counts if it is unoccluded.
 template <FeatureSet kF = kAllFeatures>
 PT_HD ShadowRay sampleDirectLight(const RenderScene& scene, const PathState& state, const SurfaceHit& surface,
                                   const BsdfParams& bsdf, const Frame& frame, Vec3 wo, uint32_t dims) {
-    ShadowRay shadow{};
     LightSample light;
     if (!sampleLight<kF>(scene, surface.position, state.sampler.get(dims + SampleDims::kLightPick),
                          state.sampler.get2(dims + SampleDims::kLightPoint), light)) {
-        return shadow;
+        return ShadowRay{};
     }
     const BsdfEval eval = evalBsdfWithPdf<kF>(bsdf, frame, wo, light.wi);
-    const Vec3 f = eval.value;
-    if (isBlack(f) || isBlack(light.radiance)) return shadow;
-    const float weight =
-        !light.delta && scene.settings.multipleImportance ? powerHeuristic(light.pdf, eval.pdf) : 1.0f;
-    shadow.ray = shadowRayTo(surface, light);
-    const Vec3 contribution = state.throughput * f * light.radiance * (weight / light.pdf) *
-                              mediumTransmittance<kF>(scene, state.media, light.distance);
-    shadow.contribution = clampIndirect(scene, contribution, state.depth >= 1);
-    shadow.valid = !isBlack(shadow.contribution);
-    return shadow;
+    // A light behind the surface is reached through it, in the volume it bounds.
+    const bool crosses = (dot(light.wi, surface.geometricNormal) > 0.0f) != surface.frontFace;
+    const uint32_t medium =
+        mediumBeyond<kF>(scene, state.media, surface.material, crosses, surface.frontFace);
+    return lightShadowRay<kF>(scene, state, light, eval.value, eval.pdf, shadowRayTo(surface, light), medium);
 }
 
 // KHR_materials_dispersion: a transmitting surface with dispersion refracts with the index of the
@@ -148,15 +131,6 @@ PT_HD void disperse(PathState& state, const Material& m, BsdfParams& bsdf, uint3
     bsdf.ior = dispersedIor(bsdf.ior, m.dispersion, unpackWavelength(state.wavelength));
 }
 
-PT_HD bool surviveRoulette(const RenderScene& scene, PathState& state, uint32_t dims) {
-    if (!scene.settings.russianRoulette || state.depth < scene.settings.russianRouletteDepth) return true;
-    const float q = fminf(maxComponent(state.throughput) * state.etaScale, 1.0f);
-    if (q >= 1.0f) return true;
-    if (state.sampler.get(dims + SampleDims::kRoulette) >= q) return false;
-    state.throughput *= 1.0f / q;
-    return true;
-}
-
 // Adds emission, queues a shadow ray, and turns `state.ray` into the next segment (or ends the
 // path). `hit` is the closest hit of `state.ray`. A surface that is alpha-transparent there
 // only moves the ray past it (transparency.h). On the camera segment, a non-null `aov`
@@ -165,9 +139,12 @@ template <FeatureSet kF = kAllFeatures>
 PT_HD ShadowRay shadeSurface(const RenderScene& scene, PathState& state, const Hit& hit,
                              AovSample* aov = nullptr) {
     ShadowRay shadow{};
-    state.throughput *= mediumTransmittance<kF>(scene, state.media, hit.t);  // the ray is unit length
+    if (hasFeature<kF>(feature::kVolume) && !state.media.empty() &&
+        scatterInMedium<kF>(scene, state, hit.t, shadow))
+        return shadow;
     SurfaceHit surface = surfaceAt<kF>(scene, state.ray, hit);
-    if (passTransparentSurface<kF>(scene, state, surface, hit)) return shadow;
+    if (passTransparentSurface<kF>(scene, state, surface)) return shadow;
+    if (passIndexMatchedBoundary<kF>(scene, state, surface)) return shadow;
     state.transparentHits = 0;
     applyNormalMap<kF>(scene, hit, surface);
     // Until the first bounce, lastVertex is still the camera ray's origin.
@@ -228,7 +205,7 @@ PT_HD ShadowRay shadeSurface(const RenderScene& scene, PathState& state, const H
     state.ray.direction = s.wi;
     state.ray.tMax = kInf;
     state.depth += 1;
-    state.alive = surviveRoulette(scene, state, dims);
+    state.alive = surviveRoulette<kF>(scene, state, state.sampler.get(dims + SampleDims::kRoulette));
     return shadow;
 }
 
@@ -251,7 +228,8 @@ PT_HD void traceFusedStep(const RenderScene& scene, PathState& state, ShadowRay&
     ++counters.rays;
     const bool found = intersectScene<kF>(scene, shadowTurn ? shadow.ray : state.ray, shadowTurn, hit);
     if (shadowTurn) {
-        if (!found || shadowRayPassesBlockers<kF>(scene, shadow.ray, state.sampler, state.depth, counters)) {
+        if (!found) attenuateUnblockedShadowRay<kF>(scene, shadow);
+        if (!found || shadowRayPassesBlockers<kF>(scene, shadow, state.sampler, state.depth, counters)) {
             state.radiance += shadow.contribution;
         }
         shadow.valid = false;
@@ -295,9 +273,9 @@ PT_HD Vec3 tracePath(const RenderScene& scene, uint32_t x, uint32_t y, uint32_t 
                 shadeMiss<kF>(scene, state, aov);
                 break;
             }
-            const ShadowRay shadow = shadeSurface<kF>(scene, state, hit, aov);
+            ShadowRay shadow = shadeSurface<kF>(scene, state, hit, aov);
             if (shadow.valid &&
-                shadowRayUnoccluded<kF>(scene, shadow.ray, state.sampler, state.depth, counters)) {
+                shadowRayUnoccluded<kF>(scene, shadow, state.sampler, state.depth, counters)) {
                 state.radiance += shadow.contribution;
             }
         }

@@ -1,7 +1,7 @@
 #pragma once
-// Alpha-transparent surfaces (glTF alphaMode MASK and BLEND; coverage in
-// render/materials/alpha.h) and culled back faces (glTF doubleSided = false) for closest-hit
-// and shadow rays.
+// Surfaces rays pass: alpha-transparent ones (glTF alphaMode MASK and BLEND; coverage in
+// render/materials/alpha.h), culled back faces (glTF doubleSided = false) and index-matched
+// volume boundaries (medium.h), for closest-hit and shadow rays.
 //
 // The simplest correct approach: a surface that is transparent at the point a ray meets it
 // is not there for that ray. MASK surfaces are transparent where alpha < alphaCutoff; BLEND
@@ -13,6 +13,7 @@
 // segment and the next is treated as opaque, so every path terminates. Lights sampled by
 // NEE are weighted by their own coverage (light_sample.h), so both strategies agree.
 #include "render/bvh/traversal.h"
+#include "render/integrator/medium.h"
 #include "render/integrator/path_state.h"
 #include "render/integrator/spawn_ray.h"
 #include "render/integrator/surface_hit.h"
@@ -21,54 +22,89 @@
 
 namespace pt {
 
-// The ray that continues past `surface` (met by `ray` at `hitT`) in the same direction.
-// Finite rays keep their end point: the parameter range left is what lay beyond the hit.
-PT_HD Ray continuePast(const Ray& ray, const SurfaceHit& surface, float hitT) {
+// The ray that continues past `surface` (met by `ray`) in the same direction. A finite ray
+// keeps its end point: it is aimed at it from the new origin, for that origin is offset off the
+// surface (sideways, too) by more than the margin a shadow ray keeps short of its light
+// (spawn_ray.h), and a parallel ray would end inside a sphere light it meets at a slant (a sphere
+// light behind an index-matched boundary was missed by one shadow ray in ten).
+PT_HD Ray continuePast(const Ray& ray, const SurfaceHit& surface) {
     Ray next = ray;
     const Vec3 n = surface.geometricNormal;
     next.origin = spawnOrigin(surface, n, dot(ray.direction, n) > 0.0f);
-    if (isFinite(ray.tMax)) next.tMax = ray.tMax - hitT;
+    if (isFinite(ray.tMax)) {
+        next.direction = ray.origin + ray.direction * ray.tMax - next.origin;
+        next.tMax =
+            dot(next.direction, ray.direction) > 0.0f ? 1.0f : 0.0f;  // 0: the end lay before the surface
+    }
     return next;
 }
 
-// After an any-hit query found something on the shadow ray `ray`: whether every surface on it
-// lets it through (alpha, culled back faces), walking them in order from the nearest.
+// The shadow ray met nothing: it carries its light through the medium it started in.
 template <FeatureSet kF>
-PT_HD bool shadowRayPassesBlockers(const RenderScene& scene, Ray ray, const PathSampler& sampler,
+PT_HD void attenuateUnblockedShadowRay(const RenderScene& scene, ShadowRay& shadow) {
+    if (!hasFeature<kF>(feature::kVolume) || shadow.medium == kNoMedium) return;
+    const float distance = shadow.ray.tMax * length(shadow.ray.direction);  // may be infinite
+    shadow.contribution *= mediumTransmittance<kF>(scene, shadow.medium, distance);
+}
+
+// After an any-hit query found something on `shadow`'s ray: whether every surface on it lets it
+// through (alpha, culled back faces, index-matched volume boundaries), walking them in order
+// from the nearest. Its contribution takes the transmittance of the media between them: the
+// one it starts in, and those it enters through index-matched boundaries. (Leaving the one it
+// started in, it is in vacuum: the path's outer volumes are not carried.)
+template <FeatureSet kF>
+PT_HD bool shadowRayPassesBlockers(const RenderScene& scene, ShadowRay& shadow, const PathSampler& sampler,
                                    uint32_t depth, PathCounters& counters) {
-    if constexpr (!hasFeature<kF>(feature::kTransparency)) {
+    constexpr bool kAlpha = hasFeature<kF>(feature::kTransparency);
+    constexpr bool kMatched = hasFeature<kF>(feature::kIndexMatchedBoundaries);
+    if constexpr (!kAlpha && !kMatched) {
         return false;  // no surface lets rays through: the first hit blocks
     } else {
-        if (!scene.transparentMaterials) return false;
+        const bool alpha = kAlpha && scene.transparentMaterials;
+        if (!alpha && !kMatched) return false;
+        MediumStack media{};
+        if (shadow.medium != kNoMedium) media.enter(shadow.medium);
+        Ray ray = shadow.ray;
         for (uint32_t layer = 0; layer < SampleDims::kAlphaLayers; ++layer) {
             Hit hit;
             ++counters.rays;
-            if (!intersectClosest<kF>(scene, ray, hit)) return true;
+            const bool found = intersectClosest<kF>(scene, ray, hit);
+            const float t = found ? hit.t : ray.tMax;
+            shadow.contribution *= mediumTransmittance<kF>(scene, media, t * length(ray.direction));
+            if (!found) return true;
             const SurfaceHit surface = surfaceAt<kF>(scene, ray, hit);
             const Material& m = scene.materials[surface.material];
-            const float u = sampler.get(SampleDims::shadowAlpha(depth, layer));
-            if (!passesThrough<kF>(scene, m, surface.uv, surface.frontFace, u)) return false;
-            ray = continuePast(ray, surface, hit.t);
+            if (kMatched && isIndexMatchedBoundary(m)) {
+                shadow.contribution *= m.baseColor;
+                crossVolumeBoundary<kF>(scene, media, surface.material, surface.frontFace);
+            } else {
+                const float u = sampler.get(SampleDims::shadowAlpha(depth, layer));
+                if (!alpha || !passesThrough<kF>(scene, m, surface.uv, surface.frontFace, u)) return false;
+            }
+            ray = continuePast(ray, surface);
             if (!(ray.tMax > 0.0f)) return true;
         }
         return false;
     }
 }
 
-// Whether nothing opaque lies on `ray` (0 < t < tMax). `depth` names the bounce the ray
-// leaves from, for the stochastic-transparency numbers.
+// Whether nothing opaque lies on `shadow`'s ray (0 < t < tMax), its contribution attenuated by
+// the media on the way. `depth` names the bounce the ray leaves from, for the
+// stochastic-transparency numbers.
 template <FeatureSet kF = kAllFeatures>
-PT_HD bool shadowRayUnoccluded(const RenderScene& scene, Ray ray, const PathSampler& sampler, uint32_t depth,
-                               PathCounters& counters) {
+PT_HD bool shadowRayUnoccluded(const RenderScene& scene, ShadowRay& shadow, const PathSampler& sampler,
+                               uint32_t depth, PathCounters& counters) {
     ++counters.rays;
-    if (!intersectAny<kF>(scene, ray)) return true;
-    return shadowRayPassesBlockers<kF>(scene, ray, sampler, depth, counters);
+    if (!intersectAny<kF>(scene, shadow.ray)) {
+        attenuateUnblockedShadowRay<kF>(scene, shadow);
+        return true;
+    }
+    return shadowRayPassesBlockers<kF>(scene, shadow, sampler, depth, counters);
 }
 
 // If the surface `state.ray` hit is transparent there, moves the ray past it and returns true.
 template <FeatureSet kF = kAllFeatures>
-PT_HD bool passTransparentSurface(const RenderScene& scene, PathState& state, const SurfaceHit& surface,
-                                  const Hit& hit) {
+PT_HD bool passTransparentSurface(const RenderScene& scene, PathState& state, const SurfaceHit& surface) {
     if (!hasFeature<kF>(feature::kTransparency) || !scene.transparentMaterials ||
         state.transparentHits >= SampleDims::kAlphaLayers) {
         return false;
@@ -77,7 +113,25 @@ PT_HD bool passTransparentSurface(const RenderScene& scene, PathState& state, co
     const float u = state.sampler.get(SampleDims::alpha(state.depth, state.transparentHits));
     if (!passesThrough<kF>(scene, m, surface.uv, surface.frontFace, u)) return false;
     ++state.transparentHits;
-    state.ray = continuePast(state.ray, surface, hit.t);
+    state.ray = continuePast(state.ray, surface);
+    return true;
+}
+
+// If the surface `state.ray` hit is an index-matched volume boundary (medium.h), moves the ray
+// past it into or out of the volume and returns true. The path's last vertex and its density
+// stay those of the scattering before, so light found beyond is weighted as if no surface
+// were there (next-event estimation reaches it through the boundary too).
+template <FeatureSet kF = kAllFeatures>
+PT_HD bool passIndexMatchedBoundary(const RenderScene& scene, PathState& state, const SurfaceHit& surface) {
+    if (!hasFeature<kF>(feature::kIndexMatchedBoundaries) ||
+        state.transparentHits >= SampleDims::kAlphaLayers)
+        return false;
+    const Material& m = scene.materials[surface.material];
+    if (!isIndexMatchedBoundary(m)) return false;
+    ++state.transparentHits;
+    state.throughput *= m.baseColor;
+    crossVolumeBoundary<kF>(scene, state.media, surface.material, surface.frontFace);
+    state.ray = continuePast(state.ray, surface);
     return true;
 }
 

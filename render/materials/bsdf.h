@@ -66,6 +66,9 @@ struct BsdfParams {
     float iridescence = 0.0f;              // KHR_materials_iridescence: the film's weight
     float iridescenceIor = 1.3f;
     float iridescenceThickness = 400.0f;  // nanometres
+    // The share of `transmission` that is subsurface scattering (material_eval.h): it enters a
+    // medium that gives it its colour, so the surface does not tint it by the base colour.
+    float untintedTransmission = 0.0f;
 };
 
 struct BsdfSample {
@@ -274,7 +277,10 @@ PT_HD Lobes<kF> resolveLobes(const BsdfParams& p, Vec3 wo) {
         }
     }
     l.glass = (1.0f - metallic) * transmission * base;
-    l.interface = {l.alpha, ior, vmin(p.specularColor * specular, Vec3(1.0f)), p.baseColor};
+    const Vec3 transmitTint = hasFeature<kF>(feature::kScatteringMedia)
+                                  ? p.baseColor + (Vec3(1.0f) - p.baseColor) * p.untintedTransmission
+                                  : p.baseColor;
+    l.interface = {l.alpha, ior, vmin(p.specularColor * specular, Vec3(1.0f)), transmitTint};
     if (kGlassLobe && l.glass > 0.0f) {
         const float f = fresnelDielectric(fabsf(wo.z), relativeEta(l.interface, wo));
         const float transmit = maxComponent(l.interface.transmitTint);

@@ -76,6 +76,18 @@ struct Material {
     TextureRef iridescenceThicknessTexture;  // linear, G
     // KHR_materials_dispersion: 20 / Abbe number of the transmitting interior; 0: none.
     float dispersion = 0.0f;
+    // Scattering media (render/integrator/medium.h). The KHR_materials_volume_scatter proposal:
+    // the interior of a volume scatters, its extinction the attenuation above, its albedo what
+    // multiple scattering should look like.
+    Vec3 scatterColor{0.0f, 0.0f, 0.0f};  // multiscatterColor; black: absorption only
+    float scatterAnisotropy = 0.0f;       // Henyey-Greenstein g, here and in the subsurface medium
+    // Random-walk subsurface scattering, as OpenPBR and Cycles name it: this share of the
+    // non-metal base enters, through the dielectric surface, a medium of the colour and mean free
+    // path below (Chiang et al. 2016's inversion: random_walk_albedo.h).
+    float subsurface = 0.0f;
+    Vec3 subsurfaceColor{0.8f, 0.8f, 0.8f};
+    float subsurfaceRadius = 0.05f;  // world units: the mean free path, scaled per channel by
+    Vec3 subsurfaceRadiusScale{1.0f, 0.5f, 0.25f};
 
     PT_HD Vec3 emittedRadiance() const { return emission * emissionStrength; }
     PT_HD bool isEmissive() const { return maxComponent(emission) * emissionStrength > 0.0f; }

@@ -30,6 +30,13 @@ PT_HD BsdfParams bsdfParamsAt(const RenderScene& scene, const Material& m, Vec2 
     p.metallic = clampf(p.metallic, 0.0f, 1.0f);
     p.roughness = clampf(p.roughness, 0.0f, 1.0f);
     p.transmission = clampf(p.transmission, 0.0f, 1.0f);
+    if (hasFeature<kF>(feature::kScatteringMedia) && m.subsurface > 0.0f) {
+        // Subsurface takes its share of what would be diffuse and passes it through the same
+        // dielectric interface as transmission, untinted (the medium colours it).
+        const float subsurface = (1.0f - p.transmission) * fminf(m.subsurface, 1.0f);
+        p.transmission += subsurface;
+        p.untintedTransmission = subsurface / p.transmission;
+    }
     p.ior = p.ior >= 1.0f ? p.ior : 1.0f;  // also maps NaN to index-matched
     p.specular = clampf(p.specular, 0.0f, 1.0f);
     p.clearcoat = clampf(p.clearcoat, 0.0f, 1.0f);

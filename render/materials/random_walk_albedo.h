@@ -10,6 +10,14 @@
 // so that a semi-infinite medium of isotropic scattering, lit from outside, reflects about A in
 // all: the multiple-scattering albedo the artist picked (random_walk_albedo_test.cpp measures
 // how close the fit comes), with light travelling about d before it leaves.
+//
+// The KHR_materials_volume_scatter proposal takes the extinction from the volume's attenuation
+// and only inverts the albedo, by van de Hulst's relation in the form Kulla and Conty give
+// ("Revisiting Physically Based Shading at Imageworks", SIGGRAPH 2017 course, slide 'albedo
+// inversion'), with the anisotropy correction of the proposal:
+//
+//   s = 4.09712 + 4.20863 A - sqrt(9.59217 + 41.6808 A + 17.7126 A^2)
+//   alpha = (1 - s^2) / (1 - g s^2)
 #include "render/math/vec.h"
 
 namespace pt {
@@ -25,6 +33,14 @@ PT_HD float randomWalkExtinction(float surfaceAlbedo, float meanFreePath) {
     const float a = clampf(surfaceAlbedo, 0.0f, 1.0f);
     const float s = 1.9f - a + 3.5f * (a - 0.8f) * (a - 0.8f);
     return 1.0f / fmaxf(meanFreePath * s, 1e-30f);
+}
+
+// alpha(A, g) by van de Hulst's relation, for A in [0, 1] and |g| < 1.
+PT_HD float vanDeHulstSingleScatterAlbedo(float multiScatterAlbedo, float g) {
+    const float a = clampf(multiScatterAlbedo, 0.0f, 1.0f);
+    const float s = fmaxf(4.09712f + 4.20863f * a - sqrtf(9.59217f + 41.6808f * a + 17.7126f * a * a), 0.0f);
+    const float s2 = s * s;
+    return clampf((1.0f - s2) / (1.0f - clampf(g, -0.999f, 0.999f) * s2), 0.0f, 1.0f);
 }
 
 }  // namespace pt

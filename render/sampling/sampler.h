@@ -101,6 +101,21 @@ struct SampleDims {
     PT_HD static uint32_t shadowAlpha(uint32_t depth, uint32_t layer) {
         return kAlphaBase + depth * 2 * kAlphaLayers + kAlphaLayers + layer;
     }
+    // Segments inside scattering media (medium_scattering.h): 8 dimensions per segment, named by
+    // the surface interactions and the medium scattering events before it and the surfaces it
+    // passed since (alpha, index-matched boundaries); hashed beyond the alpha dimensions.
+    static constexpr uint32_t kMaxMediumBounces = 1024;  // a random walk ends after this many
+    static constexpr uint32_t kMediumBase = 1u << 25;
+    static constexpr uint32_t kMediumLightPoint = 0;  //   2: where on the emitter
+    static constexpr uint32_t kMediumChannel = 2;     //   1: which channel's free flight
+    static constexpr uint32_t kMediumDistance = 3;    //   1: its distance
+    static constexpr uint32_t kMediumPhaseDir = 4;    //   2: the phase function's direction
+    static constexpr uint32_t kMediumLightPick = 6;   //   1: which emitter
+    static constexpr uint32_t kMediumRoulette = 7;    //   1: Russian roulette
+    PT_HD static uint32_t medium(uint32_t depth, uint32_t mediumBounces, uint32_t passed) {
+        return kMediumBase +
+               ((depth * (kMaxMediumBounces + 1) + mediumBounces) * (kAlphaLayers + 1) + passed) * 8;
+    }
 };
 
 // The sample value in [0, 1) for one pixel, sample and dimension.

@@ -30,13 +30,22 @@ FeatureSet materialFeatures(const Material& m) {
     // only scale down: smooth factors stay mirrors.
     if ((m.metallic > 0.0f || m.specular > 0.0f) && !ggxIsSmooth(ggxAlpha(m.roughness)))
         f |= kGlossyReflection;
-    const bool mayTransmit = (m.transmission > 0.0f || m.transmissionTexture.present()) && m.metallic < 1.0f;
+    // Subsurface scattering enters its medium through the glass lobe (material_eval.h).
+    const bool mayTransmit =
+        (m.transmission > 0.0f || m.transmissionTexture.present() || m.subsurface > 0.0f) &&
+        m.metallic < 1.0f;
     if (mayTransmit) {
         const bool smooth = ggxIsSmooth(ggxAlpha(m.roughness));
         f |= smooth ? kSmoothTransmission : kRoughTransmission;
         // A roughness texture can scale any roughness down to smooth.
         if (m.metallicRoughnessTexture.present()) f |= kSmoothTransmission;
-        if (isVolumeBoundary(m) && maxComponent(absorptionCoefficient(m)) > 0.0f) f |= kVolume;
+    }
+    if ((mayTransmit || m.diffuseTransmission > 0.0f) && isVolumeBoundary(m)) {
+        const HomogeneousMedium medium = mediumOf(m);
+        if (maxComponent(medium.sigmaT) > 0.0f) f |= kVolume;
+        if (medium.scatters()) f |= kScatteringMedia;
+        if (m.subsurface > 0.0f) f |= kScatteringMedia;  // its BSDF mixes subsurface in, whatever the medium
+        if (isIndexMatchedBoundary(m)) f |= kIndexMatchedBoundaries | kVolume;
     }
     if (m.clearcoat > 0.0f) f |= kClearcoat;
     if (m.diffuseTransmission > 0.0f && m.metallic < 1.0f) f |= kDiffuseTransmission;
@@ -113,7 +122,9 @@ const char* featureName(FeatureSet bit) {
                                                         "sheen",
                                                         "anisotropy",
                                                         "iridescence",
-                                                        "dispersion"};
+                                                        "dispersion",
+                                                        "scattering_media",
+                                                        "index_matched_boundaries"};
     for (uint32_t i = 0; i < feature::kCount; ++i) {
         if (bit == (FeatureSet{1} << i)) return kNames[i];
     }

@@ -64,7 +64,13 @@ constexpr FeatureSet kAnisotropy = FeatureSet{1} << 29;
 constexpr FeatureSet kIridescence = FeatureSet{1} << 30;
 // KHR_materials_dispersion: refraction whose index depends on the wavelength a path carries.
 constexpr FeatureSet kDispersion = FeatureSet{1} << 31;
-constexpr uint32_t kCount = 32;  // of the 64 bits a FeatureSet holds
+// Volumes whose interior scatters (KHR_materials_volume_scatter, subsurface): free flights,
+// phase functions and light sampled from inside media (render/integrator/medium_scattering.h).
+constexpr FeatureSet kScatteringMedia = FeatureSet{1} << 32;
+// Index-matched volume boundaries (index 1, fully transmitting): rays and shadow rays pass them
+// into and out of the volume they bound, as they would pass no surface (fog in a box).
+constexpr FeatureSet kIndexMatchedBoundaries = FeatureSet{1} << 33;
+constexpr uint32_t kCount = 34;  // of the 64 bits a FeatureSet holds
 
 // Groups the kernels test.
 constexpr FeatureSet kTextures =
@@ -73,7 +79,8 @@ constexpr FeatureSet kTransparency = kAlphaMask | kAlphaBlend | kBackfaceCulling
 constexpr FeatureSet kTransmission = kSmoothTransmission | kRoughTransmission;
 // Lobes of glTF material extensions few scenes use: only the generic ("full") kernels carry
 // them, so every other scene runs the code it ran before they were written.
-constexpr FeatureSet kRareLobes = kDiffuseTransmission | kSheen | kAnisotropy | kIridescence | kDispersion;
+constexpr FeatureSet kRareLobes = kDiffuseTransmission | kSheen | kAnisotropy | kIridescence | kDispersion |
+                                  kScatteringMedia | kIndexMatchedBoundaries;
 // Features no kernel code depends on: every variant has them. (AOVs select the generic
 // kernels: recording them is a debugging and export path, not worth a variant of its own.)
 constexpr FeatureSet kUngated =

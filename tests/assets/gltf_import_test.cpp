@@ -501,6 +501,37 @@ TEST(GltfImport, AnisotropyIridescenceAndDispersionMaterials) {
     }
 }
 
+// The KHR_materials_volume_scatter proposal: both drafts' names for the colour, the anisotropy
+// clamped to [-1, 1] with a warning, and one warning for the texture that is not read.
+TEST(GltfImport, VolumeScatterProposal) {
+    const std::string path =
+        materialsGltf("volume_scatter.gltf", R"("KHR_materials_volume", "KHR_materials_volume_scatter")",
+                      R"({"name": "old", "extensions": {"KHR_materials_volume": {"thicknessFactor": 1},
+             "KHR_materials_volume_scatter": {"multiscatterColor": [0.2, 0.4, 0.6], "scatterAnisotropy": 0.5}}},
+           {"name": "new", "extensions": {"KHR_materials_volume_scatter": {
+             "multiscatterColorFactor": [0.9, 0.8, 0.7], "multiscatterColorTexture": {"index": 0},
+             "scatterAnisotropy": -3}}},
+           {"name": "empty", "extensions": {"KHR_materials_volume_scatter": {}}})",
+                      3);
+    Scene scene;
+    importGltf(path, 0, scene);
+    EXPECT_TRUE(scene.gltfExtensions.at("KHR_materials_volume_scatter"));
+    ASSERT_EQ(scene.materials.size(), 3u);
+    EXPECT_EQ(scene.materials[0].params.scatterColor, Vec3(0.2f, 0.4f, 0.6f));
+    EXPECT_EQ(scene.materials[0].params.scatterAnisotropy, 0.5f);
+    EXPECT_EQ(scene.materials[1].params.scatterColor, Vec3(0.9f, 0.8f, 0.7f));
+    EXPECT_EQ(scene.materials[1].params.scatterAnisotropy, -1.0f);
+    EXPECT_EQ(scene.materials[2].params.scatterColor, Vec3(0.0f));
+    EXPECT_EQ(scene.materials[2].params.scatterAnisotropy, 0.0f);
+    ASSERT_EQ(scene.warnings.size(), 2u) << ::testing::PrintToString(scene.warnings);
+    EXPECT_NE(
+        scene.warnings[0].find("materials[1].extensions.KHR_materials_volume_scatter.scatterAnisotropy"),
+        std::string::npos)
+        << scene.warnings[0];
+    EXPECT_NE(scene.warnings[1].find("multiscatterColorTexture is not supported"), std::string::npos)
+        << scene.warnings[1];
+}
+
 // Values outside what the extensions allow are clamped with one warning each, naming the value;
 // one no float holds is an error, as for every number.
 TEST(GltfImport, AnisotropyIridescenceAndDispersionOutOfRangeWarnOnceEach) {

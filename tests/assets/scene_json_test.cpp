@@ -239,6 +239,37 @@ TEST(SceneJson, EveryKeyRoundTripsAndOutputIsStable) {
     EXPECT_NE(text.find("\"image\": \"" + sky + "\""), std::string::npos) << "paths relative to the output";
 }
 
+// The media keys (issue 15) are read, written only where they differ from Material{}'s, and
+// read back bit for bit; the "subsurface" and "fog" types start from what their names say.
+TEST(SceneJson, MediaKeysRoundTrip) {
+    const std::string folder = testFolder();
+    const Scene scene = test::loadSceneOrFail(writeFile(folder, "in.json", R"({"version": 1, "materials": [
+        {"name": "skin", "type": "subsurface", "subsurfaceColor": [0.9, 0.6, 0.5], "subsurfaceRadius": 0.002,
+         "subsurfaceRadiusScale": [1, 0.4, 0.2], "scatterAnisotropy": -0.3},
+        {"name": "haze", "type": "fog", "scatterColor": [0.7, 0.8, 0.9]},
+        {"name": "plain"}],
+      "objects": [{"shape": "sphere", "material": "skin"}, {"shape": "box", "material": "haze"},
+                  {"shape": "quad", "material": "plain"}]})"));
+    const Material& skin = scene.materials[size_t(findSceneMaterial(scene, "skin"))].params;
+    EXPECT_EQ(skin.subsurface, 1.0f);
+    EXPECT_EQ(skin.subsurfaceColor, Vec3(0.9f, 0.6f, 0.5f));
+    EXPECT_EQ(skin.subsurfaceRadius, 0.002f);
+    EXPECT_EQ(skin.subsurfaceRadiusScale, Vec3(1.0f, 0.4f, 0.2f));
+    EXPECT_EQ(skin.scatterAnisotropy, -0.3f);
+    const Material& haze = scene.materials[size_t(findSceneMaterial(scene, "haze"))].params;
+    EXPECT_EQ(haze.scatterColor, Vec3(0.7f, 0.8f, 0.9f));
+    EXPECT_EQ(haze.ior, 1.0f);
+    EXPECT_GT(haze.thickness, 0.0f);
+    const std::string text = sceneToJson(scene, folder + "/out.json");
+    EXPECT_NE(text.find(R"("subsurfaceRadius": 0.002)"), std::string::npos) << text;
+    EXPECT_NE(text.find(R"("name": "plain"
+    })"),
+              std::string::npos)
+        << "no media keys where none was set: " << text;
+    const Scene again = saveAndReload(scene, folder + "/out.json");
+    EXPECT_TRUE(scenesEqual(again, scene));
+}
+
 // The keys of KHR_materials_anisotropy, _iridescence and _dispersion are written only where a
 // value differs from Material{}'s (the extensions' own defaults), and read back bit for bit.
 TEST(SceneJson, AnisotropyIridescenceAndDispersionKeysAreWrittenOnlyWhenSet) {
@@ -415,7 +446,10 @@ const ErrorCase kErrorCases[] = {
     {"CameraUpAlongView", "scene.json", R"({"version": 1, "camera": {"up": [0, 0, -2]}})",
      "scene.json: camera.up: up is zero or parallel to the view direction"},
     {"UnknownPreset", "scene.json", R"({"version": 1, "materials": [{"name": "a", "type": "metal"}]})",
-     R"(scene.json: materials[0].type: unknown material type "metal" (expected "diffuse", "mirror" or "glass"))"},
+     R"(scene.json: materials[0].type: unknown material type "metal" (expected "diffuse", "mirror", "glass", "subsurface" or "fog"))"},
+    {"ScatterAnisotropyPastOne", "scene.json",
+     R"({"version": 1, "materials": [{"name": "a", "scatterAnisotropy": 1.5}]})",
+     "scene.json: materials[0].scatterAnisotropy: expected a number in [-1, 1], got 1.5"},
     {"UnknownAlphaMode", "scene.json",
      R"({"version": 1, "materials": [{"name": "a", "alphaMode": "cutout"}]})",
      R"(scene.json: materials[0].alphaMode: unknown alpha mode "cutout" (expected "opaque", "mask" or "blend"))"},

@@ -126,6 +126,12 @@ inline void compareMaterial(Differences& d, const std::string& at, const Materia
     PT_CHECK_FIELD(thickness);
     PT_CHECK_FIELD(attenuationColor);
     PT_CHECK_FIELD(attenuationDistance);
+    PT_CHECK_FIELD(scatterColor);
+    PT_CHECK_FIELD(scatterAnisotropy);
+    PT_CHECK_FIELD(subsurface);
+    PT_CHECK_FIELD(subsurfaceColor);
+    PT_CHECK_FIELD(subsurfaceRadius);
+    PT_CHECK_FIELD(subsurfaceRadiusScale);
     PT_CHECK_FIELD(alphaMode);
     PT_CHECK_FIELD(alphaCutoff);
     PT_CHECK_FIELD(normalScale);

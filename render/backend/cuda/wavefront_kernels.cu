@@ -147,14 +147,14 @@ __global__ void __launch_bounds__(kBlock, blocksPerSmFor(kBlock, PT_SHADOW_REGIS
     const uint32_t i = threadIndex();
     if (i >= length.value()) return;
     const uint32_t path = queue ? queue[i] : i;
-    const ShadowRay shadow = b.shadows[path];
+    ShadowRay shadow = b.shadows[path];
     if (!shadow.valid) return;
     if (consume) b.shadows[path].valid = false;  // in place: the next bounce starts clean
     PathCounters counters;
     const PathSampler sampler = PT_LOAD_MEMBER(b.paths, path, PathState, sampler);
     // The depth as tracePath passes it (after shading), so both schedules draw the same numbers.
     const uint32_t depth = PT_LOAD_MEMBER(b.paths, path, PathState, depth);
-    if (shadowRayUnoccluded<kF>(scene, shadow.ray, sampler, depth, counters)) {
+    if (shadowRayUnoccluded<kF>(scene, shadow, sampler, depth, counters)) {
         const Vec3 radiance = PT_LOAD_MEMBER(b.paths, path, PathState, radiance) + shadow.contribution;
         PT_STORE_MEMBER(b.paths, path, PathState, radiance, radiance);
     }

@@ -224,6 +224,46 @@ std::vector<MaterialCase> materialCases() {
              m.thickness = 1.0f;
          },
          kSmoothTransmission},
+        {"scattering volume",
+         [](Material& m, Scene&) {
+             m.transmission = 1.0f;
+             m.roughness = 0.0f;
+             m.thickness = 1.0f;
+             m.attenuationColor = {0.5f, 0.5f, 0.5f};
+             m.attenuationDistance = 2.0f;
+             m.scatterColor = {0.5f, 0.5f, 0.5f};
+         },
+         kSmoothTransmission | kVolume | kScatteringMedia},
+        {"scatter colour without attenuation (nothing to scatter)",
+         [](Material& m, Scene&) {
+             m.transmission = 1.0f;
+             m.roughness = 0.0f;
+             m.thickness = 1.0f;
+             m.scatterColor = {0.5f, 0.5f, 0.5f};
+         },
+         kSmoothTransmission},
+        {"subsurface",
+         [](Material& m, Scene&) {
+             m.roughness = 0.0f;
+             m.subsurface = 0.5f;
+         },
+         kSmoothTransmission | kVolume | kScatteringMedia},
+        {"index-matched absorbing volume",
+         [](Material& m, Scene&) {
+             m.transmission = 1.0f;
+             m.roughness = 0.0f;
+             m.ior = 1.0f;
+             m.thickness = 1.0f;
+             m.attenuationDistance = 2.0f;
+         },
+         kSmoothTransmission | kVolume | kIndexMatchedBoundaries},
+        {"index 1 but thin-walled: no volume to bound",
+         [](Material& m, Scene&) {
+             m.transmission = 1.0f;
+             m.roughness = 0.0f;
+             m.ior = 1.0f;
+         },
+         kSmoothTransmission},
         {"clearcoat", [](Material& m, Scene&) { m.clearcoat = 1.0f; }, kClearcoat},
         {"specular 0.5", [](Material& m, Scene&) { m.specular = 0.5f; }, kSpecularLayer},
         {"specular colour",
