@@ -2,10 +2,9 @@
 // into the SceneChanges the backend syncs, display-only edits that keep the accumulation, the
 // target spp, edit latency, undo, export and save.
 //
-// The CPU backend recompiles its scene for any edit (its report says "compile scene"), so the
-// tests wrap it in a backend that records what the session asked of it and reports the action
-// the CUDA backend takes for those changes ("materials", "TLAS", ...): what the tests check is
-// that the session passes each edit's changes and reports the backend's answer.
+// The tests wrap the CPU backend in one that records what the session asked of it and reports
+// the action the CUDA backend takes for those changes ("materials", "TLAS", ...): what the tests
+// check is that the session passes each edit's changes and reports the backend's answer.
 #include "editor/editor_session.h"
 
 #include <gtest/gtest.h>

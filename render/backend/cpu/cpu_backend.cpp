@@ -9,6 +9,7 @@
 #include <atomic>
 
 #include "render/backend/mean_image.h"
+#include "render/backend/sync_plan.h"
 #include "render/backend/toggle_states.h"
 #include "render/integrator/camera.h"
 #include "render/integrator/path_tracer.h"
@@ -17,42 +18,61 @@
 
 namespace pt {
 
-namespace {
-
-constexpr SceneChangeMask kNeedsCompile = SceneChanges::Transforms | SceneChanges::Geometry |
-                                          SceneChanges::Topology | SceneChanges::Textures |
-                                          SceneChanges::Materials;
-
-}  // namespace
-
 SyncReport CpuBackend::sync(const Scene& scene, SceneChangeMask changes, const ProgressFn& progress) {
     const auto start = Clock::now();
     SyncReport report;
     const bool resized = scene.render.width != width_ || scene.render.height != height_;
-    if (!compiled_ || (changes & kNeedsCompile)) {
-        // Material edits can change which triangles emit, so they rebuild the light table too;
-        // a full compile is the simple, correct answer on the CPU.
+    const SyncPlan plan = planSync(compiled_.get(), scene, changes);
+    SyncActions actions;
+    if (plan.reset) actions.add(SyncAction::Reset);
+    // The host has no refit: moved vertices rebuild their BVHs with everything else. Brute
+    // force (validation only) keeps no TLAS to rebuild.
+    bool compile = plan.fullBuild || plan.refitGeometry || (plan.instances && compiled_->bruteForce);
+    bool lights = plan.lights;
+    if (!compile && plan.materials) {
+        timedHostStep(report, "materials", [&] {
+            std::vector<Material> materials = compileMaterials(scene);
+            lights |= emissionChanged(compiled_->materials, materials);
+            compiled_->materials = std::move(materials);
+            updateTransparency(*compiled_);
+        });
+        actions.add(SyncAction::Materials);
+    }
+    if (!compile && plan.instances) {
+        // Transforms and visibility: the instances and the TLAS over them, O(instances log
+        // instances); a merged instance that moved changes the merged BLAS, which is rebuilt.
+        timedHostStep(report, "instances", [&] { compile = compileInstances(scene, *compiled_); });
+        if (!compile) {
+            report.bvhSeconds += timedHostStep(report, "TLAS", [&] { buildTlas(*compiled_); });
+            actions.add(SyncAction::Tlas);
+            lights = true;  // emitters name instances, and the scene's bounds weigh distant lights
+        }
+    }
+    if (compile) {
         CompileOptions options;
         options.bruteForce = toggles_.bruteForce;
         options.mergeSmallInstances = toggles_.mergeInstances;
-        auto compiled = std::make_unique<CompiledScene>(compileRenderScene(scene, options, progress));
-        compiled_ = std::move(compiled);
-        report.action = "compile scene";
+        compiled_ = std::make_unique<CompiledScene>(compileRenderScene(scene, options, progress));
+        actions.add(SyncAction::FullBuild);
         report.bvhSeconds = compiled_->stats.blasSeconds + compiled_->stats.tlasSeconds;
-    } else {
-        // The environment's distribution and the punctual lights feed the light table.
-        if (changes & (SceneChanges::Environment | SceneChanges::Lights)) compileLights(scene, *compiled_);
-        report.action = changes == SceneChanges::Display ? "nothing" : "reset";
+    } else if (lights) {
+        // The environment's sampling tables change only with the environment.
+        timedHostStep(report, "lights", [&] {
+            compileLights(scene, *compiled_,
+                          plan.environment ? LightsUpdate::All : LightsUpdate::KeepEnvironment);
+        });
+        actions.add(SyncAction::Lights);
     }
+    report.action = syncActionName(actions.most);
     compiled_->camera = makeRenderCamera(scene.camera, scene.render.width, scene.render.height);
     compiled_->settings = compileSettings(scene.render);
-    // Edits that skip the compile (camera, thin lens, environment, lights) change features too.
+    // Edits patch the compiled scene; what it uses now is what the kernels must cover.
     updateFeatures(scene, *compiled_);
     view_ = compiled_->view();
     applyIntegratorToggles(toggles_, view_.settings);
     width_ = scene.render.width;
     height_ = scene.render.height;
-    if (resized || changes != SceneChanges::Display) resetAccumulation();
+    if (resized || plan.reset) resetAccumulation();
     updateStatsFeatures();
     stats_.triangles = compiled_->stats.instancedTriangles;
     stats_.instances = compiled_->stats.instanceCount;

@@ -17,8 +17,6 @@ namespace pt::cuda {
 
 namespace {
 
-constexpr SceneChangeMask kNeedsFullBuild = SceneChanges::Topology | SceneChanges::Textures;
-
 // Runs `step` and appends what it cost (device work included) to the report.
 template <class Step>
 double timedStep(cudaStream_t stream, SyncReport& report, const char* name, Step&& step) {
@@ -56,17 +54,6 @@ std::pair<uint32_t, uint32_t> copyChangedRange(T* stored, const T* incoming, uin
     return {first, end - first};
 }
 
-bool emissionChanged(const std::vector<Material>& before, const std::vector<Material>& after) {
-    if (before.size() != after.size()) return true;
-    for (size_t i = 0; i < before.size(); ++i) {
-        const Vec3 a = before[i].emittedRadiance(), b = after[i].emittedRadiance();
-        if (!sameBytes(&a, &b, sizeof(Vec3)) || before[i].emissiveTexture.texture != after[i].emissiveTexture.texture) {
-            return true;
-        }
-    }
-    return false;
-}
-
 }  // namespace
 
 CudaBackend::CudaBackend() {
@@ -83,31 +70,25 @@ SyncReport CudaBackend::sync(const Scene& scene, SceneChangeMask changes, const 
     const auto start = Clock::now();
     SyncReport report;
     const bool resized = scene.render.width != width_ || scene.render.height != height_;
-    bool needsFullBuild = !compiled_ || (changes & kNeedsFullBuild);
-    bool lightsDirty = (changes & (SceneChanges::Environment | SceneChanges::Lights)) != 0;
+    const SyncPlan plan = planSync(compiled_.get(), scene, changes);
+    bool needsFullBuild = plan.fullBuild;
+    bool lightsDirty = plan.lights;
     bool tlasDirty = false;
-    std::string action = changes == SceneChanges::Display ? "nothing" : "reset";
-    // The report names the most expensive thing sync did; cheaper steps only replace "reset".
-    const auto promote = [&action](const char* what) {
-        if (action == "reset") action = what;
-    };
+    SyncActions actions;
+    if (plan.reset) actions.add(SyncAction::Reset);
 
-    if (!needsFullBuild && (changes & SceneChanges::Geometry)) {
-        if (const char* done = refitChangedMeshes(scene, report, needsFullBuild)) {
+    if (!needsFullBuild && plan.refitGeometry) {
+        if (const std::optional<SyncAction> done = refitChangedMeshes(scene, report, needsFullBuild)) {
             tlasDirty = true;
             hostTlasStale_ = true;
             // The light table's weights follow emitter areas and the scene's bounds. Stale weights
             // would stay unbiased (NEE and MIS read the same table), but emissive triangles
             // deserve a table that matches their areas; other lights keep theirs.
             lightsDirty |= compiled_->emitters.triangles + compiled_->emitters.spheres > 0;
-            action = done;
+            actions.add(*done);
         }
     }
-    // Instances added, removed or re-meshed: the merged BLAS needs a new plan (merged_geometry.h).
-    if (!needsFullBuild && (changes & SceneChanges::Transforms) && !mergedPlanHolds(scene, *compiled_)) {
-        needsFullBuild = true;
-    }
-    if (!needsFullBuild && (changes & SceneChanges::Transforms)) {
+    if (!needsFullBuild && plan.instances) {
         const size_t instancesBefore = compiled_->instances.size();
         // O(instances x slots): transforms, materials of each slot, statistics.
         bool mergedMoved = false;
@@ -115,16 +96,16 @@ SyncReport CudaBackend::sync(const Scene& scene, SceneChangeMask changes, const 
             mergedMoved = compileInstances(scene, *compiled_);
             device_.uploadInstances(*compiled_, stream_);
         });
-        if (mergedMoved) action = refitMergedBlas(report);
+        if (mergedMoved) actions.add(refitMergedBlas(report));
         tlasDirty = true;
         hostTlasStale_ = true;
         // Emitters name instances by index: a changed instance list needs a new table, and so
         // do moved emissive surfaces (see above).
         lightsDirty |= compiled_->instances.size() != instancesBefore ||
                        compiled_->emitters.triangles + compiled_->emitters.spheres > 0;
-        promote("TLAS");
+        actions.add(SyncAction::Tlas);
     }
-    if (!needsFullBuild && (changes & SceneChanges::Materials)) {
+    if (!needsFullBuild && plan.materials) {
         timedStep(stream_, report, "materials", [&] {
             std::vector<Material> materials = compileMaterials(scene);
             lightsDirty |= emissionChanged(compiled_->materials, materials);
@@ -132,11 +113,11 @@ SyncReport CudaBackend::sync(const Scene& scene, SceneChangeMask changes, const 
             updateTransparency(*compiled_);
             device_.uploadMaterials(*compiled_, stream_);
         });
-        promote("materials");
+        actions.add(SyncAction::Materials);
     }
     if (needsFullBuild) {
         fullBuild(scene, progress, report);
-        action = "full build";
+        actions.add(SyncAction::FullBuild);
         lightsDirty = false;
         tlasDirty = false;
         hostTlasStale_ = false;
@@ -150,14 +131,14 @@ SyncReport CudaBackend::sync(const Scene& scene, SceneChangeMask changes, const 
             hostTlasStale_ = false;
         }
         // The environment's sampling tables change only with the environment.
-        const bool environment = (changes & SceneChanges::Environment) != 0;
         timedStep(stream_, report, "lights", [&] {
-            compileLights(scene, *compiled_, environment ? LightsUpdate::All : LightsUpdate::KeepEnvironment);
-            device_.uploadLights(*compiled_, stream_, environment);
+            compileLights(scene, *compiled_,
+                          plan.environment ? LightsUpdate::All : LightsUpdate::KeepEnvironment);
+            device_.uploadLights(*compiled_, stream_, plan.environment);
         });
-        promote("lights");
+        actions.add(SyncAction::Lights);
     }
-    report.action = action;
+    report.action = syncActionName(actions.most);
     compiled_->camera = makeRenderCamera(scene.camera, scene.render.width, scene.render.height);
     compiled_->settings = compileSettings(scene.render);
     width_ = scene.render.width;
@@ -166,7 +147,7 @@ SyncReport CudaBackend::sync(const Scene& scene, SceneChangeMask changes, const 
     updateFeatures(scene, *compiled_);
     updateView();
     if (resized) sum_.resize(size_t(width_) * height_ * 3);
-    if (resized || changes != SceneChanges::Display) {
+    if (resized || plan.reset) {
         scheduler_.invalidateFirstHits();
         resetAccumulation();
     }
@@ -222,11 +203,12 @@ bool CudaBackend::uploadChangedVertices(const Mesh& mesh, uint32_t meshIndex) {
     return positions.second > 0;
 }
 
-const char* CudaBackend::refitChangedMeshes(const Scene& scene, SyncReport& report, bool& needsFullBuild) {
+std::optional<SyncAction> CudaBackend::refitChangedMeshes(const Scene& scene, SyncReport& report,
+                                                          bool& needsFullBuild) {
     const uint32_t meshBlases = device_.blasCount() - (compiled_->merged.active() ? 1u : 0u);
     if (scene.meshes.size() != meshBlases) {
         needsFullBuild = true;
-        return nullptr;
+        return std::nullopt;
     }
     std::vector<uint32_t> changed;
     timedStep(stream_, report, "upload vertices", [&] {
@@ -253,7 +235,7 @@ const char* CudaBackend::refitChangedMeshes(const Scene& scene, SyncReport& repo
             if (uploadChangedVertices(mesh, i)) changed.push_back(i);
         }
     });
-    if (needsFullBuild || changed.empty()) return nullptr;
+    if (needsFullBuild || changed.empty()) return std::nullopt;
 
     bool rebuilt = false;
     bool mergedCopiesChanged = false;  // a merged instance's mesh moved: its copies follow
@@ -263,9 +245,9 @@ const char* CudaBackend::refitChangedMeshes(const Scene& scene, SyncReport& repo
     }
     PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
     if (mergedCopiesChanged && bakeMergedGeometry(scene, *compiled_)) {
-        rebuilt |= std::string(refitMergedBlas(report)) == "rebuild";
+        rebuilt |= refitMergedBlas(report) == SyncAction::Rebuild;
     }
-    return rebuilt ? "rebuild" : "refit";
+    return rebuilt ? SyncAction::Rebuild : SyncAction::Refit;
 }
 
 bool CudaBackend::refitBlas(uint32_t i, SyncReport& report) {
@@ -301,7 +283,7 @@ bool CudaBackend::refitBlas(uint32_t i, SyncReport& report) {
     return rebuilt;
 }
 
-const char* CudaBackend::refitMergedBlas(SyncReport& report) {
+SyncAction CudaBackend::refitMergedBlas(SyncReport& report) {
     const MergedGeometry& merged = compiled_->merged;
     const uint32_t first = merged.pieces.front().firstVertex;
     timedStep(stream_, report, "upload merged vertices", [&] {
@@ -309,7 +291,7 @@ const char* CudaBackend::refitMergedBlas(SyncReport& report) {
     });
     const bool rebuilt = refitBlas(merged.blas, report);
     PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
-    return rebuilt ? "rebuild" : "refit";
+    return rebuilt ? SyncAction::Rebuild : SyncAction::Refit;
 }
 
 // Up to this many instances, the TLAS is built on the host with binned SAH (a few microseconds

@@ -10,6 +10,7 @@
 #include <cuda_runtime.h>
 
 #include <memory>
+#include <optional>
 
 #include "render/backend/backend.h"
 #include "render/backend/cuda/device_scene.h"
@@ -18,6 +19,7 @@
 #include "render/backend/cuda/path_scheduler.h"
 #include "render/backend/cuda/pinned_range.h"
 #include "render/backend/schedule_chooser.h"
+#include "render/backend/sync_plan.h"
 #include "render/scene/compile_scene.h"
 
 namespace pt::cuda {
@@ -63,9 +65,10 @@ public:
 private:
     void fullBuild(const Scene& scene, const ProgressFn& progress, SyncReport& report);
     // Uploads the vertices that changed and refits (or rebuilds) the BLASes of meshes whose
-    // positions moved; returns "refit" or "rebuild", or nullptr when no mesh moved. Sets
+    // positions moved; returns Refit or Rebuild, or nothing when no mesh moved. Sets
     // needsFullBuild when a mesh changed size (a topology edit).
-    const char* refitChangedMeshes(const Scene& scene, SyncReport& report, bool& needsFullBuild);
+    std::optional<SyncAction> refitChangedMeshes(const Scene& scene, SyncReport& report,
+                                                 bool& needsFullBuild);
     // Copies the vertices of triangle mesh `meshIndex` that differ from the host copy into it
     // and uploads them (the changed range of each array); returns whether its positions changed.
     bool uploadChangedVertices(const Mesh& mesh, uint32_t meshIndex);
@@ -73,8 +76,8 @@ private:
     // drifted past toggles_.rebuildSahRatio; returns whether it was rebuilt.
     bool refitBlas(uint32_t i, SyncReport& report);
     // Uploads the merged BLAS's vertices (merged_geometry.h, rewritten by compileInstances) and
-    // refits it; returns "refit" or "rebuild".
-    const char* refitMergedBlas(SyncReport& report);
+    // refits it; returns Refit or Rebuild.
+    SyncAction refitMergedBlas(SyncReport& report);
     void buildTlasOnDevice(SyncReport& report);
     void updateView();
     ScheduleOptions scheduleOptions() const;

@@ -1,6 +1,6 @@
-// CpuBackend's scene features: recomputed at every sync, whichever path the edit takes (a full
-// compile for materials, none for camera and environment), plus the AOVs it accumulates and the
-// brute-force toggle. The CPU runs one generic kernel: no variant to report.
+// CpuBackend's scene features: recomputed at every sync, whichever path the edit takes (the
+// materials alone for materials, no compile for camera and environment), plus the AOVs it
+// accumulates and the brute-force toggle. The CPU runs one generic kernel: no variant to report.
 #include "render/backend/cpu/cpu_backend.h"
 
 #include <gtest/gtest.h>

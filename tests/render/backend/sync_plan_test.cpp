@@ -1,0 +1,151 @@
+// planSync, the sync plan both backends execute (issue 16), and the CPU backend executing it:
+// each kind of edit takes the steps it needs and no more (a material drag builds no BVH), and
+// whatever path it takes, the image is the one a fresh compile of the edited scene renders,
+// bit for bit at equal samples.
+#include "render/backend/sync_plan.h"
+
+#include <gtest/gtest.h>
+
+#include "render/backend/cpu/cpu_backend.h"
+#include "support/render_cpu.h"
+#include "support/scene_builder.h"
+
+namespace pt {
+namespace {
+
+using test::addMaterial;
+using test::addShape;
+using test::trs;
+
+// A lit room of a few objects: a floor, two spheres, a box, an emissive quad.
+Scene room() {
+    Scene scene;
+    scene.render = {24, 24, 4, 0, 0};
+    scene.camera.position = {0, 1, 4};
+    scene.camera.lookAt = {0, 0, 0};
+    addShape(scene, ObjectKind::Quad, trs({0, -1, 0}, {0, 0, 0}, Vec3(3.0f)),
+             addMaterial(scene, "floor", test::diffuse(Vec3(0.6f))), "floor");
+    addShape(scene, ObjectKind::Sphere, trs({-0.6f, -0.5f, 0}, {0, 0, 0}, Vec3(0.5f)),
+             addMaterial(scene, "red", test::diffuse({0.7f, 0.2f, 0.1f})), "ball");
+    addShape(scene, ObjectKind::Box, trs({0.7f, -0.6f, -0.3f}, {0, 30, 0}, Vec3(0.4f)),
+             addMaterial(scene, "blue", test::diffuse({0.1f, 0.3f, 0.8f})), "box");
+    addShape(scene, ObjectKind::Quad, trs({0, 1.5f, 0}, {180, 0, 0}, Vec3(0.5f)),
+             addMaterial(scene, "lamp", test::emitter(Vec3(8.0f))), "lamp");
+    scene.environment.color = Vec3(0.05f);
+    return scene;
+}
+
+TEST(SyncPlan, EachEditTakesItsSteps) {
+    const Scene scene = room();
+    EXPECT_TRUE(planSync(nullptr, scene, SceneChanges::Camera).fullBuild) << "nothing compiled yet";
+    const CompiledScene compiled = compileRenderScene(scene);
+    const SyncPlan display = planSync(&compiled, scene, SceneChanges::Display);
+    EXPECT_FALSE(display.reset || display.fullBuild || display.materials || display.instances ||
+                 display.lights);
+    const SyncPlan camera = planSync(&compiled, scene, SceneChanges::Camera);
+    EXPECT_TRUE(camera.reset);
+    EXPECT_FALSE(camera.fullBuild || camera.materials || camera.instances || camera.lights);
+    const SyncPlan material = planSync(&compiled, scene, SceneChanges::Materials);
+    EXPECT_TRUE(material.materials && material.reset);
+    EXPECT_FALSE(material.fullBuild || material.instances || material.refitGeometry || material.lights);
+    const SyncPlan move = planSync(&compiled, scene, SceneChanges::Transforms);
+    EXPECT_TRUE(move.instances && !move.fullBuild);
+    const SyncPlan vertices = planSync(&compiled, scene, SceneChanges::Geometry);
+    EXPECT_TRUE(vertices.refitGeometry && !vertices.fullBuild);
+    const SyncPlan sky = planSync(&compiled, scene, SceneChanges::Environment);
+    EXPECT_TRUE(sky.lights && sky.environment);
+    const SyncPlan lamps = planSync(&compiled, scene, SceneChanges::Lights);
+    EXPECT_TRUE(lamps.lights && !lamps.environment);
+    for (const SceneChangeMask full :
+         {SceneChangeMask(SceneChanges::Topology), SceneChangeMask(SceneChanges::Textures)})
+        EXPECT_TRUE(planSync(&compiled, scene, full | SceneChanges::Materials).fullBuild) << full;
+}
+
+// The small instances of the room are merged into one BLAS; deleting one changes the merged
+// plan, which only a full build can follow.
+TEST(SyncPlan, AnInstanceListTheMergedBlasNoLongerHoldsNeedsAFullBuild) {
+    Scene scene = room();
+    const CompiledScene compiled = compileRenderScene(scene);
+    ASSERT_TRUE(compiled.merged.active());
+    scene.instances.pop_back();
+    scene.objects.pop_back();
+    EXPECT_TRUE(planSync(&compiled, scene, SceneChanges::Transforms).fullBuild);
+}
+
+TEST(SyncPlan, ActionsRankByCost) {
+    SyncActions actions;
+    EXPECT_STREQ(syncActionName(actions.most), "nothing");
+    for (const SyncAction a :
+         {SyncAction::Reset, SyncAction::Tlas, SyncAction::Materials, SyncAction::Lights})
+        actions.add(a);
+    EXPECT_STREQ(syncActionName(actions.most), "TLAS");
+    actions.add(SyncAction::FullBuild);
+    EXPECT_STREQ(syncActionName(actions.most), "full build");
+}
+
+// Renders `edited` after syncing `changes` into a backend that had compiled `before`, and
+// compares with a fresh compile of `edited`.
+void expectSyncMatchesAFreshCompile(const Scene& before, const Scene& edited, SceneChangeMask changes,
+                                    const char* expectedAction, bool buildsBvh) {
+    CpuBackend patched;
+    patched.sync(before, SceneChanges::All, {});
+    patched.render(2);
+    const SyncReport report = patched.sync(edited, changes, {});
+    EXPECT_EQ(report.action, expectedAction);
+    EXPECT_EQ(report.bvhSeconds > 0.0, buildsBvh) << report.bvhSeconds;
+    patched.render(8);
+    CpuBackend fresh;
+    fresh.sync(edited, SceneChanges::All, {});
+    fresh.render(8);
+    const std::vector<float> a = test::beautyOf(patched), b = test::beautyOf(fresh);
+    ASSERT_EQ(a.size(), b.size());
+    size_t differing = 0;
+    for (size_t i = 0; i < a.size(); ++i) differing += a[i] != b[i];
+    EXPECT_EQ(differing, 0u) << expectedAction;
+}
+
+TEST(CpuSync, AMaterialDragRecompilesMaterialsOnly) {
+    const Scene before = room();
+    Scene edited = before;
+    edited.materials[1].params.roughness = 0.1f;
+    edited.materials[1].params.baseColor = {0.2f, 0.8f, 0.2f};
+    expectSyncMatchesAFreshCompile(before, edited, SceneChanges::Materials, "materials", false);
+}
+
+TEST(CpuSync, EmissionEditsRebuildTheLightTable) {
+    const Scene before = room();
+    Scene edited = before;
+    edited.materials[3].params.emission = Vec3(2.0f, 4.0f, 8.0f);  // the lamp
+    edited.materials[2].params.emission = Vec3(1.0f);              // and the box starts to glow
+    expectSyncMatchesAFreshCompile(before, edited, SceneChanges::Materials, "materials", false);
+}
+
+// The first scene instance that is (or is not) in the merged BLAS.
+size_t instanceMerged(const Scene& scene, bool merged) {
+    const CompiledScene compiled = compileRenderScene(scene);
+    size_t i = 0;
+    while (i < scene.instances.size() && compiled.merged.sceneInstanceMerged[i] != merged) ++i;
+    return i;
+}
+
+TEST(CpuSync, AMoveOfAnUnmergedInstanceRebuildsTheTlasOnly) {
+    const Scene before = room();
+    const size_t ball = instanceMerged(before, false);  // analytic spheres are never merged
+    ASSERT_LT(ball, before.instances.size());
+    Scene edited = before;
+    edited.instances[ball].objectToWorld = trs({-0.4f, -0.4f, 0.2f}, {0, 0, 0}, Vec3(0.5f)).toAffine();
+    expectSyncMatchesAFreshCompile(before, edited, SceneChanges::Transforms, "TLAS", true);
+}
+
+// The host has no refit: a merged instance that moves rebuilds everything.
+TEST(CpuSync, AMoveOfAMergedInstanceRebuildsItsBlas) {
+    const Scene before = room();
+    const size_t box = instanceMerged(before, true);
+    ASSERT_LT(box, before.instances.size()) << "the room's small meshes are merged";
+    Scene edited = before;
+    edited.instances[box].objectToWorld = trs({0.5f, -0.5f, 0.0f}, {0, 0, 0}, Vec3(0.3f)).toAffine();
+    expectSyncMatchesAFreshCompile(before, edited, SceneChanges::Transforms, "full build", true);
+}
+
+}  // namespace
+}  // namespace pt
