@@ -12,5 +12,7 @@ namespace pt {
 // 0 for an empty BVH. When the root box has zero area (all primitives on one line or point)
 // areas carry no information and every node counts as if it had the root's area.
 float sahCost(const Bvh& bvh, const BvhBuildOptions& options = {});
+// The same for a BVH stored elsewhere (a BLAS inside a compiled scene's node array).
+float sahCost(const BvhNode* nodes, uint32_t count, const BvhBuildOptions& options = {});
 
 }  // namespace pt

@@ -68,13 +68,13 @@ void appendTriangles(const Mesh& mesh, size_t index, CompiledScene& out) {
     appendSlots(mesh, index, out.triangleSlots);
 }
 
+}  // namespace
+
 Aabb primitiveBounds(const CompiledScene& out, const BlasRef& blas, uint32_t p) {
     if (blas.kind == GeometryKind::Spheres) return sphereBounds(out.spheres[blas.primitiveOffset + p]);
     const TriangleIndices t = out.triangles[blas.primitiveOffset + p];
     return triangleBounds(out.positions[t.v0], out.positions[t.v1], out.positions[t.v2]);
 }
-
-}  // namespace
 
 void flattenGeometry(const Scene& scene, CompiledScene& out) {
     for (size_t i = 0; i < scene.meshes.size(); ++i) {

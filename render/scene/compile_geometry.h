@@ -1,6 +1,7 @@
 #pragma once
 // The geometry half of compileRenderScene: concatenating meshes into global arrays and
 // building one BLAS per mesh. BLAS i belongs to Scene::meshes[i].
+#include "render/bvh/aabb.h"
 #include "render/scene/compile_scene.h"
 
 namespace pt {
@@ -12,5 +13,8 @@ void flattenGeometry(const Scene& scene, CompiledScene& out);
 // Builds the BLASes (binned SAH, meshes in parallel) and fills the BlasRef BVH fields: one
 // per mesh, and the merged BLAS (merged_geometry.h) where there is one.
 void buildBlases(CompiledScene& out, const ProgressFn& progress);
+
+// The box of primitive p of `blas` as `out` holds it now (what builds and refits start from).
+Aabb primitiveBounds(const CompiledScene& out, const BlasRef& blas, uint32_t p);
 
 }  // namespace pt

@@ -13,6 +13,7 @@
 #include "render/backend/toggle_states.h"
 #include "render/integrator/camera.h"
 #include "render/integrator/path_tracer.h"
+#include "render/scene/host_refit.h"
 #include "render/scene/scene_features.h"
 #include "render/util/stopwatch.h"
 
@@ -25,10 +26,28 @@ SyncReport CpuBackend::sync(const Scene& scene, SceneChangeMask changes, const P
     const SyncPlan plan = planSync(compiled_.get(), scene, changes);
     SyncActions actions;
     if (plan.reset) actions.add(SyncAction::Reset);
-    // The host has no refit: moved vertices rebuild their BVHs with everything else. Brute
-    // force (validation only) keeps no TLAS to rebuild.
-    bool compile = plan.fullBuild || plan.refitGeometry || (plan.instances && compiled_->bruteForce);
+    // Brute force (validation only) keeps no BVH to refit.
+    bool compile = plan.fullBuild || ((plan.instances || plan.refitGeometry) && compiled_->bruteForce);
     bool lights = plan.lights;
+    bool tlas = false;
+    if (!compile && plan.refitGeometry) {
+        std::optional<std::vector<uint32_t>> moved;
+        timedHostStep(report, "copy vertices", [&] { moved = copyMovedMeshes(scene, *compiled_); });
+        compile = !moved;  // meshes changed size: a topology edit
+        const std::vector<uint32_t> movedMeshes = moved ? *moved : std::vector<uint32_t>{};
+        bool mergedMoved = false;
+        for (const uint32_t mesh : movedMeshes) {
+            compile = compile || !refitOnHost(mesh, report);
+            for (const MergedPiece& piece : compiled_->merged.pieces) mergedMoved |= piece.mesh == mesh;
+        }
+        // The merged BLAS holds world-space copies of its pieces' meshes: they follow.
+        if (!compile && mergedMoved && bakeMergedGeometry(scene, *compiled_))
+            compile = !refitOnHost(compiled_->merged.blas, report);
+        if (!compile && !movedMeshes.empty()) {
+            actions.add(SyncAction::Refit);
+            tlas = lights = true;  // the instances' world boxes moved; emitter areas changed
+        }
+    }
     if (!compile && plan.materials) {
         timedHostStep(report, "materials", [&] {
             std::vector<Material> materials = compileMaterials(scene);
@@ -39,20 +58,26 @@ SyncReport CpuBackend::sync(const Scene& scene, SceneChangeMask changes, const P
         actions.add(SyncAction::Materials);
     }
     if (!compile && plan.instances) {
-        // Transforms and visibility: the instances and the TLAS over them, O(instances log
-        // instances); a merged instance that moved changes the merged BLAS, which is rebuilt.
-        timedHostStep(report, "instances", [&] { compile = compileInstances(scene, *compiled_); });
-        if (!compile) {
-            report.bvhSeconds += timedHostStep(report, "TLAS", [&] { buildTlas(*compiled_); });
-            actions.add(SyncAction::Tlas);
-            lights = true;  // emitters name instances, and the scene's bounds weigh distant lights
+        // Transforms and visibility: the instances, then the TLAS over them; a merged instance
+        // that moved moves its copy in the merged BLAS, which is refitted.
+        bool mergedMoved = false;
+        timedHostStep(report, "instances", [&] { mergedMoved = compileInstances(scene, *compiled_); });
+        if (mergedMoved) {
+            compile = !refitOnHost(compiled_->merged.blas, report);
+            actions.add(SyncAction::Refit);
         }
+        tlas = lights = true;  // emitters name instances, and the scene's bounds weigh distant lights
+    }
+    if (!compile && tlas) {
+        report.bvhSeconds += timedHostStep(report, "TLAS", [&] { buildTlas(*compiled_); });
+        actions.add(SyncAction::Tlas);
     }
     if (compile) {
         CompileOptions options;
         options.bruteForce = toggles_.bruteForce;
         options.mergeSmallInstances = toggles_.mergeInstances;
         compiled_ = std::make_unique<CompiledScene>(compileRenderScene(scene, options, progress));
+        builtSah_.assign(compiled_->blases.size(), kSahUnknown);  // measured at a first refit
         actions.add(SyncAction::FullBuild);
         report.bvhSeconds = compiled_->stats.blasSeconds + compiled_->stats.tlasSeconds;
     } else if (lights) {
@@ -78,6 +103,12 @@ SyncReport CpuBackend::sync(const Scene& scene, SceneChangeMask changes, const P
     stats_.instances = compiled_->stats.instanceCount;
     report.seconds = secondsSince(start);
     return report;
+}
+
+bool CpuBackend::refitOnHost(uint32_t blas, SyncReport& report) {
+    if (builtSah_[blas] == kSahUnknown) builtSah_[blas] = blasSahCost(*compiled_, blas);  // still as built
+    report.bvhSeconds += timedHostStep(report, "refit BLAS", [&] { refitBlasOnHost(*compiled_, blas); });
+    return !(blasSahCost(*compiled_, blas) > toggles_.rebuildSahRatio * builtSah_[blas]);
 }
 
 void CpuBackend::setToggles(const IntegratorToggles& toggles) {

@@ -38,6 +38,10 @@ private:
                     uint32_t firstSample, uint32_t passes, PathCounters& counters);
     // stats_.features: the compiled scene's, plus the AOVs applied now and the brute-force toggle.
     void updateStatsFeatures();
+    // Refits BLAS `blas` on the host (host_refit.h); false where its SAH cost has drifted past
+    // toggles_.rebuildSahRatio times its cost as built: the caller then compiles again.
+    bool refitOnHost(uint32_t blas, SyncReport& report);
+    static constexpr float kSahUnknown = -1.0f;
     std::unique_ptr<CompiledScene> compiled_;
     RenderScene view_{};
     IntegratorToggles toggles_;
@@ -47,6 +51,7 @@ private:
     AovSet aovs_;                           // as accumulated now
     std::vector<double> aovSums_;           // render/backend/aov.h's layout; empty without AOVs
     BackendStats stats_;
+    std::vector<float> builtSah_;    // per BLAS: its SAH cost as built, kSahUnknown until a refit
     mutable HostDenoiser denoiser_;  // its memory kept from one readDenoised to the next
 };
 

@@ -86,8 +86,10 @@ TEST(SyncPlan, ActionsRankByCost) {
 // Renders `edited` after syncing `changes` into a backend that had compiled `before`, and
 // compares with a fresh compile of `edited`.
 void expectSyncMatchesAFreshCompile(const Scene& before, const Scene& edited, SceneChangeMask changes,
-                                    const char* expectedAction, bool buildsBvh) {
+                                    const char* expectedAction, bool buildsBvh,
+                                    const IntegratorToggles& toggles = {}) {
     CpuBackend patched;
+    patched.setToggles(toggles);
     patched.sync(before, SceneChanges::All, {});
     patched.render(2);
     const SyncReport report = patched.sync(edited, changes, {});
@@ -137,14 +139,31 @@ TEST(CpuSync, AMoveOfAnUnmergedInstanceRebuildsTheTlasOnly) {
     expectSyncMatchesAFreshCompile(before, edited, SceneChanges::Transforms, "TLAS", true);
 }
 
-// The host has no refit: a merged instance that moves rebuilds everything.
-TEST(CpuSync, AMoveOfAMergedInstanceRebuildsItsBlas) {
+// A merged instance that moves moves its copy in the merged BLAS, which is refitted.
+TEST(CpuSync, AMoveOfAMergedInstanceRefitsTheMergedBlas) {
     const Scene before = room();
     const size_t box = instanceMerged(before, true);
     ASSERT_LT(box, before.instances.size()) << "the room's small meshes are merged";
     Scene edited = before;
-    edited.instances[box].objectToWorld = trs({0.5f, -0.5f, 0.0f}, {0, 0, 0}, Vec3(0.3f)).toAffine();
-    expectSyncMatchesAFreshCompile(before, edited, SceneChanges::Transforms, "full build", true);
+    ObjectTransform t = before.objects[size_t(before.instances[box].object)].transform;
+    t.translate.x += 0.02f;
+    edited.instances[box].objectToWorld = t.toAffine();
+    expectSyncMatchesAFreshCompile(before, edited, SceneChanges::Transforms, "refit", true);
+    // A refit whose SAH cost drifts past the rebuild ratio (here: any refit) compiles again.
+    IntegratorToggles rebuildAlways;
+    rebuildAlways.rebuildSahRatio = 1e-3f;
+    expectSyncMatchesAFreshCompile(before, edited, SceneChanges::Transforms, "full build", true,
+                                   rebuildAlways);
+}
+
+// Vertices that move (a morph, a sculpt) refit their mesh's BLAS and, for a merged mesh, the
+// merged BLAS's copy.
+TEST(CpuSync, MovedVerticesRefitTheirBlases) {
+    const Scene before = room();
+    Scene edited = before;
+    const uint32_t boxMesh = edited.instances[instanceMerged(before, true)].mesh;
+    for (Vec3& p : edited.meshes[boxMesh].positions) p = p * 0.8f + Vec3(0.0f, 0.1f * p.x, 0.0f);
+    expectSyncMatchesAFreshCompile(before, edited, SceneChanges::Geometry, "refit", true);
 }
 
 }  // namespace

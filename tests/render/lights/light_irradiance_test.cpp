@@ -180,7 +180,8 @@ TEST(LightIrradiance, EditedLightsAndEnvironmentReachTheLightTable) {
     const double point = kAlbedo / kPi * 10.0 / 4.0;
     EXPECT_NEAR(render() / point, 1.0, 1e-3);
     scene.lights[0].intensity = 20.0f;
-    EXPECT_EQ(backend.sync(scene, SceneChanges::Lights, {}).action, "reset");
+    EXPECT_EQ(backend.sync(scene, SceneChanges::Lights, {}).action, "lights")
+        << "the light table, and no compile";
     EXPECT_NEAR(render() / point, 2.0, 2e-3);
     scene.environment.color = Vec3(0.5f);
     backend.sync(scene, SceneChanges::Environment, {});

@@ -1,0 +1,75 @@
+#include "render/scene/host_refit.h"
+
+#include <cstring>
+
+#include "render/bvh/sah_cost.h"
+#include "render/scene/compile_geometry.h"
+
+namespace pt {
+
+namespace {
+
+template <class T>
+bool copyIfDifferent(T* stored, const std::vector<T>& incoming) {
+    const size_t bytes = incoming.size() * sizeof(T);
+    if (bytes == 0 || std::memcmp(stored, incoming.data(), bytes) == 0) return false;
+    std::memcpy(stored, incoming.data(), bytes);
+    return true;
+}
+
+}  // namespace
+
+void refitBlasOnHost(CompiledScene& compiled, uint32_t index) {
+    const BlasRef& blas = compiled.blases[index];
+    BvhNode* nodes = compiled.blasNodes.data() + blas.nodeOffset;
+    const uint32_t* prims = compiled.blasPrimIndices.data() + blas.primIndexOffset;
+    for (uint32_t i = blas.nodeCount; i-- > 0;) {
+        BvhNode& node = nodes[i];
+        Aabb box;
+        if (node.isLeaf()) {
+            for (uint32_t k = 0; k < node.count; ++k)
+                box.grow(primitiveBounds(compiled, blas, prims[node.leftOrFirst + k]));
+        } else if (blas.primitiveCount > 0) {
+            for (const BvhNode& child : {nodes[node.leftOrFirst], nodes[node.leftOrFirst + 1]}) {
+                box.grow(Aabb{child.lo, child.hi});
+            }
+        }
+        node.lo = box.lo;
+        node.hi = box.hi;
+    }
+}
+
+float blasSahCost(const CompiledScene& compiled, uint32_t index) {
+    const BlasRef& blas = compiled.blases[index];
+    return blas.primitiveCount > 0 ? sahCost(compiled.blasNodes.data() + blas.nodeOffset, blas.nodeCount)
+                                   : 0.0f;
+}
+
+std::optional<std::vector<uint32_t>> copyMovedMeshes(const Scene& scene, CompiledScene& compiled) {
+    const uint32_t meshBlases = uint32_t(compiled.blases.size()) - (compiled.merged.active() ? 1u : 0u);
+    if (scene.meshes.size() != meshBlases) return std::nullopt;
+    std::vector<uint32_t> moved;
+    size_t firstVertex = 0;  // flattenGeometry lays the triangle meshes' vertices out in order
+    for (uint32_t i = 0; i < meshBlases; ++i) {
+        const Mesh& mesh = scene.meshes[i];
+        const BlasRef& blas = compiled.blases[i];
+        if (mesh.kind != blas.kind || mesh.primitiveCount() != blas.primitiveCount) return std::nullopt;
+        if (mesh.kind == GeometryKind::Spheres) {
+            if (copyIfDifferent(compiled.spheres.data() + blas.primitiveOffset, mesh.spheres))
+                moved.push_back(i);
+            continue;
+        }
+        const size_t count = mesh.positions.size();
+        if (firstVertex + count > compiled.positions.size()) return std::nullopt;
+        // Normals and tangents change shading, not boxes: copied, not refitted.
+        if (mesh.normals.size() == count)
+            copyIfDifferent(compiled.normals.data() + firstVertex, mesh.normals);
+        if (!compiled.tangents.empty() && mesh.tangents.size() == count)
+            copyIfDifferent(compiled.tangents.data() + firstVertex, mesh.tangents);
+        if (copyIfDifferent(compiled.positions.data() + firstVertex, mesh.positions)) moved.push_back(i);
+        firstVertex += count;
+    }
+    return moved;
+}
+
+}  // namespace pt
