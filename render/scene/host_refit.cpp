@@ -1,5 +1,8 @@
 #include "render/scene/host_refit.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <cstring>
 
 #include "render/bvh/sah_cost.h"
@@ -23,19 +26,28 @@ void refitBlasOnHost(CompiledScene& compiled, uint32_t index) {
     const BlasRef& blas = compiled.blases[index];
     BvhNode* nodes = compiled.blasNodes.data() + blas.nodeOffset;
     const uint32_t* prims = compiled.blasPrimIndices.data() + blas.primIndexOffset;
+    // The leaves hold every primitive, so their boxes are the work: in parallel. The interior
+    // nodes are one union of two children each, after.
+    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, blas.nodeCount, 1024),
+                      [&](const tbb::blocked_range<uint32_t>& r) {
+                          for (uint32_t i = r.begin(); i != r.end(); ++i) {
+                              BvhNode& node = nodes[i];
+                              if (!node.isLeaf()) continue;
+                              Aabb box;
+                              for (uint32_t k = 0; k < node.count; ++k)
+                                  box.grow(primitiveBounds(compiled, blas, prims[node.leftOrFirst + k]));
+                              node.lo = box.lo;
+                              node.hi = box.hi;
+                          }
+                      });
+    if (blas.primitiveCount == 0) return;  // the single empty root stays empty
     for (uint32_t i = blas.nodeCount; i-- > 0;) {
         BvhNode& node = nodes[i];
-        Aabb box;
-        if (node.isLeaf()) {
-            for (uint32_t k = 0; k < node.count; ++k)
-                box.grow(primitiveBounds(compiled, blas, prims[node.leftOrFirst + k]));
-        } else if (blas.primitiveCount > 0) {
-            for (const BvhNode& child : {nodes[node.leftOrFirst], nodes[node.leftOrFirst + 1]}) {
-                box.grow(Aabb{child.lo, child.hi});
-            }
-        }
-        node.lo = box.lo;
-        node.hi = box.hi;
+        if (node.isLeaf()) continue;
+        const BvhNode& left = nodes[node.leftOrFirst];
+        const BvhNode& right = nodes[node.leftOrFirst + 1];
+        node.lo = vmin(left.lo, right.lo);
+        node.hi = vmax(left.hi, right.hi);
     }
 }
 
