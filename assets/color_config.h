@@ -4,7 +4,7 @@
 // display pixels, on the CPU for file export (assets/color_processor.h) and in GLSL for the
 // editor (assets/color_gpu_shader.h). The project ships scenes/ocio/config.ocio.
 //
-// Only built with PT_OCIO=ON (PT_HAS_OCIO is then defined for every target linking
+// Only built with PT_OCIO=ON (PT_HAVE_OCIO is then defined for every target linking
 // pt_assets); OpenColorIO's own headers stay out of this one.
 #include <memory>
 #include <string>

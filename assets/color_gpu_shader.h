@@ -7,7 +7,7 @@
 // vec4 <functionName>(vec4 inPixel). The text is OpenColorIO's GLSL 4.0 flavour: its 1.30 one
 // samples with texture1D/2D/3D, which core-profile 3.30 lacks, and the two differ in nothing
 // else; tests/assets/color_gpu_shader_test.cpp compiles the shipped views as 3.30 core with
-// glslangValidator where it is installed. Only with PT_HAS_OCIO.
+// glslangValidator where it is installed. Only with PT_HAVE_OCIO.
 #include <cstdint>
 #include <string>
 #include <vector>

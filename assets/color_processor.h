@@ -21,7 +21,7 @@ namespace pt {
 class DisplayProcessor {
 public:
     // OpenColorIO view. `view` must be complete (ColorConfig::resolve); throws InputError when
-    // OpenColorIO cannot build the processor. Only with PT_HAS_OCIO (the constructor is not
+    // OpenColorIO cannot build the processor. Only with PT_HAVE_OCIO (the constructor is not
     // compiled without it).
     DisplayProcessor(const ColorConfig& config, const ViewTransform& view, float exposureStops);
     // A built-in operator, exposure `builtin.exposureStops` (`builtin.dither` is not read:

@@ -11,7 +11,7 @@ std::string ColorView::key() const {
 
 ColorView resolveColorView(const std::string& flagPath, const ColorSettings& settings, const ColorView& current) {
     ColorView next;
-#ifdef PT_HAS_OCIO
+#ifdef PT_HAVE_OCIO
     const std::string path = resolveColorConfigPath(flagPath, settings.config);
     try {
         next.config = current.config && current.config->path() == path ? current.config : ColorConfig::load(path);
@@ -37,7 +37,7 @@ ColorView resolveColorView(const std::string& flagPath, const ColorSettings& set
 }
 
 DisplayProcessor displayProcessorFor(const ColorView& color, const ViewerSettings& viewer) {
-#ifdef PT_HAS_OCIO
+#ifdef PT_HAVE_OCIO
     if (color.config && !viewer.builtinDisplay) {
         return DisplayProcessor(*color.config, color.view, viewer.display.exposureStops);
     }

@@ -2,7 +2,7 @@
 // EditorSession: the editor without a window. It holds the document, its undo history and a
 // backend, turns edits into the least backend work (their SceneChanges), and renders. The
 // window (editor/ui) drives it from two threads through RenderWorker; tests and the
-// `pt-render editbench` latency benchmark drive it directly, so what they measure is the
+// edit-latency figures of `pt-render bench` drive it directly, so what they measure is the
 // editor's own path from an edit to a frame.
 #include <atomic>
 #include <memory>

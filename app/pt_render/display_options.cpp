@@ -63,7 +63,7 @@ DisplayRequest parseDisplayOptions(const Options& o) {
     }
     if (const std::optional<std::string> stops = o.value("--exposure")) r.exposureStops = parseStops(*stops);
     r.dither = !o.has("--no-dither");
-#if !defined(PT_HAS_OCIO)
+#if !defined(PT_HAVE_OCIO)
     for (const char* flag : kOcioFlags) {
         if (o.has(flag))
             throw UsageError(std::string(flag) +
@@ -74,7 +74,7 @@ DisplayRequest parseDisplayOptions(const Options& o) {
 }
 
 DisplayProcessor makeDisplayProcessor(const DisplayRequest& request, const ColorSettings& scene) {
-#if defined(PT_HAS_OCIO)
+#if defined(PT_HAVE_OCIO)
     if (!request.toneMapper) {
         const std::string path = resolveColorConfigPath(request.ocioConfig, scene.config);
         const std::shared_ptr<const ColorConfig> config = ColorConfig::load(path);

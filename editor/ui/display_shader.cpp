@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#ifdef PT_HAS_OCIO
+#ifdef PT_HAVE_OCIO
 #include "assets/color_gpu_shader.h"
 #endif
 
@@ -182,7 +182,7 @@ GLuint link(const std::string& fragmentSource) {
 
 DisplayShader::DisplayShader(const GpuColorShader* color) {
     std::string source = kUniforms;
-#ifdef PT_HAS_OCIO
+#ifdef PT_HAVE_OCIO
     if (color) {
         source += color->glsl;
         source += "\nvec4 ptOcioView(vec4 c) { return " + color->functionName + "(c); }\n";
@@ -196,7 +196,7 @@ DisplayShader::DisplayShader(const GpuColorShader* color) {
 #endif
     source += kBody;
     program_ = link(source);
-#ifdef PT_HAS_OCIO
+#ifdef PT_HAVE_OCIO
     if (!color) return;
     for (const GpuLut& lut : color->luts) {
         Lut made{lut.depth > 1 ? GLenum(GL_TEXTURE_3D) : lut.height > 1 ? GLenum(GL_TEXTURE_2D) : GLenum(GL_TEXTURE_1D),

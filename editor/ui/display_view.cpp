@@ -7,7 +7,7 @@
 
 #include "render/backend/backend.h"
 
-#ifdef PT_HAS_OCIO
+#ifdef PT_HAVE_OCIO
 #include "assets/color_gpu_shader.h"
 #endif
 
@@ -61,7 +61,7 @@ void DisplayView::setColorView(const ColorView& color) {
     colorKey_ = key;
     shaderError_.clear();
     try {
-#ifdef PT_HAS_OCIO
+#ifdef PT_HAVE_OCIO
         if (color.config) {
             const GpuColorShader ocio = makeGpuColorShader(*color.config, color.view);
             shader_ = std::make_unique<DisplayShader>(&ocio);

@@ -55,7 +55,7 @@ TEST(RenderDisplay, BuiltinOperatorWithExposureAndDither) {
     EXPECT_EQ(metadataValue(metadata, "pt:dither"), "on");
 }
 
-#if defined(PT_HAS_OCIO)
+#if defined(PT_HAVE_OCIO)
 TEST(RenderDisplay, OcioViewOfTheShippedConfig) {
     PT_REQUIRE_OIIO();
     std::vector<float> beauty;
@@ -86,7 +86,7 @@ TEST(RenderDisplay, BadDisplayFlagsFailWithOneClearLine) {
         {"--exposure bright" + png, 2, "--exposure"},
         {"--view AgX -o " + test::tempDir() + "/only.exr", 2, "--png"},
     };
-#if defined(PT_HAS_OCIO)
+#if defined(PT_HAVE_OCIO)
     cases.push_back({"--view Nope" + png, 1, "\"Nope\""});
     cases.push_back({"--ocio /nonexistent/config.ocio" + png, 1, "/nonexistent/config.ocio"});
 #else

@@ -1,7 +1,7 @@
 // OpenColorIO configs: the shipped config (valid, its built-in transform names known to the
 // installed library, the displays / views / looks the editor lists), which config is chosen,
 // and the errors for bad configs and unknown names.
-#if defined(PT_HAS_OCIO)
+#if defined(PT_HAVE_OCIO)
 #include "assets/color_config.h"
 
 #include <OpenColorIO/OpenColorIO.h>
@@ -169,4 +169,4 @@ TEST(ColorConfig, ResolveFillsDefaultsAndNamesUnknownChoicesWithTheAlternatives)
 
 }  // namespace
 }  // namespace pt
-#endif  // PT_HAS_OCIO
+#endif  // PT_HAVE_OCIO

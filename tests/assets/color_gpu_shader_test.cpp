@@ -1,6 +1,6 @@
 // OpenColorIO's GLSL for the editor: the function it defines and the lookup tables it
 // samples, as plain data. (The GLSL-against-CPU image comparison runs with the editor.)
-#if defined(PT_HAS_OCIO)
+#if defined(PT_HAVE_OCIO)
 #include "assets/color_gpu_shader.h"
 
 #include <OpenColorIO/OpenColorIO.h>
@@ -91,4 +91,4 @@ TEST(ColorGpuShader, ShippedViewsCompileAsGlsl330Core) {
 
 }  // namespace
 }  // namespace pt
-#endif  // PT_HAS_OCIO
+#endif  // PT_HAVE_OCIO

@@ -62,7 +62,7 @@ TEST(DisplayProcessorBuiltin, MatchesEncodeDisplay8ForEveryOperator) {
     EXPECT_EQ(DisplayProcessor(DisplaySettings{}).describe(), "built-in: standard");
 }
 
-#if defined(PT_HAS_OCIO)
+#if defined(PT_HAVE_OCIO)
 
 std::vector<float> applied(const DisplayProcessor& p, const std::vector<Rgb>& colours) {
     std::vector<float> rgba = toRgba(colours);
@@ -216,7 +216,7 @@ TEST_F(DisplayProcessorOcio, LargeImagesAreProcessedInParallelChunksAlike) {
     }
 }
 
-#endif  // PT_HAS_OCIO
+#endif  // PT_HAVE_OCIO
 
 }  // namespace
 }  // namespace pt

@@ -11,7 +11,7 @@
 namespace pt::editor {
 namespace {
 
-#ifdef PT_HAS_OCIO
+#ifdef PT_HAVE_OCIO
 
 TEST(ColorView, ResolvesTheScenesViewInTheShippedConfig) {
     ColorSettings settings;

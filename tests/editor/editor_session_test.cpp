@@ -513,7 +513,7 @@ TEST(EditorSession, ExportLayersAccumulateAfterTheirEditAndGoIntoTheExr) {
     EXPECT_EQ(image.attribute("pt:spp"), "4");
     EXPECT_EQ(image.attribute("pt:camera_position"), "0 0 5");
     EXPECT_EQ(image.attribute("pt:view"), display.describe());
-#ifdef PT_HAS_OCIO
+#ifdef PT_HAVE_OCIO
     EXPECT_NE(image.attribute("pt:view").find("sRGB / AgX"), std::string::npos) << image.attribute("pt:view");
     EXPECT_EQ(image.attribute("pt:ocio_config"), color.config->path());
     // The PNG holds the view's bytes: those of the CPU display path for the same beauty.

@@ -166,7 +166,7 @@ TEST_F(DisplayGl, BuiltInOperatorsMatchTheCpu) {
 }
 
 TEST_F(DisplayGl, EveryViewOfTheShippedConfigMatchesTheCpu) {
-#ifndef PT_HAS_OCIO
+#ifndef PT_HAVE_OCIO
     GTEST_SKIP() << "built without OpenColorIO (PT_OCIO=OFF)";
 #else
     const std::string path = shippedColorConfigPath();
