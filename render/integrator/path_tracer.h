@@ -228,8 +228,7 @@ PT_HD void traceFusedStep(const RenderScene& scene, PathState& state, ShadowRay&
     ++counters.rays;
     const bool found = intersectScene<kF>(scene, shadowTurn ? shadow.ray : state.ray, shadowTurn, hit);
     if (shadowTurn) {
-        if (!found) attenuateUnblockedShadowRay<kF>(scene, shadow);
-        if (!found || shadowRayPassesBlockers<kF>(scene, shadow, state.sampler, state.depth, counters)) {
+        if (shadowRayGetsThrough<kF>(scene, shadow, found, state.sampler, state.depth, counters)) {
             state.radiance += shadow.contribution;
         }
         shadow.valid = false;

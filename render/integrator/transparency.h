@@ -88,18 +88,26 @@ PT_HD bool shadowRayPassesBlockers(const RenderScene& scene, ShadowRay& shadow, 
     }
 }
 
-// Whether nothing opaque lies on `shadow`'s ray (0 < t < tMax), its contribution attenuated by
-// the media on the way. `depth` names the bounce the ray leaves from, for the
-// stochastic-transparency numbers.
-template <FeatureSet kF = kAllFeatures>
-PT_HD bool shadowRayUnoccluded(const RenderScene& scene, ShadowRay& shadow, const PathSampler& sampler,
-                               uint32_t depth, PathCounters& counters) {
-    ++counters.rays;
-    if (!intersectAny<kF>(scene, shadow.ray)) {
+// After the any-hit query on `shadow`'s ray (`found`: it met something): whether its light gets
+// through, its contribution attenuated by the media on the way. `depth` names the bounce the
+// ray leaves from, for the stochastic-transparency numbers.
+template <FeatureSet kF>
+PT_HD bool shadowRayGetsThrough(const RenderScene& scene, ShadowRay& shadow, bool found,
+                                const PathSampler& sampler, uint32_t depth, PathCounters& counters) {
+    if (!found) {
         attenuateUnblockedShadowRay<kF>(scene, shadow);
         return true;
     }
     return shadowRayPassesBlockers<kF>(scene, shadow, sampler, depth, counters);
+}
+
+// Whether nothing opaque lies on `shadow`'s ray (0 < t < tMax): the any-hit query, then the above.
+template <FeatureSet kF = kAllFeatures>
+PT_HD bool shadowRayUnoccluded(const RenderScene& scene, ShadowRay& shadow, const PathSampler& sampler,
+                               uint32_t depth, PathCounters& counters) {
+    ++counters.rays;
+    const bool found = intersectAny<kF>(scene, shadow.ray);
+    return shadowRayGetsThrough<kF>(scene, shadow, found, sampler, depth, counters);
 }
 
 // If the surface `state.ray` hit is transparent there, moves the ray past it and returns true.

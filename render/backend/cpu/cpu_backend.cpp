@@ -31,19 +31,9 @@ SyncReport CpuBackend::sync(const Scene& scene, SceneChangeMask changes, const P
     bool lights = plan.lights;
     bool tlas = false;
     if (!compile && plan.refitGeometry) {
-        std::optional<std::vector<uint32_t>> moved;
-        timedHostStep(report, "copy vertices", [&] { moved = copyMovedMeshes(scene, *compiled_); });
-        compile = !moved;  // meshes changed size: a topology edit
-        const std::vector<uint32_t> movedMeshes = moved ? *moved : std::vector<uint32_t>{};
-        bool mergedMoved = false;
-        for (const uint32_t mesh : movedMeshes) {
-            compile = compile || !refitOnHost(mesh, report);
-            for (const MergedPiece& piece : compiled_->merged.pieces) mergedMoved |= piece.mesh == mesh;
-        }
-        // The merged BLAS holds world-space copies of its pieces' meshes: they follow.
-        if (!compile && mergedMoved && bakeMergedGeometry(scene, *compiled_))
-            compile = !refitOnHost(compiled_->merged.blas, report);
-        if (!compile && !movedMeshes.empty()) {
+        bool refitted = false;
+        compile = !refitMovedMeshes(scene, report, refitted);
+        if (!compile && refitted) {
             actions.add(SyncAction::Refit);
             tlas = lights = true;  // the instances' world boxes moved; emitter areas changed
         }
@@ -103,6 +93,22 @@ SyncReport CpuBackend::sync(const Scene& scene, SceneChangeMask changes, const P
     stats_.instances = compiled_->stats.instanceCount;
     report.seconds = secondsSince(start);
     return report;
+}
+
+bool CpuBackend::refitMovedMeshes(const Scene& scene, SyncReport& report, bool& refitted) {
+    std::optional<std::vector<uint32_t>> moved;
+    timedHostStep(report, "copy vertices", [&] { moved = copyMovedMeshes(scene, *compiled_); });
+    if (!moved) return false;  // meshes changed size: a topology edit
+    bool mergedMoved = false;
+    for (const uint32_t mesh : *moved) {
+        if (!refitOnHost(mesh, report)) return false;
+        for (const MergedPiece& piece : compiled_->merged.pieces) mergedMoved |= piece.mesh == mesh;
+    }
+    // The merged BLAS holds world-space copies of its pieces' meshes: they follow.
+    if (mergedMoved && bakeMergedGeometry(scene, *compiled_) && !refitOnHost(compiled_->merged.blas, report))
+        return false;
+    refitted = !moved->empty();
+    return true;
 }
 
 bool CpuBackend::refitOnHost(uint32_t blas, SyncReport& report) {

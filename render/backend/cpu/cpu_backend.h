@@ -41,6 +41,10 @@ private:
     // Refits BLAS `blas` on the host (host_refit.h); false where its SAH cost has drifted past
     // toggles_.rebuildSahRatio times its cost as built: the caller then compiles again.
     bool refitOnHost(uint32_t blas, SyncReport& report);
+    // After a vertex edit: copies the moved meshes and refits their BLASes and the merged copies
+    // of them (`refitted`: any moved). False where only a compile will do (a topology edit, or a
+    // refit past the SAH drift ratio).
+    bool refitMovedMeshes(const Scene& scene, SyncReport& report, bool& refitted);
     static constexpr float kSahUnknown = -1.0f;
     std::unique_ptr<CompiledScene> compiled_;
     RenderScene view_{};
