@@ -2,8 +2,8 @@
 
 namespace pt::editor {
 
-SceneChangeMask CommandStack::execute(Document& doc, std::unique_ptr<EditCommand> command) {
-    const SceneChangeMask changes = command->apply(doc);
+SceneDelta CommandStack::execute(Document& doc, std::unique_ptr<EditCommand> command) {
+    const SceneDelta changes = command->apply(doc);
     ++revision_;
     redo_.clear();
     const std::string key = command->mergeKey();
@@ -16,32 +16,32 @@ SceneChangeMask CommandStack::execute(Document& doc, std::unique_ptr<EditCommand
     return changes;
 }
 
-SceneChangeMask CommandStack::cancelMerge(Document& doc) {
+SceneDelta CommandStack::cancelMerge(Document& doc) {
     if (!mergeOpen_ || undo_.empty()) return SceneChanges::None;
     mergeOpen_ = false;
-    const SceneChangeMask changes = undo_.back().command->revert(doc);
+    const SceneDelta changes = undo_.back().command->revert(doc);
     undo_.pop_back();
     ++revision_;
     return changes;
 }
 
-SceneChangeMask CommandStack::undo(Document& doc) {
+SceneDelta CommandStack::undo(Document& doc) {
     mergeOpen_ = false;
     if (undo_.empty()) return SceneChanges::None;
     Entry entry = std::move(undo_.back());
     undo_.pop_back();
-    const SceneChangeMask changes = entry.command->revert(doc);
+    const SceneDelta changes = entry.command->revert(doc);
     ++revision_;
     redo_.push_back(std::move(entry));
     return changes;
 }
 
-SceneChangeMask CommandStack::redo(Document& doc) {
+SceneDelta CommandStack::redo(Document& doc) {
     mergeOpen_ = false;
     if (redo_.empty()) return SceneChanges::None;
     Entry entry = std::move(redo_.back());
     redo_.pop_back();
-    const SceneChangeMask changes = entry.command->apply(doc);
+    const SceneDelta changes = entry.command->apply(doc);
     ++revision_;
     undo_.push_back(std::move(entry));
     return changes;

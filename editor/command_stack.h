@@ -13,13 +13,13 @@ namespace pt::editor {
 class CommandStack {
 public:
     // Applies `command` to `doc` and records it; returns what it changed.
-    SceneChangeMask execute(Document& doc, std::unique_ptr<EditCommand> command);
-    SceneChangeMask undo(Document& doc);  // None when there is nothing to undo
-    SceneChangeMask redo(Document& doc);
+    SceneDelta execute(Document& doc, std::unique_ptr<EditCommand> command);
+    SceneDelta undo(Document& doc);  // None when there is nothing to undo
+    SceneDelta redo(Document& doc);
     void closeMerge() { mergeOpen_ = false; }
     // Reverts the open drag's step and forgets it, as if the drag never happened (Esc during a
     // gizmo drag): no redo entry is left. None where no drag is open.
-    SceneChangeMask cancelMerge(Document& doc);
+    SceneDelta cancelMerge(Document& doc);
     void clear();
 
     bool canUndo() const { return !undo_.empty(); }

@@ -1,7 +1,8 @@
 #pragma once
 // EditCommand: one undoable edit of a Document (STYLE.md rule 6: edits are commands that report
-// what they changed). apply() and revert() each return the SceneChanges bits the backend must
-// act on, so an undo costs the same sync work as the edit it undoes.
+// what they changed). apply() and revert() each return the SceneDelta the backend must act on
+// (the change bits and, where the command knows them, the materials, meshes or instances it
+// touched), so an undo costs the same sync work as the edit it undoes.
 #include <functional>
 #include <memory>
 #include <string>
@@ -16,8 +17,8 @@ class EditCommand {
 public:
     virtual ~EditCommand() = default;
     virtual std::string label() const = 0;  // for the Edit menu: "Undo <label>"
-    virtual SceneChangeMask apply(Document& doc) = 0;
-    virtual SceneChangeMask revert(Document& doc) = 0;
+    virtual SceneDelta apply(Document& doc) = 0;
+    virtual SceneDelta revert(Document& doc) = 0;
     // A slider drag produces one command per frame; while the drag lasts, each new command is
     // folded into the previous one (keeping the first "before" and the last "after"), so the
     // whole drag is one undo step. Only commands with the same non-empty mergeKey fold.
@@ -33,18 +34,22 @@ template <class T>
 class ValueCommand : public EditCommand {
 public:
     using Assign = std::function<void(Document&, const T&)>;
-    ValueCommand(std::string label, std::string mergeKey, SceneChangeMask changes, T before, T after,
+    ValueCommand(std::string label, std::string mergeKey, SceneDelta changes, T before, T after,
                  Assign assign)
-        : label_(std::move(label)), mergeKey_(std::move(mergeKey)), changes_(changes),
-          before_(std::move(before)), after_(std::move(after)), assign_(std::move(assign)) {}
+        : label_(std::move(label)),
+          mergeKey_(std::move(mergeKey)),
+          changes_(changes),
+          before_(std::move(before)),
+          after_(std::move(after)),
+          assign_(std::move(assign)) {}
 
     std::string label() const override { return label_; }
     std::string mergeKey() const override { return mergeKey_; }
-    SceneChangeMask apply(Document& doc) override {
+    SceneDelta apply(Document& doc) override {
         assign_(doc, after_);
         return changes_;
     }
-    SceneChangeMask revert(Document& doc) override {
+    SceneDelta revert(Document& doc) override {
         assign_(doc, before_);
         return changes_;
     }
@@ -57,13 +62,13 @@ public:
 
 private:
     std::string label_, mergeKey_;
-    SceneChangeMask changes_;
+    SceneDelta changes_;
     T before_, after_;
     Assign assign_;
 };
 
 template <class T>
-std::unique_ptr<EditCommand> makeValueCommand(std::string label, std::string mergeKey, SceneChangeMask changes,
+std::unique_ptr<EditCommand> makeValueCommand(std::string label, std::string mergeKey, SceneDelta changes,
                                               T before, T after, typename ValueCommand<T>::Assign assign) {
     return std::make_unique<ValueCommand<T>>(std::move(label), std::move(mergeKey), changes, std::move(before),
                                              std::move(after), std::move(assign));

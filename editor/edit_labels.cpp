@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "render/backend/aov.h"
+#include "render/backend/toggle_table.h"
 
 namespace pt::editor {
 namespace {
@@ -61,21 +62,10 @@ std::string renderSettingsEditLabel(const RenderSettings& before, const RenderSe
 }
 
 std::string togglesEditLabel(const IntegratorToggles& before, const IntegratorToggles& after) {
-    return Label("Renderer")
-        .onOff("next-event estimation", before.nextEventEstimation, after.nextEventEstimation)
-        .onOff("MIS", before.multipleImportance, after.multipleImportance)
-        .onOff("Russian roulette", before.russianRoulette, after.russianRoulette)
-        .onOff("BVH off", before.bruteForce, after.bruteForce)
-        .onOff("merged instances", before.mergeInstances, after.mergeInstances)
-        .field("firefly clamp", before.clampRadiance, after.clampRadiance)
-        .onOff("pixel jitter", before.pixelJitter, after.pixelJitter)
-        .onOff("auto schedule", before.autoSchedule, after.autoSchedule)
-        .onOff("megakernel", before.megakernel, after.megakernel)
-        .onOff("path regeneration", before.pathRegeneration, after.pathRegeneration)
+    Label label("Renderer");
+    for (const ToggleRow& row : toggleTable()) label.onOff(row.editLabel, row.get(before), row.get(after));
+    return label.field("firefly clamp", before.clampRadiance, after.clampRadiance)
         .field("kernel variant", before.kernelVariant, after.kernelVariant)
-        .onOff("stream compaction", before.streamCompaction, after.streamCompaction)
-        .onOff("material sort", before.materialSort, after.materialSort)
-        .onOff("first-hit cache", before.firstHitCache, after.firstHitCache)
         .field("rebuild ratio", before.rebuildSahRatio, after.rebuildSahRatio)
         .str();
 }

@@ -43,9 +43,9 @@ void EditorSession::adopt(Scene scene) {
     lastEdit_ = {};
 }
 
-void EditorSession::noteEdit(const std::string& label, SceneChangeMask changes, Clock::time_point start) {
+void EditorSession::noteEdit(const std::string& label, const SceneDelta& changes, Clock::time_point start) {
     pending_ |= changes;
-    if ((changes & ~SceneChangeMask(SceneChanges::Display)) == 0) return;  // nothing to render again
+    if ((changes.mask & ~SceneChangeMask(SceneChanges::Display)) == 0) return;  // nothing to render again
     interrupt_ = true;  // the samples in flight are of the scene before the edit
     std::lock_guard<std::mutex> lock(statusMutex_);
     lastEdit_ = {};
@@ -54,10 +54,10 @@ void EditorSession::noteEdit(const std::string& label, SceneChangeMask changes, 
     editStart_ = start;
 }
 
-SceneChangeMask EditorSession::execute(std::unique_ptr<EditCommand> command) {
+SceneDelta EditorSession::execute(std::unique_ptr<EditCommand> command) {
     const auto start = Clock::now();  // the edit's latency includes its own apply
     const std::string label = command->label();
-    const SceneChangeMask changes = history_.execute(doc_, std::move(command));
+    const SceneDelta changes = history_.execute(doc_, std::move(command));
     noteEdit(label, changes, start);
     return changes;
 }
@@ -74,7 +74,7 @@ bool EditorSession::cancelDrag() {
     const auto start = Clock::now();
     const std::string label = "Cancel " + history_.undoLabel();
     const size_t depth = history_.undoDepth();
-    const SceneChangeMask changes = history_.cancelMerge(doc_);
+    const SceneDelta changes = history_.cancelMerge(doc_);
     if (history_.undoDepth() == depth) return false;
     noteEdit(label, changes, start);
     return true;
@@ -143,7 +143,7 @@ void EditorSession::save(const std::string& path) {
 }
 
 SyncReport EditorSession::sync(const ProgressFn& progress) {
-    SceneChangeMask changes = pending_ & ~SceneChangeMask(SceneChanges::Display);
+    SceneDelta changes = pending_.without(SceneChanges::Display);
     pending_ = SceneChanges::None;
     interrupt_ = false;  // the edits that raised it are applied now
     const uint64_t document = documentSerial_;
@@ -153,22 +153,22 @@ SyncReport EditorSession::sync(const ProgressFn& progress) {
     const AovMask shown = aov >= 0 && aov < int32_t(Aov::Count) ? aovBit(Aov(aov)) : 0u;
     // The denoiser's guides while it is on; once it is off they stay (turning it off is a
     // display change) until an edit restarts the accumulation anyway.
-    if (changes != SceneChanges::None || doc_.viewer.denoise) keepDenoiseGuides_ = doc_.viewer.denoise;
+    if (changes.mask != SceneChanges::None || doc_.viewer.denoise) keepDenoiseGuides_ = doc_.viewer.denoise;
     const AovMask guides = keepDenoiseGuides_ ? kDenoiseGuideAovs : 0u;
     const AovMask wanted = shown | (doc_.viewer.exportAovs & kAllAovs) | guides;
     if (backend_->aovs() != wanted) {
-        if (changes == SceneChanges::None && !needsFreshGuides(wanted)) {
+        if (changes.mask == SceneChanges::None && !needsFreshGuides(wanted)) {
             backend_->changeAovs(wanted);  // a display change: the beauty keeps its samples
         } else {
             backend_->setAovs(wanted);  // from the reset that follows
             changes |= SceneChanges::Settings;
         }
     }
-    if (changes == SceneChanges::None) {
+    if (changes.mask == SceneChanges::None) {
         syncedDocument_ = document;
         return {"nothing", 0.0, 0.0, {}};
     }
-    if (changes & SceneChanges::Settings) backend_->setToggles(doc_.toggles);
+    if (changes.has(SceneChanges::Settings)) backend_->setToggles(doc_.toggles);
     SyncReport report;
     try {
         report = backend_->sync(doc_.scene, changes, progress);

@@ -47,7 +47,7 @@ public:
     // The render thread: the document the backend holds, as of the last sync that succeeded.
     uint64_t syncedDocument() const { return syncedDocument_; }
     const CommandStack& history() const { return history_; }
-    SceneChangeMask execute(std::unique_ptr<EditCommand> command);
+    SceneDelta execute(std::unique_ptr<EditCommand> command);
     bool undo();
     bool redo();
     void endDrag() { history_.closeMerge(); }
@@ -71,7 +71,7 @@ public:
     // a backend refusing the scene (e.g. BVH off over its budget) throws std::invalid_argument
     // and keeps its previous state.
     SyncReport sync(const ProgressFn& progress = {});
-    SceneChangeMask pendingChanges() const { return pending_; }
+    const SceneDelta& pendingChanges() const { return pending_; }
     // Adds up to `passes` samples per pixel, stopping at the viewer's target spp. Returns the
     // passes rendered: 0 where an edit that restarts the accumulation (execute, undo, redo,
     // adopt) or interruptRender() stopped the pass under way, which a render thread's render()
@@ -114,7 +114,7 @@ public:
 
 private:
     // An edit handed over at `start` and applied now.
-    void noteEdit(const std::string& label, SceneChangeMask changes, Clock::time_point start);
+    void noteEdit(const std::string& label, const SceneDelta& changes, Clock::time_point start);
 
     // Whether `wanted` holds the denoiser's guides and the backend lacks one, or holds one that
     // started after the beauty.
@@ -129,7 +129,7 @@ private:
     mutable std::atomic<double> lastDenoiseSeconds_{0.0};
     bool keepDenoiseGuides_ = false;  // accumulate the denoiser's guides (sync())
     std::unique_ptr<Backend> backend_;
-    SceneChangeMask pending_ = SceneChanges::All;
+    SceneDelta pending_ = SceneChanges::All;
     std::atomic<bool> interrupt_{false};  // the backend's interrupt flag (render())
     std::atomic<uint64_t> documentSerial_{0}, syncedDocument_{0};
     bool passInterrupts_ = true;

@@ -114,7 +114,7 @@ bool RenderWorker::step() {
     bool denoise;
     {
         std::shared_lock<std::shared_mutex> lock(sceneMutex_);
-        pending = session_.pendingChanges();
+        pending = session_.pendingChanges().mask;
         const ViewerSettings& viewer = session_.document().viewer;
         passes = viewer.samplesPerFrame;  // 0: automatic, decided once the sync has run
         target = viewer.targetSpp;

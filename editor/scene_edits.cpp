@@ -23,6 +23,14 @@ struct ObjectPlacement {
     std::vector<Light> lights;                // the object's lights, in scene order
 };
 
+std::vector<uint32_t> instancesOf(const Scene& scene, uint32_t object) {
+    std::vector<uint32_t> ids;
+    for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+        if (scene.instances[i].object == int32_t(object)) ids.push_back(i);
+    }
+    return ids;
+}
+
 ObjectPlacement placementOf(const Scene& scene, uint32_t object) {
     ObjectPlacement p;
     p.transform = scene.objects.at(object).transform;
@@ -68,7 +76,7 @@ ObjectPlacement movedPlacement(const ObjectPlacement& before, const ObjectTransf
 std::unique_ptr<EditCommand> setMaterial(const Document& doc, uint32_t material, const Material& after) {
     const NamedMaterial& named = doc.scene.materials.at(material);
     return makeValueCommand<Material>(
-        "Edit material " + named.name, key("material", material), SceneChanges::Materials, named.params,
+        "Edit material " + named.name, key("material", material), materialsEdited({material}), named.params,
         withinFileRanges(after),
         [material](Document& d, const Material& m) { d.scene.materials.at(material).params = m; });
 }
@@ -77,8 +85,8 @@ std::unique_ptr<EditCommand> setObjectTransform(const Document& doc, uint32_t ob
                                                 const ObjectTransform& after, const std::string& verb) {
     const ObjectPlacement before = placementOf(doc.scene, object);
     // Lights placed by the object move with it: the light table follows the transform.
-    const SceneChangeMask changes =
-        SceneChanges::Transforms | (before.lights.empty() ? SceneChanges::None : SceneChanges::Lights);
+    SceneDelta changes = instancesMoved(instancesOf(doc.scene, object));
+    if (!before.lights.empty()) changes |= SceneChanges::Lights;
     return makeValueCommand<ObjectPlacement>(
         verb + " " + doc.scene.objects.at(object).name, key("object-transform", object), changes, before,
         movedPlacement(before, after),
@@ -89,7 +97,7 @@ std::unique_ptr<EditCommand> setInstanceTransform(const Document& doc, uint32_t 
                                                   const Affine3& after, const std::string& verb) {
     const Instance& target = doc.scene.instances.at(instance);
     return makeValueCommand<Affine3>(
-        verb + " " + target.name, key("instance-transform", instance), SceneChanges::Transforms,
+        verb + " " + target.name, key("instance-transform", instance), instancesMoved({instance}),
         target.objectToWorld, after,
         [instance](Document& d, const Affine3& m) { d.scene.instances.at(instance).objectToWorld = m; });
 }
@@ -127,9 +135,9 @@ public:
     std::string label() const override {
         return "Environment: image " + std::filesystem::path(image_->sourcePath).filename().string();
     }
-    SceneChangeMask apply(Document& doc) override {
+    SceneDelta apply(Document& doc) override {
         std::vector<Texture>& textures = doc.scene.textures;
-        SceneChangeMask changes = SceneChanges::Environment;
+        SceneDelta changes = SceneChanges::Environment;
         if (index_ < 0 || size_t(index_) >= textures.size() ||
             textures[size_t(index_)].sourcePath != image_->sourcePath) {
             textures.push_back(*image_);
@@ -142,7 +150,7 @@ public:
         e.imagePath = image_->sourcePath;
         return changes;
     }
-    SceneChangeMask revert(Document& doc) override {
+    SceneDelta revert(Document& doc) override {
         doc.scene.environment = before_;
         return SceneChanges::Environment;
     }
@@ -202,8 +210,8 @@ std::unique_ptr<EditCommand> setMorphWeights(const Document& doc, uint32_t mesh,
             d.scene.objects[i].morphWeights = state.objectWeights[i];
         }
     };
-    return makeValueCommand<MorphState>("Morph " + target.name, key("morph", mesh), SceneChanges::Geometry, before,
-                                        next, assign);
+    return makeValueCommand<MorphState>("Morph " + target.name, key("morph", mesh), meshesMoved({mesh}),
+                                        before, next, assign);
 }
 
 }  // namespace pt::editor

@@ -95,8 +95,9 @@ class DeviceFrame {
 public:
     explicit DeviceFrame(const Backend& backend) {
 #if defined(PT_HAVE_CUDA)
-        if (backend.name() == "cuda" &&
-            cudaMalloc(&memory_, size_t(backend.width()) * backend.height() * 4 * sizeof(float)) != cudaSuccess) {
+        if (backend.capabilities().deviceFrames &&
+            cudaMalloc(&memory_, size_t(backend.width()) * backend.height() * 4 * sizeof(float)) !=
+                cudaSuccess) {
             memory_ = nullptr;
         }
 #else

@@ -108,8 +108,9 @@ void benchPathTracing(Backend& backend, const Scene& scene, const BenchSettings&
         if (!ran.kernelVariant.empty()) note += "kernel variant " + ran.kernelVariant + "; ";
         if (v.toggles.autoSchedule && !ran.schedule.empty()) note += "auto schedule: " + ran.schedule + "; ";
         for (const ToggleState& state : backend.toggleStates()) {
-            // The CPU backend has no scheduling toggles to speak of.
-            if (state.requested && !state.active && !(backend.name() == "cpu" && isGpuSchedulingToggle(state.name))) {
+            // A backend without GPU scheduling has no scheduling toggles to speak of.
+            const bool scheduling = toggleRow(state.id).scope == ToggleScope::GpuScheduling;
+            if (state.requested && !state.active && (backend.capabilities().gpuScheduling || !scheduling)) {
                 note += state.name + " inactive: " + state.note + "; ";
             }
         }
@@ -123,7 +124,7 @@ void benchPathTracing(Backend& backend, const Scene& scene, const BenchSettings&
 
 void benchWavefrontOverhead(Backend& backend, Scene scene, const BenchSettings& settings,
                             BenchReport& report) {
-    if (backend.name() == "cpu") return;
+    if (!backend.capabilities().gpuScheduling) return;
     // What a path carries between the stages: its state, its closest hit, its shadow ray, its
     // entries in the path and shadow queues, and its finished RGB.
     const size_t bytes =
@@ -161,14 +162,15 @@ void benchDenoise(Backend& backend, const Scene& scene, const BenchSettings& set
     for (uint32_t r = 0; r < std::max(settings.runs, 3u); ++r)
         seconds.push_back(backend.readDenoised(denoised));
     const std::string size = std::to_string(scene.render.width) + "x" + std::to_string(scene.render.height);
-    report.add({"denoise", "a-trous filter (SVGF spatial), 5 passes", size, median(seconds) * 1e3, "ms",
-                backend.name() == "cpu" ? "CPU threads" : "GPU kernels, without the copy to the host"});
+    report.add(
+        {"denoise", "a-trous filter (SVGF spatial), 5 passes", size, median(seconds) * 1e3, "ms",
+         backend.capabilities().gpuScheduling ? "GPU kernels, without the copy to the host" : "CPU threads"});
     backend.setAovs(0);
     backend.sync(scene, SceneChanges::Settings, {});
 }
 
 void benchImageCheck(Backend& backend, Scene scene, const BenchSettings& settings, BenchReport& report) {
-    if (backend.name() == "cpu") return;
+    if (!backend.capabilities().gpuScheduling) return;
     // Small enough for the CPU to match in seconds.
     const double scale = std::min(1.0, 160.0 / std::max(scene.render.width, scene.render.height));
     scene.render.width = std::max(1u, uint32_t(scene.render.width * scale));

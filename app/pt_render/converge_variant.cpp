@@ -15,20 +15,15 @@ struct SwitchFlags {
     std::string on, off;
 };
 
+// The toggle table's keys with flags, and the denoiser (a display step, not a toggle).
 const std::map<std::string, SwitchFlags>& switchKeys() {
-    static const std::map<std::string, SwitchFlags> keys = {
-        {"nee", {"", "--no-nee"}},
-        {"mis", {"", "--no-mis"}},
-        {"rr", {"", "--no-rr"}},
-        {"bvh", {"", "--bvh-off"}},
-        {"pixel_jitter", {"", "--no-jitter"}},
-        {"megakernel", {"--megakernel", "--wavefront"}},
-        {"path_regeneration", {"--regeneration", ""}},
-        {"compaction", {"", "--no-compaction"}},
-        {"material_sort", {"--sort-materials", "--no-sort-materials"}},
-        {"first_hit_cache", {"", "--no-first-hit-cache"}},
-        {"denoise", {"--denoise", ""}},
-    };
+    static const std::map<std::string, SwitchFlags> keys = [] {
+        std::map<std::string, SwitchFlags> k = {{"denoise", {"--denoise", ""}}};
+        for (const ToggleRow& row : toggleTable()) {
+            if (*row.onFlag || *row.offFlag) k[row.key] = {row.onFlag, row.offFlag};
+        }
+        return k;
+    }();
     return keys;
 }
 

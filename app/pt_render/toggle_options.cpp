@@ -3,19 +3,15 @@
 namespace pt::cli {
 
 const std::set<std::string>& toggleSwitches() {
-    static const std::set<std::string> switches = {"--no-nee",
-                                                   "--no-mis",
-                                                   "--no-rr",
-                                                   "--bvh-off",
-                                                   "--no-merge",
-                                                   "--no-jitter",
-                                                   "--megakernel",
-                                                   "--wavefront",
-                                                   "--regeneration",
-                                                   "--no-compaction",
-                                                   "--sort-materials",
-                                                   "--no-sort-materials",
-                                                   "--no-first-hit-cache"};
+    static const std::set<std::string> switches = [] {
+        std::set<std::string> flags;
+        for (const ToggleRow& row : toggleTable()) {
+            for (const char* flag : {row.onFlag, row.offFlag}) {
+                if (*flag) flags.insert(flag);
+            }
+        }
+        return flags;
+    }();
     return switches;
 }
 
@@ -26,26 +22,16 @@ const std::set<std::string>& toggleValuedFlags() {
 
 IntegratorToggles parseToggles(const Options& o) {
     IntegratorToggles t;
-    t.nextEventEstimation = !o.has("--no-nee");
-    t.multipleImportance = !o.has("--no-mis");
-    t.russianRoulette = !o.has("--no-rr");
-    t.bruteForce = o.has("--bvh-off");
-    t.mergeInstances = !o.has("--no-merge");
-    t.clampRadiance = float(o.positiveNumber("--clamp").value_or(0.0));
-    t.pixelJitter = !o.has("--no-jitter");
-    if (o.has("--megakernel") && o.has("--wavefront")) throw UsageError("--megakernel and --wavefront exclude each other");
-    // Naming a schedule turns the auto schedule off.
-    t.autoSchedule = !o.has("--megakernel") && !o.has("--wavefront");
-    if (o.has("--megakernel")) t.megakernel = true;
-    if (o.has("--wavefront")) t.megakernel = false;
-    if (o.has("--regeneration")) t.pathRegeneration = true;
-    if (o.has("--no-compaction")) t.streamCompaction = false;
-    if (o.has("--sort-materials") && o.has("--no-sort-materials")) {
-        throw UsageError("--sort-materials and --no-sort-materials exclude each other");
+    for (const ToggleRow& row : toggleTable()) {
+        const bool on = *row.onFlag && o.has(row.onFlag), off = *row.offFlag && o.has(row.offFlag);
+        if (on && off)
+            throw UsageError(std::string(row.onFlag) + " and " + row.offFlag + " exclude each other");
+        if (on || off) row.set(t, on);
     }
-    if (o.has("--sort-materials")) t.materialSort = true;
-    if (o.has("--no-sort-materials")) t.materialSort = false;
-    if (o.has("--no-first-hit-cache")) t.firstHitCache = false;
+    // Naming a schedule turns the auto schedule off.
+    const ToggleRow& schedule = toggleRow(ToggleId::Megakernel);
+    t.autoSchedule = !o.has(schedule.onFlag) && !o.has(schedule.offFlag);
+    t.clampRadiance = float(o.positiveNumber("--clamp").value_or(0.0));
     t.kernelVariant = o.value("--kernel-variant").value_or("");
     if (const auto ratio = o.positiveNumber("--rebuild-ratio")) {
         if (*ratio < 1.0) throw UsageError("--rebuild-ratio must be at least 1");

@@ -12,8 +12,7 @@
 
 namespace pt::cli {
 
-// --no-nee --no-mis --no-rr --bvh-off --no-jitter --megakernel --wavefront --no-compaction
-// --sort-materials --no-sort-materials --no-first-hit-cache
+// Every flag of the toggle table (render/backend/toggle_table.h): --no-nee, --megakernel, ...
 const std::set<std::string>& toggleSwitches();
 // --clamp X, --rebuild-ratio R
 const std::set<std::string>& toggleValuedFlags();

@@ -157,9 +157,11 @@ void EditorUi::loadReference(const std::string& path) {
 void EditorUi::switchBackend(const std::string& name) {
     try {
         std::unique_ptr<Backend> next = createBackend(name);
+        const BackendCapabilities caps = next->capabilities();
         session.interruptRender();  // the old backend's samples are thrown away anyway
         worker.withBackend([&](EditorSession& s) { worker.edit([&](EditorSession&) { s.setBackend(std::move(next)); }); });
         backendName = name;
+        backendCaps = caps;
     } catch (const std::exception& e) {
         showError(e.what());
     }

@@ -95,6 +95,7 @@ public:
     std::function<void()> discardAction;     // what it runs once the user agrees
     std::unique_ptr<SceneLoadJob> loading;
     std::string backendName;
+    BackendCapabilities backendCaps;  // of the backend that runs (render panel, interop)
     // The OpenColorIO config and view the viewport draws with, re-resolved when the scene's
     // color settings change (updateColorView, once a frame).
     ColorView colorView;

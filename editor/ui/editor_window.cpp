@@ -280,7 +280,7 @@ public:
 // allows it, else from the frame's host copy.
 void showFrame(EditorUi& ui, DisplayView& view, CudaGlFrame& interop) {
     const DisplayFrame& frame = ui.lastFrame;
-    const bool device = ui.backendName == "cuda" && frame.aov < 0;
+    const bool device = ui.backendCaps.deviceFrames && frame.aov < 0;
     if (!frame.rgba.empty()) view.upload(frame);
     bool onGpu = false;
     if (device) {
@@ -435,6 +435,7 @@ int runEditor(const EditorOptions& options) {
         session, [] { glfwPostEmptyEvent(); }, lowerThisThreadsPriority);
     EditorUi ui(session, worker, options);
     ui.backendName = backendName;
+    ui.backendCaps = session.backend().capabilities();
     ui.layout = loadPanelLayout(window->scale);
     worker.edit([&](EditorSession& s) {
         ViewerSettings viewer = s.document().viewer;

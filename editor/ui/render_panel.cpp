@@ -5,6 +5,7 @@
 
 #include "editor/scene_edits.h"
 #include "editor/ui/widgets.h"
+#include "render/backend/toggle_table.h"
 
 namespace pt::editor {
 namespace {
@@ -17,27 +18,33 @@ void backendChoice(EditorUi& ui) {
     if (picked && names[current] != ui.backendName) ui.switchBackend(names[current]);
 }
 
+// One checkbox per row of the toggle table (render/backend/toggle_table.h); the scheduling
+// rows only where the backend schedules paths on a GPU.
+bool toggleCheckboxes(IntegratorToggles& t, ToggleScope scope) {
+    bool changed = false;
+    for (const ToggleRow& row : toggleTable()) {
+        if (row.scope != scope) continue;
+        // A schedule named by hand means nothing while the auto schedule picks one.
+        const bool disabled = row.id == ToggleId::Megakernel && t.autoSchedule;
+        ImGui::BeginDisabled(disabled);
+        bool on = row.get(t);
+        if (checkbox(row.label, &on)) {
+            row.set(t, on);
+            changed = true;
+        }
+        ImGui::EndDisabled();
+    }
+    return changed;
+}
+
 void integratorSwitches(EditorUi& ui) {
     IntegratorToggles t = ui.doc().toggles;
-    bool changed = false;
-    changed |= checkbox("Next-event estimation", &t.nextEventEstimation);
-    changed |= checkbox("Multiple importance sampling", &t.multipleImportance);
-    changed |= checkbox("Russian roulette", &t.russianRoulette);
-    changed |= checkbox("Pixel jitter (antialiasing)", &t.pixelJitter);
-    changed |= checkbox("BVH off (brute force)", &t.bruteForce);
-    changed |= checkbox("Merge small instances (one world-space BLAS)", &t.mergeInstances);
+    bool changed = toggleCheckboxes(t, ToggleScope::Integrator);
     changed |= sliderFloat(ui, "Firefly clamp (0 = off)", &t.clampRadiance, 0.0f, 100.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
-    if (ui.backendName == "cuda") {
+    if (ui.backendCaps.gpuScheduling) {
         ImGui::Separator();
         ImGui::TextUnformatted("GPU scheduling");
-        changed |= checkbox("Auto schedule (time both, run the faster)", &t.autoSchedule);
-        ImGui::BeginDisabled(t.autoSchedule);
-        changed |= checkbox("Megakernel (else wavefront)", &t.megakernel);
-        ImGui::EndDisabled();
-        changed |= checkbox("Path regeneration (megakernel)", &t.pathRegeneration);
-        changed |= checkbox("Stream compaction", &t.streamCompaction);
-        changed |= checkbox("Material sort", &t.materialSort);
-        changed |= checkbox("First-hit cache", &t.firstHitCache);
+        changed |= toggleCheckboxes(t, ToggleScope::GpuScheduling);
         changed |= sliderFloat(ui, "Rebuild at SAH ratio", &t.rebuildSahRatio, 1.0f, 4.0f);
     }
     if (changed) ui.apply(setToggles(ui.doc(), t));

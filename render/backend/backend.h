@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "render/backend/aov.h"
+#include "render/backend/toggle_table.h"
 #include "render/bvh/hit.h"
 #include "render/math/ray.h"
 #include "render/scene/scene.h"
@@ -18,46 +19,11 @@
 
 namespace pt {
 
-// Renderer switches a user can flip to see what each costs or buys. The integrator ones change
-// the estimator; the scheduling ones (GPU) change only speed, never the converged image.
-struct IntegratorToggles {
-    bool nextEventEstimation = true;
-    bool multipleImportance = true;
-    bool russianRoulette = true;
-    bool bruteForce = false;  // BVH off: validation only, refused above a triangle budget
-    // Small instances' triangles in one world-space BLAS (render/scene/merged_geometry.h).
-    bool mergeInstances = true;
-    float clampRadiance = 0.0f;  // firefly clamp on indirect luminance per sample; 0 = off
-    // Jitter primary rays inside the pixel (antialiasing). Off: every sample of a pixel starts
-    // with the same ray through its centre, which lets the first hit be cached.
-    bool pixelJitter = true;
-    // CUDA scheduling (the CPU backend runs one path per thread and has none of these).
-    // Auto: the first passes of each scene and feature set time both schedules and the rest run
-    // the faster (render/backend/schedule_chooser.h); which wins depends on the scene.
-    bool autoSchedule = true;
-    // Without autoSchedule: one thread runs a whole path; else the wavefront stages.
-    bool megakernel = true;
-    // Megakernel: a thread whose path ends starts the next path of the pass at once (path
-    // regeneration), rather than idling until the other 31 of its warp end theirs. Off by
-    // default: it helps where lanes idle most (H100, 1080p: the Cornell box 132.6 against 94.7
-    // spp/s) but there the wavefront is faster still (321), and where the megakernel wins it
-    // costs coherence (Balloon 774.5 against 784.6, a 1M-triangle sphere 542.8 against 588.1).
-    bool pathRegeneration = false;
-    // The CUDA kernel variant (render/backend/cuda/kernel_variants.h) by name, to compare
-    // variants; "" (the default): the leanest that covers the scene. A variant that does not
-    // cover the scene's features is not used: the leanest covering one runs instead.
-    std::string kernelVariant = "";
-    bool streamCompaction = true;   // wavefront: dead paths leave the queues between bounces
-    bool materialSort = false;      // wavefront: paths sorted by material before shading
-    bool firstHitCache = true;      // reuse camera-ray hits across passes where the camera allows
-    // A refitted BLAS is rebuilt once its SAH cost exceeds this times its cost when last built.
-    float rebuildSahRatio = 1.25f;
-};
-
 // One toggle as the active backend applies it: `active` is false where it is on but cannot
 // apply here (e.g. the first-hit cache under pixel jitter), and `note` says why.
 struct ToggleState {
-    std::string name;
+    ToggleId id;
+    std::string name;  // the toggle table's key (render/backend/toggle_table.h)
     bool requested = false;
     bool active = false;
     std::string note;
@@ -97,14 +63,25 @@ struct BackendStats {
     double megakernelRate = 0.0, wavefrontRate = 0.0;
 };
 
+// What a backend can do, for front ends that show, time or report what applies to it (rather
+// than testing its name).
+struct BackendCapabilities {
+    // It schedules paths on a GPU: the toggle table's GpuScheduling rows and kernel variants
+    // apply, and its timings exclude the copy to the host.
+    bool gpuScheduling = false;
+    // copyBeautyToDevice() can fill device memory: frames may reach the screen through interop.
+    bool deviceFrames = false;
+};
+
 class Backend {
 public:
     virtual ~Backend() = default;
-    virtual std::string name() const = 0;
+    virtual std::string name() const = 0;  // for display and reports: "cpu", "cuda"
+    virtual BackendCapabilities capabilities() const { return {}; }
 
     // Throws std::invalid_argument when the scene or toggles cannot be honoured; the previous
     // state is then kept.
-    virtual SyncReport sync(const Scene& scene, SceneChangeMask changes,
+    virtual SyncReport sync(const Scene& scene, const SceneDelta& changes,
                             const ProgressFn& progress = {}) = 0;
     virtual void setToggles(const IntegratorToggles& toggles) = 0;  // takes effect at next sync
     virtual void render(uint32_t passes) = 0;  // adds `passes` samples per pixel

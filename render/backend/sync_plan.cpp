@@ -4,30 +4,51 @@
 
 namespace pt {
 
-SyncPlan planSync(const CompiledScene* compiled, const Scene& scene, SceneChangeMask changes) {
+SyncPlan planSync(const CompiledScene* compiled, const Scene& scene, const SceneDelta& changes) {
     SyncPlan plan;
-    plan.reset = changes != SceneChanges::Display;
-    plan.fullBuild = !compiled || (changes & (SceneChanges::Topology | SceneChanges::Textures)) ||
-                     ((changes & SceneChanges::Transforms) && !mergedPlanHolds(scene, *compiled));
+    plan.reset = changes.mask != SceneChanges::Display;
+    plan.fullBuild = !compiled || changes.has(SceneChanges::Topology | SceneChanges::Textures) ||
+                     (changes.has(SceneChanges::Transforms) && !mergedPlanHolds(scene, *compiled));
     if (plan.fullBuild) return plan;
-    plan.refitGeometry = (changes & SceneChanges::Geometry) != 0;
-    plan.instances = (changes & SceneChanges::Transforms) != 0;
-    plan.materials = (changes & SceneChanges::Materials) != 0;
-    plan.environment = (changes & SceneChanges::Environment) != 0;
-    plan.lights = plan.environment || (changes & SceneChanges::Lights);
+    plan.refitGeometry = changes.has(SceneChanges::Geometry);
+    if (plan.refitGeometry) plan.meshes = changes.meshes;
+    plan.instances = changes.has(SceneChanges::Transforms);
+    plan.materials = changes.has(SceneChanges::Materials);
+    if (plan.materials) plan.materialIds = changes.materials;
+    plan.environment = changes.has(SceneChanges::Environment);
+    plan.lights = plan.environment || changes.has(SceneChanges::Lights);
     return plan;
 }
 
-bool emissionChanged(const std::vector<Material>& before, const std::vector<Material>& after) {
-    if (before.size() != after.size()) return true;
-    for (size_t i = 0; i < before.size(); ++i) {
-        const Vec3 a = before[i].emittedRadiance(), b = after[i].emittedRadiance();
-        if (std::memcmp(&a, &b, sizeof(Vec3)) != 0 ||
-            before[i].emissiveTexture.texture != after[i].emissiveTexture.texture) {
-            return true;
+namespace {
+
+bool sameEmission(const Material& a, const Material& b) {
+    const Vec3 ea = a.emittedRadiance(), eb = b.emittedRadiance();
+    return std::memcmp(&ea, &eb, sizeof(Vec3)) == 0 && a.emissiveTexture.texture == b.emissiveTexture.texture;
+}
+
+}  // namespace
+
+MaterialsUpdate updateEditedMaterials(const Scene& scene, CompiledScene& compiled, const TouchedIds& edited) {
+    MaterialsUpdate update;
+    // compileMaterials appends one fallback material for unmapped slots.
+    update.all = edited.every || compiled.materials.size() != scene.materials.size() + 1;
+    if (update.all) {
+        std::vector<Material> materials = compileMaterials(scene);
+        update.emissionChanged = materials.size() != compiled.materials.size();
+        for (size_t i = 0; i < materials.size() && !update.emissionChanged; ++i) {
+            update.emissionChanged = !sameEmission(compiled.materials[i], materials[i]);
+        }
+        compiled.materials = std::move(materials);
+    } else {
+        update.copied = edited.below(uint32_t(scene.materials.size()));
+        for (const uint32_t i : update.copied) {
+            update.emissionChanged |= !sameEmission(compiled.materials[i], scene.materials[i].params);
+            compiled.materials[i] = scene.materials[i].params;
         }
     }
-    return false;
+    updateTransparency(compiled);
+    return update;
 }
 
 const char* syncActionName(SyncAction action) {

@@ -1,6 +1,7 @@
 #pragma once
 // What a backend does to bring its compiled scene up to date after an edit (issue 16): the
-// plan is decided from the edit's change mask and the compiled scene alone, without a GPU,
+// plan is decided from the edit's delta (its bits and the ids it touched) and the compiled
+// scene alone, without a GPU,
 // and both backends execute it: the CUDA backend on the device (with refits), the CPU backend
 // on the host (a material drag recompiles materials, never a BVH). Steps a plan cannot know in
 // advance (a refit that degraded past its threshold, emission that changed with a material)
@@ -18,18 +19,26 @@ struct SyncPlan {
     // Everything from the scene: no compiled scene yet, new meshes or textures, or instances
     // the merged BLAS no longer holds (merged_geometry.h).
     bool fullBuild = false;
-    bool refitGeometry = false;  // vertex positions moved: refit their BLASes
+    bool refitGeometry = false;  // vertex positions moved: refit their BLASes ...
+    TouchedIds meshes;           // ... of these meshes (compared, where the edit did not say)
     bool instances = false;      // transforms or visibility: compileInstances, then the TLAS
-    bool materials = false;      // then the light table too, where emission changed
+    bool materials = false;      // these materials; then the light table where emission changed
+    TouchedIds materialIds;
     bool lights = false;         // the light table (environment or punctual lights edited)
     bool environment = false;    // ... and the environment's sampling tables
     bool reset = false;          // accumulation restarts (everything but display changes)
 };
 
-SyncPlan planSync(const CompiledScene* compiled, const Scene& scene, SceneChangeMask changes);
+SyncPlan planSync(const CompiledScene* compiled, const Scene& scene, const SceneDelta& changes);
 
-// Whether a material edit changed which surfaces emit, or how much: the light table follows.
-bool emissionChanged(const std::vector<Material>& before, const std::vector<Material>& after);
+// Copies the scene's edited materials into the compiled scene: those `edited` names, or all
+// of them where it does not say or the count changed (`all` is then set).
+struct MaterialsUpdate {
+    bool all = false;
+    std::vector<uint32_t> copied;  // where !all
+    bool emissionChanged = false;  // which surfaces emit, or how much: the light table follows
+};
+MaterialsUpdate updateEditedMaterials(const Scene& scene, CompiledScene& compiled, const TouchedIds& edited);
 
 // What sync did, ranked: the report names the most expensive (SyncReport::action).
 enum class SyncAction { Nothing, Reset, Lights, Materials, Tlas, Refit, Rebuild, FullBuild };

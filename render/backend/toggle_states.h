@@ -1,7 +1,6 @@
 #pragma once
-// The toggles as a list of named states, the form stats, the CLI and the editor report them in.
-// Names are the CLI's: nee, mis, rr, bvh, pixel_jitter, megakernel, compaction, material_sort,
-// first_hit_cache.
+// The toggles as a list of named states, the form stats, the CLI and the editor report them in,
+// one per row of the toggle table (render/backend/toggle_table.h), named by its keys.
 #include <string>
 #include <vector>
 
@@ -16,8 +15,5 @@ std::vector<ToggleState> integratorToggleStates(const IntegratorToggles& toggles
 // The integrator's switches (NEE, MIS, roulette, clamp, pixel jitter) into the settings kernels
 // read; the same on every backend.
 void applyIntegratorToggles(const IntegratorToggles& toggles, IntegratorSettings& settings);
-
-// megakernel, compaction, material_sort, first_hit_cache: scheduling choices of the CUDA backend.
-bool isGpuSchedulingToggle(const std::string& name);
 
 }  // namespace pt

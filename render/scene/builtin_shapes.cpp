@@ -1,6 +1,6 @@
 #include "render/scene/builtin_shapes.h"
 
-#include <cassert>
+#include "render/util/check.h"
 
 namespace pt {
 
@@ -62,7 +62,7 @@ Mesh makeUnitQuad() {
 }
 
 uint32_t builtinShapeMesh(Scene& scene, ObjectKind kind) {
-    assert(kind != ObjectKind::File && "builtinShapeMesh: not a built-in shape");
+    PT_CHECK(kind != ObjectKind::File);  // callers pass built-in shapes only
     const std::string name = shapeMeshName(kind);
     for (size_t i = 0; i < scene.meshes.size(); ++i) {
         if (scene.meshes[i].name == name) return uint32_t(i);

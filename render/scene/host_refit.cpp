@@ -7,6 +7,7 @@
 
 #include "render/bvh/sah_cost.h"
 #include "render/scene/compile_geometry.h"
+#include "render/util/check.h"
 
 namespace pt {
 
@@ -23,7 +24,9 @@ bool copyIfDifferent(T* stored, const std::vector<T>& incoming) {
 }  // namespace
 
 void refitBlasOnHost(CompiledScene& compiled, uint32_t index) {
+    PT_CHECK(index < compiled.blases.size());
     const BlasRef& blas = compiled.blases[index];
+    PT_CHECK(size_t(blas.nodeOffset) + blas.nodeCount <= compiled.blasNodes.size());
     BvhNode* nodes = compiled.blasNodes.data() + blas.nodeOffset;
     const uint32_t* prims = compiled.blasPrimIndices.data() + blas.primIndexOffset;
     // The leaves hold every primitive, so their boxes are the work: in parallel. The interior
@@ -52,12 +55,14 @@ void refitBlasOnHost(CompiledScene& compiled, uint32_t index) {
 }
 
 float blasSahCost(const CompiledScene& compiled, uint32_t index) {
+    PT_CHECK(index < compiled.blases.size());
     const BlasRef& blas = compiled.blases[index];
     return blas.primitiveCount > 0 ? sahCost(compiled.blasNodes.data() + blas.nodeOffset, blas.nodeCount)
                                    : 0.0f;
 }
 
-std::optional<std::vector<uint32_t>> copyMovedMeshes(const Scene& scene, CompiledScene& compiled) {
+std::optional<std::vector<uint32_t>> copyMovedMeshes(const Scene& scene, const TouchedIds& touched,
+                                                     CompiledScene& compiled) {
     const uint32_t meshBlases = uint32_t(compiled.blases.size()) - (compiled.merged.active() ? 1u : 0u);
     if (scene.meshes.size() != meshBlases) return std::nullopt;
     std::vector<uint32_t> moved;
@@ -66,20 +71,21 @@ std::optional<std::vector<uint32_t>> copyMovedMeshes(const Scene& scene, Compile
         const Mesh& mesh = scene.meshes[i];
         const BlasRef& blas = compiled.blases[i];
         if (mesh.kind != blas.kind || mesh.primitiveCount() != blas.primitiveCount) return std::nullopt;
+        const size_t first = firstVertex,
+                     count = mesh.kind == GeometryKind::Spheres ? 0 : mesh.positions.size();
+        firstVertex += count;
+        if (firstVertex > compiled.positions.size()) return std::nullopt;
+        if (!touched.contains(i)) continue;  // the edit says it left this mesh alone
         if (mesh.kind == GeometryKind::Spheres) {
             if (copyIfDifferent(compiled.spheres.data() + blas.primitiveOffset, mesh.spheres))
                 moved.push_back(i);
             continue;
         }
-        const size_t count = mesh.positions.size();
-        if (firstVertex + count > compiled.positions.size()) return std::nullopt;
         // Normals and tangents change shading, not boxes: copied, not refitted.
-        if (mesh.normals.size() == count)
-            copyIfDifferent(compiled.normals.data() + firstVertex, mesh.normals);
+        if (mesh.normals.size() == count) copyIfDifferent(compiled.normals.data() + first, mesh.normals);
         if (!compiled.tangents.empty() && mesh.tangents.size() == count)
-            copyIfDifferent(compiled.tangents.data() + firstVertex, mesh.tangents);
-        if (copyIfDifferent(compiled.positions.data() + firstVertex, mesh.positions)) moved.push_back(i);
-        firstVertex += count;
+            copyIfDifferent(compiled.tangents.data() + first, mesh.tangents);
+        if (copyIfDifferent(compiled.positions.data() + first, mesh.positions)) moved.push_back(i);
     }
     return moved;
 }

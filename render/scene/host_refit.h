@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "render/scene/compile_scene.h"
+#include "render/scene/scene_changes.h"
 
 namespace pt {
 
@@ -19,8 +20,10 @@ void refitBlasOnHost(CompiledScene& compiled, uint32_t blas);
 float blasSahCost(const CompiledScene& compiled, uint32_t blas);
 
 // Copies into `compiled` the vertices (positions, normals, tangents) and spheres of the meshes
-// whose positions moved, and returns those meshes; nothing where a mesh changed size or kind
-// or a mesh was added or removed (a topology edit: compile again). Mesh i owns BLAS i.
-std::optional<std::vector<uint32_t>> copyMovedMeshes(const Scene& scene, CompiledScene& compiled);
+// whose positions moved, among those `touched` names, and returns those meshes; nothing where
+// a mesh changed size or kind or a mesh was added or removed (a topology edit: compile again).
+// Mesh i owns BLAS i.
+std::optional<std::vector<uint32_t>> copyMovedMeshes(const Scene& scene, const TouchedIds& touched,
+                                                     CompiledScene& compiled);
 
 }  // namespace pt

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "cli_runner.h"
+#include "render/backend/toggle_table.h"
 #include "support/test_paths.h"
 
 namespace pt {
@@ -71,6 +72,31 @@ TEST(PtRenderBench, ReportsTheTogglesInRenderStats) {
     // The CPU backend says why it has no GPU scheduling.
     EXPECT_EQ(j["toggles"]["megakernel"]["active"], false);
     EXPECT_NE(j["toggles"]["megakernel"]["note"].get<std::string>().find("CUDA only"), std::string::npos);
+}
+
+// Every flag of the toggle table reaches its toggle, and only it: one render per flag, whose
+// stats report each key as the defaults say except the one the flag names.
+TEST(PtRenderBench, EveryToggleFlagSetsItsToggle) {
+    const std::string dir = test::tempDir();
+    const IntegratorToggles defaults;
+    for (const ToggleRow& row : toggleTable()) {
+        for (const bool on : {true, false}) {
+            const std::string flag = on ? row.onFlag : row.offFlag;
+            if (flag.empty()) continue;
+            SCOPED_TRACE(flag);
+            const auto r = runCli("render " + cornell() + " --png " + dir + "/f.png --stats " + dir +
+                                  "/f.json --spp 1 --size 8x8 --quiet " + flag);
+            ASSERT_EQ(r.exitCode, 0) << r.err;
+            std::ifstream in(dir + "/f.json");
+            const nlohmann::json j = nlohmann::json::parse(in);
+            for (const ToggleRow& other : toggleTable()) {
+                bool expected = other.id == row.id ? on : other.get(defaults);
+                // Naming a schedule turns the auto schedule off.
+                if (other.id == ToggleId::AutoSchedule && row.id == ToggleId::Megakernel) expected = false;
+                EXPECT_EQ(j["toggles"][other.key]["on"], expected) << other.key;
+            }
+        }
+    }
 }
 
 }  // namespace

@@ -25,16 +25,16 @@ TEST(CommandStack, UndoAndRedoWalkTheHistoryInOrder) {
     Document doc;
     CommandStack stack;
     EXPECT_FALSE(stack.canUndo());
-    EXPECT_EQ(stack.undo(doc), SceneChanges::None);
-    EXPECT_EQ(stack.redo(doc), SceneChanges::None);
+    EXPECT_EQ(stack.undo(doc).mask, SceneChanges::None);
+    EXPECT_EQ(stack.redo(doc).mask, SceneChanges::None);
 
     for (float v : {1.0f, 2.0f, 3.0f})
-        EXPECT_EQ(stack.execute(doc, setExposure(doc, v)), SceneChanges::Display);
+        EXPECT_EQ(stack.execute(doc, setExposure(doc, v)).mask, SceneChanges::Display);
     EXPECT_EQ(exposure(doc), 3.0f);
     EXPECT_EQ(stack.undoDepth(), 3u);
     EXPECT_EQ(stack.undoLabel(), "Exposure 3");
 
-    EXPECT_EQ(stack.undo(doc), SceneChanges::Display);
+    EXPECT_EQ(stack.undo(doc).mask, SceneChanges::Display);
     EXPECT_EQ(exposure(doc), 2.0f);
     EXPECT_EQ(stack.redoLabel(), "Exposure 3");
     stack.undo(doc);
@@ -42,7 +42,7 @@ TEST(CommandStack, UndoAndRedoWalkTheHistoryInOrder) {
     stack.undo(doc);
     EXPECT_EQ(exposure(doc), 0.0f);
     EXPECT_FALSE(stack.canUndo());
-    EXPECT_EQ(stack.undo(doc), SceneChanges::None);
+    EXPECT_EQ(stack.undo(doc).mask, SceneChanges::None);
     EXPECT_EQ(exposure(doc), 0.0f);
 
     stack.redo(doc);
@@ -67,8 +67,8 @@ TEST(CommandStack, TheRevisionGrowsWithEveryChange) {
     stack.undo(doc);
     stack.redo(doc);
     EXPECT_EQ(stack.revision(), start + 4);
-    EXPECT_EQ(stack.undo(doc), SceneChanges::Display);
-    EXPECT_EQ(stack.undo(doc), SceneChanges::None);
+    EXPECT_EQ(stack.undo(doc).mask, SceneChanges::Display);
+    EXPECT_EQ(stack.undo(doc).mask, SceneChanges::None);
     EXPECT_EQ(stack.revision(), start + 5) << "nothing to undo changes nothing";
 }
 
@@ -94,7 +94,7 @@ TEST(CommandStack, ANewEditClearsTheRedoHistory) {
     ASSERT_TRUE(stack.canRedo());
     stack.execute(doc, setExposure(doc, 5.0f));
     EXPECT_FALSE(stack.canRedo());
-    EXPECT_EQ(stack.redo(doc), SceneChanges::None);
+    EXPECT_EQ(stack.redo(doc).mask, SceneChanges::None);
     EXPECT_EQ(exposure(doc), 5.0f);
     stack.undo(doc);
     EXPECT_EQ(exposure(doc), 1.0f);  // 2 is gone for good
@@ -132,21 +132,22 @@ TEST(CommandStack, CancelMergeForgetsTheOpenDragOnly) {
     Document doc;
     CommandStack stack;
     stack.execute(doc, setExposure(doc, 1.0f));  // a step of its own: no drag is open
-    EXPECT_EQ(stack.cancelMerge(doc), SceneChanges::None);
+    EXPECT_EQ(stack.cancelMerge(doc).mask, SceneChanges::None);
     EXPECT_EQ(stack.undoDepth(), 1u);
     stack.execute(doc, setExposure(doc, 2.0f, "exposure"));
     stack.execute(doc, setExposure(doc, 3.0f, "exposure"));
     const uint64_t revision = stack.revision();
-    EXPECT_EQ(stack.cancelMerge(doc), SceneChanges::Display);
+    EXPECT_EQ(stack.cancelMerge(doc).mask, SceneChanges::Display);
     EXPECT_EQ(exposure(doc), 1.0f) << "back to before the drag";
     EXPECT_EQ(stack.undoDepth(), 1u);
     EXPECT_FALSE(stack.canRedo()) << "nothing to redo: the drag never happened";
     EXPECT_GT(stack.revision(), revision);
-    EXPECT_EQ(stack.cancelMerge(doc), SceneChanges::None) << "a second cancel leaves the step before alone";
+    EXPECT_EQ(stack.cancelMerge(doc).mask, SceneChanges::None)
+        << "a second cancel leaves the step before alone";
     EXPECT_EQ(stack.undoDepth(), 1u);
     stack.execute(doc, setExposure(doc, 4.0f, "exposure"));
     stack.closeMerge();
-    EXPECT_EQ(stack.cancelMerge(doc), SceneChanges::None) << "a finished drag is undone, not cancelled";
+    EXPECT_EQ(stack.cancelMerge(doc).mask, SceneChanges::None) << "a finished drag is undone, not cancelled";
     EXPECT_EQ(exposure(doc), 4.0f);
 }
 
@@ -182,7 +183,7 @@ TEST(CommandStack, AFoldedStepReportsEveryChangeOfTheDrag) {
     CommandStack stack;
     stack.execute(doc, setExposure(doc, 1.0f, "a", SceneChanges::Display));
     stack.execute(doc, setExposure(doc, 2.0f, "a", SceneChanges::Settings));
-    EXPECT_EQ(stack.undo(doc), SceneChanges::Display | SceneChanges::Settings);
+    EXPECT_EQ(stack.undo(doc).mask, SceneChanges::Display | SceneChanges::Settings);
 }
 
 TEST(CommandStack, ModifiedFollowsTheSavedState) {

@@ -46,13 +46,13 @@ using test::trs;
 // The CPU backend, recording every sync's changes.
 class RecordingBackend final : public Backend {
 public:
-    std::vector<SceneChangeMask> syncs;
+    std::vector<SceneDelta> syncs;
 
     std::string name() const override { return "recording " + cpu_->name(); }
-    SyncReport sync(const Scene& scene, SceneChangeMask changes, const ProgressFn& progress) override {
+    SyncReport sync(const Scene& scene, const SceneDelta& changes, const ProgressFn& progress) override {
         syncs.push_back(changes);
         SyncReport report = cpu_->sync(scene, changes, progress);
-        report.action = actionFor(changes);
+        report.action = actionFor(changes.mask);
         return report;
     }
     void setToggles(const IntegratorToggles& toggles) override { cpu_->setToggles(toggles); }
@@ -116,9 +116,9 @@ Fixture startSession(uint32_t spp = 1) {
     auto backend = std::make_unique<RecordingBackend>();
     Fixture f{backend.get(), std::make_unique<EditorSession>(std::move(backend))};
     f.session->adopt(tinyScene());
-    EXPECT_EQ(f.session->pendingChanges(), SceneChanges::All);
+    EXPECT_EQ(f.session->pendingChanges().mask, SceneChanges::All);
     f.session->sync();
-    EXPECT_EQ(f.session->pendingChanges(), SceneChanges::None);
+    EXPECT_EQ(f.session->pendingChanges().mask, SceneChanges::None);
     f.session->render(spp);
     return f;
 }
@@ -170,7 +170,7 @@ TEST(EditorSession, OpenReplacesTheDocument) {
     session.sync();
     EXPECT_EQ(session.open(test::projectPath("scenes/cornell.json")), "");
     EXPECT_EQ(session.document().scene.objects.size(), 8u);
-    EXPECT_EQ(session.pendingChanges(), SceneChanges::All);
+    EXPECT_EQ(session.pendingChanges().mask, SceneChanges::All);
     EXPECT_FALSE(session.history().canUndo());
     EXPECT_FALSE(session.modified());
 }
@@ -179,13 +179,16 @@ TEST(EditorSession, AMaterialEditSyncsMaterials) {
     Fixture f = startSession();
     EditorSession& session = *f.session;
     const size_t syncs = f.backend->syncs.size();
-    EXPECT_EQ(session.execute(setMaterial(session.document(), 1, edited(session, 1))),
+    EXPECT_EQ(session.execute(setMaterial(session.document(), 1, edited(session, 1))).mask,
               SceneChanges::Materials);
-    EXPECT_EQ(session.pendingChanges(), SceneChanges::Materials);
+    EXPECT_EQ(session.pendingChanges().mask, SceneChanges::Materials);
     EXPECT_FALSE(session.lastEdit().complete);
     const SyncReport report = session.sync();
     ASSERT_EQ(f.backend->syncs.size(), syncs + 1);
-    EXPECT_EQ(f.backend->syncs.back(), SceneChanges::Materials);
+    EXPECT_EQ(f.backend->syncs.back().mask, SceneChanges::Materials);
+    EXPECT_EQ(f.backend->syncs.back().materials.ids, std::vector<uint32_t>{1})
+        << "the edit names its material";
+    EXPECT_FALSE(f.backend->syncs.back().materials.every);
     EXPECT_EQ(report.action, "materials");
     EXPECT_EQ(session.lastEdit().action, "materials");
     EXPECT_EQ(session.backend().stats().samplesPerPixel, 0u) << "the edit restarts accumulation";
@@ -207,10 +210,17 @@ TEST(EditorSession, AMaterialEditSyncsMaterials) {
 TEST(EditorSession, AnObjectMoveSyncsTheTlas) {
     Fixture f = startSession();
     EditorSession& session = *f.session;
-    EXPECT_EQ(session.execute(setObjectTransform(session.document(), 0, trs({-1, 0.5f, 0}))),
+    EXPECT_EQ(session.execute(setObjectTransform(session.document(), 0, trs({-1, 0.5f, 0}))).mask,
               SceneChanges::Transforms);
     EXPECT_EQ(session.sync().action, "TLAS");
-    EXPECT_EQ(f.backend->syncs.back(), SceneChanges::Transforms);
+    EXPECT_EQ(f.backend->syncs.back().mask, SceneChanges::Transforms);
+    std::vector<uint32_t> objectInstances;  // the instances object 0 places
+    for (uint32_t i = 0; i < session.document().scene.instances.size(); ++i) {
+        if (session.document().scene.instances[i].object == 0) objectInstances.push_back(i);
+    }
+    ASSERT_FALSE(objectInstances.empty());
+    EXPECT_EQ(f.backend->syncs.back().instances.ids, objectInstances);
+    EXPECT_FALSE(f.backend->syncs.back().instances.every);
     EXPECT_EQ(session.lastEdit().action, "TLAS");
 }
 
@@ -226,11 +236,11 @@ TEST(EditorSession, ADisplayEditKeepsTheAccumulation) {
 
     ViewerSettings viewer = session.document().viewer;
     viewer.display.exposureStops = 2.0f;
-    EXPECT_EQ(session.execute(setViewer(session.document(), viewer)), SceneChanges::Display);
-    EXPECT_EQ(session.pendingChanges(), SceneChanges::Display);
+    EXPECT_EQ(session.execute(setViewer(session.document(), viewer)).mask, SceneChanges::Display);
+    EXPECT_EQ(session.pendingChanges().mask, SceneChanges::Display);
     EXPECT_EQ(session.sync().action, "nothing");
     EXPECT_EQ(f.backend->syncs.size(), syncs) << "the backend is not asked to sync";
-    EXPECT_EQ(session.pendingChanges(), SceneChanges::None);
+    EXPECT_EQ(session.pendingChanges().mask, SceneChanges::None);
     EXPECT_EQ(session.backend().stats().samplesPerPixel, 2u);
     EXPECT_EQ(session.document().viewer.display.exposureStops, 2.0f);
     EXPECT_EQ(session.lastEdit().label, latency.label) << "a display edit is not an edit to render";
@@ -392,9 +402,9 @@ TEST(EditorSession, UndoAndRedoSyncLikeTheEdit) {
     const Scene after = session.document().scene;
 
     ASSERT_TRUE(session.undo());
-    EXPECT_EQ(session.pendingChanges(), SceneChanges::Materials);
+    EXPECT_EQ(session.pendingChanges().mask, SceneChanges::Materials);
     EXPECT_EQ(session.sync().action, action);
-    EXPECT_EQ(f.backend->syncs.back(), SceneChanges::Materials);
+    EXPECT_EQ(f.backend->syncs.back().mask, SceneChanges::Materials);
     test::expectScenesEqual(before, session.document().scene);
     EXPECT_EQ(session.lastEdit().label, "Undo Edit material blue");
     EXPECT_FALSE(session.lastEdit().complete);
@@ -554,7 +564,7 @@ TEST(EditorSession, ResolutionOverridesKeepTheFilesResolution) {
     EXPECT_EQ(session.document().scene.render.width, 64u) << "the render keeps its size after saving";
 
     session.restoreResolution();
-    EXPECT_EQ(session.pendingChanges() & SceneChanges::Settings, SceneChanges::Settings);
+    EXPECT_EQ(session.pendingChanges().mask & SceneChanges::Settings, SceneChanges::Settings);
     session.sync();
     EXPECT_EQ(session.backend().width(), 16u);
     EXPECT_EQ(session.backend().height(), 16u);

@@ -14,6 +14,7 @@
 #include "editor/scene_equality.h"
 #include "editor/selection_box.h"
 #include "support/load_scene.h"
+#include "support/scene_delta_print.h"
 #include "support/test_paths.h"
 
 namespace pt::editor {
@@ -52,7 +53,7 @@ Document fileDocument() {
 
 // Executes `command`, checks its report and that the scene is `expected` (built from the scene
 // before by `expectedEdit`), then undo and redo, bit for bit.
-void checkEdit(Document& doc, std::unique_ptr<EditCommand> command, SceneChangeMask changes,
+void checkEdit(Document& doc, std::unique_ptr<EditCommand> command, const SceneDelta& changes,
                const std::function<void(Scene&)>& expectedEdit) {
     const Scene before = doc.scene;
     Scene expected = doc.scene;
@@ -349,7 +350,7 @@ TEST(ObjectEdits, ChoosingAMaterialVariantSwitchesEveryInstanceOfTheObject) {
             }
         };
     };
-    const SceneChangeMask changes = SceneChanges::Transforms | SceneChanges::Lights;
+    const SceneDelta changes = SceneChanges::Transforms | SceneChanges::Lights;
     EXPECT_EQ(setObjectVariant(doc, 0, 1)->label(), "Variant Linen of chairs");
     checkEdit(doc, setObjectVariant(doc, 0, 1), changes, show(1));
     EXPECT_EQ(doc.scene.materials[doc.scene.instances[0].materials[0]].name, "linen");

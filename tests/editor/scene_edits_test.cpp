@@ -17,6 +17,7 @@
 #include "render/scene/morph.h"
 #include "support/load_scene.h"
 #include "support/scene_builder.h"
+#include "support/scene_delta_print.h"
 #include "support/test_paths.h"
 
 namespace pt::editor {
@@ -80,7 +81,7 @@ Document codeDocument() {
 // Applies `command` through a CommandStack, checks what it reports and that the document is
 // `expected`, then that undo gives back the document as it was and redo the edited one, all
 // bit for bit.
-void checkEdit(Document& doc, std::unique_ptr<EditCommand> command, SceneChangeMask changes,
+void checkEdit(Document& doc, std::unique_ptr<EditCommand> command, const SceneDelta& changes,
                const std::function<void(Document&)>& expectedEdit) {
     const Document before = doc;
     Document expected = doc;
@@ -111,7 +112,7 @@ TEST(SceneEdits, SetMaterialChangesOneMaterial) {
     m.roughness = 0.125f;
     auto command = setMaterial(doc, 1, m);
     EXPECT_NE(command->label().find("blue"), std::string::npos) << command->label();
-    checkEdit(doc, std::move(command), SceneChanges::Materials,
+    checkEdit(doc, std::move(command), materialsEdited({1}),
               [&](Document& d) { d.scene.materials[1].params = m; });
 }
 
@@ -136,7 +137,7 @@ TEST(SceneEdits, DragsOfOneMaterialFoldButNotOfTwo) {
 TEST(SceneEdits, SetInstanceTransformMovesOneInstance) {
     Document doc = codeDocument();
     const Affine3 moved = trs({0.25f, 1, -2}, {10, 20, 30}, {1, 2, 3}).toAffine();
-    checkEdit(doc, setInstanceTransform(doc, 1, moved), SceneChanges::Transforms,
+    checkEdit(doc, setInstanceTransform(doc, 1, moved), instancesMoved({1}),
               [&](Document& d) { d.scene.instances[1].objectToWorld = moved; });
 }
 
@@ -264,12 +265,22 @@ void expectNear(Vec3 expected, Vec3 actual, const std::string& where) {
         EXPECT_NEAR(actual[i], expected[i], 1e-5f * (1.0f + std::fabs(expected[i]))) << where;
 }
 
+// The instances object `object` places, in scene order.
+std::vector<uint32_t> instancesOf(const Scene& scene, int32_t object) {
+    std::vector<uint32_t> out;
+    for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+        if (scene.instances[i].object == object) out.push_back(i);
+    }
+    return out;
+}
+
 TEST(SceneEdits, SetObjectTransformOfAShapeMovesItsInstance) {
     Document doc = codeDocument();
     const ObjectTransform after = trs({0, 1, 2}, {0, 90, 0}, {2, 2, 2});
     const Document before = doc;
     CommandStack stack;
-    EXPECT_EQ(stack.execute(doc, setObjectTransform(doc, 1, after)), SceneChanges::Transforms);
+    EXPECT_EQ(stack.execute(doc, setObjectTransform(doc, 1, after)),
+              instancesMoved(instancesOf(doc.scene, 1)));
     expectNear(after.toAffine(), doc.scene.instances[1].objectToWorld, "crate");
     Document expected = before;
     expected.scene.objects[1].transform = after;
@@ -301,26 +312,19 @@ Scene fileScene() {
     return test::loadSceneOrFail(test::writeFile(folder, "scene.json", json));
 }
 
-std::vector<size_t> instancesOf(const Scene& scene, int32_t object) {
-    std::vector<size_t> out;
-    for (size_t i = 0; i < scene.instances.size(); ++i) {
-        if (scene.instances[i].object == object) out.push_back(i);
-    }
-    return out;
-}
-
 TEST(SceneEdits, SetObjectTransformKeepsInstancesRelativeToTheObject) {
     Document doc;
     doc.scene = fileScene();
     ASSERT_EQ(doc.scene.objects.size(), 3u);
-    const std::vector<size_t> placed = instancesOf(doc.scene, 0);
+    const std::vector<uint32_t> placed = instancesOf(doc.scene, 0);
     ASSERT_GE(placed.size(), 3u) << "transforms.gltf places its mesh three times";
     const Document before = doc;
     const Affine3 objectBefore = doc.scene.objects[0].transform.toAffine();
     const ObjectTransform after = trs({-2, 0.5f, 4}, {0, -60, 15}, {0.5f, 0.5f, 1.5f});
 
     CommandStack stack;
-    EXPECT_EQ(stack.execute(doc, setObjectTransform(doc, 0, after)), SceneChanges::Transforms)
+    EXPECT_EQ(stack.execute(doc, setObjectTransform(doc, 0, after)),
+              instancesMoved(instancesOf(doc.scene, 0)))
         << "the object places no lights";
     Document expected = before;
     expected.scene.objects[0].transform = after;
@@ -335,7 +339,7 @@ TEST(SceneEdits, SetObjectTransformKeepsInstancesRelativeToTheObject) {
         expectDocumentsEqual(expected, doc);
     }
     const Document moved = doc;
-    EXPECT_EQ(stack.undo(doc), SceneChanges::Transforms);
+    EXPECT_EQ(stack.undo(doc), instancesMoved(placed)) << "an undo names the same instances";
     {
         SCOPED_TRACE("undo");
         expectDocumentsEqual(before, doc);
@@ -359,8 +363,9 @@ TEST(SceneEdits, SetObjectTransformMovesTheFilesLights) {
     const ObjectTransform after = trs({5, 0, -1}, {90, 0, 0}, {2, 2, 2});
 
     CommandStack stack;
-    EXPECT_EQ(stack.execute(doc, setObjectTransform(doc, lamps, after)),
-              SceneChanges::Transforms | SceneChanges::Lights);
+    SceneDelta lampsMoved = instancesMoved(instancesOf(doc.scene, lamps));
+    lampsMoved |= SceneChanges::Lights;
+    EXPECT_EQ(stack.execute(doc, setObjectTransform(doc, lamps, after)), lampsMoved);
     const Affine3 delta = after.toAffine() * inverse(objectBefore);
     for (size_t i = 0; i < doc.scene.lights.size(); ++i) {
         const Light& was = before.scene.lights[i];
@@ -381,7 +386,7 @@ TEST(SceneEdits, SetObjectTransformMovesTheFilesLights) {
         test::expectSameBits(before.scene.instances[i].objectToWorld, doc.scene.instances[i].objectToWorld,
                              "another object's instance");
     }
-    EXPECT_EQ(stack.undo(doc), SceneChanges::Transforms | SceneChanges::Lights);
+    EXPECT_EQ(stack.undo(doc), lampsMoved);
     expectDocumentsEqual(before, doc);
 }
 
@@ -442,7 +447,7 @@ TEST(SceneEdits, SetMorphWeightsDeformsAndRecordsTheWeights) {
     const Document before = doc;
     const std::vector<float> weights = {0.5f, -1.0f};
     CommandStack stack;
-    EXPECT_EQ(stack.execute(doc, setMorphWeights(doc, 0, weights)), SceneChanges::Geometry);
+    EXPECT_EQ(stack.execute(doc, setMorphWeights(doc, 0, weights)), meshesMoved({0}));
 
     const Mesh& base = before.scene.meshes[0];
     const Mesh& mesh = doc.scene.meshes[0];
@@ -470,7 +475,7 @@ TEST(SceneEdits, SetMorphWeightsDeformsAndRecordsTheWeights) {
     expectDocumentsEqual(expected, doc);
 
     const Document after = doc;
-    EXPECT_EQ(stack.undo(doc), SceneChanges::Geometry);
+    EXPECT_EQ(stack.undo(doc), meshesMoved({0})) << "an undo names the same mesh";
     expectDocumentsEqual(before, doc);
     EXPECT_EQ(doc.scene.meshes[0].morphWeights, before.scene.meshes[0].morphWeights);
     stack.redo(doc);

@@ -19,7 +19,7 @@
 
 namespace pt {
 
-SyncReport CpuBackend::sync(const Scene& scene, SceneChangeMask changes, const ProgressFn& progress) {
+SyncReport CpuBackend::sync(const Scene& scene, const SceneDelta& changes, const ProgressFn& progress) {
     const auto start = Clock::now();
     SyncReport report;
     const bool resized = scene.render.width != width_ || scene.render.height != height_;
@@ -32,7 +32,7 @@ SyncReport CpuBackend::sync(const Scene& scene, SceneChangeMask changes, const P
     bool tlas = false;
     if (!compile && plan.refitGeometry) {
         bool refitted = false;
-        compile = !refitMovedMeshes(scene, report, refitted);
+        compile = !refitMovedMeshes(scene, plan.meshes, report, refitted);
         if (!compile && refitted) {
             actions.add(SyncAction::Refit);
             tlas = lights = true;  // the instances' world boxes moved; emitter areas changed
@@ -40,10 +40,7 @@ SyncReport CpuBackend::sync(const Scene& scene, SceneChangeMask changes, const P
     }
     if (!compile && plan.materials) {
         timedHostStep(report, "materials", [&] {
-            std::vector<Material> materials = compileMaterials(scene);
-            lights |= emissionChanged(compiled_->materials, materials);
-            compiled_->materials = std::move(materials);
-            updateTransparency(*compiled_);
+            lights |= updateEditedMaterials(scene, *compiled_, plan.materialIds).emissionChanged;
         });
         actions.add(SyncAction::Materials);
     }
@@ -95,9 +92,10 @@ SyncReport CpuBackend::sync(const Scene& scene, SceneChangeMask changes, const P
     return report;
 }
 
-bool CpuBackend::refitMovedMeshes(const Scene& scene, SyncReport& report, bool& refitted) {
+bool CpuBackend::refitMovedMeshes(const Scene& scene, const TouchedIds& meshes, SyncReport& report,
+                                  bool& refitted) {
     std::optional<std::vector<uint32_t>> moved;
-    timedHostStep(report, "copy vertices", [&] { moved = copyMovedMeshes(scene, *compiled_); });
+    timedHostStep(report, "copy vertices", [&] { moved = copyMovedMeshes(scene, meshes, *compiled_); });
     if (!moved) return false;  // meshes changed size: a topology edit
     bool mergedMoved = false;
     for (const uint32_t mesh : *moved) {
@@ -131,7 +129,7 @@ void CpuBackend::setToggles(const IntegratorToggles& toggles) {
 std::vector<ToggleState> CpuBackend::toggleStates() const {
     std::vector<ToggleState> states = integratorToggleStates(toggles_);
     for (ToggleState& s : states) {
-        if (isGpuSchedulingToggle(s.name)) {
+        if (toggleRow(s.id).scope == ToggleScope::GpuScheduling) {
             s.active = false;
             s.note = "CUDA only: the CPU backend runs one path per thread";
         }

@@ -13,7 +13,7 @@ namespace pt {
 class CpuBackend final : public Backend {
 public:
     std::string name() const override { return "cpu"; }
-    SyncReport sync(const Scene& scene, SceneChangeMask changes, const ProgressFn& progress) override;
+    SyncReport sync(const Scene& scene, const SceneDelta& changes, const ProgressFn& progress) override;
     void setToggles(const IntegratorToggles& toggles) override;
     void render(uint32_t passes) override;
     void resetAccumulation() override;
@@ -44,7 +44,7 @@ private:
     // After a vertex edit: copies the moved meshes and refits their BLASes and the merged copies
     // of them (`refitted`: any moved). False where only a compile will do (a topology edit, or a
     // refit past the SAH drift ratio).
-    bool refitMovedMeshes(const Scene& scene, SyncReport& report, bool& refitted);
+    bool refitMovedMeshes(const Scene& scene, const TouchedIds& meshes, SyncReport& report, bool& refitted);
     static constexpr float kSahUnknown = -1.0f;
     std::unique_ptr<CompiledScene> compiled_;
     RenderScene view_{};

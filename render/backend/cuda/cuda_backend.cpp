@@ -66,7 +66,7 @@ CudaBackend::~CudaBackend() {
     if (stream_) cudaStreamDestroy(stream_);
 }
 
-SyncReport CudaBackend::sync(const Scene& scene, SceneChangeMask changes, const ProgressFn& progress) {
+SyncReport CudaBackend::sync(const Scene& scene, const SceneDelta& changes, const ProgressFn& progress) {
     const auto start = Clock::now();
     SyncReport report;
     const bool resized = scene.render.width != width_ || scene.render.height != height_;
@@ -78,7 +78,8 @@ SyncReport CudaBackend::sync(const Scene& scene, SceneChangeMask changes, const 
     if (plan.reset) actions.add(SyncAction::Reset);
 
     if (!needsFullBuild && plan.refitGeometry) {
-        if (const std::optional<SyncAction> done = refitChangedMeshes(scene, report, needsFullBuild)) {
+        if (const std::optional<SyncAction> done =
+                refitChangedMeshes(scene, plan.meshes, report, needsFullBuild)) {
             tlasDirty = true;
             hostTlasStale_ = true;
             // The light table's weights follow emitter areas and the scene's bounds. Stale weights
@@ -107,11 +108,13 @@ SyncReport CudaBackend::sync(const Scene& scene, SceneChangeMask changes, const 
     }
     if (!needsFullBuild && plan.materials) {
         timedStep(stream_, report, "materials", [&] {
-            std::vector<Material> materials = compileMaterials(scene);
-            lightsDirty |= emissionChanged(compiled_->materials, materials);
-            compiled_->materials = std::move(materials);
-            updateTransparency(*compiled_);
-            device_.uploadMaterials(*compiled_, stream_);
+            const MaterialsUpdate update = updateEditedMaterials(scene, *compiled_, plan.materialIds);
+            lightsDirty |= update.emissionChanged;
+            if (update.all) {
+                device_.uploadMaterials(*compiled_, stream_);
+            } else {
+                for (const uint32_t m : update.copied) device_.uploadMaterial(*compiled_, m, stream_);
+            }
         });
         actions.add(SyncAction::Materials);
     }
@@ -203,8 +206,8 @@ bool CudaBackend::uploadChangedVertices(const Mesh& mesh, uint32_t meshIndex) {
     return positions.second > 0;
 }
 
-std::optional<SyncAction> CudaBackend::refitChangedMeshes(const Scene& scene, SyncReport& report,
-                                                          bool& needsFullBuild) {
+std::optional<SyncAction> CudaBackend::refitChangedMeshes(const Scene& scene, const TouchedIds& meshes,
+                                                          SyncReport& report, bool& needsFullBuild) {
     const uint32_t meshBlases = device_.blasCount() - (compiled_->merged.active() ? 1u : 0u);
     if (scene.meshes.size() != meshBlases) {
         needsFullBuild = true;
@@ -212,7 +215,7 @@ std::optional<SyncAction> CudaBackend::refitChangedMeshes(const Scene& scene, Sy
     }
     std::vector<uint32_t> changed;
     timedStep(stream_, report, "upload vertices", [&] {
-        for (uint32_t i = 0; i < meshBlases; ++i) {
+        for (const uint32_t i : meshes.below(meshBlases)) {
             const Mesh& mesh = scene.meshes[i];
             const BlasRef& blas = device_.blas(i);
             if (mesh.primitiveCount() != blas.primitiveCount) {
@@ -528,15 +531,15 @@ std::vector<ToggleState> CudaBackend::toggleStates() const {
     std::vector<ToggleState> states = integratorToggleStates(toggles_);
     for (ToggleState& s : states) {
         if (!s.requested) continue;
-        if (s.name == "first_hit_cache") {
+        if (s.id == ToggleId::FirstHitCache) {
             s.active = firstHitCacheApplies(&s.note);
-        } else if ((s.name == "compaction" || s.name == "material_sort") && runsMegakernel()) {
+        } else if ((s.id == ToggleId::Compaction || s.id == ToggleId::MaterialSort) && runsMegakernel()) {
             s.active = false;
             s.note = "wavefront only; the megakernel is on";
-        } else if (s.name == "path_regeneration" && !runsMegakernel()) {
+        } else if (s.id == ToggleId::PathRegeneration && !runsMegakernel()) {
             s.active = false;
             s.note = "megakernel only; the wavefront is on";
-        } else if (s.name == "path_regeneration" && (aovsRequested_ & kPathAovs) != 0) {
+        } else if (s.id == ToggleId::PathRegeneration && (aovsRequested_ & kPathAovs) != 0) {
             s.active = false;
             s.note = "path AOVs run one path a thread";
         }

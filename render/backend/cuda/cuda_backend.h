@@ -30,7 +30,8 @@ public:
     ~CudaBackend() override;
 
     std::string name() const override { return "cuda"; }
-    SyncReport sync(const Scene& scene, SceneChangeMask changes, const ProgressFn& progress) override;
+    BackendCapabilities capabilities() const override { return {true, true}; }
+    SyncReport sync(const Scene& scene, const SceneDelta& changes, const ProgressFn& progress) override;
     void setToggles(const IntegratorToggles& toggles) override;
     void render(uint32_t passes) override;
     void resetAccumulation() override;
@@ -64,11 +65,11 @@ public:
 
 private:
     void fullBuild(const Scene& scene, const ProgressFn& progress, SyncReport& report);
-    // Uploads the vertices that changed and refits (or rebuilds) the BLASes of meshes whose
-    // positions moved; returns Refit or Rebuild, or nothing when no mesh moved. Sets
-    // needsFullBuild when a mesh changed size (a topology edit).
-    std::optional<SyncAction> refitChangedMeshes(const Scene& scene, SyncReport& report,
-                                                 bool& needsFullBuild);
+    // Uploads the vertices that changed, of the meshes the edit touched, and refits (or
+    // rebuilds) the BLASes of meshes whose positions moved; returns Refit or Rebuild, or nothing
+    // when no mesh moved. Sets needsFullBuild when a mesh changed size (a topology edit).
+    std::optional<SyncAction> refitChangedMeshes(const Scene& scene, const TouchedIds& meshes,
+                                                 SyncReport& report, bool& needsFullBuild);
     // Copies the vertices of triangle mesh `meshIndex` that differ from the host copy into it
     // and uploads them (the changed range of each array); returns whether its positions changed.
     bool uploadChangedVertices(const Mesh& mesh, uint32_t meshIndex);

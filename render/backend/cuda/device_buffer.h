@@ -9,6 +9,7 @@
 
 #include "render/backend/cuda/cuda_check.h"
 #include "render/math/span.h"
+#include "render/util/check.h"
 
 namespace pt::cuda {
 
@@ -47,6 +48,7 @@ public:
     void upload(const std::vector<T>& host, cudaStream_t stream = nullptr) { upload(host.data(), host.size(), stream); }
     // Writes `count` elements at element `offset` (within the current size).
     void uploadAt(size_t offset, const T* host, size_t count, cudaStream_t stream = nullptr) {
+        PT_CHECK(offset + count <= size_);
         if (count) {
             PT_CUDA_CHECK(cudaMemcpyAsync(data_ + offset, host, count * sizeof(T), cudaMemcpyHostToDevice, stream));
         }
@@ -57,6 +59,7 @@ public:
     }
     // Reads `count` elements from element `offset` (within the current size).
     void downloadAt(size_t offset, T* host, size_t count) const {
+        PT_CHECK(offset + count <= size_);
         if (count) PT_CUDA_CHECK(cudaMemcpy(host, data_ + offset, count * sizeof(T), cudaMemcpyDeviceToHost));
     }
     std::vector<T> download() const {

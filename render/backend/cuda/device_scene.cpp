@@ -81,6 +81,10 @@ void DeviceScene::uploadMaterials(const CompiledScene& host, cudaStream_t stream
     materials_.upload(host.materials, stream);
 }
 
+void DeviceScene::uploadMaterial(const CompiledScene& host, uint32_t material, cudaStream_t stream) {
+    materials_.uploadAt(material, host.materials.data() + material, 1, stream);
+}
+
 void DeviceScene::uploadLights(const CompiledScene& host, cudaStream_t stream, bool environment) {
     uploadFitted(emitters_, host.emitters.emitters, stream);
     uploadFitted(emitterAlias_, host.emitters.alias, stream);

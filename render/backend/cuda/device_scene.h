@@ -33,6 +33,7 @@ class DeviceScene {
 public:
     void uploadAll(const CompiledScene& host, cudaStream_t stream);
     void uploadMaterials(const CompiledScene& host, cudaStream_t stream);
+    void uploadMaterial(const CompiledScene& host, uint32_t material, cudaStream_t stream);  // one, in place
     // Punctual lights and the light table; the environment's sampling tables too where
     // `environment` (they change only with the environment image or its intensity).
     void uploadLights(const CompiledScene& host, cudaStream_t stream, bool environment = true);

@@ -85,7 +85,7 @@ TEST(SyncPlan, ActionsRankByCost) {
 
 // Renders `edited` after syncing `changes` into a backend that had compiled `before`, and
 // compares with a fresh compile of `edited`.
-void expectSyncMatchesAFreshCompile(const Scene& before, const Scene& edited, SceneChangeMask changes,
+void expectSyncMatchesAFreshCompile(const Scene& before, const Scene& edited, const SceneDelta& changes,
                                     const char* expectedAction, bool buildsBvh,
                                     const IntegratorToggles& toggles = {}) {
     CpuBackend patched;
@@ -112,6 +112,8 @@ TEST(CpuSync, AMaterialDragRecompilesMaterialsOnly) {
     edited.materials[1].params.roughness = 0.1f;
     edited.materials[1].params.baseColor = {0.2f, 0.8f, 0.2f};
     expectSyncMatchesAFreshCompile(before, edited, SceneChanges::Materials, "materials", false);
+    // The editor's drag names its material: only that one is copied.
+    expectSyncMatchesAFreshCompile(before, edited, materialsEdited({1}), "materials", false);
 }
 
 TEST(CpuSync, EmissionEditsRebuildTheLightTable) {
@@ -120,6 +122,47 @@ TEST(CpuSync, EmissionEditsRebuildTheLightTable) {
     edited.materials[3].params.emission = Vec3(2.0f, 4.0f, 8.0f);  // the lamp
     edited.materials[2].params.emission = Vec3(1.0f);              // and the box starts to glow
     expectSyncMatchesAFreshCompile(before, edited, SceneChanges::Materials, "materials", false);
+    expectSyncMatchesAFreshCompile(before, edited, materialsEdited({2, 3}), "materials", false);
+    // Named one at a time (two drags merged by the session), the table still follows both.
+    SceneDelta twoDrags = materialsEdited({3});
+    twoDrags |= materialsEdited({2});
+    expectSyncMatchesAFreshCompile(before, edited, twoDrags, "materials", false);
+}
+
+// Only the materials an edit names are copied into the compiled scene; where it names none, or
+// the count changed, all of them are, and emission is compared so the light table follows.
+TEST(SyncPlan, EditedMaterialsAreCopiedByName) {
+    const Scene before = room();
+    Scene edited = before;
+    edited.materials[0].params.roughness = 0.3f;
+    edited.materials[1].params.roughness = 0.7f;
+    CompiledScene compiled = compileRenderScene(before);
+    MaterialsUpdate update = updateEditedMaterials(edited, compiled, TouchedIds::only({1}));
+    EXPECT_FALSE(update.all || update.emissionChanged);
+    EXPECT_EQ(update.copied, std::vector<uint32_t>{1});
+    EXPECT_EQ(compiled.materials[1].roughness, 0.7f);
+    EXPECT_EQ(compiled.materials[0].roughness, before.materials[0].params.roughness) << "not named";
+    update = updateEditedMaterials(edited, compiled, TouchedIds{});
+    EXPECT_TRUE(update.all);
+    EXPECT_EQ(compiled.materials[0].roughness, 0.3f);
+    edited.materials[3].params.emission = Vec3(1.0f);  // the lamp dims
+    EXPECT_TRUE(updateEditedMaterials(edited, compiled, TouchedIds::only({3})).emissionChanged);
+    edited.materials.push_back(edited.materials[0]);
+    update = updateEditedMaterials(edited, compiled, TouchedIds::only({0}));
+    EXPECT_TRUE(update.all) << "a material more: the count changed";
+    EXPECT_EQ(compiled.materials.size(), edited.materials.size() + 1) << "and the fallback";
+}
+
+TEST(SyncPlan, TheIdsAnEditNamesReachThePlan) {
+    const Scene scene = room();
+    const CompiledScene compiled = compileRenderScene(scene);
+    SceneDelta delta = materialsEdited({2});
+    delta |= meshesMoved({1});
+    const SyncPlan plan = planSync(&compiled, scene, delta);
+    EXPECT_TRUE(plan.materials && plan.refitGeometry);
+    EXPECT_EQ(plan.materialIds, TouchedIds::only({2}));
+    EXPECT_EQ(plan.meshes, TouchedIds::only({1}));
+    EXPECT_TRUE(planSync(&compiled, scene, SceneChanges::Geometry).meshes.every) << "a bare mask names none";
 }
 
 // The first scene instance that is (or is not) in the merged BLAS.
@@ -164,6 +207,7 @@ TEST(CpuSync, MovedVerticesRefitTheirBlases) {
     const uint32_t boxMesh = edited.instances[instanceMerged(before, true)].mesh;
     for (Vec3& p : edited.meshes[boxMesh].positions) p = p * 0.8f + Vec3(0.0f, 0.1f * p.x, 0.0f);
     expectSyncMatchesAFreshCompile(before, edited, SceneChanges::Geometry, "refit", true);
+    expectSyncMatchesAFreshCompile(before, edited, meshesMoved({boxMesh}), "refit", true);
 }
 
 }  // namespace

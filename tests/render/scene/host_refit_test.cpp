@@ -70,7 +70,7 @@ TEST(HostRefit, AfterEveryVertexMovesHitsMatchBruteForce) {
             p = {p.x * std::cos(angle) - p.z * std::sin(angle), p.y + 0.05f * std::sin(7.0f * p.x),
                  p.x * std::sin(angle) + p.z * std::cos(angle)};
         }
-        const std::optional<std::vector<uint32_t>> moved = copyMovedMeshes(scene, compiled);
+        const std::optional<std::vector<uint32_t>> moved = copyMovedMeshes(scene, TouchedIds{}, compiled);
         ASSERT_TRUE(moved.has_value());
         ASSERT_EQ(*moved, std::vector<uint32_t>{0});
         const float before = blasSahCost(compiled, 0);
@@ -95,12 +95,34 @@ TEST(HostRefit, UnmovedMeshesAreLeftAloneAndTopologyEditsRefused) {
     Rng rng(12);
     Scene scene = soupScene(SoupKind::Uniform, 100, rng);
     CompiledScene compiled = compileRenderScene(scene);
-    EXPECT_EQ(copyMovedMeshes(scene, compiled), std::vector<uint32_t>{});
+    EXPECT_EQ(copyMovedMeshes(scene, TouchedIds{}, compiled), std::vector<uint32_t>{});
     scene.meshes[0].positions.push_back(Vec3(0.0f));
     scene.meshes[0].indices.insert(scene.meshes[0].indices.end(), {0, 1, 300});
-    EXPECT_FALSE(copyMovedMeshes(scene, compiled).has_value()) << "a triangle more";
+    EXPECT_FALSE(copyMovedMeshes(scene, TouchedIds{}, compiled).has_value()) << "a triangle more";
     scene.meshes.push_back(scene.meshes[0]);
-    EXPECT_FALSE(copyMovedMeshes(scene, compiled).has_value()) << "a mesh more";
+    EXPECT_FALSE(copyMovedMeshes(scene, TouchedIds{}, compiled).has_value()) << "a mesh more";
+}
+
+// An edit that names the meshes it moved (a morph-weight drag) has only those compared and
+// copied: a mesh it did not name keeps its compiled vertices until an edit names it.
+TEST(HostRefit, OnlyTheMeshesAnEditNamesAreCompared) {
+    Rng rng(13);
+    Scene scene = soupScene(SoupKind::Uniform, 100, rng);
+    scene.meshes.push_back(test::makeSoup(SoupKind::Uniform, 100, rng));
+    Instance second;
+    second.mesh = 1;
+    scene.instances.push_back(second);
+    CompiledScene compiled = compileRenderScene(scene);
+    for (Mesh& mesh : scene.meshes) {
+        for (Vec3& p : mesh.positions) p = p * 1.5f;
+    }
+    const Vec3 firstOfMesh0 = compiled.positions[0];
+    EXPECT_EQ(copyMovedMeshes(scene, TouchedIds::only({1}), compiled), std::vector<uint32_t>{1});
+    EXPECT_EQ(compiled.positions[0], firstOfMesh0) << "mesh 0 was not named";
+    EXPECT_EQ(compiled.positions[scene.meshes[0].positions.size()], scene.meshes[1].positions[0]);
+    EXPECT_EQ(copyMovedMeshes(scene, TouchedIds{}, compiled), std::vector<uint32_t>{0})
+        << "an edit that names none compares them all; mesh 1 is current already";
+    EXPECT_EQ(compiled.positions[0], scene.meshes[0].positions[0]);
 }
 
 }  // namespace

@@ -1,0 +1,45 @@
+#include "render/backend/toggle_table.h"
+
+namespace pt {
+
+const std::vector<ToggleRow>& toggleTable() {
+    using S = ToggleScope;
+    using T = IntegratorToggles;
+    static const std::vector<ToggleRow> rows = {
+        {ToggleId::Nee, "nee", "Next-event estimation", "next-event estimation", "", "--no-nee",
+         &T::nextEventEstimation, false, S::Integrator},
+        {ToggleId::Mis, "mis", "Multiple importance sampling", "MIS", "", "--no-mis", &T::multipleImportance,
+         false, S::Integrator},
+        {ToggleId::RussianRoulette, "rr", "Russian roulette", "Russian roulette", "", "--no-rr",
+         &T::russianRoulette, false, S::Integrator},
+        {ToggleId::Bvh, "bvh", "BVH (off: brute force, validation only)", "BVH", "", "--bvh-off",
+         &T::bruteForce, true, S::Integrator},
+        {ToggleId::MergeInstances, "merge_instances", "Merge small instances (one world-space BLAS)",
+         "merged instances", "", "--no-merge", &T::mergeInstances, false, S::Integrator},
+        {ToggleId::PixelJitter, "pixel_jitter", "Pixel jitter (antialiasing)", "pixel jitter", "",
+         "--no-jitter", &T::pixelJitter, false, S::Integrator},
+        // No flag of its own: naming a schedule (--megakernel, --wavefront) turns it off.
+        {ToggleId::AutoSchedule, "auto_schedule", "Auto schedule (time both, run the faster)",
+         "auto schedule", "", "", &T::autoSchedule, false, S::GpuScheduling},
+        {ToggleId::Megakernel, "megakernel", "Megakernel (else wavefront)", "megakernel", "--megakernel",
+         "--wavefront", &T::megakernel, false, S::GpuScheduling},
+        {ToggleId::PathRegeneration, "path_regeneration", "Path regeneration (megakernel)",
+         "path regeneration", "--regeneration", "", &T::pathRegeneration, false, S::GpuScheduling},
+        {ToggleId::Compaction, "compaction", "Stream compaction", "stream compaction", "", "--no-compaction",
+         &T::streamCompaction, false, S::GpuScheduling},
+        {ToggleId::MaterialSort, "material_sort", "Material sort", "material sort", "--sort-materials",
+         "--no-sort-materials", &T::materialSort, false, S::GpuScheduling},
+        {ToggleId::FirstHitCache, "first_hit_cache", "First-hit cache", "first-hit cache", "",
+         "--no-first-hit-cache", &T::firstHitCache, false, S::GpuScheduling},
+    };
+    return rows;
+}
+
+const ToggleRow& toggleRow(ToggleId id) {
+    for (const ToggleRow& row : toggleTable()) {
+        if (row.id == id) return row;
+    }
+    return toggleTable().front();  // unreachable: every id has a row (toggle_table_test.cpp)
+}
+
+}  // namespace pt

@@ -1,0 +1,86 @@
+#pragma once
+// The renderer's on/off toggles as one table (issue 16): the CLI's flags, the converge and
+// stats keys, the editor's checkboxes and undo labels, and the states backends report are all
+// read from it, so a new toggle is one row here and one field in IntegratorToggles.
+#include <string>
+#include <vector>
+
+namespace pt {
+
+// Renderer switches a user can flip to see what each costs or buys. The integrator ones change
+// the estimator; the scheduling ones (GPU) change only speed, never the converged image.
+struct IntegratorToggles {
+    bool nextEventEstimation = true;
+    bool multipleImportance = true;
+    bool russianRoulette = true;
+    bool bruteForce = false;  // BVH off: validation only, refused above a triangle budget
+    // Small instances' triangles in one world-space BLAS (render/scene/merged_geometry.h).
+    bool mergeInstances = true;
+    float clampRadiance = 0.0f;  // firefly clamp on indirect luminance per sample; 0 = off
+    // Jitter primary rays inside the pixel (antialiasing). Off: every sample of a pixel starts
+    // with the same ray through its centre, which lets the first hit be cached.
+    bool pixelJitter = true;
+    // CUDA scheduling (the CPU backend runs one path per thread and has none of these).
+    // Auto: the first passes of each scene and feature set time both schedules and the rest run
+    // the faster (render/backend/schedule_chooser.h); which wins depends on the scene.
+    bool autoSchedule = true;
+    // Without autoSchedule: one thread runs a whole path; else the wavefront stages.
+    bool megakernel = true;
+    // Megakernel: a thread whose path ends starts the next path of the pass at once (path
+    // regeneration), rather than idling until the other 31 of its warp end theirs. Off by
+    // default: it helps where lanes idle most (H100, 1080p: the Cornell box 132.6 against 94.7
+    // spp/s) but there the wavefront is faster still (321), and where the megakernel wins it
+    // costs coherence (Balloon 774.5 against 784.6, a 1M-triangle sphere 542.8 against 588.1).
+    bool pathRegeneration = false;
+    // The CUDA kernel variant (render/backend/cuda/kernel_variants.h) by name, to compare
+    // variants; "" (the default): the leanest that covers the scene. A variant that does not
+    // cover the scene's features is not used: the leanest covering one runs instead.
+    std::string kernelVariant = "";
+    bool streamCompaction = true;  // wavefront: dead paths leave the queues between bounces
+    bool materialSort = false;     // wavefront: paths sorted by material before shading
+    bool firstHitCache = true;     // reuse camera-ray hits across passes where the camera allows
+    // A refitted BLAS is rebuilt once its SAH cost exceeds this times its cost when last built.
+    float rebuildSahRatio = 1.25f;
+};
+
+// The on/off fields of IntegratorToggles, by name in code.
+enum class ToggleId {
+    Nee,
+    Mis,
+    RussianRoulette,
+    Bvh,
+    MergeInstances,
+    PixelJitter,
+    AutoSchedule,
+    Megakernel,
+    PathRegeneration,
+    Compaction,
+    MaterialSort,
+    FirstHitCache,
+};
+
+// Who can apply a toggle: every backend, or a GPU backend's scheduler only (the CPU runs one
+// path per thread and has no schedule to choose).
+enum class ToggleScope { Integrator, GpuScheduling };
+
+using ToggleField = bool IntegratorToggles::*;
+
+struct ToggleRow {
+    ToggleId id;
+    const char* key;        // stats JSON, converge variants, toggle states: "nee"
+    const char* label;      // the editor's checkbox: "Next-event estimation"
+    const char* editLabel;  // the undo label: "Renderer: next-event estimation off"
+    const char* onFlag;     // the CLI flag that turns it on, "" where none (on by default)
+    const char* offFlag;    // ... and off, "" where none
+    ToggleField field;
+    bool inverted;  // the field holds the opposite ("bvh" on is bruteForce off)
+    ToggleScope scope;
+
+    bool get(const IntegratorToggles& t) const { return (t.*field) != inverted; }
+    void set(IntegratorToggles& t, bool on) const { t.*field = on != inverted; }
+};
+
+const std::vector<ToggleRow>& toggleTable();
+const ToggleRow& toggleRow(ToggleId id);
+
+}  // namespace pt
