@@ -19,8 +19,8 @@ std::string uniqueTempPath(const std::string& path) {
     static std::atomic<unsigned> counter{0};
     const fs::path target(path);
     // Keep the extension last: image writers pick the format from it.
-    const std::string name = "." + target.stem().string() + ".tmp" + std::to_string(::getpid()) +
-                             "-" + std::to_string(counter++) + target.extension().string();
+    const std::string name = "." + target.stem().string() + ".tmp" + std::to_string(::getpid()) + "-" +
+                             std::to_string(counter++) + target.extension().string();
     return (target.parent_path() / name).string();
 }
 

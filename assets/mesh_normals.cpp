@@ -2,8 +2,7 @@
 
 namespace pt {
 
-void generateAreaWeightedNormals(const std::vector<Vec3>& positions,
-                                 const std::vector<uint32_t>& indices,
+void generateAreaWeightedNormals(const std::vector<Vec3>& positions, const std::vector<uint32_t>& indices,
                                  const std::vector<bool>& regenerate, std::vector<Vec3>& normals,
                                  const std::vector<uint32_t>* groups) {
     auto group = [groups](uint32_t v) { return groups ? (*groups)[v] : v; };
@@ -11,8 +10,8 @@ void generateAreaWeightedNormals(const std::vector<Vec3>& positions,
     for (size_t t = 0; t + 2 < indices.size(); t += 3) {
         const uint32_t* tri = &indices[t];
         // Twice the triangle's area, along its geometric normal (counter-clockwise front).
-        const Vec3 weighted = cross(positions[tri[1]] - positions[tri[0]],
-                                    positions[tri[2]] - positions[tri[0]]);
+        const Vec3 weighted =
+            cross(positions[tri[1]] - positions[tri[0]], positions[tri[2]] - positions[tri[0]]);
         for (int k = 0; k < 3; ++k) {
             if (regenerate[tri[k]]) sums[group(tri[k])] += weighted;
         }

@@ -16,8 +16,7 @@ namespace pt {
 // < positions.size(). With `groups` (one id per vertex, ids < positions.size()), vertices of
 // one group pool their triangles and share one normal: OBJ vertices split only by a UV seam
 // stay smooth across it.
-void generateAreaWeightedNormals(const std::vector<Vec3>& positions,
-                                 const std::vector<uint32_t>& indices,
+void generateAreaWeightedNormals(const std::vector<Vec3>& positions, const std::vector<uint32_t>& indices,
                                  const std::vector<bool>& regenerate, std::vector<Vec3>& normals,
                                  const std::vector<uint32_t>* groups = nullptr);
 

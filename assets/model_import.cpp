@@ -15,9 +15,8 @@ ImportedFile importModelFile(const std::string& path, int32_t object, Scene& sce
                    [](unsigned char c) { return char(std::tolower(c)); });
     if (extension == ".gltf" || extension == ".glb") return importGltf(path, object, scene, progress);
     if (extension == ".obj") return importObj(path, object, scene, progress);
-    throw InputError(std::filesystem::path(path).filename().string() +
-                     ": unsupported model format '" + extension +
-                     "' (expected .gltf, .glb or .obj)");
+    throw InputError(std::filesystem::path(path).filename().string() + ": unsupported model format '" +
+                     extension + "' (expected .gltf, .glb or .obj)");
 }
 
 }  // namespace pt

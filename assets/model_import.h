@@ -24,8 +24,8 @@ struct Placement {
 
 struct ImportedFile {
     std::vector<Placement> placements;
-    std::optional<Camera> camera;     // the file's first camera, in file space
-    std::vector<Light> lights;        // punctual lights (glTF KHR_lights_punctual), in file space
+    std::optional<Camera> camera;       // the file's first camera, in file space
+    std::vector<Light> lights;          // punctual lights (glTF KHR_lights_punctual), in file space
     std::vector<std::string> variants;  // material variants (glTF KHR_materials_variants), by name
 };
 

@@ -9,7 +9,7 @@
 #include "assets/file_state.h"
 #include "assets/input_error.h"
 #include "assets/message_text.h"
-#include "assets/scene_json.h"
+#include "assets/scene_json/scene_json.h"
 
 namespace pt {
 namespace fs = std::filesystem;
@@ -204,14 +204,10 @@ int32_t findSceneMaterial(const Scene& scene, const std::string& name) {
 
 const char* shapeKindName(ObjectKind kind) {
     switch (kind) {
-        case ObjectKind::Sphere:
-            return "sphere";
-        case ObjectKind::Box:
-            return "box";
-        case ObjectKind::Quad:
-            return "quad";
-        case ObjectKind::File:
-            break;
+        case ObjectKind::Sphere: return "sphere";
+        case ObjectKind::Box: return "box";
+        case ObjectKind::Quad: return "quad";
+        case ObjectKind::File: break;
     }
     return "";
 }

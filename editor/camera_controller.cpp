@@ -20,7 +20,8 @@ ViewFrame viewFrame(const Camera& c) {
     }
     const Vec3 forward = offset / distance;
     Vec3 right = cross(forward, c.up);
-    if (lengthSquared(right) < 1e-12f) right = cross(forward, std::fabs(forward.y) < 0.9f ? Vec3(0, 1, 0) : Vec3(1, 0, 0));
+    if (lengthSquared(right) < 1e-12f)
+        right = cross(forward, std::fabs(forward.y) < 0.9f ? Vec3(0, 1, 0) : Vec3(1, 0, 0));
     right = normalize(right);
     return {forward, right, cross(right, forward), distance};
 }
@@ -35,7 +36,8 @@ Vec3 rotateAbout(Vec3 v, Vec3 k, float angle) {
 
 Camera orbitCamera(const Camera& camera, float dxPixels, float dyPixels, float viewportHeight) {
     const ViewFrame f = viewFrame(camera);
-    const float radiansPerPixel = kPi / std::max(viewportHeight, 1.0f);  // a full-height drag turns 180 degrees
+    const float radiansPerPixel =
+        kPi / std::max(viewportHeight, 1.0f);  // a full-height drag turns 180 degrees
     Vec3 toEye = camera.position - camera.lookAt;
     if (!(length(toEye) > 0.0f)) toEye = -f.forward;
     toEye = rotateAbout(toEye, Vec3(0.0f, 1.0f, 0.0f), -dxPixels * radiansPerPixel);
@@ -73,7 +75,8 @@ Camera dollyCamera(const Camera& camera, float wheelSteps) {
 
 Camera flyCamera(const Camera& camera, float forward, float right, float up, float seconds, float speed) {
     const ViewFrame f = viewFrame(camera);
-    const Vec3 move = (f.forward * forward + f.right * right + Vec3(0.0f, 1.0f, 0.0f) * up) * (speed * seconds);
+    const Vec3 move =
+        (f.forward * forward + f.right * right + Vec3(0.0f, 1.0f, 0.0f) * up) * (speed * seconds);
     Camera out = camera;
     out.position = camera.position + move;
     out.lookAt = camera.lookAt + move;

@@ -9,12 +9,14 @@ std::string ColorView::key() const {
     return config->path() + "\n" + view.display + "\n" + view.view + "\n" + view.look;
 }
 
-ColorView resolveColorView(const std::string& flagPath, const ColorSettings& settings, const ColorView& current) {
+ColorView resolveColorView(const std::string& flagPath, const ColorSettings& settings,
+                           const ColorView& current) {
     ColorView next;
 #ifdef PT_HAVE_OCIO
     const std::string path = resolveColorConfigPath(flagPath, settings.config);
     try {
-        next.config = current.config && current.config->path() == path ? current.config : ColorConfig::load(path);
+        next.config =
+            current.config && current.config->path() == path ? current.config : ColorConfig::load(path);
     } catch (const std::exception& e) {
         next.error = e.what();
         return next;

@@ -8,8 +8,8 @@
 #include <memory>
 #include <string>
 
-#include "assets/color_config.h"
-#include "assets/color_processor.h"
+#include "assets/color/color_config.h"
+#include "assets/color/color_processor.h"
 #include "editor/document.h"
 #include "render/scene/scene.h"
 
@@ -27,7 +27,8 @@ struct ColorView {
 // The view for `settings` with the config found from `flagPath` (the --ocio flag) and
 // settings.config. The config of `current` is reused when the path is the same, so choosing
 // another view does not re-read the file. Never throws.
-ColorView resolveColorView(const std::string& flagPath, const ColorSettings& settings, const ColorView& current);
+ColorView resolveColorView(const std::string& flagPath, const ColorSettings& settings,
+                           const ColorView& current);
 
 // The CPU form of what the viewport shows for `viewer` (exposure, then `color`'s OpenColorIO
 // view, or the built-in operator where there is no config or the viewer asks for it), so an

@@ -9,18 +9,18 @@
 namespace pt::editor {
 
 struct ViewerSettings {
-    DisplaySettings display;          // exposure, dither; the built-in operator when builtinDisplay
+    DisplaySettings display;  // exposure, dither; the built-in operator when builtinDisplay
     // The built-in operators instead of the scene's OpenColorIO view (Scene::color), e.g. to
     // compare the two, or where no config loads.
     bool builtinDisplay = false;
-    int32_t aov = -1;                 // -1: the beauty; else a pt::Aov value
+    int32_t aov = -1;  // -1: the beauty; else a pt::Aov value
     // Passes per render step (more: fewer syncs, slower UI); 0: automatic (step_passes.h).
     uint32_t samplesPerFrame = 0;
-    uint32_t targetSpp = 0;           // stop accumulating here; 0 = never stop
+    uint32_t targetSpp = 0;  // stop accumulating here; 0 = never stop
     // Export: AOV layers for the EXR. They are accumulated beside the displayed AOV from the
     // next pass on (Backend::changeAovs); exportRender writes those that are.
     AovMask exportAovs = 0;
-    bool exportHalf = false;          // 16-bit EXR channels (exr_layers.h: which stay float)
+    bool exportHalf = false;  // 16-bit EXR channels (exr_layers.h: which stay float)
     // The beauty shown (and exported beside the raw one) through the denoiser. Its guides are
     // accumulated from the reset that turning it on makes; turning it off keeps them, so that
     // switching back and forth is a display change.

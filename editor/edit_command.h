@@ -70,8 +70,8 @@ private:
 template <class T>
 std::unique_ptr<EditCommand> makeValueCommand(std::string label, std::string mergeKey, SceneDelta changes,
                                               T before, T after, typename ValueCommand<T>::Assign assign) {
-    return std::make_unique<ValueCommand<T>>(std::move(label), std::move(mergeKey), changes, std::move(before),
-                                             std::move(after), std::move(assign));
+    return std::make_unique<ValueCommand<T>>(std::move(label), std::move(mergeKey), changes,
+                                             std::move(before), std::move(after), std::move(assign));
 }
 
 }  // namespace pt::editor

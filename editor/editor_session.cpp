@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "assets/exr_layers.h"
-#include "assets/image_write.h"
+#include "assets/image/exr_layers.h"
+#include "assets/image/image_write.h"
 #include "assets/scene_loader.h"
 #include "editor/scene_saving.h"
 

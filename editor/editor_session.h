@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "assets/color_processor.h"
+#include "assets/color/color_processor.h"
 #include "editor/command_stack.h"
 #include "editor/picking.h"
 #include "render/util/progress.h"
@@ -20,14 +20,14 @@ namespace pt::editor {
 
 // What the last edit cost, from the command to the first frame that shows it.
 struct EditLatency {
-    std::string label;              // the command, e.g. "Edit material white"
-    std::string action;             // what sync did: nothing / reset / materials / TLAS / refit / rebuild / full build
-    double applySeconds = 0.0;      // the command writing the document (e.g. 10M new positions)
-    double syncSeconds = 0.0;       // backend sync alone
+    std::string label;   // the command, e.g. "Edit material white"
+    std::string action;  // what sync did: nothing / reset / materials / TLAS / refit / rebuild / full build
+    double applySeconds = 0.0;  // the command writing the document (e.g. 10M new positions)
+    double syncSeconds = 0.0;   // backend sync alone
     // Command handed to the session (execute, undo, redo) -> first pass of samples done:
     // apply, sync and the pass. Frames for display are timed from the same instant.
     double toFrameSeconds = 0.0;
-    bool complete = false;          // false until that first frame exists
+    bool complete = false;  // false until that first frame exists
 };
 
 class EditorSession {

@@ -29,8 +29,9 @@ bool ErrorTracker::due(double seconds, uint32_t spp, uint32_t width, uint32_t he
     std::lock_guard<std::mutex> lock(mutex_);
     if (!reference_ || spp == 0) return false;
     if (reference_->width != width || reference_->height != height) {
-        problem_ = "the reference is " + std::to_string(reference_->width) + "x" + std::to_string(reference_->height) +
-                   ", the render " + std::to_string(width) + "x" + std::to_string(height);
+        problem_ = "the reference is " + std::to_string(reference_->width) + "x" +
+                   std::to_string(reference_->height) + ", the render " + std::to_string(width) + "x" +
+                   std::to_string(height);
         curve_.clear();
         return false;
     }

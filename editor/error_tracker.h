@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "assets/reference_image.h"
+#include "assets/image/reference_image.h"
 #include "render/util/error_curve.h"
 
 namespace pt::editor {

@@ -77,8 +77,10 @@ std::unique_ptr<EditCommand> renameObject(const Document& doc, uint32_t object, 
     // Instances named after their object follow the new name (names from the file stay).
     for (Instance& instance : after.instances) {
         if (instance.object != int32_t(object) || old.empty()) continue;
-        if (instance.name == old) instance.name = name;
-        else if (instance.name.rfind(old + ".", 0) == 0) instance.name = name + instance.name.substr(old.size());
+        if (instance.name == old)
+            instance.name = name;
+        else if (instance.name.rfind(old + ".", 0) == 0)
+            instance.name = name + instance.name.substr(old.size());
     }
     return layoutCommand(doc, "Rename " + old, SceneChanges::None, std::move(after));
 }
@@ -120,10 +122,13 @@ std::unique_ptr<EditCommand> deleteObject(const Document& doc, uint32_t object) 
         if (light.object > removed) --light.object;
         after.lights.push_back(std::move(light));
     }
-    for (int32_t owner : before.materialOwners) after.materialOwners.push_back(ownerAfterRemoval(owner, removed));
-    for (int32_t owner : before.textureOwners) after.textureOwners.push_back(ownerAfterRemoval(owner, removed));
+    for (int32_t owner : before.materialOwners)
+        after.materialOwners.push_back(ownerAfterRemoval(owner, removed));
+    for (int32_t owner : before.textureOwners)
+        after.textureOwners.push_back(ownerAfterRemoval(owner, removed));
     const SceneChangeMask changes =
-        SceneChanges::Transforms | (placesLights(before, removed) ? SceneChanges::Lights : SceneChanges::None);
+        SceneChanges::Transforms |
+        (placesLights(before, removed) ? SceneChanges::Lights : SceneChanges::None);
     return layoutCommand(doc, "Delete " + before.objects.at(object).name, changes, std::move(after));
 }
 

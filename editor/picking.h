@@ -8,10 +8,10 @@
 namespace pt::editor {
 
 struct PickResult {
-    int32_t instance = -1;        // Scene::instances index; -1 when nothing was hit
-    int32_t object = -1;          // that instance's SceneObject, or -1
-    float distance = 0.0f;        // along the ray, world units
-    float focusDistance = 0.0f;   // along the camera's view direction (Camera::focusDistance's measure)
+    int32_t instance = -1;       // Scene::instances index; -1 when nothing was hit
+    int32_t object = -1;         // that instance's SceneObject, or -1
+    float distance = 0.0f;       // along the ray, world units
+    float focusDistance = 0.0f;  // along the camera's view direction (Camera::focusDistance's measure)
     bool hit() const { return instance >= 0; }
 };
 

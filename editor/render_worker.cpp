@@ -154,7 +154,8 @@ bool RenderWorker::step() {
     if (rendered > 0) measureError();  // after publishing, so the frame is not delayed by it
     const double seconds = secondsSince(start);
     if (rendered > 0) secondsPerPass_ = seconds / rendered;
-    std::vector<uint32_t> alive = rendered > 0 ? session_.backend().pathsAlivePerBounce() : std::vector<uint32_t>{};
+    std::vector<uint32_t> alive =
+        rendered > 0 ? session_.backend().pathsAlivePerBounce() : std::vector<uint32_t>{};
     std::lock_guard<std::mutex> status(statusMutex_);
     status_.denoiseSeconds = session_.lastDenoiseSeconds();
     if (rendered > 0) {

@@ -26,22 +26,22 @@ namespace pt::editor {
 struct DisplayFrame {
     uint32_t width = 0, height = 0;
     std::vector<float> rgba;
-    int32_t aov = -1;        // -1: the beauty
-    uint64_t serial = 0;     // grows with every published frame
-    uint64_t document = 0;   // the EditorSession::documentSerial() it shows
+    int32_t aov = -1;       // -1: the beauty
+    uint64_t serial = 0;    // grows with every published frame
+    uint64_t document = 0;  // the EditorSession::documentSerial() it shows
     BackendStats stats;
 };
 
 struct WorkerStatus {
-    std::string stage;        // "" when idle, else the long operation under way ("BLAS build", ...)
-    double fraction = 0.0;    // of that stage
-    std::string error;        // the last sync's refusal, until the next edit
+    std::string stage;      // "" when idle, else the long operation under way ("BLAS build", ...)
+    double fraction = 0.0;  // of that stage
+    std::string error;      // the last sync's refusal, until the next edit
     double secondsPerPass = 0.0;
     double denoiseSeconds = 0.0;  // the last denoise of a shown or exported frame (0: none yet)
     bool converged = false;
     std::vector<ToggleState> toggles;  // as the backend applies them, after the last sync
     uint64_t deviceMemoryBytes = 0;
-    AovMask aovs = 0;                  // accumulated (Backend::aovs()) after the last sync
+    AovMask aovs = 0;                           // accumulated (Backend::aovs()) after the last sync
     std::vector<uint32_t> pathsAlivePerBounce;  // wavefront only, of the last wave
 };
 
@@ -95,7 +95,7 @@ private:
     bool woken_ = false;
     std::atomic<bool> stop_{false};
     std::atomic<bool> hostFrames_{true};
-    bool syncRefused_ = false;  // render thread only: wait for the next edit before retrying
+    bool syncRefused_ = false;     // render thread only: wait for the next edit before retrying
     double secondsPerPass_ = 0.0;  // render thread only: of the last step, for automatic passes
 
     mutable std::mutex frameMutex_;

@@ -4,9 +4,9 @@
 #include <map>
 #include <memory>
 
-#include "assets/image_read.h"
-#include "assets/material_json.h"
-#include "assets/scene_json.h"
+#include "assets/image/image_read.h"
+#include "assets/scene_json/material_json.h"
+#include "assets/scene_json/scene_json.h"
 #include "editor/edit_labels.h"
 #include "render/scene/morph.h"
 
@@ -104,8 +104,9 @@ std::unique_ptr<EditCommand> setInstanceTransform(const Document& doc, uint32_t 
 
 std::unique_ptr<EditCommand> setLight(const Document& doc, uint32_t light, const Light& after) {
     const Light& before = doc.scene.lights.at(light);
-    return makeValueCommand<Light>("Edit light " + before.name, key("light", light), SceneChanges::Lights, before,
-                                   after, [light](Document& d, const Light& l) { d.scene.lights.at(light) = l; });
+    return makeValueCommand<Light>("Edit light " + before.name, key("light", light), SceneChanges::Lights,
+                                   before, after,
+                                   [light](Document& d, const Light& l) { d.scene.lights.at(light) = l; });
 }
 
 std::unique_ptr<EditCommand> setCamera(const Document& doc, const Camera& after) {
@@ -184,11 +185,13 @@ std::unique_ptr<EditCommand> setViewer(const Document& doc, const ViewerSettings
 }
 
 std::unique_ptr<EditCommand> setColorSettings(const Document& doc, const ColorSettings& after) {
-    return makeValueCommand<ColorSettings>("Color view", "color", SceneChanges::Display, doc.scene.color, after,
+    return makeValueCommand<ColorSettings>("Color view", "color", SceneChanges::Display, doc.scene.color,
+                                           after,
                                            [](Document& d, const ColorSettings& c) { d.scene.color = c; });
 }
 
-std::unique_ptr<EditCommand> setMorphWeights(const Document& doc, uint32_t mesh, const std::vector<float>& after) {
+std::unique_ptr<EditCommand> setMorphWeights(const Document& doc, uint32_t mesh,
+                                             const std::vector<float>& after) {
     // The weights, and what each object records of them for saving, before and after.
     struct MorphState {
         std::vector<float> weights;
@@ -200,7 +203,8 @@ std::unique_ptr<EditCommand> setMorphWeights(const Document& doc, uint32_t mesh,
     for (const SceneObject& object : scene.objects) before.objectWeights.push_back(object.morphWeights);
     MorphState next{after, before.objectWeights};
     for (const Instance& instance : scene.instances) {
-        if (instance.mesh == mesh && instance.object >= 0) next.objectWeights.at(size_t(instance.object))[target.name] = after;
+        if (instance.mesh == mesh && instance.object >= 0)
+            next.objectWeights.at(size_t(instance.object))[target.name] = after;
     }
     auto assign = [mesh](Document& d, const MorphState& state) {
         Mesh& m = d.scene.meshes.at(mesh);

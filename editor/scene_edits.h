@@ -36,6 +36,7 @@ std::unique_ptr<EditCommand> setViewer(const Document& doc, const ViewerSettings
 std::unique_ptr<EditCommand> setColorSettings(const Document& doc, const ColorSettings& after);
 // Deforms the mesh (a BLAS refit, not a rebuild) and records the weights on the objects that
 // place it, so saving keeps them.
-std::unique_ptr<EditCommand> setMorphWeights(const Document& doc, uint32_t mesh, const std::vector<float>& after);
+std::unique_ptr<EditCommand> setMorphWeights(const Document& doc, uint32_t mesh,
+                                             const std::vector<float>& after);
 
 }  // namespace pt::editor

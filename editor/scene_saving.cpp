@@ -3,7 +3,7 @@
 #include <cstring>
 #include <optional>
 
-#include "assets/scene_json.h"
+#include "assets/scene_json/scene_json.h"
 #include "assets/scene_loader.h"
 
 namespace pt::editor {
@@ -38,7 +38,9 @@ void saveSceneJson(Scene& scene, const std::vector<Material>& importedAtLoad, co
     std::vector<Adoption> adopted;
     for (size_t i = 0; i < scene.materials.size() && i < importedAtLoad.size(); ++i) {
         NamedMaterial& m = scene.materials[i];
-        if (m.object < 0 || size_t(m.object) >= scene.objects.size() || sameParams(m.params, importedAtLoad[i])) continue;
+        if (m.object < 0 || size_t(m.object) >= scene.objects.size() ||
+            sameParams(m.params, importedAtLoad[i]))
+            continue;
         SceneObject& object = scene.objects[size_t(m.object)];
         Adoption a{i, m.name, m.object, m.name, std::nullopt};
         if (auto it = object.materialOverrides.find(m.name); it != object.materialOverrides.end()) {
@@ -55,8 +57,10 @@ void saveSceneJson(Scene& scene, const std::vector<Material>& importedAtLoad, co
             m.name = it->name;
             m.object = it->object;
             SceneObject& object = scene.objects[size_t(it->object)];
-            if (it->previousOverride) object.materialOverrides[it->overrideKey] = *it->previousOverride;
-            else object.materialOverrides.erase(it->overrideKey);
+            if (it->previousOverride)
+                object.materialOverrides[it->overrideKey] = *it->previousOverride;
+            else
+                object.materialOverrides.erase(it->overrideKey);
         }
     };
     try {

@@ -12,7 +12,8 @@
 namespace {
 
 constexpr const char* kUsage =
-    "usage: pathtracer [SCENE] [--backend cpu|cuda] [--size WxH] [--spp N] [--frames N] [--screenshot OUT.png]\n"
+    "usage: pathtracer [SCENE] [--backend cpu|cuda] [--size WxH] [--spp N] [--frames N] [--screenshot "
+    "OUT.png]\n"
     "                  [--reference REF.exr] [--ocio CONFIG.ocio]\n"
     "  --backend     renderer (default: cuda where a usable GPU is, else cpu)\n"
     "  --size        render resolution, overriding the scene's\n"
@@ -20,10 +21,13 @@ constexpr const char* kUsage =
     "  --frames      exit after N displayed frames with new samples (or when --spp is reached)\n"
     "  --screenshot  write the window as PNG after --frames, and on every F12 (numbered)\n"
     "  --reference   an image (e.g. from pt-render reference) to plot the error against, live\n"
-    "  --ocio        OpenColorIO config for the viewport (default: the scene's, else $OCIO, else the shipped one)\n";
+    "  --ocio        OpenColorIO config for the viewport (default: the scene's, else $OCIO, else the shipped "
+    "one)\n";
 
 pt::editor::EditorOptions parse(const std::vector<std::string>& args) {
-    const pt::cli::Options o(args, {"--backend", "--size", "--spp", "--frames", "--screenshot", "--reference", "--ocio"}, {"--help", "-h"});
+    const pt::cli::Options o(
+        args, {"--backend", "--size", "--spp", "--frames", "--screenshot", "--reference", "--ocio"},
+        {"--help", "-h"});
     if (o.has("--help") || o.has("-h")) {
         std::fputs(kUsage, stdout);
         std::exit(0);

@@ -29,7 +29,8 @@ bool renderBatch(Backend& backend, uint32_t spp, uint32_t batch, uint32_t batche
 
 BatchedImage renderBatches(Backend& backend, Scene& scene, uint32_t sppPerBatch, uint32_t batches,
                            const ProgressFn& progress, const std::function<bool()>& stop) {
-    if (batches < 2 || sppPerBatch == 0) throw std::invalid_argument("renderBatches: needs 2 or more batches");
+    if (batches < 2 || sppPerBatch == 0)
+        throw std::invalid_argument("renderBatches: needs 2 or more batches");
     const uint32_t firstSeed = scene.render.seed;
     std::vector<double> sum, sumSquares;
     std::vector<float> batchMean;

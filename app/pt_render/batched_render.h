@@ -19,9 +19,9 @@ struct BatchedImage {
     std::vector<float> varianceOfMean;  // RGBA, per value: sample variance of the batch means / batches
     uint32_t spp = 0;                   // over all batches
     uint32_t batches = 0;
-    uint64_t nonfiniteSamples = 0;      // dropped by the backend, over all batches
+    uint64_t nonfiniteSamples = 0;  // dropped by the backend, over all batches
     double renderSeconds = 0.0;
-    bool interrupted = false;           // stopped early: only the batches finished before count
+    bool interrupted = false;  // stopped early: only the batches finished before count
 };
 
 // Renders `batches` (>= 2) batches of `sppPerBatch` samples with seeds scene.render.seed,

@@ -24,12 +24,14 @@ BuildInput buildInput(const CompiledScene& scene) {
     BuildInput in;
     const BlasRef* largest = nullptr;
     for (const BlasRef& b : scene.blases) {
-        if (b.kind == GeometryKind::Triangles && (!largest || b.primitiveCount > largest->primitiveCount)) largest = &b;
+        if (b.kind == GeometryKind::Triangles && (!largest || b.primitiveCount > largest->primitiveCount))
+            largest = &b;
     }
     if (largest) {
         for (uint32_t p = 0; p < largest->primitiveCount; ++p) {
             const TriangleIndices t = scene.triangles[largest->primitiveOffset + p];
-            in.meshBoxes.push_back(triangleBounds(scene.positions[t.v0], scene.positions[t.v1], scene.positions[t.v2]));
+            in.meshBoxes.push_back(
+                triangleBounds(scene.positions[t.v0], scene.positions[t.v1], scene.positions[t.v2]));
         }
     }
     for (const RenderInstance& inst : scene.instances) {
@@ -52,9 +54,10 @@ std::vector<double> timeRuns(uint32_t runs, Fn&& fn) {
 }
 
 void addBuildRows(BenchReport& report, const char* builder, double seconds, uint32_t tris, double sahRatio) {
-    report.add({"BVH", std::string("BLAS build (") + builder + ")", std::to_string(tris) + " triangles", seconds * 1e3,
-                "ms", ""});
-    report.add({"BVH", std::string("BLAS build rate (") + builder + ")", "", tris / seconds / 1e6, "Mtris/s", ""});
+    report.add({"BVH", std::string("BLAS build (") + builder + ")", std::to_string(tris) + " triangles",
+                seconds * 1e3, "ms", ""});
+    report.add(
+        {"BVH", std::string("BLAS build rate (") + builder + ")", "", tris / seconds / 1e6, "Mtris/s", ""});
     report.add({"BVH", std::string("SAH cost vs CPU binned (") + builder + ")", "", sahRatio, "x", ""});
 }
 
@@ -91,15 +94,15 @@ void benchGpu(const BuildInput& in, const Bvh& cpuBvh, float cpuSah, uint32_t ru
     DeviceBuffer<BvhNode> nodes(lbvhNodeCount(n));
     DeviceBuffer<uint32_t> primIndices(n), parents(lbvhNodeCount(n)), visits(lbvhNodeCount(n));
     LbvhBuilder builder;
-    const double build = median(timeDeviceRuns(runs, stream, [&] {
-        builder.build(boxes.data(), n, nodes.data(), primIndices.data(), stream);
-    }));
+    const double build = median(timeDeviceRuns(
+        runs, stream, [&] { builder.build(boxes.data(), n, nodes.data(), primIndices.data(), stream); }));
     const float gpuSah = sahCostOnDevice(nodes.data(), lbvhNodeCount(n), stream);
     addBuildRows(report, "GPU LBVH", build, n, cpuSah > 0 ? gpuSah / cpuSah : 0.0);
 
     computeParents(nodes.data(), lbvhNodeCount(n), parents.data(), stream);
     const double refitLbvh = median(timeDeviceRuns(runs, stream, [&] {
-        refitBvh(nodes.data(), lbvhNodeCount(n), parents.data(), primIndices.data(), boxes.data(), visits.data(), stream);
+        refitBvh(nodes.data(), lbvhNodeCount(n), parents.data(), primIndices.data(), boxes.data(),
+                 visits.data(), stream);
     }));
     report.add({"BVH", "BLAS refit (GPU)", "LBVH", refitLbvh * 1e3, "ms", ""});
     // The CPU-built tree, as the backend uploads it, refitted on the GPU.
@@ -110,7 +113,8 @@ void benchGpu(const BuildInput& in, const Bvh& cpuBvh, float cpuSah, uint32_t ru
     const uint32_t cpuCount = uint32_t(cpuBvh.nodes.size());
     computeParents(cpuNodes.data(), cpuCount, parents.data(), stream);
     const double refitCpu = median(timeDeviceRuns(runs, stream, [&] {
-        refitBvh(cpuNodes.data(), cpuCount, parents.data(), cpuPrims.data(), boxes.data(), visits.data(), stream);
+        refitBvh(cpuNodes.data(), cpuCount, parents.data(), cpuPrims.data(), boxes.data(), visits.data(),
+                 stream);
     }));
     report.add({"BVH", "BLAS refit (GPU)", "CPU binned SAH tree", refitCpu * 1e3, "ms", ""});
 
@@ -122,7 +126,8 @@ void benchGpu(const BuildInput& in, const Bvh& cpuBvh, float cpuSah, uint32_t ru
     const double tlasBuild = median(timeDeviceRuns(runs, stream, [&] {
         builder.build(instanceBoxes.data(), instances, tlas.data(), tlasIndices.data(), stream);
     }));
-    report.add({"BVH", "TLAS build (GPU LBVH)", std::to_string(instances) + " instances", tlasBuild * 1e3, "ms", ""});
+    report.add({"BVH", "TLAS build (GPU LBVH)", std::to_string(instances) + " instances", tlasBuild * 1e3,
+                "ms", ""});
     PT_CUDA_CHECK(cudaStreamSynchronize(stream));
     cudaStreamDestroy(stream);
 }
@@ -134,13 +139,13 @@ void benchBvhBuilds(const CompiledScene& scene, bool gpu, uint32_t runs, BenchRe
     const BuildInput in = buildInput(scene);
     const uint32_t n = uint32_t(in.meshBoxes.size());
     Bvh cpuBvh;
-    const double cpuBuild = median(timeRuns(runs, [&] { cpuBvh = buildBinnedSahBvh(in.meshBoxes.data(), n); }));
+    const double cpuBuild =
+        median(timeRuns(runs, [&] { cpuBvh = buildBinnedSahBvh(in.meshBoxes.data(), n); }));
     const float cpuSah = sahCost(cpuBvh);
     addBuildRows(report, "CPU binned SAH", cpuBuild, n, 1.0);
     report.add({"BVH", "SAH cost (CPU binned)", "", cpuSah, "", "the baseline of the ratios"});
-    const double tlasBuild = median(timeRuns(runs, [&] {
-        buildBinnedSahBvh(in.instanceBoxes.data(), uint32_t(in.instanceBoxes.size()));
-    }));
+    const double tlasBuild = median(timeRuns(
+        runs, [&] { buildBinnedSahBvh(in.instanceBoxes.data(), uint32_t(in.instanceBoxes.size())); }));
     report.add({"BVH", "TLAS build (CPU binned SAH)", std::to_string(in.instanceBoxes.size()) + " instances",
                 tlasBuild * 1e3, "ms", ""});
 #if PT_HAVE_CUDA

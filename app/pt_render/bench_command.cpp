@@ -31,8 +31,10 @@ struct BenchRequest {
 };
 
 BenchRequest parseBench(const std::vector<std::string>& args) {
-    const Options o(args, joined({"--backend", "--size", "--json", "--runs", "--spp", "--max-depth"}, toggleValuedFlags()),
-                    joined({"--quiet"}, toggleSwitches()));
+    const Options o(
+        args,
+        joined({"--backend", "--size", "--json", "--runs", "--spp", "--max-depth"}, toggleValuedFlags()),
+        joined({"--quiet"}, toggleSwitches()));
     if (o.positional().size() != 1) throw UsageError("expected one SCENE argument");
     BenchRequest r;
     r.scenePath = o.positional()[0];
@@ -47,15 +49,17 @@ BenchRequest parseBench(const std::vector<std::string>& args) {
     return r;
 }
 
-void benchRays(Backend& backend, const Scene& scene, const CompiledScene& compiled, const BenchSettings& settings,
-               BenchReport& report) {
-    const BenchRays rays = makeBenchRays(compiled, scene.render.width, scene.render.height, scene.render.seed);
+void benchRays(Backend& backend, const Scene& scene, const CompiledScene& compiled,
+               const BenchSettings& settings, BenchReport& report) {
+    const BenchRays rays =
+        makeBenchRays(compiled, scene.render.width, scene.render.height, scene.render.seed);
     struct Set {
         const char* name;
         const std::vector<Ray>* rays;
         bool anyHit;
     };
-    const Set sets[] = {{"primary", &rays.primary, false}, {"diffuse bounce", &rays.diffuse, false},
+    const Set sets[] = {{"primary", &rays.primary, false},
+                        {"diffuse bounce", &rays.diffuse, false},
                         {"shadow (any hit)", &rays.shadow, true}};
     for (const bool bvh : {true, false}) {
         IntegratorToggles toggles = settings.toggles;
@@ -69,10 +73,12 @@ void benchRays(Backend& backend, const Scene& scene, const CompiledScene& compil
         }
         for (const Set& set : sets) {
             if (set.rays->empty()) continue;
-            const std::vector<double> seconds = backend.traceRays(*set.rays, set.anyHit, settings.runs + 1, nullptr);
+            const std::vector<double> seconds =
+                backend.traceRays(*set.rays, set.anyHit, settings.runs + 1, nullptr);
             const std::vector<double> timed(seconds.begin() + 1, seconds.end());  // the first run warms up
-            report.add({"rays", set.name, bvh ? "BVH on" : "BVH off", double(set.rays->size()) / median(timed) / 1e6,
-                        "Mrays/s", std::to_string(set.rays->size()) + " rays"});
+            report.add({"rays", set.name, bvh ? "BVH on" : "BVH off",
+                        double(set.rays->size()) / median(timed) / 1e6, "Mrays/s",
+                        std::to_string(set.rays->size()) + " rays"});
         }
     }
     backend.setToggles(settings.toggles);
@@ -105,8 +111,8 @@ int runBench(const std::vector<std::string>& args) {
     report.add({"scene", "first sync (compile, BVH, upload)", "", sync.seconds, "s", sync.action});
     report.add({"scene", "triangles traced", "", double(backend->stats().triangles), "", ""});
     report.add({"scene", "instances", "", double(backend->stats().instances), "", ""});
-    report.add({"scene", "device memory after the first sync", "", double(backend->deviceMemoryBytes()) / (1 << 20),
-                "MiB", ""});
+    report.add({"scene", "device memory after the first sync", "",
+                double(backend->deviceMemoryBytes()) / (1 << 20), "MiB", ""});
     // GPU backends: that memory by buffer, so what a scene does not use is seen not to be there.
     for (const auto& [buffer, bytes] : backend->deviceMemoryByBuffer()) {
         report.add({"memory", buffer, "after the first sync", double(bytes) / (1 << 20), "MiB",
@@ -134,12 +140,13 @@ int runBench(const std::vector<std::string>& args) {
         benchWavefrontOverhead(*backend, scene, r.settings, report);
         benchKernelVariants(report);
     }
-    report.add({"memory", "device memory after the benchmark", "", double(backend->deviceMemoryBytes()) / (1 << 20),
-                "MiB", ""});
+    report.add({"memory", "device memory after the benchmark", "",
+                double(backend->deviceMemoryBytes()) / (1 << 20), "MiB", ""});
 
     std::printf("pt-render bench %s: backend %s (%s), %ux%u, depth %u, %u spp per run, median of %u runs\n",
-                r.scenePath.c_str(), backend->name().c_str(), deviceName(r.backend).c_str(), scene.render.width,
-                scene.render.height, scene.render.maxDepth, r.settings.spp, r.settings.runs);
+                r.scenePath.c_str(), backend->name().c_str(), deviceName(r.backend).c_str(),
+                scene.render.width, scene.render.height, scene.render.maxDepth, r.settings.spp,
+                r.settings.runs);
     report.print(stdout);
     if (!r.jsonPath.empty()) {
         nlohmann::ordered_json j;

@@ -73,12 +73,14 @@ std::vector<EditKind> editKinds(const Scene& scene) {
     }
     if (const int32_t mesh = largestTriangleMesh(scene); mesh >= 0) {
         // What skinning or a sculpt brush would do: every vertex of the largest mesh moves.
-        const std::string name = "vertices (" + std::to_string(scene.meshes[size_t(mesh)].positions.size()) + ")";
+        const std::string name =
+            "vertices (" + std::to_string(scene.meshes[size_t(mesh)].positions.size()) + ")";
         kinds.push_back({name, [mesh](const editor::Document& d, uint32_t run) {
                              const std::vector<Vec3>& before = d.scene.meshes[size_t(mesh)].positions;
                              std::vector<Vec3> after = before;
                              const float amount = run % 2 ? 1e-4f : -1e-4f;
-                             for (size_t i = 0; i < after.size(); ++i) after[i].x += amount * std::sin(float(i));
+                             for (size_t i = 0; i < after.size(); ++i)
+                                 after[i].x += amount * std::sin(float(i));
                              return editor::makeValueCommand<std::vector<Vec3>>(
                                  "Move vertices", "", SceneChanges::Geometry, before, after,
                                  [mesh](editor::Document& doc, const std::vector<Vec3>& p) {
@@ -119,7 +121,8 @@ private:
 
 }  // namespace
 
-void benchEdits(const std::string& backendName, Scene scene, const BenchSettings& settings, BenchReport& report) {
+void benchEdits(const std::string& backendName, Scene scene, const BenchSettings& settings,
+                BenchReport& report) {
     const std::vector<EditKind> kinds = editKinds(scene);
     EditorSession session(createBackend(backendName));
     session.adopt(std::move(scene));
@@ -143,7 +146,8 @@ void benchEdits(const std::string& backendName, Scene scene, const BenchSettings
             session.render(1);
             const double samplesDone = secondsSince(start);
             // The editor's CUDA-GL path: the frame is written into (here: stand-in) GL memory.
-            const bool onDevice = deviceFrame.memory() && session.backend().copyBeautyToDevice(deviceFrame.memory());
+            const bool onDevice =
+                deviceFrame.memory() && session.backend().copyBeautyToDevice(deviceFrame.memory());
             const double deviceDisplayed = secondsSince(start);
             session.readDisplayed(session.document().viewer.aov, session.document().viewer.denoise, frame);
             const double displayed = secondsSince(start);
@@ -160,8 +164,8 @@ void benchEdits(const std::string& backendName, Scene scene, const BenchSettings
         report.add({"edit to first frame", kind.name, "samples done", median(toFrame) * 1e3, "ms",
                     "sync: " + action + apply});
         if (!toDeviceFrame.empty()) {
-            report.add({"edit to first frame", kind.name, "frame on GPU (interop)", median(toDeviceFrame) * 1e3, "ms",
-                        "no host copy"});
+            report.add({"edit to first frame", kind.name, "frame on GPU (interop)",
+                        median(toDeviceFrame) * 1e3, "ms", "no host copy"});
         }
         report.add({"edit to first frame", kind.name, "frame on host", median(toDisplay) * 1e3, "ms",
                     "sync " + std::to_string(last.syncSeconds * 1e3) + " ms"});

@@ -7,7 +7,8 @@
 namespace pt::cli {
 
 // Runs on a fresh backend of `backendName`, the scene at its own size.
-void benchEdits(const std::string& backendName, Scene scene, const BenchSettings& settings, BenchReport& report);
+void benchEdits(const std::string& backendName, Scene scene, const BenchSettings& settings,
+                BenchReport& report);
 
 // The same through the editor's render thread (pt::editor::RenderWorker) rendering without
 // pause, so each edit arrives during a pass: with the pass interrupted and, as the baseline,

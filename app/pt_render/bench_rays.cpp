@@ -35,7 +35,8 @@ BenchRays makeBenchRays(const CompiledScene& compiled, uint32_t width, uint32_t 
         const Vec3 origin = spawnOrigin(surface, normal, true);
         const Frame frame = Frame::fromNormal(normal);
         const uint32_t dims = SampleDims::bounce(0);
-        diffuse[i] = {origin, frame.toWorld(squareToCosineHemisphere(sampler.get2(dims + SampleDims::kBsdfDir))), kInf};
+        diffuse[i] = {
+            origin, frame.toWorld(squareToCosineHemisphere(sampler.get2(dims + SampleDims::kBsdfDir))), kInf};
         hasDiffuse[i] = 1;
         LightSample light;
         // Only lights above the surface: an opaque surface's BSDF is zero below it, so a render

@@ -77,7 +77,8 @@ std::vector<Variant> variantsOf(const Backend& backend, const IntegratorToggles&
 
 }  // namespace
 
-void benchPathTracing(Backend& backend, const Scene& scene, const BenchSettings& settings, BenchReport& report) {
+void benchPathTracing(Backend& backend, const Scene& scene, const BenchSettings& settings,
+                      BenchReport& report) {
     const double pixels = double(scene.render.width) * scene.render.height;
     for (const Variant& v : variantsOf(backend, settings.toggles)) {
         backend.setToggles(v.toggles);
@@ -148,7 +149,8 @@ void benchWavefrontOverhead(Backend& backend, Scene scene, const BenchSettings& 
         if (bounces > 0) perBounce.push_back(seconds / double(bounces));
     }
     report.add({"wavefront", "fixed cost of a bounce", "1x1 image", median(perBounce) * 1e3, "ms",
-                "extend, shade and shadow launches and the queue-size read-back, which the host waits for a bounce late"});
+                "extend, shade and shadow launches and the queue-size read-back, which the host waits for a "
+                "bounce late"});
 }
 
 void benchDenoise(Backend& backend, const Scene& scene, const BenchSettings& settings, BenchReport& report) {
@@ -193,11 +195,11 @@ void benchImageCheck(Backend& backend, Scene scene, const BenchSettings& setting
         sumDiff += std::fabs(gpu[i] - cpu[i]);
         sumCpu += std::fabs(cpu[i]);
     }
-    const std::string size = std::to_string(scene.render.width) + "x" + std::to_string(scene.render.height) + ", " +
-                             std::to_string(kSpp) + " spp";
+    const std::string size = std::to_string(scene.render.width) + "x" + std::to_string(scene.render.height) +
+                             ", " + std::to_string(kSpp) + " spp";
     report.add({"image check", "largest deviation from the CPU", size, worst, "radiance", ""});
-    report.add({"image check", "mean relative deviation from the CPU", size, sumCpu > 0 ? sumDiff / sumCpu : 0.0, "",
-                ""});
+    report.add({"image check", "mean relative deviation from the CPU", size,
+                sumCpu > 0 ? sumDiff / sumCpu : 0.0, "", ""});
 }
 
 }  // namespace pt::cli

@@ -10,11 +10,12 @@ namespace pt::cli {
 
 struct BenchSettings {
     uint32_t runs = 5;
-    uint32_t spp = 4;             // per timed path-tracing run
-    IntegratorToggles toggles;    // the base every variant flips one toggle of
+    uint32_t spp = 4;           // per timed path-tracing run
+    IntegratorToggles toggles;  // the base every variant flips one toggle of
 };
 
-void benchPathTracing(Backend& backend, const Scene& scene, const BenchSettings& settings, BenchReport& report);
+void benchPathTracing(Backend& backend, const Scene& scene, const BenchSettings& settings,
+                      BenchReport& report);
 // The wavefront's own costs on a GPU backend: the bytes of device memory a path carries between
 // stages, and the fixed cost of a bounce (its launches, the queue-size read-back and the host
 // sync), timed on a one-pixel image where the work itself is nil.

@@ -3,19 +3,18 @@
 // value, unit), printed as a table and written as JSON. Timings are medians of several runs
 // after a warm-up run that is not counted.
 #include <nlohmann/json.hpp>
-
 #include <string>
 #include <vector>
 
 namespace pt::cli {
 
 struct BenchRow {
-    std::string section;   // "rays", "path tracing", "BVH", "edit to first frame", "image check"
-    std::string figure;    // e.g. "primary", "BLAS build (GPU LBVH)"
-    std::string variant;   // toggles, e.g. "default", "megakernel", "BVH off"
+    std::string section;  // "rays", "path tracing", "BVH", "edit to first frame", "image check"
+    std::string figure;   // e.g. "primary", "BLAS build (GPU LBVH)"
+    std::string variant;  // toggles, e.g. "default", "megakernel", "BVH off"
     double value = 0.0;
     std::string unit;
-    std::string note;      // e.g. why a variant was refused, or the sync action
+    std::string note;  // e.g. why a variant was refused, or the sync action
 };
 
 class BenchReport {

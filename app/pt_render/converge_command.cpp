@@ -49,7 +49,9 @@ std::vector<std::string> takeVariants(std::vector<std::string>& args) {
 
 ConvergeRequest parseRequest(std::vector<std::string> args) {
     std::vector<std::string> specs = takeVariants(args);
-    const Options o(args, joined({"--reference", "--reference-constant", "--time", "--csv", "--plot"}, renderSetupValuedFlags()),
+    const Options o(args,
+                    joined({"--reference", "--reference-constant", "--time", "--csv", "--plot"},
+                           renderSetupValuedFlags()),
                     renderSetupSwitches());
     if (o.positional().size() != 1) throw UsageError("expected one SCENE argument");
     ConvergeRequest r;
@@ -67,7 +69,8 @@ ConvergeRequest parseRequest(std::vector<std::string> args) {
     for (const std::string& spec : specs) {
         r.variants.push_back(parseVariant(spec));
         for (size_t i = 0; i + 1 < r.variants.size(); ++i) {
-            if (r.variants[i].name == r.variants.back().name) throw UsageError("two variants are named " + r.variants[i].name);
+            if (r.variants[i].name == r.variants.back().name)
+                throw UsageError("two variants are named " + r.variants[i].name);
         }
     }
     return r;
@@ -122,8 +125,8 @@ int runConverge(const std::vector<std::string>& args) {
         curves.push_back({variant.name, std::move(points)});
         if (!r.setup.quiet) {
             const ErrorPoint& last = curves.back().points.back();
-            std::fprintf(stderr, "%s: %u spp in %.2f s, relMSE %.4g\n", variant.name.c_str(), last.spp, last.seconds,
-                         last.error.relMse);
+            std::fprintf(stderr, "%s: %u spp in %.2f s, relMSE %.4g\n", variant.name.c_str(), last.spp,
+                         last.seconds, last.error.relMse);
         }
     }
     if (curves.empty()) {

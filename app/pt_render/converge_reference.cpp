@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "assets/reference_image.h"
+#include "assets/image/reference_image.h"
 #include "cli_options.h"
 
 namespace pt::cli {
@@ -14,9 +14,9 @@ ConvergeReference readReferenceImage(const std::string& path, uint32_t width, ui
     ReferenceImage image = loadReferenceImage(path);
     if (image.width != width || image.height != height) {
         const std::string size = std::to_string(image.width) + "x" + std::to_string(image.height);
-        throw std::runtime_error(path + ": the reference is " + size + " but the render is " + std::to_string(width) +
-                                 "x" + std::to_string(height) + " (render the reference at this size, or pass --size " +
-                                 size + ")");
+        throw std::runtime_error(path + ": the reference is " + size + " but the render is " +
+                                 std::to_string(width) + "x" + std::to_string(height) +
+                                 " (render the reference at this size, or pass --size " + size + ")");
     }
     return {std::move(image.rgba), image.noiseRelMse};
 }

@@ -19,6 +19,7 @@ std::string convergeCsv(const std::vector<VariantCurve>& curves);
 
 // The equal-time table (each variant at the longest time all reached, and its ratio to the
 // best) and the verdicts, as printed at the end of a run.
-void printConvergeSummary(std::FILE* out, const std::vector<VariantCurve>& curves, double referenceNoiseRelMse);
+void printConvergeSummary(std::FILE* out, const std::vector<VariantCurve>& curves,
+                          double referenceNoiseRelMse);
 
 }  // namespace pt::cli

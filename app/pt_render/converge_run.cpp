@@ -39,7 +39,8 @@ std::vector<ErrorPoint> measureConvergence(Backend& backend, const std::vector<f
             continue;
         }
         // Aim to end the batch just at the next time; one pass at first, to learn its cost.
-        const double passes = secondsPerPass > 0.0 ? std::ceil((times[next] - stats.renderSeconds) / secondsPerPass) : 1.0;
+        const double passes =
+            secondsPerPass > 0.0 ? std::ceil((times[next] - stats.renderSeconds) / secondsPerPass) : 1.0;
         const uint32_t n = uint32_t(std::clamp(passes, 1.0, 65536.0));
         backend.render(n);
         secondsPerPass = std::max((backend.stats().renderSeconds - stats.renderSeconds) / n, 1e-7);

@@ -28,7 +28,8 @@ const std::map<std::string, SwitchFlags>& switchKeys() {
 }
 
 const std::map<std::string, std::string>& valuedKeys() {
-    static const std::map<std::string, std::string> keys = {{"clamp", "--clamp"}, {"rebuild_ratio", "--rebuild-ratio"}};
+    static const std::map<std::string, std::string> keys = {{"clamp", "--clamp"},
+                                                            {"rebuild_ratio", "--rebuild-ratio"}};
     return keys;
 }
 
@@ -49,7 +50,8 @@ void appendFlags(const std::string& setting, std::vector<std::string>& flags) {
         return;
     }
     const auto switched = switchKeys().find(key);
-    if (switched == switchKeys().end()) throw UsageError("unknown key \"" + key + "\" (known: " + knownKeys() + ")");
+    if (switched == switchKeys().end())
+        throw UsageError("unknown key \"" + key + "\" (known: " + knownKeys() + ")");
     const bool on = value == "on" || value == "true" || value == "1";
     if (!on && value != "off" && value != "false" && value != "0") {
         throw UsageError(key + ": expected on or off, got \"" + value + "\"");
@@ -71,7 +73,8 @@ ConvergeVariant parseVariant(const std::string& spec) {
         std::vector<std::string> flags;
         if (colon != std::string::npos) {
             const std::string settings = spec.substr(colon + 1) + ",";
-            for (size_t begin = 0, end; (end = settings.find(',', begin)) != std::string::npos; begin = end + 1) {
+            for (size_t begin = 0, end; (end = settings.find(',', begin)) != std::string::npos;
+                 begin = end + 1) {
                 if (end > begin) appendFlags(settings.substr(begin, end - begin), flags);
             }
         }

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "assets/color_config.h"
+#include "assets/color/color_config.h"
 
 namespace pt::cli {
 
@@ -97,6 +97,5 @@ DisplayProcessor makeDisplayProcessor(const DisplayRequest& request, const Color
     builtin.dither = request.dither;
     return DisplayProcessor(builtin);
 }
-
 
 }  // namespace pt::cli

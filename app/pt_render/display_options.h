@@ -10,8 +10,8 @@
 #include <set>
 #include <string>
 
-#include "assets/color_processor.h"
-#include "assets/image_write.h"
+#include "assets/color/color_processor.h"
+#include "assets/image/image_write.h"
 #include "cli_options.h"
 #include "render/scene/scene.h"
 
@@ -40,6 +40,5 @@ DisplayRequest parseDisplayOptions(const Options& options);
 // scene's display / view / look apply where no flag replaces them, and only with the scene's
 // own config (not under --ocio). Throws InputError for a bad config or an unknown name.
 DisplayProcessor makeDisplayProcessor(const DisplayRequest& request, const ColorSettings& scene);
-
 
 }  // namespace pt::cli

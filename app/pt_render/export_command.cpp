@@ -1,7 +1,7 @@
 // pt-render export: any loadable scene to scene JSON.
 #include <cstdio>
 
-#include "assets/scene_json.h"
+#include "assets/scene_json/scene_json.h"
 #include "cli_options.h"
 #include "commands.h"
 #include "scene_input.h"

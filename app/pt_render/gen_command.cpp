@@ -35,7 +35,8 @@ GenOutput parseOutput(const Options& o) {
     out.gltfPath = o.value("-o").value_or("");
     if (out.gltfPath.empty()) throw UsageError("give the output: -o OUT.gltf");
     std::string extension = std::filesystem::path(out.gltfPath).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
     if (extension != ".gltf") throw UsageError("-o: expected a .gltf path, got \"" + out.gltfPath + "\"");
     out.seed = o.nonNegativeInt("--seed").value_or(0);
     out.quiet = o.has("--quiet");

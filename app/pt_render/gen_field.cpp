@@ -14,9 +14,11 @@ constexpr double kMinScale = 0.7, kMaxScale = 1.2, kJitter = 0.2;
 
 // A uniformly distributed rotation (Shoemake, "Uniform random rotations", Graphics Gems III).
 Vec4 randomRotation(GenRandom& random) {
-    const double u1 = random.uniform(), u2 = random.uniform(0.0, 6.283185307179586), u3 = random.uniform(0.0, 6.283185307179586);
+    const double u1 = random.uniform(), u2 = random.uniform(0.0, 6.283185307179586),
+                 u3 = random.uniform(0.0, 6.283185307179586);
     const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1);
-    return {float(a * std::sin(u2)), float(a * std::cos(u2)), float(b * std::sin(u3)), float(b * std::cos(u3))};
+    return {float(a * std::sin(u2)), float(a * std::cos(u2)), float(b * std::sin(u3)),
+            float(b * std::cos(u3))};
 }
 
 }  // namespace

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
-#include <cstring>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -81,9 +81,11 @@ void writeBin(const Mesh& mesh, const std::string& path, const ProgressFn& progr
             const char* bytes = static_cast<const char*>(part.data);
             for (uint64_t at = 0; at < part.bytes; at += kChunk) {
                 const size_t n = size_t(std::min(kChunk, part.bytes - at));
-                if (std::fwrite(bytes + at, 1, n, f.get()) != n) throw std::runtime_error(path + ": write failed");
+                if (std::fwrite(bytes + at, 1, n, f.get()) != n)
+                    throw std::runtime_error(path + ": write failed");
                 written += n;
-                reportProgress(progress, "write bin", double(written) / double(std::max<uint64_t>(layout.total, 1)));
+                reportProgress(progress, "write bin",
+                               double(written) / double(std::max<uint64_t>(layout.total, 1)));
             }
         }
         closeChecked(std::move(f), path);
@@ -118,20 +120,37 @@ nlohmann::ordered_json documentHead(const GenScene& scene, const std::string& bi
     j["extensions"] = {{"KHR_lights_punctual", {{"lights", lights}}}};
     j["scene"] = 0;
     j["buffers"] = {{{"uri", binUri}, {"byteLength", layout.total}}};
-    j["bufferViews"] = {
-        {{"buffer", 0}, {"byteOffset", layout.positions}, {"byteLength", layout.normals - layout.positions}, {"target", kArrayBuffer}},
-        {{"buffer", 0}, {"byteOffset", layout.normals}, {"byteLength", layout.indices - layout.normals}, {"target", kArrayBuffer}},
-        {{"buffer", 0}, {"byteOffset", layout.indices}, {"byteLength", layout.total - layout.indices}, {"target", kElementArrayBuffer}}};
+    j["bufferViews"] = {{{"buffer", 0},
+                         {"byteOffset", layout.positions},
+                         {"byteLength", layout.normals - layout.positions},
+                         {"target", kArrayBuffer}},
+                        {{"buffer", 0},
+                         {"byteOffset", layout.normals},
+                         {"byteLength", layout.indices - layout.normals},
+                         {"target", kArrayBuffer}},
+                        {{"buffer", 0},
+                         {"byteOffset", layout.indices},
+                         {"byteLength", layout.total - layout.indices},
+                         {"target", kElementArrayBuffer}}};
     j["accessors"] = {
-        {{"bufferView", 0}, {"componentType", kFloat}, {"count", mesh.positions.size()}, {"type", "VEC3"},
-         {"min", {lo.x, lo.y, lo.z}}, {"max", {hi.x, hi.y, hi.z}}},
+        {{"bufferView", 0},
+         {"componentType", kFloat},
+         {"count", mesh.positions.size()},
+         {"type", "VEC3"},
+         {"min", {lo.x, lo.y, lo.z}},
+         {"max", {hi.x, hi.y, hi.z}}},
         {{"bufferView", 1}, {"componentType", kFloat}, {"count", mesh.normals.size()}, {"type", "VEC3"}},
-        {{"bufferView", 2}, {"componentType", kUnsignedInt}, {"count", mesh.indices.size()}, {"type", "SCALAR"}}};
-    j["materials"] = {{{"name", "default"},
-                       {"pbrMetallicRoughness",
-                        {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}}}};
+        {{"bufferView", 2},
+         {"componentType", kUnsignedInt},
+         {"count", mesh.indices.size()},
+         {"type", "SCALAR"}}};
+    j["materials"] = {
+        {{"name", "default"},
+         {"pbrMetallicRoughness",
+          {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}}}};
     j["meshes"] = {{{"name", mesh.name},
-                    {"primitives", {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}}, {"indices", 2}, {"material", 0}}}}}};
+                    {"primitives",
+                     {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}}, {"indices", 2}, {"material", 0}}}}}};
     j["cameras"] = {{{"name", "camera"},
                      {"type", "perspective"},
                      {"perspective", {{"yfov", scene.camera.yfovRadians}, {"znear", scene.camera.znear}}}}};
@@ -148,7 +167,8 @@ void writeNode(std::FILE* f, const GenNode& node, const std::string& fields) {
     if (q.x != 0.0f || q.y != 0.0f || q.z != 0.0f || q.w != 1.0f) {
         std::fprintf(f, ", \"rotation\": [%.9g, %.9g, %.9g, %.9g]", q.x, q.y, q.z, q.w);
     }
-    if (node.scale != 1.0f) std::fprintf(f, ", \"scale\": [%.9g, %.9g, %.9g]", node.scale, node.scale, node.scale);
+    if (node.scale != 1.0f)
+        std::fprintf(f, ", \"scale\": [%.9g, %.9g, %.9g]", node.scale, node.scale, node.scale);
     std::fputs("}", f);
 }
 
@@ -160,15 +180,16 @@ void writeNodes(std::FILE* f, const GenScene& scene, const ProgressFn& progress)
     writeNode(f, scene.camera.node, nameField("camera") + "\"camera\": 0");
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         std::fputs(",\n", f);
-        writeNode(f, scene.lights[i].node, nameField(scene.lights[i].name) +
-                                               "\"extensions\": {\"KHR_lights_punctual\": {\"light\": " +
-                                               std::to_string(i) + "}}");
+        writeNode(f, scene.lights[i].node,
+                  nameField(scene.lights[i].name) +
+                      "\"extensions\": {\"KHR_lights_punctual\": {\"light\": " + std::to_string(i) + "}}");
     }
     const std::string meshField = "\"mesh\": 0";
     for (size_t i = 0; i < scene.instances.size(); ++i) {
         std::fputs(",\n", f);
         writeNode(f, scene.instances[i], meshField);
-        if (i % 65536 == 0) reportProgress(progress, "write glTF", double(i) / double(scene.instances.size()));
+        if (i % 65536 == 0)
+            reportProgress(progress, "write glTF", double(i) / double(scene.instances.size()));
     }
     std::fputs("\n  ],\n  \"scenes\": [{\"nodes\": [", f);
     const size_t nodeCount = 1 + scene.lights.size() + scene.instances.size();
@@ -177,7 +198,8 @@ void writeNodes(std::FILE* f, const GenScene& scene, const ProgressFn& progress)
     reportProgress(progress, "write glTF", 1.0);
 }
 
-void writeJson(const GenScene& scene, const std::string& path, const std::string& binUri, const ProgressFn& progress) {
+void writeJson(const GenScene& scene, const std::string& path, const std::string& binUri,
+               const ProgressFn& progress) {
     std::string head = documentHead(scene, binUri).dump(2);
     head.pop_back();  // the closing brace: nodes and scenes follow
     while (!head.empty() && head.back() == '\n') head.pop_back();

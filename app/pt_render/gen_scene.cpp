@@ -49,7 +49,8 @@ GenCamera frameBox(Vec3 lo, Vec3 hi, Vec3 towardCamera) {
     const Vec3 centre = (lo + hi) * 0.5f, back = normalize(towardCamera);
     const Vec4 rotation = lookRotation(-back, Vec3(0.0f, 1.0f, 0.0f));
     const Affine3 frame = rotationTransform(rotation);
-    const Vec3 right = frame.transformVector({1.0f, 0.0f, 0.0f}), up = frame.transformVector({0.0f, 1.0f, 0.0f});
+    const Vec3 right = frame.transformVector({1.0f, 0.0f, 0.0f}),
+               up = frame.transformVector({0.0f, 1.0f, 0.0f});
     const double tanHalf = std::tan(0.5 * camera.yfovRadians);
     // A corner at offset o from the centre is in view when the camera's distance along `back`
     // is at least o.back + max(|o.right|, |o.up|) / tan(fov / 2).

@@ -17,7 +17,8 @@ void appendPlaced(const Mesh& mesh, const Affine3& toFile, Mesh& merged) {
     const Affine3 normalTransform = inverse(toFile);
     for (size_t v = 0; v < mesh.positions.size(); ++v) {
         merged.positions.push_back(toFile.transformPoint(mesh.positions[v]));
-        const Vec3 n = mesh.normals.empty() ? Vec3(0.0f, 0.0f, 1.0f) : normalTransform.transformNormalByInverse(mesh.normals[v]);
+        const Vec3 n = mesh.normals.empty() ? Vec3(0.0f, 0.0f, 1.0f)
+                                            : normalTransform.transformNormalByInverse(mesh.normals[v]);
         merged.normals.push_back(length(n) > 0.0f ? normalize(n) : Vec3(0.0f, 0.0f, 1.0f));
     }
     const bool mirrored = toFile.determinant() < 0.0f;
@@ -47,7 +48,8 @@ Mesh loadMergedMesh(const std::string& path, uint64_t maxTriangles, const Progre
         const bool named = message.find(fs::path(path).filename().string()) != std::string::npos;
         throw std::runtime_error(named ? message : path + ": " + message);
     }
-    for (const std::string& warning : scratch.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
+    for (const std::string& warning : scratch.warnings)
+        std::fprintf(stderr, "warning: %s\n", warning.c_str());
 
     uint64_t triangles = 0, vertices = 0;
     for (const Placement& placement : file.placements) {
@@ -58,8 +60,8 @@ Mesh loadMergedMesh(const std::string& path, uint64_t maxTriangles, const Progre
     }
     if (triangles == 0) throw std::runtime_error(path + ": no triangles to instance");
     if (triangles > maxTriangles || vertices > 0xffffffffull) {
-        throw std::runtime_error(path + ": " + std::to_string(triangles) + " triangles; a field mesh has at most " +
-                                 std::to_string(maxTriangles));
+        throw std::runtime_error(path + ": " + std::to_string(triangles) +
+                                 " triangles; a field mesh has at most " + std::to_string(maxTriangles));
     }
     Mesh merged;
     merged.name = fs::path(path).stem().string();

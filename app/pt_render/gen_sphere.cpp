@@ -23,10 +23,12 @@ public:
     uint32_t idOf(const uint32_t c[3]) const {
         auto onBoundary = [&](int k) { return c[k] == 0 || c[k] == r_; };
         const int boundary = int(onBoundary(0)) + int(onBoundary(1)) + int(onBoundary(2));
-        if (boundary == 3) return (uint32_t(c[0] == r_) << 2) | (uint32_t(c[1] == r_) << 1) | uint32_t(c[2] == r_);
+        if (boundary == 3)
+            return (uint32_t(c[0] == r_) << 2) | (uint32_t(c[1] == r_) << 1) | uint32_t(c[2] == r_);
         if (boundary == 2) {
             const int axis = !onBoundary(0) ? 0 : !onBoundary(1) ? 1 : 2;
-            const uint32_t bits = (uint32_t(c[(axis + 1) % 3] == r_) << 1) | uint32_t(c[(axis + 2) % 3] == r_);
+            const uint32_t bits =
+                (uint32_t(c[(axis + 1) % 3] == r_) << 1) | uint32_t(c[(axis + 2) % 3] == r_);
             return 8 + (uint32_t(axis) * 4 + bits) * inner_ + c[axis] - 1;
         }
         const int axis = onBoundary(0) ? 0 : onBoundary(1) ? 1 : 2;
@@ -121,15 +123,16 @@ Mesh generateDisplacedSphere(const SphereSpec& spec, const ProgressFn& progress)
         reportProgress(progress, "generate", 0.95 * slice / kSlices);
         const uint32_t begin = uint32_t(uint64_t(count) * slice / kSlices);
         const uint32_t end = uint32_t(uint64_t(count) * (slice + 1) / kSlices);
-        tbb::parallel_for(tbb::blocked_range<uint32_t>(begin, end), [&](const tbb::blocked_range<uint32_t>& range) {
-            for (uint32_t id = range.begin(); id != range.end(); ++id) {
-                uint32_t c[3];
-                double d[3];
-                lattice.pointOf(id, c);
-                latticeDirection(c, r, d);
-                displace(noise, spec.amplitude, d, mesh.positions[id], mesh.normals[id]);
-            }
-        });
+        tbb::parallel_for(tbb::blocked_range<uint32_t>(begin, end),
+                          [&](const tbb::blocked_range<uint32_t>& range) {
+                              for (uint32_t id = range.begin(); id != range.end(); ++id) {
+                                  uint32_t c[3];
+                                  double d[3];
+                                  lattice.pointOf(id, c);
+                                  latticeDirection(c, r, d);
+                                  displace(noise, spec.amplitude, d, mesh.positions[id], mesh.normals[id]);
+                              }
+                          });
     }
 
     // One task per grid row of a face; each row owns a contiguous run of the index array.

@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
     }
     const std::string command = args[0];
     args.erase(args.begin());
-    if (const std::optional<std::string> usage = pt::cli::commandUsage(command); usage && pt::cli::asksForHelp(args)) {
+    if (const std::optional<std::string> usage = pt::cli::commandUsage(command);
+        usage && pt::cli::asksForHelp(args)) {
         std::fputs(usage->c_str(), stdout);
         return 0;
     }
@@ -32,7 +33,8 @@ int main(int argc, char** argv) {
         if (command == "converge") return pt::cli::runConverge(args);
         if (command == "stress") return pt::cli::runStress(args);
         std::fprintf(stderr,
-                     "pt-render: unknown command \"%s\" (render, bench, reference, converge, stress, export, info, gen; "
+                     "pt-render: unknown command \"%s\" (render, bench, reference, converge, stress, export, "
+                     "info, gen; "
                      "see --help)\n",
                      command.c_str());
         return 2;

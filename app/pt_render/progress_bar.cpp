@@ -15,9 +15,12 @@ ProgressBar::~ProgressBar() { finish(); }
 std::string formatDuration(double seconds) {
     char buf[32];
     if (!std::isfinite(seconds) || seconds < 0) return "--";
-    if (seconds < 60) std::snprintf(buf, sizeof buf, "%.0fs", std::ceil(seconds));
-    else if (seconds < 3600) std::snprintf(buf, sizeof buf, "%dm%02ds", int(seconds) / 60, int(seconds) % 60);
-    else std::snprintf(buf, sizeof buf, "%dh%02dm", int(seconds) / 3600, (int(seconds) / 60) % 60);
+    if (seconds < 60)
+        std::snprintf(buf, sizeof buf, "%.0fs", std::ceil(seconds));
+    else if (seconds < 3600)
+        std::snprintf(buf, sizeof buf, "%dm%02ds", int(seconds) / 60, int(seconds) % 60);
+    else
+        std::snprintf(buf, sizeof buf, "%dh%02dm", int(seconds) / 3600, (int(seconds) / 60) % 60);
     return buf;
 }
 

@@ -3,12 +3,12 @@
 #include <cstdio>
 #include <string>
 
-#include "assets/image_write.h"
-#include "assets/pfm_file.h"
+#include "assets/image/image_write.h"
+#include "assets/image/pfm_file.h"
 #include "batched_render.h"
-#include "interrupt.h"
 #include "cli_options.h"
 #include "commands.h"
+#include "interrupt.h"
 #include "output_paths.h"
 #include "progress_bar.h"
 #include "render/util/image_error.h"
@@ -30,8 +30,9 @@ struct ReferenceRequest {
 };
 
 ReferenceRequest parseRequest(const std::vector<std::string>& args) {
-    const Options o(args, joined(joined({"-o", "--spp", "--batches"}, renderSetupValuedFlags()), toggleValuedFlags()),
-                    joined(renderSetupSwitches(), toggleSwitches()));
+    const Options o(
+        args, joined(joined({"-o", "--spp", "--batches"}, renderSetupValuedFlags()), toggleValuedFlags()),
+        joined(renderSetupSwitches(), toggleSwitches()));
     if (o.positional().size() != 1) throw UsageError("expected one SCENE argument");
     ReferenceRequest r;
     r.scenePath = o.positional()[0];
@@ -42,7 +43,8 @@ ReferenceRequest parseRequest(const std::vector<std::string>& args) {
     r.spp = *spp;
     r.batches = o.positiveInt("--batches").value_or(kDefaultBatches);
     if (r.batches < 2) throw UsageError("--batches: at least 2 are needed to estimate the noise");
-    if (r.spp < r.batches) throw UsageError("--spp must be at least --batches (" + std::to_string(r.batches) + ")");
+    if (r.spp < r.batches)
+        throw UsageError("--spp must be at least --batches (" + std::to_string(r.batches) + ")");
     r.setup = parseRenderSetup(o);
     r.toggles = parseToggles(o);
     return r;
@@ -71,8 +73,8 @@ int runReference(const std::vector<std::string>& args) {
         return kInterruptedExitCode;
     }
     const NoiseLevel noise = noiseLevel(image.varianceOfMean, image.mean);
-    ImageMetadata metadata =
-        renderMetadata(image.spp, formatFigure(image.renderSeconds), backend->name(), r.scenePath, "pt-render 0.1");
+    ImageMetadata metadata = renderMetadata(image.spp, formatFigure(image.renderSeconds), backend->name(),
+                                            r.scenePath, "pt-render 0.1");
     metadata.insert(metadata.end(), {{"pt:batches", std::to_string(image.batches)},
                                      {"pt:noise_relmse", formatFigure(noise.relMse)},
                                      {"pt:noise_rmse", formatFigure(noise.rmse)},
@@ -85,12 +87,15 @@ int runReference(const std::vector<std::string>& args) {
     }
     std::printf("%s\n", r.exrPath.c_str());
     if (!r.setup.quiet) {
-        std::fprintf(stderr, "%ux%u, %u spp in %u batches, %.2f s; estimated noise of the mean: relMSE %.3g, RMSE %.3g\n",
-                     backend->width(), backend->height(), image.spp, image.batches, image.renderSeconds,
-                     noise.relMse, noise.rmse);
+        std::fprintf(
+            stderr,
+            "%ux%u, %u spp in %u batches, %.2f s; estimated noise of the mean: relMSE %.3g, RMSE %.3g\n",
+            backend->width(), backend->height(), image.spp, image.batches, image.renderSeconds, noise.relMse,
+            noise.rmse);
     }
     if (image.interrupted) {
-        std::fprintf(stderr, "interrupted: wrote the %u finished batches (%u spp)\n", image.batches, image.spp);
+        std::fprintf(stderr, "interrupted: wrote the %u finished batches (%u spp)\n", image.batches,
+                     image.spp);
         return kInterruptedExitCode;
     }
     return 0;

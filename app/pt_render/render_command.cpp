@@ -8,14 +8,14 @@
 #include <nlohmann/json.hpp>
 
 #include "assets/atomic_file.h"
-#include "assets/exr_layers.h"
-#include "assets/image_metadata.h"
-#include "assets/image_write.h"
+#include "assets/image/exr_layers.h"
+#include "assets/image/image_metadata.h"
+#include "assets/image/image_write.h"
 #include "assets/input_error.h"
 #include "cli_options.h"
 #include "commands.h"
-#include "interrupt.h"
 #include "display_options.h"
+#include "interrupt.h"
 #include "progress_bar.h"
 #include "render/backend/backend.h"
 #include "render/display/display_transform.h"
@@ -35,7 +35,7 @@ struct RenderRequest {
     std::optional<std::pair<uint32_t, uint32_t>> size;
     IntegratorToggles toggles;
     bool quiet = false;
-    AovMask aovs = 0;  // --aov: EXR layers beside the beauty (only these are accumulated)
+    AovMask aovs = 0;   // --aov: EXR layers beside the beauty (only these are accumulated)
     bool half = false;  // --half: 16-bit EXR channels (exr_layers.h says which stay float)
     // --denoise: the EXR gains a denoised layer beside the raw beauty, the PNG shows the
     // denoised image; the denoiser's guides are accumulated for it.
@@ -66,7 +66,8 @@ RenderRequest parseRequest(const std::vector<std::string>& args) {
     r.scenePath = o.positional()[0];
     r.exrPath = o.value("-o").value_or("");
     r.pngPath = o.value("--png").value_or("");
-    if (r.exrPath.empty() && r.pngPath.empty()) throw UsageError("give an output: -o OUT.exr and/or --png OUT.png");
+    if (r.exrPath.empty() && r.pngPath.empty())
+        throw UsageError("give an output: -o OUT.exr and/or --png OUT.png");
     r.statsPath = o.value("--stats").value_or("");
     r.backend = o.value("--backend").value_or("cpu");
     r.spp = o.positiveInt("--spp");
@@ -80,7 +81,8 @@ RenderRequest parseRequest(const std::vector<std::string>& args) {
     r.toggles = parseToggles(o);
     parseExrOptions(o, r);
     r.display = parseDisplayOptions(o);
-    if (r.display.anyGiven && r.pngPath.empty()) throw UsageError("display flags apply to --png OUT.png; give one");
+    if (r.display.anyGiven && r.pngPath.empty())
+        throw UsageError("display flags apply to --png OUT.png; give one");
     r.denoise = o.has("--denoise");
     return r;
 }
@@ -152,7 +154,8 @@ void writeRenderExr(const RenderRequest& r, const Backend& backend, const Camera
         for (const std::string& name : aovExrChannelNames(layer.aov)) channels += " " + name;
     }
     if (!exr.denoised.empty()) channels += " denoised.R denoised.G denoised.B";
-    std::fprintf(stderr, "%s: %s channels %s\n", r.exrPath.c_str(), r.half ? "half" : "float", channels.c_str());
+    std::fprintf(stderr, "%s: %s channels %s\n", r.exrPath.c_str(), r.half ? "half" : "float",
+                 channels.c_str());
 }
 
 // Fails before rendering, not after, when an output cannot be written.
@@ -173,7 +176,8 @@ int runRender(const std::vector<std::string>& args) {
     checkOutputFolders(r);
     std::unique_ptr<tbb::global_control> threadLimit;
     if (r.threads) {
-        threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, *r.threads);
+        threadLimit =
+            std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, *r.threads);
     }
     std::unique_ptr<Backend> backend = createBackend(r.backend);
     const InterruptCatcher interrupt;  // Ctrl-C from here on writes what was rendered
@@ -227,11 +231,13 @@ int runRender(const std::vector<std::string>& args) {
     }
     if (!r.statsPath.empty()) writeStats(r, *backend, input.loadSeconds, sync);
     if (!r.quiet) {
-        std::fprintf(stderr, "%ux%u, %u spp in %.2f s (load %.2f s, BVH %.3f s), %.1f Mrays/s, %llu non-finite samples\n",
-                     backend->width(), backend->height(), stats.samplesPerPixel, stats.renderSeconds,
-                     input.loadSeconds, sync.bvhSeconds,
-                     stats.renderSeconds > 0 ? double(stats.rays) / stats.renderSeconds / 1e6 : 0.0,
-                     static_cast<unsigned long long>(stats.nonfiniteSamples));
+        std::fprintf(
+            stderr,
+            "%ux%u, %u spp in %.2f s (load %.2f s, BVH %.3f s), %.1f Mrays/s, %llu non-finite samples\n",
+            backend->width(), backend->height(), stats.samplesPerPixel, stats.renderSeconds,
+            input.loadSeconds, sync.bvhSeconds,
+            stats.renderSeconds > 0 ? double(stats.rays) / stats.renderSeconds / 1e6 : 0.0,
+            static_cast<unsigned long long>(stats.nonfiniteSamples));
     }
     if (interrupt.interrupted()) {
         std::fprintf(stderr, "interrupted: wrote the %u spp rendered so far\n", stats.samplesPerPixel);

@@ -31,7 +31,8 @@ void applyRenderSetup(const RenderSetup& setup, Scene& scene) {
 
 std::unique_ptr<tbb::global_control> limitThreads(const RenderSetup& setup) {
     if (!setup.threads) return nullptr;
-    return std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, *setup.threads);
+    return std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                 *setup.threads);
 }
 
 std::unique_ptr<Backend> syncedBackend(const RenderSetup& setup, const IntegratorToggles& toggles,

@@ -11,7 +11,7 @@
 namespace pt::cli {
 
 struct StressCase {
-    std::string group;        // scale, geometry, materials, lights, accumulation, camera
+    std::string group;  // scale, geometry, materials, lights, accumulation, camera
     std::string name;
     std::string expectation;  // one line, as the table prints it
     std::function<StressOutcome(StressRunner&)> run;

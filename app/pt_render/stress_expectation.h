@@ -17,10 +17,10 @@
 namespace pt::cli {
 
 struct StressOutcome {
-    double error = 0.0;   // what was measured against the expectation
-    double bound = 0.0;   // passes when error <= bound (and no sample was non-finite)
+    double error = 0.0;  // what was measured against the expectation
+    double bound = 0.0;  // passes when error <= bound (and no sample was non-finite)
     uint64_t nonfiniteSamples = 0;
-    std::string note;     // e.g. the loader's message, or why the case failed
+    std::string note;  // e.g. the loader's message, or why the case failed
     bool passed() const { return nonfiniteSamples == 0 && error <= bound && note.rfind("FAIL", 0) != 0; }
 };
 
@@ -33,8 +33,8 @@ constexpr double kNoiseSigmas = 4.0;
 inline StressOutcome matchesBaseline(const BatchedImage& image, const BatchedImage& baseline, double factor) {
     StressOutcome o;
     o.error = imageError(image.mean, baseline.mean).relMse;
-    const double noise =
-        noiseLevel(image.varianceOfMean, baseline.mean).relMse + noiseLevel(baseline.varianceOfMean, baseline.mean).relMse;
+    const double noise = noiseLevel(image.varianceOfMean, baseline.mean).relMse +
+                         noiseLevel(baseline.varianceOfMean, baseline.mean).relMse;
     o.bound = factor * noise + 1e-12;  // two noise-free images must agree to rounding
     o.nonfiniteSamples = image.nonfiniteSamples + baseline.nonfiniteSamples;
     return o;
@@ -64,12 +64,14 @@ inline StressOutcome meanWithin(const BatchedImage& image, const std::array<doub
     return o;
 }
 
-inline StressOutcome meanEquals(const BatchedImage& image, const std::array<double, 3>& value, double tolerance) {
+inline StressOutcome meanEquals(const BatchedImage& image, const std::array<double, 3>& value,
+                                double tolerance) {
     return meanWithin(image, value, value, tolerance);
 }
 
 // Loading must fail with one message naming every one of `needles` (the file, the element).
-inline StressOutcome loadRefused(bool loaded, const std::string& message, const std::vector<std::string>& needles) {
+inline StressOutcome loadRefused(bool loaded, const std::string& message,
+                                 const std::vector<std::string>& needles) {
     StressOutcome o;
     o.bound = 0.0;
     o.note = loaded ? "FAIL: loaded without an error" : message;

@@ -25,7 +25,8 @@ StressBudget StressRunner::budget(StressScale scale) const {
     switch (scale) {
         case StressScale::Box: return quick_ ? StressBudget{32, 32, 16, 4} : StressBudget{96, 96, 64, 4};
         case StressScale::Furnace: return quick_ ? StressBudget{16, 16, 16, 4} : StressBudget{64, 64, 64, 4};
-        case StressScale::Accumulation: return quick_ ? StressBudget{1, 1, 250000, 4} : StressBudget{4, 4, 250000, 4};
+        case StressScale::Accumulation:
+            return quick_ ? StressBudget{1, 1, 250000, 4} : StressBudget{4, 4, 250000, 4};
     }
     return {};
 }
@@ -47,7 +48,8 @@ BatchedImage StressRunner::render(const std::string& scenePath, StressScale scal
 const BatchedImage& StressRunner::baseline(const std::string& scene, StressScale scale) {
     const std::string key = scene + "#" + std::to_string(int(scale));
     auto cached = baselines_.find(key);
-    if (cached == baselines_.end()) cached = baselines_.emplace(key, render(scene, scale, {}, kBaselineSeed)).first;
+    if (cached == baselines_.end())
+        cached = baselines_.emplace(key, render(scene, scale, {}, kBaselineSeed)).first;
     return cached->second;
 }
 

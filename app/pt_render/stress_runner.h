@@ -35,7 +35,8 @@ public:
 
     // `scene` is relative to scenes/. `seed` selects the batches' seeds, so that an image and
     // its baseline are independent. Throws std::runtime_error with the loader's message.
-    BatchedImage render(const std::string& scene, StressScale scale, const SceneEdit& edit = {}, uint32_t seed = 0);
+    BatchedImage render(const std::string& scene, StressScale scale, const SceneEdit& edit = {},
+                        uint32_t seed = 0);
     // Renders each (scene, scale, seed) once per suite run; for baselines several cases share.
     const BatchedImage& baseline(const std::string& scene, StressScale scale);
     // The warnings of the last scene loaded by render().

@@ -9,7 +9,8 @@ namespace pt::cli {
 
 void scaleAndMoveScene(Scene& scene, float scale, Vec3 offset) {
     Affine3 transform;
-    for (int r = 0; r < 3; ++r) transform.rows[r] = {r == 0 ? scale : 0.0f, r == 1 ? scale : 0.0f, r == 2 ? scale : 0.0f, 0.0f};
+    for (int r = 0; r < 3; ++r)
+        transform.rows[r] = {r == 0 ? scale : 0.0f, r == 1 ? scale : 0.0f, r == 2 ? scale : 0.0f, 0.0f};
     transform.rows[0].w = offset.x, transform.rows[1].w = offset.y, transform.rows[2].w = offset.z;
     for (Instance& instance : scene.instances) instance.objectToWorld = transform * instance.objectToWorld;
     for (Light& light : scene.lights) light.position = transform.transformPoint(light.position);

@@ -19,7 +19,8 @@ struct StressRow {
 };
 
 void printStressTable(std::FILE* out, const std::vector<StressRow>& rows);
-// group,case,backend,nonfinite_samples,error,bound,result (pass, fail, known),seconds,expectation,note,known_issue
+// group,case,backend,nonfinite_samples,error,bound,result (pass, fail,
+// known),seconds,expectation,note,known_issue
 std::string stressCsv(const std::vector<StressRow>& rows);
 
 }  // namespace pt::cli

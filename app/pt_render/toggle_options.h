@@ -2,7 +2,6 @@
 // The renderer toggles as command-line flags, shared by render and bench (so every command
 // spells them alike), and their report in stats JSON.
 #include <nlohmann/json.hpp>
-
 #include <set>
 #include <string>
 #include <vector>

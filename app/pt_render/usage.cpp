@@ -81,7 +81,8 @@ constexpr const char* kToggleText =
   --no-first-hit-cache, --rebuild-ratio R (refit until SAH cost exceeds R x the built one)
 )";
 
-constexpr const char* kDisplayText = R"(DISPLAY (the --png image; default: the scene's "color" setting, else the config's default,
+constexpr const char* kDisplayText =
+    R"(DISPLAY (the --png image; default: the scene's "color" setting, else the config's default,
   sRGB / Standard in the shipped scenes/ocio/config.ocio):
   --ocio CONFIG (else the scene's config, $OCIO, the shipped one) --display NAME --view NAME
   --look NAME: an OpenColorIO view (shipped: displays sRGB, Rec.1886; views Standard, AgX,

@@ -23,12 +23,14 @@ void depthOfField(EditorUi& ui, Camera& c, bool& changed) {
     if (useFStop) {
         // f-number N = focal length / aperture diameter.
         float n = c.apertureRadius > 0.0f ? focalLength(c) / (2.0f * c.apertureRadius) : 0.0f;
-        if (sliderFloat(ui, "f-stop (0 = pinhole)", &n, 0.0f, 64.0f, "f/%.1f", ImGuiSliderFlags_Logarithmic)) {
+        if (sliderFloat(ui, "f-stop (0 = pinhole)", &n, 0.0f, 64.0f, "f/%.1f",
+                        ImGuiSliderFlags_Logarithmic)) {
             c.apertureRadius = n > 0.0f ? focalLength(c) / (2.0f * n) : 0.0f;
             changed = true;
         }
     } else {
-        changed |= sliderFloat(ui, "Aperture radius", &c.apertureRadius, 0.0f, 1.0f, "%.4f", ImGuiSliderFlags_Logarithmic);
+        changed |= sliderFloat(ui, "Aperture radius", &c.apertureRadius, 0.0f, 1.0f, "%.4f",
+                               ImGuiSliderFlags_Logarithmic);
     }
     changed |= dragFloat(ui, "Focus distance", &c.focusDistance, 0.01f, 0.0f, 1e6f, "%.3f");
     ImGui::TextDisabled("Focus 0 = the look-at point. Double-click the viewport to focus there.");

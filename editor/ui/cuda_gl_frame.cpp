@@ -29,7 +29,8 @@ bool CudaGlFrame::update(RenderWorker& worker, GLuint texture, uint32_t width, u
         glBufferData(GL_PIXEL_UNPACK_BUFFER, GLsizeiptr(size_t(width) * height * 4 * sizeof(float)), nullptr,
                      GL_STREAM_DRAW);
         glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
-        if (cudaGraphicsGLRegisterBuffer(&resource_, pbo_, cudaGraphicsRegisterFlagsWriteDiscard) != cudaSuccess) {
+        if (cudaGraphicsGLRegisterBuffer(&resource_, pbo_, cudaGraphicsRegisterFlagsWriteDiscard) !=
+            cudaSuccess) {
             cudaGetLastError();  // clear it: the renderer's own calls must not see it
             resource_ = nullptr;
             release();

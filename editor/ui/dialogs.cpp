@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <string>
 
-#include "assets/exr_layers.h"
+#include "assets/image/exr_layers.h"
 #include "editor/scene_edits.h"
 #include "editor/ui/file_picker.h"
 #include "editor/ui/input_events.h"
@@ -151,7 +151,8 @@ void exrLayerChoice(EditorUi& ui) {
         if (ImGui::Checkbox(aovName(Aov(i)), &on)) chosen ^= bit;
     }
     setExportSettings(ui, chosen, half == 1);
-    ImGui::TextDisabled("Changing the layers restarts accumulation: AOVs accumulate only while chosen or displayed.");
+    ImGui::TextDisabled(
+        "Changing the layers restarts accumulation: AOVs accumulate only while chosen or displayed.");
     const AovMask missing = chosen & ~ui.worker.status().aovs;
     if (missing) {
         ImGui::PushTextWrapPos(600.0f);
@@ -174,8 +175,10 @@ void exportDialog(EditorUi& ui) {
         ui.showExportDialog = false;
     }
     if (!ImGui::BeginPopupModal("Export render", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-    ImGui::TextUnformatted("Scene-linear EXR with AOV layers, and a display-referred image (PNG, JPEG or TIFF by");
-    ImGui::TextUnformatted("extension, through the current display settings). Leave a path empty to skip that file.");
+    ImGui::TextUnformatted(
+        "Scene-linear EXR with AOV layers, and a display-referred image (PNG, JPEG or TIFF by");
+    ImGui::TextUnformatted(
+        "extension, through the current display settings). Leave a path empty to skip that file.");
     ImGui::TextUnformatted("Existing files are replaced.");
     const std::string before = exr.path();
     exr.draw("EXR", kFieldWidth, 0.6f * kListHeight);

@@ -145,7 +145,8 @@ void drawDisplayPanel(EditorUi& ui, const DisplayView& view) {
     changed |= checkbox("Dither", &v.display.dither);
     if (!color.error.empty()) ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "%s", color.error.c_str());
     if (!view.shaderError().empty()) {
-        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "Built-in operators shown: %s", view.shaderError().c_str());
+        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "Built-in operators shown: %s",
+                           view.shaderError().c_str());
     }
     if (changed) ui.apply(setViewer(ui.doc(), v));
     if (v.aov >= 0) {

@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #ifdef PT_HAVE_OCIO
-#include "assets/color_gpu_shader.h"
+#include "assets/color/color_gpu_shader.h"
 #endif
 
 namespace pt::editor {
@@ -199,22 +199,26 @@ DisplayShader::DisplayShader(const GpuColorShader* color) {
 #ifdef PT_HAVE_OCIO
     if (!color) return;
     for (const GpuLut& lut : color->luts) {
-        Lut made{lut.depth > 1 ? GLenum(GL_TEXTURE_3D) : lut.height > 1 ? GLenum(GL_TEXTURE_2D) : GLenum(GL_TEXTURE_1D),
+        Lut made{lut.depth > 1    ? GLenum(GL_TEXTURE_3D)
+                 : lut.height > 1 ? GLenum(GL_TEXTURE_2D)
+                                  : GLenum(GL_TEXTURE_1D),
                  0, lut.samplerName};
-        const GLenum internal = lut.channels == 1 ? GL_R32F : GL_RGB32F, format = lut.channels == 1 ? GL_RED : GL_RGB;
+        const GLenum internal = lut.channels == 1 ? GL_R32F : GL_RGB32F,
+                     format = lut.channels == 1 ? GL_RED : GL_RGB;
         const GLint filter = lut.linearFilter ? GL_LINEAR : GL_NEAREST;
         glGenTextures(1, &made.texture);
         glBindTexture(made.target, made.texture);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
         if (made.target == GL_TEXTURE_3D) {
-            glTexImage3D(made.target, 0, internal, GLsizei(lut.width), GLsizei(lut.height), GLsizei(lut.depth), 0, format,
-                         GL_FLOAT, lut.values.data());
+            glTexImage3D(made.target, 0, internal, GLsizei(lut.width), GLsizei(lut.height),
+                         GLsizei(lut.depth), 0, format, GL_FLOAT, lut.values.data());
             glTexParameteri(made.target, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
         } else if (made.target == GL_TEXTURE_2D) {
-            glTexImage2D(made.target, 0, internal, GLsizei(lut.width), GLsizei(lut.height), 0, format, GL_FLOAT,
-                         lut.values.data());
+            glTexImage2D(made.target, 0, internal, GLsizei(lut.width), GLsizei(lut.height), 0, format,
+                         GL_FLOAT, lut.values.data());
         } else {
-            glTexImage1D(made.target, 0, internal, GLsizei(lut.width), 0, format, GL_FLOAT, lut.values.data());
+            glTexImage1D(made.target, 0, internal, GLsizei(lut.width), 0, format, GL_FLOAT,
+                         lut.values.data());
         }
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
         glTexParameteri(made.target, GL_TEXTURE_MIN_FILTER, filter);

@@ -8,7 +8,7 @@
 #include "render/backend/backend.h"
 
 #ifdef PT_HAVE_OCIO
-#include "assets/color_gpu_shader.h"
+#include "assets/color/color_gpu_shader.h"
 #endif
 
 namespace pt::editor {
@@ -29,15 +29,15 @@ GLuint createImageTexture() {
 int displayMode(int32_t aov) {
     if (aov < 0) return 0;
     switch (Aov(aov)) {
-    case Aov::ShadingNormal:
-    case Aov::GeometricNormal: return 2;
-    case Aov::InstanceId:
-    case Aov::MaterialId: return 3;
-    case Aov::Depth:
-    case Aov::BvhCost:
-    case Aov::SampleCount:
-    case Aov::Variance: return 4;
-    default: return 1;
+        case Aov::ShadingNormal:
+        case Aov::GeometricNormal: return 2;
+        case Aov::InstanceId:
+        case Aov::MaterialId: return 3;
+        case Aov::Depth:
+        case Aov::BvhCost:
+        case Aov::SampleCount:
+        case Aov::Variance: return 4;
+        default: return 1;
     }
 }
 
@@ -80,12 +80,13 @@ void DisplayView::upload(const DisplayFrame& frame) {
     if (frame.rgba.size() != size_t(frame.width) * frame.height * 4 || frame.width == 0) return;
     glBindTexture(GL_TEXTURE_2D, texture_);
     if (frame.width != width_ || frame.height != height_) {
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, GLsizei(frame.width), GLsizei(frame.height), 0, GL_RGBA, GL_FLOAT,
-                     frame.rgba.data());
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, GLsizei(frame.width), GLsizei(frame.height), 0, GL_RGBA,
+                     GL_FLOAT, frame.rgba.data());
         width_ = frame.width;
         height_ = frame.height;
     } else {
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, GLsizei(width_), GLsizei(height_), GL_RGBA, GL_FLOAT, frame.rgba.data());
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, GLsizei(width_), GLsizei(height_), GL_RGBA, GL_FLOAT,
+                        frame.rgba.data());
     }
     aov_ = frame.aov;
     aovMax_ = 0.0f;
@@ -102,15 +103,15 @@ void DisplayView::setReference(const std::shared_ptr<const ReferenceImage>& refe
     reference_ = reference;
     if (!reference_) return;
     glBindTexture(GL_TEXTURE_2D, referenceTexture_);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, GLsizei(reference_->width), GLsizei(reference_->height), 0, GL_RGBA,
-                 GL_FLOAT, reference_->rgba.data());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, GLsizei(reference_->width), GLsizei(reference_->height), 0,
+                 GL_RGBA, GL_FLOAT, reference_->rgba.data());
 }
 
 void DisplayView::prepareDeviceFrame(const DisplayFrame& frame) {
     if (frame.width != width_ || frame.height != height_) {
         glBindTexture(GL_TEXTURE_2D, texture_);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, GLsizei(frame.width), GLsizei(frame.height), 0, GL_RGBA, GL_FLOAT,
-                     nullptr);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, GLsizei(frame.width), GLsizei(frame.height), 0, GL_RGBA,
+                     GL_FLOAT, nullptr);
         width_ = frame.width;
         height_ = frame.height;
     }
@@ -118,8 +119,8 @@ void DisplayView::prepareDeviceFrame(const DisplayFrame& frame) {
     aovMax_ = 1.0f;
 }
 
-ImageRect DisplayView::draw(const ViewerSettings& viewer, CompareView compare, float x, float y, float w, float h, float framebufferHeight,
-                            float pixelScale) {
+ImageRect DisplayView::draw(const ViewerSettings& viewer, CompareView compare, float x, float y, float w,
+                            float h, float framebufferHeight, float pixelScale) {
     ImageRect rect;
     if (width_ == 0 || w <= 0 || h <= 0) return rect;
     const float aspect = float(width_) / float(height_);
@@ -149,7 +150,8 @@ ImageRect DisplayView::draw(const ViewerSettings& viewer, CompareView compare, f
     shader_->bindLuts(2);
     glUniform1i(glGetUniformLocation(program, "compare"), reference_ ? int(compare) : 0);
     glUniform1f(glGetUniformLocation(program, "exposure"), std::exp2(viewer.display.exposureStops));
-    glUniform1i(glGetUniformLocation(program, "useOcio"), shader_->hasOcioView() && !viewer.builtinDisplay ? 1 : 0);
+    glUniform1i(glGetUniformLocation(program, "useOcio"),
+                shader_->hasOcioView() && !viewer.builtinDisplay ? 1 : 0);
     glUniform1i(glGetUniformLocation(program, "toneMapper"), int(viewer.display.toneMapper));
     glUniform1f(glGetUniformLocation(program, "whitePoint"), viewer.display.whitePoint);
     glUniform1i(glGetUniformLocation(program, "dither"), viewer.display.dither ? 1 : 0);

@@ -22,7 +22,9 @@ namespace pt::editor {
 struct ImageRect {
     float x = 0, y = 0, width = 0, height = 0;
     uint32_t imageWidth = 0, imageHeight = 0;
-    bool contains(float px, float py) const { return px >= x && py >= y && px < x + width && py < y + height; }
+    bool contains(float px, float py) const {
+        return px >= x && py >= y && px < x + width && py < y + height;
+    }
     // Window point -> image pixel coordinates (continuous; y down).
     float toImageX(float px) const { return (px - x) / width * float(imageWidth); }
     float toImageY(float py) const { return (py - y) / height * float(imageHeight); }
@@ -51,8 +53,8 @@ public:
     void setReference(const std::shared_ptr<const ReferenceImage>& reference);
     // Draws into the window area (x, y, w, h) in window pixels (y down) of a framebuffer of
     // `framebufferHeight` pixels; returns where the image went.
-    ImageRect draw(const ViewerSettings& viewer, CompareView compare, float x, float y, float w, float h, float framebufferHeight,
-                   float pixelScale);
+    ImageRect draw(const ViewerSettings& viewer, CompareView compare, float x, float y, float w, float h,
+                   float framebufferHeight, float pixelScale);
     bool hasImage() const { return width_ > 0; }
     void clear() { width_ = height_ = 0; }  // nothing drawn until the next frame comes
     // The largest value of the shown AOV's first channel, for the heat map's legend.

@@ -139,7 +139,8 @@ void EditorUi::exportRender(const std::string& exrPath, const std::string& pngPa
 
 void EditorUi::updateColorView() {
     const ColorSettings& c = doc().scene.color;
-    const std::string request = options.ocioPath + "\n" + c.config + "\n" + c.display + "\n" + c.view + "\n" + c.look;
+    const std::string request =
+        options.ocioPath + "\n" + c.config + "\n" + c.display + "\n" + c.view + "\n" + c.look;
     if (request == colorRequest_) return;
     colorRequest_ = request;
     colorView = resolveColorView(options.ocioPath, c, colorView);
@@ -159,7 +160,8 @@ void EditorUi::switchBackend(const std::string& name) {
         std::unique_ptr<Backend> next = createBackend(name);
         const BackendCapabilities caps = next->capabilities();
         session.interruptRender();  // the old backend's samples are thrown away anyway
-        worker.withBackend([&](EditorSession& s) { worker.edit([&](EditorSession&) { s.setBackend(std::move(next)); }); });
+        worker.withBackend(
+            [&](EditorSession& s) { worker.edit([&](EditorSession&) { s.setBackend(std::move(next)); }); });
         backendName = name;
         backendCaps = caps;
     } catch (const std::exception& e) {

@@ -21,8 +21,8 @@ namespace pt::editor {
 
 struct Selection {
     enum class Kind { None, Object, Instance, Light, Camera } kind = Kind::None;
-    int32_t index = -1;       // objects, instances or lights index by kind
-    int32_t instance = -1;    // the instance picked in the viewport (its materials are shown), or -1
+    int32_t index = -1;     // objects, instances or lights index by kind
+    int32_t instance = -1;  // the instance picked in the viewport (its materials are shown), or -1
 };
 
 struct CameraBookmark {
@@ -33,13 +33,13 @@ struct CameraBookmark {
 // Command-line choices that shape the session (app/pathtracer/main.cpp).
 struct EditorOptions {
     std::string scenePath;
-    std::string backend;                 // "" = cuda where usable, else cpu
-    uint32_t width = 0, height = 0;      // --size; 0 = the scene's
-    int64_t frames = -1;                 // --frames N: exit after N frames with new samples
-    std::string screenshotPath;          // --screenshot: written after --frames, and on F12
-    std::string referencePath;           // --reference: an image to measure the error against
-    std::string ocioPath;                // --ocio: an OpenColorIO config, over the scene's and $OCIO
-    uint32_t spp = 0;                    // --spp: stop accumulating there
+    std::string backend;             // "" = cuda where usable, else cpu
+    uint32_t width = 0, height = 0;  // --size; 0 = the scene's
+    int64_t frames = -1;             // --frames N: exit after N frames with new samples
+    std::string screenshotPath;      // --screenshot: written after --frames, and on F12
+    std::string referencePath;       // --reference: an image to measure the error against
+    std::string ocioPath;            // --ocio: an OpenColorIO config, over the scene's and $OCIO
+    uint32_t spp = 0;                // --spp: stop accumulating there
 };
 
 class EditorUi {
@@ -56,7 +56,7 @@ public:
 
     // Edits go through here: applied now when the render thread allows, else queued in order.
     void apply(std::unique_ptr<EditCommand> command);
-    void endDrag();  // after ImGui::IsItemDeactivatedAfterEdit(): closes the undo step
+    void endDrag();     // after ImGui::IsItemDeactivatedAfterEdit(): closes the undo step
     void cancelDrag();  // the open step undone and forgotten (Esc during a gizmo drag)
     // Duplicate (Ctrl+D): the copy beside the original as the camera sees it, and selected.
     void duplicateBeside(uint32_t object);
@@ -86,13 +86,13 @@ public:
     Selection selection;
     std::vector<CameraBookmark> bookmarks;
     std::vector<std::string> recentFiles;
-    std::vector<std::string> errors;         // shown one at a time in a modal dialog
-    std::string notice;                      // the status bar's message (notify)
-    Camera fileCamera;                       // the opened scene's camera, for Camera > Reset
-    PanelLayout layout;                      // the panels' column (its width is the user's)
-    std::string pendingOverwrite;            // a save path awaiting "replace?" confirmation
-    std::string discardWhat;                 // what the "Unsaved edits" dialog asks about
-    std::function<void()> discardAction;     // what it runs once the user agrees
+    std::vector<std::string> errors;      // shown one at a time in a modal dialog
+    std::string notice;                   // the status bar's message (notify)
+    Camera fileCamera;                    // the opened scene's camera, for Camera > Reset
+    PanelLayout layout;                   // the panels' column (its width is the user's)
+    std::string pendingOverwrite;         // a save path awaiting "replace?" confirmation
+    std::string discardWhat;              // what the "Unsaved edits" dialog asks about
+    std::function<void()> discardAction;  // what it runs once the user agrees
     std::unique_ptr<SceneLoadJob> loading;
     std::string backendName;
     BackendCapabilities backendCaps;  // of the backend that runs (render panel, interop)
@@ -106,9 +106,9 @@ public:
     void loadReference(const std::string& path);
     bool showOpenDialog = false, showSaveDialog = false, showExportDialog = false;
     // Numbers the Stats panel shows.
-    std::vector<float> frameMillis;          // UI frame times, most recent last
+    std::vector<float> frameMillis;  // UI frame times, most recent last
     DisplayFrame lastFrame;
-    std::string framePath;                   // how frames reach the screen, and why not by interop
+    std::string framePath;  // how frames reach the screen, and why not by interop
     // Texture slots the user switched off, (material, slot) -> texture, so switching back on
     // restores them; cleared when another scene is opened.
     std::map<std::pair<uint32_t, int>, int32_t> switchedOffTextures;

@@ -64,33 +64,20 @@ std::string chooseBackend(const std::string& requested) {
 std::string screenshotPath(const std::string& base, int n) {
     if (n == 0) return base;
     std::filesystem::path p(base);
-    return (p.parent_path() / (p.stem().string() + "-" + std::to_string(n) + p.extension().string())).string();
+    return (p.parent_path() / (p.stem().string() + "-" + std::to_string(n) + p.extension().string()))
+        .string();
 }
 
 // Panel `index` of kPanelNames, where it is (the column or its own window).
 void drawPanel(EditorUi& ui, const DisplayView& view, int index) {
     switch (index) {
-        case 0:
-            drawOutliner(ui);
-            break;
-        case 1:
-            drawInspector(ui);
-            break;
-        case 2:
-            drawCameraPanel(ui);
-            break;
-        case 3:
-            drawRenderPanel(ui);
-            break;
-        case 4:
-            drawEnvironmentPanel(ui);
-            break;
-        case 5:
-            drawDisplayPanel(ui, view);
-            break;
-        default:
-            drawStatsPanel(ui);
-            break;
+        case 0: drawOutliner(ui); break;
+        case 1: drawInspector(ui); break;
+        case 2: drawCameraPanel(ui); break;
+        case 3: drawRenderPanel(ui); break;
+        case 4: drawEnvironmentPanel(ui); break;
+        case 5: drawDisplayPanel(ui, view); break;
+        default: drawStatsPanel(ui); break;
     }
 }
 
@@ -138,8 +125,9 @@ void drawPanels(EditorUi& ui, const DisplayView& view, float width, float height
     ImGui::End();
     ImGui::SetNextWindowPos(ImVec2(width - panelWidth, top));
     ImGui::SetNextWindowSize(ImVec2(panelWidth, height - top));
-    ImGui::Begin("Panels", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoTitleBar |
-                                        ImGuiWindowFlags_NoCollapse);
+    ImGui::Begin("Panels", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoTitleBar |
+                     ImGuiWindowFlags_NoCollapse);
     for (int i = 0; i < kPanelCount; ++i) {
         if (!ui.layout.floats(kPanelNames[i])) drawPanel(ui, view, i);
     }
@@ -229,7 +217,9 @@ void drawViewportStatus(EditorUi& ui, float width, float height) {
 class Window {
 public:
     explicit Window(const EditorOptions& o) {
-        if (!glfwInit()) throw std::runtime_error("cannot initialise GLFW (is there a display? DISPLAY is unset or unusable)");
+        if (!glfwInit())
+            throw std::runtime_error(
+                "cannot initialise GLFW (is there a display? DISPLAY is unset or unusable)");
         glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
         glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
         glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -289,7 +279,7 @@ void showFrame(EditorUi& ui, DisplayView& view, CudaGlFrame& interop) {
         // Without interop the next frames must bring their pixels; with it they need not.
         ui.worker.setHostFrames(!onGpu);
     }
-    ui.framePath = onGpu ? "CUDA-GL interop (no host copy)"
+    ui.framePath = onGpu    ? "CUDA-GL interop (no host copy)"
                    : device ? std::string("host upload: ") + interop.why()
                             : "host upload";
 }
@@ -328,7 +318,8 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
         for (const std::string& path : droppedFiles()) ui.openScene(path);
         droppedFiles().clear();
         if (!ui.pollLoad() && options.frames >= 0) {
-            std::fprintf(stderr, "pathtracer: %s\n", ui.errors.empty() ? "load failed" : ui.errors.front().c_str());
+            std::fprintf(stderr, "pathtracer: %s\n",
+                         ui.errors.empty() ? "load failed" : ui.errors.front().c_str());
             return 1;  // automation: a scene that does not load is a failure, not a dialog
         }
         ui.flushEdits();

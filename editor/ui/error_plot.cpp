@@ -30,7 +30,8 @@ void drawErrorPlot(const std::vector<ErrorPoint>& curve, double referenceNoiseRe
     double x0, x1, y0, y1;
     decadeRange(points.front().seconds, points.back().seconds, x0, x1);
     double lowest = points.front().error.relMse, highest = lowest;
-    for (const ErrorPoint& p : points) lowest = std::min(lowest, p.error.relMse), highest = std::max(highest, p.error.relMse);
+    for (const ErrorPoint& p : points)
+        lowest = std::min(lowest, p.error.relMse), highest = std::max(highest, p.error.relMse);
     if (referenceNoiseRelMse > 0.0) lowest = std::min(lowest, referenceNoiseRelMse);
     decadeRange(lowest, highest, y0, y1);
 
@@ -65,7 +66,8 @@ void drawErrorPlot(const std::vector<ErrorPoint>& curve, double referenceNoiseRe
     const ErrorPoint& first = points.front();
     const double guideEnd = std::pow(10.0, x1);
     draw->AddLine(toScreen(first.seconds, first.error.relMse),
-                  toScreen(guideEnd, first.error.relMse * first.seconds / guideEnd), IM_COL32(120, 120, 120, 255));
+                  toScreen(guideEnd, first.error.relMse * first.seconds / guideEnd),
+                  IM_COL32(120, 120, 120, 255));
     std::vector<ImVec2> line;
     for (const ErrorPoint& p : points) line.push_back(toScreen(p.seconds, p.error.relMse));
     draw->AddPolyline(line.data(), int(line.size()), IM_COL32(90, 200, 255, 255), 0, 2.0f);
@@ -81,8 +83,8 @@ void drawErrorPlot(const std::vector<ErrorPoint>& curve, double referenceNoiseRe
             if (std::fabs(line[i].x - mouse) < std::fabs(line[nearest].x - mouse)) nearest = i;
         }
         const ErrorPoint& p = points[nearest];
-        ImGui::SetTooltip("%.3g s, %u spp\nrelMSE %.3g\nRMSE %.3g\nMAPE %.2f%%", p.seconds, p.spp, p.error.relMse,
-                          p.error.rmse, p.error.mape);
+        ImGui::SetTooltip("%.3g s, %u spp\nrelMSE %.3g\nRMSE %.3g\nMAPE %.2f%%", p.seconds, p.spp,
+                          p.error.relMse, p.error.rmse, p.error.mape);
     }
     ImGui::TextDisabled("time %.0e .. %.0e s; grey: slope -1%s", std::pow(10.0, x0), std::pow(10.0, x1),
                         referenceNoiseRelMse > 0.0 ? "; orange: the reference's noise" : "");

@@ -21,14 +21,10 @@ const char* verb(GizmoMode mode) {
 ImU32 handleColour(int handle, bool lit) {
     if (lit) return IM_COL32(255, 220, 60, 255);
     switch (handle) {
-        case 0:
-            return IM_COL32(235, 75, 75, 255);
-        case 1:
-            return IM_COL32(120, 205, 70, 255);
-        case 2:
-            return IM_COL32(80, 140, 245, 255);
-        default:
-            return IM_COL32(235, 235, 235, 255);
+        case 0: return IM_COL32(235, 75, 75, 255);
+        case 1: return IM_COL32(120, 205, 70, 255);
+        case 2: return IM_COL32(80, 140, 245, 255);
+        default: return IM_COL32(235, 235, 235, 255);
     }
 }
 

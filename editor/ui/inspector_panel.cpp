@@ -131,7 +131,8 @@ void transformEditor(EditorUi& ui, uint32_t object) {
 
 void morphEditor(EditorUi& ui, uint32_t mesh) {
     const Mesh& m = ui.doc().scene.meshes[mesh];
-    if (!hasMorphTargets(m) || !ImGui::CollapsingHeader("Morph targets", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!hasMorphTargets(m) || !ImGui::CollapsingHeader("Morph targets", ImGuiTreeNodeFlags_DefaultOpen))
+        return;
     std::vector<float> weights = m.morphWeights;
     bool changed = false;
     for (size_t t = 0; t < weights.size(); ++t) {
@@ -186,8 +187,10 @@ void objectInspector(EditorUi& ui) {
     morphEditor(ui, inst.mesh);
     for (size_t slot = 0; slot < inst.materials.size(); ++slot) {
         const uint32_t material = inst.materials[slot];
-        const std::string header = "Material: " + scene.materials[material].name + "##" + std::to_string(slot);
-        if (ImGui::CollapsingHeader(header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) materialEditor(ui, material);
+        const std::string header =
+            "Material: " + scene.materials[material].name + "##" + std::to_string(slot);
+        if (ImGui::CollapsingHeader(header.c_str(), ImGuiTreeNodeFlags_DefaultOpen))
+            materialEditor(ui, material);
     }
 }
 
@@ -220,8 +223,8 @@ void lightInspector(EditorUi& ui) {
     static const char* kTypes[] = {"point", "spot", "directional"};
     ImGui::Text("%s light", kTypes[uint32_t(l.type) % 3]);
     changed |= colorEdit(ui, "Color", &l.color);
-    changed |= sliderFloat(ui, l.type == LightType::Directional ? "Intensity (lux)" : "Intensity (cd)", &l.intensity,
-                           0.0f, 1e5f, "%.3f", ImGuiSliderFlags_Logarithmic);
+    changed |= sliderFloat(ui, l.type == LightType::Directional ? "Intensity (lux)" : "Intensity (cd)",
+                           &l.intensity, 0.0f, 1e5f, "%.3f", ImGuiSliderFlags_Logarithmic);
     if (l.type != LightType::Directional) changed |= dragVec3(ui, "Position", &l.position, 0.01f);
     if (l.type != LightType::Point) changed |= dragVec3(ui, "Direction", &l.direction, 0.01f);
     if (l.type == LightType::Spot) {
@@ -237,11 +240,11 @@ void lightInspector(EditorUi& ui) {
 void drawInspector(EditorUi& ui) {
     if (!ImGui::CollapsingHeader("Inspector", ImGuiTreeNodeFlags_DefaultOpen)) return;
     switch (ui.selection.kind) {
-    case Selection::Kind::Object: objectInspector(ui); break;
-    case Selection::Kind::Instance: instanceInspector(ui); break;
-    case Selection::Kind::Light: lightInspector(ui); break;
-    case Selection::Kind::Camera: ImGui::TextDisabled("The camera is edited in the Camera panel."); break;
-    default: ImGui::TextDisabled("Click an object in the viewport or the Outliner."); break;
+        case Selection::Kind::Object: objectInspector(ui); break;
+        case Selection::Kind::Instance: instanceInspector(ui); break;
+        case Selection::Kind::Light: lightInspector(ui); break;
+        case Selection::Kind::Camera: ImGui::TextDisabled("The camera is edited in the Camera panel."); break;
+        default: ImGui::TextDisabled("Click an object in the viewport or the Outliner."); break;
     }
 }
 

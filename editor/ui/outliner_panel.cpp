@@ -9,7 +9,9 @@
 namespace pt::editor {
 namespace {
 
-bool isSelected(const Selection& s, Selection::Kind kind, int32_t index) { return s.kind == kind && s.index == index; }
+bool isSelected(const Selection& s, Selection::Kind kind, int32_t index) {
+    return s.kind == kind && s.index == index;
+}
 
 void objectContextMenu(EditorUi& ui, uint32_t object) {
     if (!ImGui::BeginPopupContextItem()) return;
@@ -42,17 +44,20 @@ void drawObjects(EditorUi& ui) {
     const Scene& scene = ui.doc().scene;
     for (uint32_t o = 0; o < scene.objects.size(); ++o) {
         ImGui::PushID(int(o));
-        const std::string label = objectDisplayName(scene.objects[o]) + (objectHidden(scene, o) ? "  (hidden)" : "");
+        const std::string label =
+            objectDisplayName(scene.objects[o]) + (objectHidden(scene, o) ? "  (hidden)" : "");
         std::vector<uint32_t> instances;
         for (uint32_t i = 0; i < scene.instances.size(); ++i) {
             if (scene.instances[i].object == int32_t(o)) instances.push_back(i);
         }
         ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_SpanAvailWidth;
         if (instances.size() <= 1) flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
-        if (isSelected(ui.selection, Selection::Kind::Object, int32_t(o))) flags |= ImGuiTreeNodeFlags_Selected;
+        if (isSelected(ui.selection, Selection::Kind::Object, int32_t(o)))
+            flags |= ImGuiTreeNodeFlags_Selected;
         const bool open = ImGui::TreeNodeEx(label.c_str(), flags);
         if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) {
-            ui.selection = {Selection::Kind::Object, int32_t(o), instances.empty() ? -1 : int32_t(instances[0])};
+            ui.selection = {Selection::Kind::Object, int32_t(o),
+                            instances.empty() ? -1 : int32_t(instances[0])};
         }
         objectContextMenu(ui, o);
         if (open && instances.size() > 1) {
@@ -70,7 +75,8 @@ void drawObjects(EditorUi& ui) {
     for (uint32_t i = 0; i < scene.instances.size(); ++i) {
         if (scene.instances[i].object >= 0) continue;
         ImGui::PushID(int(100000 + i));
-        if (ImGui::Selectable(scene.instances[i].name.c_str(), isSelected(ui.selection, Selection::Kind::Instance, int32_t(i)))) {
+        if (ImGui::Selectable(scene.instances[i].name.c_str(),
+                              isSelected(ui.selection, Selection::Kind::Instance, int32_t(i)))) {
             ui.selection = {Selection::Kind::Instance, int32_t(i), int32_t(i)};
         }
         ImGui::PopID();
@@ -89,7 +95,8 @@ void drawOutliner(EditorUi& ui) {
     const Scene& scene = ui.doc().scene;
     for (uint32_t l = 0; l < scene.lights.size(); ++l) {
         ImGui::PushID(int(200000 + l));
-        const std::string label = "Light: " + (scene.lights[l].name.empty() ? std::to_string(l) : scene.lights[l].name);
+        const std::string label =
+            "Light: " + (scene.lights[l].name.empty() ? std::to_string(l) : scene.lights[l].name);
         if (ImGui::Selectable(label.c_str(), isSelected(ui.selection, Selection::Kind::Light, int32_t(l)))) {
             ui.selection = {Selection::Kind::Light, int32_t(l), -1};
         }

@@ -20,7 +20,7 @@ struct PanelLayout {
 
     float width = kDefaultWidth;
     float scale = 1.0f;
-    bool resizing = false;  // the user is dragging the column's edge
+    bool resizing = false;      // the user is dragging the column's edge
     bool statsOverlay = false;  // the Stats figures over the viewport (the toolbar's "Stats")
     // Panels taken out of the column into windows of their own (Window menu); closing such a
     // window puts the panel back.

@@ -40,7 +40,8 @@ bool toggleCheckboxes(IntegratorToggles& t, ToggleScope scope) {
 void integratorSwitches(EditorUi& ui) {
     IntegratorToggles t = ui.doc().toggles;
     bool changed = toggleCheckboxes(t, ToggleScope::Integrator);
-    changed |= sliderFloat(ui, "Firefly clamp (0 = off)", &t.clampRadiance, 0.0f, 100.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+    changed |= sliderFloat(ui, "Firefly clamp (0 = off)", &t.clampRadiance, 0.0f, 100.0f, "%.2f",
+                           ImGuiSliderFlags_Logarithmic);
     if (ui.backendCaps.gpuScheduling) {
         ImGui::Separator();
         ImGui::TextUnformatted("GPU scheduling");
@@ -52,7 +53,8 @@ void integratorSwitches(EditorUi& ui) {
 
 void toggleStates(EditorUi& ui) {
     for (const ToggleState& s : ui.worker.status().toggles) {
-        if (s.requested && !s.active) ImGui::TextDisabled("%s: inactive (%s)", s.name.c_str(), s.note.c_str());
+        if (s.requested && !s.active)
+            ImGui::TextDisabled("%s: inactive (%s)", s.name.c_str(), s.note.c_str());
     }
 }
 

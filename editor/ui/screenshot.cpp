@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "assets/image_write.h"
+#include "assets/image/image_write.h"
 #include "editor/ui/gl.h"
 
 namespace pt::editor {

@@ -29,14 +29,14 @@ void drawErrorAgainstReference(EditorUi& ui) {
     const std::vector<ErrorPoint> curve = ui.worker.errors().curve();
     if (!curve.empty()) {
         const ErrorPoint& last = curve.back();
-        ImGui::Text("relMSE %.3g  RMSE %.3g  MAPE %.2f%%  (%u spp, %.2f s)", last.error.relMse, last.error.rmse,
-                    last.error.mape, last.spp, last.seconds);
+        ImGui::Text("relMSE %.3g  RMSE %.3g  MAPE %.2f%%  (%u spp, %.2f s)", last.error.relMse,
+                    last.error.rmse, last.error.mape, last.spp, last.seconds);
         const TailSlope fit = fitTailSlope(curve, reference->noiseRelMse);
         if (fit.points >= 3 && !fit.exact) {
             const bool stuck = biasedOrStuck(fit);
-            ImGui::TextColored(stuck ? ImVec4(1, 0.4f, 0.4f, 1) : ImVec4(0.6f, 0.9f, 0.6f, 1), "slope %.2f: %s",
-                               fit.slope, stuck ? "the error has stopped falling (biased, or the reference differs)"
-                                                : "converging");
+            ImGui::TextColored(
+                stuck ? ImVec4(1, 0.4f, 0.4f, 1) : ImVec4(0.6f, 0.9f, 0.6f, 1), "slope %.2f: %s", fit.slope,
+                stuck ? "the error has stopped falling (biased, or the reference differs)" : "converging");
         }
     }
     drawErrorPlot(curve, reference->noiseRelMse, 140.0f);
@@ -114,15 +114,17 @@ void drawStatsPanel(EditorUi& ui) {
     ImGui::Text("Samples: %u spp%s", s.samplesPerPixel, status.converged ? " (target reached)" : "");
     if (!ui.frameMillis.empty()) {
         const float mean = meanFrameMillis(ui);
-        ImGui::Text("UI: %.1f ms/frame (%.0f frames/s)", double(mean), mean > 0 ? 1000.0 / double(mean) : 0.0);
-        ImGui::PlotLines("##frame ms", ui.frameMillis.data(), int(ui.frameMillis.size()), 0, "ms per UI frame", 0.0f,
-                         100.0f, ImVec2(0, 40));
+        ImGui::Text("UI: %.1f ms/frame (%.0f frames/s)", double(mean),
+                    mean > 0 ? 1000.0 / double(mean) : 0.0);
+        ImGui::PlotLines("##frame ms", ui.frameMillis.data(), int(ui.frameMillis.size()), 0,
+                         "ms per UI frame", 0.0f, 100.0f, ImVec2(0, 40));
     }
     ImGui::Text("Render: %.1f ms/pass, %.1f Mrays/s", status.secondsPerPass * 1e3, megaraysPerSecond(s));
     if (ui.doc().viewer.denoise && status.denoiseSeconds > 0.0) {
         ImGui::Text("Denoise: %.2f ms a frame", status.denoiseSeconds * 1e3);
     }
-    ImGui::Text("Scene: %llu triangles, %u instances", static_cast<unsigned long long>(s.triangles), s.instances);
+    ImGui::Text("Scene: %llu triangles, %u instances", static_cast<unsigned long long>(s.triangles),
+                s.instances);
     drawFeatures(s);
     if (s.nonfiniteSamples > 0) {
         ImGui::TextColored(ImVec4(1, 0.5f, 0.3f, 1), "%llu non-finite samples dropped",
@@ -140,14 +142,15 @@ void drawStatsPanel(EditorUi& ui) {
         std::vector<float> alive(status.pathsAlivePerBounce.begin(), status.pathsAlivePerBounce.end());
         ImGui::PlotHistogram("##alive", alive.data(), int(alive.size()), 0, "paths alive per bounce", 0.0f,
                              alive.front(), ImVec2(0, 50));
-        ImGui::Text("bounce 0: %u paths, last (%zu): %u", status.pathsAlivePerBounce.front(), alive.size() - 1,
-                    status.pathsAlivePerBounce.back());
+        ImGui::Text("bounce 0: %u paths, last (%zu): %u", status.pathsAlivePerBounce.front(),
+                    alive.size() - 1, status.pathsAlivePerBounce.back());
     }
     if (status.deviceMemoryBytes > 0) {
         ImGui::Text("GPU memory: %.1f MiB", double(status.deviceMemoryBytes) / (1024.0 * 1024.0));
     }
     drawErrorAgainstReference(ui);
-    if (!status.stage.empty()) ImGui::ProgressBar(float(status.fraction), ImVec2(-1, 0), status.stage.c_str());
+    if (!status.stage.empty())
+        ImGui::ProgressBar(float(status.fraction), ImVec2(-1, 0), status.stage.c_str());
     if (!status.error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", status.error.c_str());
 }
 

@@ -38,7 +38,8 @@ void ViewportInput::navigate(EditorUi& ui, const ImageRect& image, float frameSe
     if ((middle || altLeft || rightDrag) && (dragging_ || (over && !io.WantCaptureMouse))) {
         const ImVec2 d = io.MouseDelta;
         if (d.x != 0.0f || d.y != 0.0f) {
-            const Camera next = io.KeyShift ? panCamera(camera, d.x, d.y, h) : orbitCamera(camera, d.x, d.y, h);
+            const Camera next =
+                io.KeyShift ? panCamera(camera, d.x, d.y, h) : orbitCamera(camera, d.x, d.y, h);
             ui.apply(setCamera(ui.doc(), next));
         }
         dragging_ = true;
@@ -91,9 +92,12 @@ void ViewportInput::clickTools(EditorUi& ui, const ImageRect& image) {
     if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && std::fabs(m.x - pressX_) <= kClickSlop &&
         std::fabs(m.y - pressY_) <= kClickSlop) {
         const PickResult hit = pickAt(ui, image, m.x, m.y);
-        if (!hit.hit()) ui.selection = {};
-        else if (hit.object >= 0) ui.selection = {Selection::Kind::Object, hit.object, hit.instance};
-        else ui.selection = {Selection::Kind::Instance, hit.instance, hit.instance};
+        if (!hit.hit())
+            ui.selection = {};
+        else if (hit.object >= 0)
+            ui.selection = {Selection::Kind::Object, hit.object, hit.instance};
+        else
+            ui.selection = {Selection::Kind::Instance, hit.instance, hit.instance};
     }
 }
 

@@ -26,7 +26,7 @@ private:
     bool shortcuts(EditorUi& ui);
 
     GizmoTool gizmo_;
-    bool dragging_ = false;   // a camera drag is under way (one undo step)
+    bool dragging_ = false;  // a camera drag is under way (one undo step)
     bool flying_ = false;
     float pressX_ = 0, pressY_ = 0;
 };

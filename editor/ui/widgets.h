@@ -37,8 +37,8 @@ inline void closeStepIfReleased(EditorUi& ui) {
 }
 
 // Widgets that report a change and close their step on release.
-inline bool sliderFloat(EditorUi& ui, const char* label, float* v, float lo, float hi, const char* format = "%.3f",
-                        ImGuiSliderFlags flags = 0) {
+inline bool sliderFloat(EditorUi& ui, const char* label, float* v, float lo, float hi,
+                        const char* format = "%.3f", ImGuiSliderFlags flags = 0) {
     const bool changed = ImGui::SliderFloat(label, v, lo, hi, format, flags);
     tooltipIfCut(label);
     closeStepIfReleased(ui);
@@ -53,8 +53,8 @@ inline bool sliderAngle(EditorUi& ui, const char* label, float* radians, float l
     return changed;
 }
 
-inline bool dragFloat(EditorUi& ui, const char* label, float* v, float speed, float lo = 0.0f, float hi = 0.0f,
-                      const char* format = "%.3f") {
+inline bool dragFloat(EditorUi& ui, const char* label, float* v, float speed, float lo = 0.0f,
+                      float hi = 0.0f, const char* format = "%.3f") {
     const bool changed = ImGui::DragFloat(label, v, speed, lo, hi, format);
     tooltipIfCut(label);
     closeStepIfReleased(ui);
@@ -70,7 +70,8 @@ inline bool dragVec3(EditorUi& ui, const char* label, Vec3* v, float speed, cons
     return changed;
 }
 
-inline bool colorEdit(EditorUi& ui, const char* label, Vec3* v, ImGuiColorEditFlags flags = ImGuiColorEditFlags_Float) {
+inline bool colorEdit(EditorUi& ui, const char* label, Vec3* v,
+                      ImGuiColorEditFlags flags = ImGuiColorEditFlags_Float) {
     float a[3] = {v->x, v->y, v->z};
     const bool changed = ImGui::ColorEdit3(label, a, flags);
     tooltipIfCut(label);

@@ -55,15 +55,11 @@ void requireAov(AovMask enabled, Aov aov);
 PT_HD float aovPixelValue(Aov aov, const double* sums, uint32_t c, uint32_t samples) {
     const double n = double(samples);
     switch (aov) {
-        case Aov::SampleCount:
-            return float(samples);
+        case Aov::SampleCount: return float(samples);
         case Aov::InstanceId:
-        case Aov::MaterialId:
-            return float(sums[0]);
-        case Aov::Variance:
-            return samples > 1 ? float(sums[1] / ((n - 1.0) * n)) : 0.0f;
-        default:
-            return samples ? float(sums[c] / n) : 0.0f;
+        case Aov::MaterialId: return float(sums[0]);
+        case Aov::Variance: return samples > 1 ? float(sums[1] / ((n - 1.0) * n)) : 0.0f;
+        default: return samples ? float(sums[c] / n) : 0.0f;
     }
 }
 

@@ -30,7 +30,7 @@ struct ToggleState {
 };
 
 struct SyncStep {
-    std::string name;          // e.g. "upload", "refit BLAS", "rebuild BLAS", "build TLAS"
+    std::string name;  // e.g. "upload", "refit BLAS", "rebuild BLAS", "build TLAS"
     double seconds = 0.0;
 };
 
@@ -39,16 +39,16 @@ struct SyncReport {
     // "materials", "lights", "reset" or "nothing".
     std::string action;
     double seconds = 0.0;
-    double bvhSeconds = 0.0;   // BLAS + TLAS build time within `seconds`
+    double bvhSeconds = 0.0;      // BLAS + TLAS build time within `seconds`
     std::vector<SyncStep> steps;  // what each part cost
 };
 
 struct BackendStats {
     uint32_t samplesPerPixel = 0;
-    double renderSeconds = 0.0;   // time spent in render() since the last reset
-    uint64_t rays = 0;            // closest-hit and shadow rays since the last reset
+    double renderSeconds = 0.0;     // time spent in render() since the last reset
+    uint64_t rays = 0;              // closest-hit and shadow rays since the last reset
     uint64_t nonfiniteSamples = 0;  // NaN/Inf samples dropped since the last reset
-    uint64_t triangles = 0;       // traced (over instances)
+    uint64_t triangles = 0;         // traced (over instances)
     uint32_t instances = 0;
     // What the scene uses (render/scene/scene_features.h), with the AOVs and brute-force bits
     // this backend's outputs and toggles add; recomputed at every sync.
@@ -84,7 +84,7 @@ public:
     virtual SyncReport sync(const Scene& scene, const SceneDelta& changes,
                             const ProgressFn& progress = {}) = 0;
     virtual void setToggles(const IntegratorToggles& toggles) = 0;  // takes effect at next sync
-    virtual void render(uint32_t passes) = 0;  // adds `passes` samples per pixel
+    virtual void render(uint32_t passes) = 0;                       // adds `passes` samples per pixel
     // A flag another thread raises to stop a render() under way (the editor: an edit that
     // restarts the accumulation has arrived, so the samples in flight are wasted). While it is
     // up, render() stops before its next sample (CPU) or wave (GPU), resets the accumulation (a

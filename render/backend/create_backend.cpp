@@ -22,7 +22,8 @@ std::unique_ptr<Backend> createBackend(const std::string& name) {
 #else
     if (name == "cuda") {
         throw std::invalid_argument(
-            "backend \"cuda\" is not in this build: it was configured without nvcc (PT_CUDA=OFF); use --backend cpu");
+            "backend \"cuda\" is not in this build: it was configured without nvcc (PT_CUDA=OFF); use "
+            "--backend cpu");
     }
     throw std::invalid_argument("unknown backend \"" + name + "\" (available: cpu)");
 #endif

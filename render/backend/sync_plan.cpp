@@ -53,22 +53,14 @@ MaterialsUpdate updateEditedMaterials(const Scene& scene, CompiledScene& compile
 
 const char* syncActionName(SyncAction action) {
     switch (action) {
-        case SyncAction::Nothing:
-            return "nothing";
-        case SyncAction::Reset:
-            return "reset";
-        case SyncAction::Lights:
-            return "lights";
-        case SyncAction::Materials:
-            return "materials";
-        case SyncAction::Tlas:
-            return "TLAS";
-        case SyncAction::Refit:
-            return "refit";
-        case SyncAction::Rebuild:
-            return "rebuild";
-        case SyncAction::FullBuild:
-            return "full build";
+        case SyncAction::Nothing: return "nothing";
+        case SyncAction::Reset: return "reset";
+        case SyncAction::Lights: return "lights";
+        case SyncAction::Materials: return "materials";
+        case SyncAction::Tlas: return "TLAS";
+        case SyncAction::Refit: return "refit";
+        case SyncAction::Rebuild: return "rebuild";
+        case SyncAction::FullBuild: return "full build";
     }
     return "nothing";
 }

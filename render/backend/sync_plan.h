@@ -24,9 +24,9 @@ struct SyncPlan {
     bool instances = false;      // transforms or visibility: compileInstances, then the TLAS
     bool materials = false;      // these materials; then the light table where emission changed
     TouchedIds materialIds;
-    bool lights = false;         // the light table (environment or punctual lights edited)
-    bool environment = false;    // ... and the environment's sampling tables
-    bool reset = false;          // accumulation restarts (everything but display changes)
+    bool lights = false;       // the light table (environment or punctual lights edited)
+    bool environment = false;  // ... and the environment's sampling tables
+    bool reset = false;        // accumulation restarts (everything but display changes)
 };
 
 SyncPlan planSync(const CompiledScene* compiled, const Scene& scene, const SceneDelta& changes);

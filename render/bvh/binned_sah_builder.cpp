@@ -47,7 +47,10 @@ uint32_t ceilLog2(uint32_t n) { return n <= 1 ? 0u : 32u - uint32_t(__builtin_cl
 class BinnedSahBuilder {
 public:
     BinnedSahBuilder(Box4* boxes, uint32_t* indices, RawNode* nodes, const BvhBuildOptions& options)
-        : boxes_(boxes), indices_(indices), nodes_(nodes), options_(options),
+        : boxes_(boxes),
+          indices_(indices),
+          nodes_(nodes),
+          options_(options),
           binCount_(std::clamp(options.binCount, 2u, sah::kMaxBins)),
           maxLeafSize_(std::max(options.maxLeafSize, 1u)) {}
 
@@ -73,7 +76,9 @@ public:
 private:
     enum class Choice { Leaf, Sah, Median };
 
-    PrimRange range(uint32_t begin, uint32_t end) const { return {boxes_ + begin, indices_ + begin, end - begin}; }
+    PrimRange range(uint32_t begin, uint32_t end) const {
+        return {boxes_ + begin, indices_ + begin, end - begin};
+    }
 
     Choice choose(const NodeTask& task, const sah::BinMapping& m, SahSplit& split) const {
         const uint32_t n = task.end - task.begin;
@@ -113,7 +118,8 @@ private:
             // boxes below come from the actual ranges and the tree stays exact.
             assert(leftCount == sahSplit.leftCount && "partition disagrees with the bins");
             boundsKnown = leftCount == sahSplit.leftCount;
-            if (leftCount == 0 || leftCount == prims.count) leftCount = sah::partitionByMedian(prims, task.centroids);
+            if (leftCount == 0 || leftCount == prims.count)
+                leftCount = sah::partitionByMedian(prims, task.centroids);
             left.bounds = sahSplit.leftBounds;
             right.bounds = sahSplit.rightBounds;
         }

@@ -12,7 +12,7 @@ struct BvhNode {
     uint32_t leftOrFirst;  // interior: index of the left child (right = left + 1);
                            // leaf: first entry in the BVH's primitive-index list
     Vec3 hi;
-    uint32_t count;        // 0: interior node; > 0: leaf with this many primitives
+    uint32_t count;  // 0: interior node; > 0: leaf with this many primitives
 
     PT_HD bool isLeaf() const { return count > 0; }
 };

@@ -9,8 +9,8 @@
 namespace pt {
 
 struct Hit {
-    float t;           // ray parameter; the world-space ray direction need not be unit length
-    float u, v;        // triangle barycentrics of v1 and v2; spheres: unused
+    float t;             // ray parameter; the world-space ray direction need not be unit length
+    float u, v;          // triangle barycentrics of v1 and v2; spheres: unused
     uint32_t primitive;  // mesh-local triangle or sphere index
     uint32_t instance;   // RenderScene::instances index; kNoHit when nothing was hit
 

@@ -96,8 +96,7 @@ void sweepBins(const BinGrid& grid, uint32_t binCount, int axis, SahSplit& best)
 
 }  // namespace
 
-BinMapping::BinMapping(const Box4& centroids, uint32_t bins)
-    : lastBin(float(bins - 1)), binCount(bins) {
+BinMapping::BinMapping(const Box4& centroids, uint32_t bins) : lastBin(float(bins - 1)), binCount(bins) {
     for (int k = 0; k < 4; ++k) {
         const float extent = centroids.hi[k] - centroids.lo[k];
         lo[k] = k < 3 ? centroids.lo[k] : 0.0f;
@@ -199,7 +198,8 @@ uint32_t partitionByMedian(const PrimRange& prims, const Box4& centroids) {
     std::vector<uint32_t> order(n);
     for (uint32_t i = 0; i < n; ++i) order[i] = i;
     std::nth_element(order.begin(), order.begin() + mid, order.end(), [&](uint32_t x, uint32_t y) {
-        return prims.boxes[x].lo[axis] + prims.boxes[x].hi[axis] < prims.boxes[y].lo[axis] + prims.boxes[y].hi[axis];
+        return prims.boxes[x].lo[axis] + prims.boxes[x].hi[axis] <
+               prims.boxes[y].lo[axis] + prims.boxes[y].hi[axis];
     });
     std::vector<Box4> boxes(n);
     std::vector<uint32_t> indices(n);

@@ -68,10 +68,10 @@ struct PrimRange {
 };
 
 struct SahSplit {
-    int axis = -1;          // -1: no split found (coincident centroids, zero area)
-    bool sorted = false;    // exact sweep: the range is already in order, leftCount go left
-    uint32_t bin = 0;       // binned: primitives in bins [0, bin) go left
-    float cost = kInf;      // sum over the children of halfArea x count (not normalised)
+    int axis = -1;        // -1: no split found (coincident centroids, zero area)
+    bool sorted = false;  // exact sweep: the range is already in order, leftCount go left
+    uint32_t bin = 0;     // binned: primitives in bins [0, bin) go left
+    float cost = kInf;    // sum over the children of halfArea x count (not normalised)
     uint32_t leftCount = 0;
     Box4 leftBounds, rightBounds;  // binned: exact unions of the children's boxes
 };

@@ -20,7 +20,7 @@ PT_HD bool intersectSphere(Vec3 origin, Vec3 direction, float tMax, Vec4 sphere,
     const float radius2 = sphere.w * sphere.w;
     const float a = dot(direction, direction);
     if (!(a > 0.0f)) return false;
-    const float b = -dot(f, direction);  // roots are (b +- sqrt(disc)) / a
+    const float b = -dot(f, direction);      // roots are (b +- sqrt(disc)) / a
     const Vec3 l = f + (b / a) * direction;  // centre-to-line offset, perpendicular to the ray
     const float disc = a * (radius2 - dot(l, l));
     if (!(disc >= 0.0f)) return false;

@@ -45,8 +45,8 @@ PT_HD float edgeFunction(float a, float b, float c, float d) {
 
 // Closest-hit test against (0, tMax). On a hit, t is the ray parameter and u, v are the
 // barycentric weights of p1 and p2 (p0 weighs 1 - u - v).
-PT_HD bool intersectTriangle(const WatertightRay& ray, float tMax, Vec3 p0, Vec3 p1, Vec3 p2,
-                             float& t, float& u, float& v) {
+PT_HD bool intersectTriangle(const WatertightRay& ray, float tMax, Vec3 p0, Vec3 p1, Vec3 p2, float& t,
+                             float& u, float& v) {
     const Vec3 a = p0 - ray.origin, b = p1 - ray.origin, c = p2 - ray.origin;
     const float ax = a[ray.kx] - ray.sx * a[ray.kz], ay = a[ray.ky] - ray.sy * a[ray.kz];
     const float bx = b[ray.kx] - ray.sx * b[ray.kz], by = b[ray.ky] - ray.sy * b[ray.kz];

@@ -6,10 +6,10 @@ namespace pt {
 
 const char* toneMapperName(ToneMapper op) {
     switch (op) {
-    case ToneMapper::Reinhard: return "reinhard";
-    case ToneMapper::AcesFitted: return "aces-fitted";
-    case ToneMapper::AgX: return "agx";
-    default: return "standard";
+        case ToneMapper::Reinhard: return "reinhard";
+        case ToneMapper::AcesFitted: return "aces-fitted";
+        case ToneMapper::AgX: return "agx";
+        default: return "standard";
     }
 }
 
@@ -39,7 +39,8 @@ std::vector<uint8_t> quantizeDisplay8(const std::vector<float>& displayRgba, uin
     const size_t pixels = displayRgba.size() / 4;
     std::vector<uint8_t> out(pixels * 3);
     for (size_t i = 0; i < pixels; ++i) {
-        const float offset = dither && width > 0 ? ditherOffset(uint32_t(i % width), uint32_t(i / width)) : 0.0f;
+        const float offset =
+            dither && width > 0 ? ditherOffset(uint32_t(i % width), uint32_t(i / width)) : 0.0f;
         for (size_t c = 0; c < 3; ++c) {
             const float v = displayRgba[i * 4 + c];
             out[i * 3 + c] = quantize8(std::isfinite(v) ? v : 0.0f, offset);

@@ -65,10 +65,10 @@ PT_HD Vec3 acesFitted(Vec3 c) {
 PT_HD Vec3 displayEncode(Vec3 linear, const DisplaySettings& d) {
     Vec3 c = linear * exp2f(d.exposureStops);
     switch (d.toneMapper) {
-    case ToneMapper::Reinhard: c = reinhardExtended(c, d.whitePoint); break;
-    case ToneMapper::AcesFitted: c = acesFitted(c); break;
-    case ToneMapper::AgX: c = agxToneMap(c); break;
-    default: break;
+        case ToneMapper::Reinhard: c = reinhardExtended(c, d.whitePoint); break;
+        case ToneMapper::AcesFitted: c = acesFitted(c); break;
+        case ToneMapper::AgX: c = agxToneMap(c); break;
+        default: break;
     }
     return Vec3(linearToSrgb(c.x), linearToSrgb(c.y), linearToSrgb(c.z));
 }

@@ -70,17 +70,13 @@ constexpr uint32_t aovChannels(Aov a) {
         case Aov::ShadingNormal:
         case Aov::GeometricNormal:
         case Aov::Position:
-        case Aov::Emission:
-            return 3;
+        case Aov::Emission: return 3;
         case Aov::Uv:
         case Aov::BvhCost:
-        case Aov::Variance:
-            return 2;
+        case Aov::Variance: return 2;
         case Aov::SampleCount:
-        case Aov::Count:
-            return 0;
-        default:
-            return 1;
+        case Aov::Count: return 0;
+        default: return 1;
     }
 }
 

@@ -24,8 +24,8 @@ RenderCamera makeRenderCamera(const Camera& camera, uint32_t width, uint32_t hei
     rc.lensRadius = std::fmax(camera.apertureRadius, 0.0f);
     const float lookDistance = length(camera.lookAt - camera.position);
     rc.focusDistance = camera.focusDistance > 0.0f ? camera.focusDistance
-                       : lookDistance > 0.0f      ? lookDistance
-                                                  : 1.0f;
+                       : lookDistance > 0.0f       ? lookDistance
+                                                   : 1.0f;
     return rc;
 }
 

@@ -31,18 +31,18 @@ struct MediumStack {
 };
 
 struct PathState {
-    Ray ray;                   // next segment; direction unit length in world space
-    Vec3 throughput;           // product of BSDF weights (and volume transmittances) so far
-    Vec3 radiance;             // gathered so far
-    Vec3 lastVertex;           // where `ray` was scattered (MIS densities of lights it hits)
+    Ray ray;          // next segment; direction unit length in world space
+    Vec3 throughput;  // product of BSDF weights (and volume transmittances) so far
+    Vec3 radiance;    // gathered so far
+    Vec3 lastVertex;  // where `ray` was scattered (MIS densities of lights it hits)
     PathSampler sampler;
     uint32_t depth;            // surface interactions so far
     uint16_t transparentHits;  // surfaces this segment has passed through (alpha, index-matched)
     uint16_t mediumBounces;    // scattering events inside media so far (medium_scattering.h)
     MediumStack media;
-    float etaScale;            // product of eta^2 over refractions: undoes their 1/eta^2 for roulette
-    float lastBsdfPdf;         // solid-angle pdf of the sample that made `ray`
-    bool lastWasDelta;         // `ray` came from a specular lobe (or the camera)
+    float etaScale;     // product of eta^2 over refractions: undoes their 1/eta^2 for roulette
+    float lastBsdfPdf;  // solid-angle pdf of the sample that made `ray`
+    bool lastWasDelta;  // `ray` came from a specular lobe (or the camera)
     bool alive;
     // The wavelength the first dispersive surface gave the path (dispersion.h's packing; 0: none
     // yet): in the two bytes the bools leave, so the state keeps its size.
@@ -55,7 +55,7 @@ static_assert(sizeof(PathState) == 116, "PathState: 116 bytes");
 // A shadow ray for next-event estimation: if nothing blocks it, `contribution` is added, times
 // the transmittance of the media it crosses (transparency.h).
 struct ShadowRay {
-    Ray ray;                 // from the shading point to the light point; blocked if any hit has t < tMax
+    Ray ray;  // from the shading point to the light point; blocked if any hit has t < tMax
     Vec3 contribution;
     uint32_t medium;  // the volume it starts in (material index), kNoMedium outside all
     bool valid;
@@ -64,7 +64,7 @@ static_assert(sizeof(ShadowRay) == 48, "ShadowRay: 48 bytes");
 
 // Counters a backend sums over all paths.
 struct PathCounters {
-    uint64_t rays = 0;           // closest-hit and shadow rays traced
+    uint64_t rays = 0;  // closest-hit and shadow rays traced
     uint64_t nonfiniteSamples = 0;
 };
 

@@ -72,9 +72,9 @@ PT_HD Vec3 emittedRadiance(const RenderScene& scene, const Material& m, Vec2 uv)
 struct EmitterSample {
     Vec3 point;
     Vec3 pointError;  // per axis, for offsetRayOrigin()
-    Vec3 normal;    // front normal of the emitter
-    Vec3 radiance;  // leaving the front face, times the surface's alpha coverage there
-    float area;     // world space
+    Vec3 normal;      // front normal of the emitter
+    Vec3 radiance;    // leaving the front face, times the surface's alpha coverage there
+    float area;       // world space
 };
 
 // A uniform point on triangle `primitive` of instance `instanceIndex`.

@@ -14,13 +14,13 @@
 namespace pt {
 
 struct LightSample {
-    Vec3 wi;         // unit, from the shading point towards the light
-    Vec3 radiance;   // arriving along wi: Le (area, environment), I/d^2 x falloff, or E (directional)
-    Vec3 point;      // on the light, for the shadow ray (finite lights)
-    Vec3 pointError; // per axis, for offsetRayOrigin() (area lights); zero for the others
-    Vec3 normal;     // front normal at `point` (area lights); zero for punctual lights
-    float distance;  // to `point`; kInf for directional lights and the environment
-    float pdf;       // solid-angle density x pick probability; delta lights: the pick probability
+    Vec3 wi;          // unit, from the shading point towards the light
+    Vec3 radiance;    // arriving along wi: Le (area, environment), I/d^2 x falloff, or E (directional)
+    Vec3 point;       // on the light, for the shadow ray (finite lights)
+    Vec3 pointError;  // per axis, for offsetRayOrigin() (area lights); zero for the others
+    Vec3 normal;      // front normal at `point` (area lights); zero for punctual lights
+    float distance;   // to `point`; kInf for directional lights and the environment
+    float pdf;        // solid-angle density x pick probability; delta lights: the pick probability
     bool delta;
 };
 
@@ -90,8 +90,7 @@ PT_HD bool sampleLight(const RenderScene& scene, Vec3 ref, float uPick, Vec2 uPo
     if (scene.emitterAlias.count == 0) return false;
     const Emitter& e = scene.emitters[sampleAliasTable(scene.emitterAlias, uPick)];
     switch (e.kind) {
-        case LightKind::Triangle:
-            return sampleTriangleLight<kF>(scene, e, ref, uPoint, out);
+        case LightKind::Triangle: return sampleTriangleLight<kF>(scene, e, ref, uPoint, out);
         case LightKind::Sphere:
             if (!hasFeature<kF>(feature::kSphereLights)) return false;
             return sampleSphereLight<kF>(scene, e, ref, uPoint, out);

@@ -49,12 +49,9 @@ PT_HD bool samplePunctualLight(const PunctualLight& light, Vec3 ref, PunctualSam
 PT_HD float punctualLightWeight(const PunctualLight& light, float sceneRadius) {
     const float i = luminance(light.intensity);
     switch (light.type) {
-        case LightType::Point:
-            return 4.0f * i;
-        case LightType::Spot:
-            return 2.0f * i * fmaxf(1.0f - 0.5f * (light.cosInner + light.cosOuter), 1e-6f);
-        case LightType::Directional:
-            return i * sceneRadius * sceneRadius;
+        case LightType::Point: return 4.0f * i;
+        case LightType::Spot: return 2.0f * i * fmaxf(1.0f - 0.5f * (light.cosInner + light.cosOuter), 1e-6f);
+        case LightType::Directional: return i * sceneRadius * sceneRadius;
     }
     return 0.0f;
 }

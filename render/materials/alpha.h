@@ -12,13 +12,10 @@ PT_HD bool cullsBackFaces(const Material& m) { return !m.doubleSided && m.transm
 // Whether `m` can be transparent anywhere (decides if rays need the alpha test at all).
 PT_HD bool materialMayBeTransparent(const Material& m) {
     switch (m.alphaMode) {
-        case AlphaMode::Mask:
-            return m.baseColorTexture.present() || m.alpha < m.alphaCutoff;
-        case AlphaMode::Blend:
-            return m.baseColorTexture.present() || m.alpha < 1.0f;
+        case AlphaMode::Mask: return m.baseColorTexture.present() || m.alpha < m.alphaCutoff;
+        case AlphaMode::Blend: return m.baseColorTexture.present() || m.alpha < 1.0f;
         case AlphaMode::Opaque:
-        default:
-            return false;
+        default: return false;
     }
 }
 
@@ -42,7 +39,9 @@ PT_HD float surfaceCoverage(const RenderScene& scene, const Material& m, Vec2 uv
 }
 
 // Whether rays may pass through some surfaces of `m` (alpha, or culled back faces).
-PT_HD bool materialMayLetRaysThrough(const Material& m) { return materialMayBeTransparent(m) || cullsBackFaces(m); }
+PT_HD bool materialMayLetRaysThrough(const Material& m) {
+    return materialMayBeTransparent(m) || cullsBackFaces(m);
+}
 
 // Whether one ray passes through `m` at `uv`, meeting its front face or not; `u` in [0, 1)
 // is the coin for blending (stochastic transparency: the surface stops a ray with

@@ -49,9 +49,9 @@ struct BsdfParams {
     Vec3 baseColor;
     float metallic;
     float transmission;
-    float ior;                         // interior / exterior, >= 1
-    float roughness = 0.5f;            // GGX alpha = roughness^2
-    float specular = 1.0f;             // KHR_materials_specular factor
+    float ior;               // interior / exterior, >= 1
+    float roughness = 0.5f;  // GGX alpha = roughness^2
+    float specular = 1.0f;   // KHR_materials_specular factor
     Vec3 specularColor{1.0f, 1.0f, 1.0f};
     float clearcoat = 0.0f;
     float clearcoatRoughness = 0.0f;
@@ -72,10 +72,10 @@ struct BsdfParams {
 };
 
 struct BsdfSample {
-    Vec3 wi;         // world space, unit
-    Vec3 weight;     // f * |cos| / pdf
-    float pdf;       // solid-angle density; meaningless when `delta`
-    bool delta;      // from a specular lobe: no light sampling, no MIS
+    Vec3 wi;      // world space, unit
+    Vec3 weight;  // f * |cos| / pdf
+    float pdf;    // solid-angle density; meaningless when `delta`
+    bool delta;   // from a specular lobe: no light sampling, no MIS
     bool transmitted;
     bool refracted;  // through the dielectric interface (radiance scales by eta^2), not diffusely
 };
@@ -125,13 +125,13 @@ struct RareLobeWeights<true> {
 // seven floats cost the lean shading kernel 24 bytes of stack, 2 registers and 1.7% before).
 template <FeatureSet kF>
 struct Lobes : RareLobeWeights<(kF & feature::kRareLobes) != 0u> {
-    float coat;             // mix weight of the coat (0 from the back)
+    float coat;  // mix weight of the coat (0 from the back)
     float coatAlpha;
-    Vec3 specF0, specF90;   // the shared GGX reflection lobe, mix weights folded in
+    Vec3 specF0, specF90;  // the shared GGX reflection lobe, mix weights folded in
     float alpha;
-    DiffuseLayer layer;     // the dielectric specular layer over the diffuse base
-    Vec3 diffuse;           // baseColor * mix weight * (1 - E(mu_o)) / (1 - E_avg)
-    float glass;            // mix weight of the dielectric interface
+    DiffuseLayer layer;  // the dielectric specular layer over the diffuse base
+    Vec3 diffuse;        // baseColor * mix weight * (1 - E(mu_o)) / (1 - E_avg)
+    float glass;         // mix weight of the dielectric interface
     DielectricInterface interface;
     float probability[lobesFor<kF>()];
 };
@@ -174,10 +174,8 @@ template <FeatureSet kF>
 PT_HD bool isDeltaLobe(const Lobes<kF>& l, int lobe) {
     switch (lobe) {
         case kCoat: return ggxIsSmooth(l.coatAlpha);
-        case kSpecular:
-            return !hasFeature<kF>(feature::kGlossyReflection) || ggxIsSmooth(l.alpha);
-        case kGlass:
-            return !hasFeature<kF>(feature::kRoughTransmission) || dielectricIsSmooth(l.interface);
+        case kSpecular: return !hasFeature<kF>(feature::kGlossyReflection) || ggxIsSmooth(l.alpha);
+        case kGlass: return !hasFeature<kF>(feature::kRoughTransmission) || dielectricIsSmooth(l.interface);
         default: return false;
     }
 }
@@ -223,7 +221,8 @@ PT_HD Lobes<kF> resolveLobes(const BsdfParams& p, Vec3 wo) {
     }
 
     // KHR_materials_specular: F0 = min(F0(ior) specularColor, 1) specular, F90 = specular.
-    l.layer.layerF0 = vmin(Vec3(dielectricF0(ior)) * vmax(p.specularColor, Vec3(0.0f)), Vec3(1.0f)) * specular;
+    l.layer.layerF0 =
+        vmin(Vec3(dielectricF0(ior)) * vmax(p.specularColor, Vec3(0.0f)), Vec3(1.0f)) * specular;
     l.layer.layerF90 = Vec3(specular);
     l.layer.layerAlpha = l.alpha;
 
@@ -286,8 +285,8 @@ PT_HD Lobes<kF> resolveLobes(const BsdfParams& p, Vec3 wo) {
         const float transmit = maxComponent(l.interface.transmitTint);
         // Not below a tenth of the refracted share: rough microfacets refract where the
         // macro surface totally reflects.
-        a[kGlass] = l.glass * fmaxf(f * maxComponent(l.interface.reflectTint) + (1.0f - f) * transmit,
-                                    0.1f * transmit);
+        a[kGlass] = l.glass *
+                    fmaxf(f * maxComponent(l.interface.reflectTint) + (1.0f - f) * transmit, 0.1f * transmit);
     }
     float sum = 0.0f;
     for (int i = 0; i < lobesFor<kF>(); ++i) sum += a[i] > 0.0f ? a[i] : 0.0f;

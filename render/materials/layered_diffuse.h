@@ -28,9 +28,11 @@ PT_HD Vec3 layerTransmittance(const DiffuseLayer& d, float mu) {
 // The wo-dependent factor (1 - E(mu_o)) / (1 - E_avg) per channel, given 1 - E(mu_o)
 // (0 where E_avg reaches 1).
 PT_HD Vec3 diffuseLayerScale(const DiffuseLayer& d, Vec3 transmittanceO) {
-    const Vec3 avg = Vec3(1.0f) - schlickAlbedo(ggxSpecularAlbedoAverage(d.layerAlpha), d.layerF0, d.layerF90);
+    const Vec3 avg =
+        Vec3(1.0f) - schlickAlbedo(ggxSpecularAlbedoAverage(d.layerAlpha), d.layerF0, d.layerF90);
     const Vec3 t = transmittanceO;
-    return {avg.x > 1e-6f ? t.x / avg.x : 0.0f, avg.y > 1e-6f ? t.y / avg.y : 0.0f, avg.z > 1e-6f ? t.z / avg.z : 0.0f};
+    return {avg.x > 1e-6f ? t.x / avg.x : 0.0f, avg.y > 1e-6f ? t.y / avg.y : 0.0f,
+            avg.z > 1e-6f ? t.z / avg.z : 0.0f};
 }
 
 // f * cos(wi) given the resolved wo-dependent weight `scaledAlbedo` = baseColor * diffuseLayerScale.

@@ -28,30 +28,30 @@ struct Material {
     float alpha = 1.0f;
     float metallic = 0.0f;
     float roughness = 0.5f;
-    Vec3 emission{0.0f, 0.0f, 0.0f};   // emissiveFactor
-    float emissionStrength = 1.0f;     // KHR_materials_emissive_strength; radiance = emission * strength
-    float ior = 1.5f;                  // KHR_materials_ior
-    float transmission = 0.0f;         // KHR_materials_transmission
-    float specular = 1.0f;             // KHR_materials_specular: specularFactor
+    Vec3 emission{0.0f, 0.0f, 0.0f};  // emissiveFactor
+    float emissionStrength = 1.0f;    // KHR_materials_emissive_strength; radiance = emission * strength
+    float ior = 1.5f;                 // KHR_materials_ior
+    float transmission = 0.0f;        // KHR_materials_transmission
+    float specular = 1.0f;            // KHR_materials_specular: specularFactor
     Vec3 specularColor{1.0f, 1.0f, 1.0f};
-    float clearcoat = 0.0f;            // KHR_materials_clearcoat
+    float clearcoat = 0.0f;  // KHR_materials_clearcoat
     float clearcoatRoughness = 0.0f;
-    float thickness = 0.0f;            // KHR_materials_volume: thicknessFactor
+    float thickness = 0.0f;  // KHR_materials_volume: thicknessFactor
     Vec3 attenuationColor{1.0f, 1.0f, 1.0f};
     float attenuationDistance = kInf;  // world units; infinity means no absorption
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     float normalScale = 1.0f;
-    uint32_t doubleSided = 1;          // back faces shade as front faces with a flipped normal
+    uint32_t doubleSided = 1;  // back faces shade as front faces with a flipped normal
     // KHR_materials_unlit: the surface shows its base colour (factor times texture) as radiance
     // and scatters no light; the path ends there (path_tracer.h).
     uint32_t unlit = 0;
 
-    TextureRef baseColorTexture;       // sRGB
+    TextureRef baseColorTexture;          // sRGB
     TextureRef metallicRoughnessTexture;  // linear: G = roughness, B = metallic
-    TextureRef normalTexture;          // linear, tangent space
-    TextureRef emissiveTexture;        // sRGB
-    TextureRef transmissionTexture;    // linear, R
+    TextureRef normalTexture;             // linear, tangent space
+    TextureRef emissiveTexture;           // sRGB
+    TextureRef transmissionTexture;       // linear, R
 
     // The rare lobes' parameters (scene_features.h, kRareLobes) come after the fields every
     // kernel reads, which keep the offsets they had before these were added.

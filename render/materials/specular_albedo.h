@@ -61,7 +61,7 @@ PT_HD SpecularAlbedo ggxSpecularAlbedo(float mu, float alpha) {
     cell(cubeRoot(mu) * float(kMuCount - 1), kMuCount, i, fx);
     cell(roughnessCoordinate(alpha), kRoughnessCount, j, fy);
     const auto& t = kSpecularAlbedoTables;
-    auto bilinear = [&](const float (&v)[kRoughnessCount][kMuCount]) {
+    auto bilinear = [&](const float(&v)[kRoughnessCount][kMuCount]) {
         const float lo = v[j][i] + (v[j][i + 1] - v[j][i]) * fx;
         const float hi = v[j + 1][i] + (v[j + 1][i + 1] - v[j + 1][i]) * fx;
         return lo + (hi - lo) * fy;

@@ -57,7 +57,8 @@ PT_HD Vec4 fetchTexel(const TexelArrays& texels, const TextureView& tex, int x, 
 // Linear RGBA of texture `tex` at `uv` (glTF convention: v = 0 is the top row of the image).
 // Out of line on the GPU (PT_HD_OUTLINED): material, alpha, normal-map, emission and
 // environment lookups all call this one copy.
-PT_HD_OUTLINED Vec4 sampleTextureView(TexelArrays texels, TextureView tex, TextureRef ref, Vec2 uv, bool srgb) {
+PT_HD_OUTLINED Vec4 sampleTextureView(TexelArrays texels, TextureView tex, TextureRef ref, Vec2 uv,
+                                      bool srgb) {
     const Vec2 st = applyTextureTransform(ref, uv);
     const float fx = st.x * float(tex.width) - 0.5f, fy = st.y * float(tex.height) - 0.5f;
     const int w = int(tex.width), h = int(tex.height);
@@ -82,8 +83,8 @@ PT_HD_OUTLINED Vec4 sampleTextureView(TexelArrays texels, TextureView tex, Textu
 
 // Linear RGBA of the scene texture `ref` names at `uv`.
 PT_HD Vec4 sampleTexture(const RenderScene& scene, const TextureRef& ref, Vec2 uv, bool srgb) {
-    return sampleTextureView({scene.texels8.data, scene.texelsF.data}, scene.textures[uint32_t(ref.texture)], ref,
-                             uv, srgb);
+    return sampleTextureView({scene.texels8.data, scene.texelsF.data}, scene.textures[uint32_t(ref.texture)],
+                             ref, uv, srgb);
 }
 
 }  // namespace pt

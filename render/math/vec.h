@@ -44,10 +44,22 @@ PT_HD Vec3 operator/(Vec3 a, Vec3 b) { return {a.x / b.x, a.y / b.y, a.z / b.z};
 PT_HD Vec3 operator*(Vec3 a, float s) { return {a.x * s, a.y * s, a.z * s}; }
 PT_HD Vec3 operator*(float s, Vec3 a) { return {a.x * s, a.y * s, a.z * s}; }
 PT_HD Vec3 operator/(Vec3 a, float s) { return a * (1.0f / s); }
-PT_HD Vec3& operator+=(Vec3& a, Vec3 b) { a = a + b; return a; }
-PT_HD Vec3& operator-=(Vec3& a, Vec3 b) { a = a - b; return a; }
-PT_HD Vec3& operator*=(Vec3& a, Vec3 b) { a = a * b; return a; }
-PT_HD Vec3& operator*=(Vec3& a, float s) { a = a * s; return a; }
+PT_HD Vec3& operator+=(Vec3& a, Vec3 b) {
+    a = a + b;
+    return a;
+}
+PT_HD Vec3& operator-=(Vec3& a, Vec3 b) {
+    a = a - b;
+    return a;
+}
+PT_HD Vec3& operator*=(Vec3& a, Vec3 b) {
+    a = a * b;
+    return a;
+}
+PT_HD Vec3& operator*=(Vec3& a, float s) {
+    a = a * s;
+    return a;
+}
 PT_HD bool operator==(Vec3 a, Vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 PT_HD bool operator!=(Vec3 a, Vec3 b) { return !(a == b); }
 

@@ -79,8 +79,8 @@ PT_HD uint32_t nestedUniformScramble(uint32_t x, uint32_t seed) {
 // on the first two dimensions of a 4D group: Sobol's dimensions 0 and 1 form a (0,2)-sequence,
 // so those pairs are stratified in every elementary interval; dimensions 2 and 3 are not.
 struct SampleDims {
-    static constexpr uint32_t kPixel = 0;       // 2: pixel filter jitter
-    static constexpr uint32_t kLens = 2;        // 2: thin-lens aperture
+    static constexpr uint32_t kPixel = 0;  // 2: pixel filter jitter
+    static constexpr uint32_t kLens = 2;   // 2: thin-lens aperture
     static constexpr uint32_t kFirstBounce = 4;
     static constexpr uint32_t kPerBounce = 8;   // per bounce, relative to the bounce's base:
     static constexpr uint32_t kLightPoint = 0;  //   2: where on the emitter
@@ -133,9 +133,7 @@ PT_HD float sampleDimension(uint32_t pixel, uint32_t sampleIndex, uint32_t dimen
 struct PathSampler {
     uint32_t pixel, sampleIndex, seed;
 
-    PT_HD float get(uint32_t dimension) const {
-        return sampleDimension(pixel, sampleIndex, dimension, seed);
-    }
+    PT_HD float get(uint32_t dimension) const { return sampleDimension(pixel, sampleIndex, dimension, seed); }
     PT_HD Vec2 get2(uint32_t dimension) const { return {get(dimension), get(dimension + 1)}; }
 };
 

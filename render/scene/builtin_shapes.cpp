@@ -45,12 +45,12 @@ Mesh makeUnitBox() {
     Mesh mesh;
     mesh.name = shapeMeshName(ObjectKind::Box);
     const Vec3 x{2, 0, 0}, y{0, 2, 0}, z{0, 0, 2};
-    addFace(mesh, {-1, -1, 1}, x, y);    // +Z
-    addFace(mesh, {1, -1, -1}, -x, y);   // -Z
-    addFace(mesh, {1, -1, 1}, -z, y);    // +X
-    addFace(mesh, {-1, -1, -1}, z, y);   // -X
-    addFace(mesh, {-1, 1, 1}, x, -z);    // +Y
-    addFace(mesh, {-1, -1, -1}, x, z);   // -Y
+    addFace(mesh, {-1, -1, 1}, x, y);   // +Z
+    addFace(mesh, {1, -1, -1}, -x, y);  // -Z
+    addFace(mesh, {1, -1, 1}, -z, y);   // +X
+    addFace(mesh, {-1, -1, -1}, z, y);  // -X
+    addFace(mesh, {-1, 1, 1}, x, -z);   // +Y
+    addFace(mesh, {-1, -1, -1}, x, z);  // -Y
     return mesh;
 }
 

@@ -21,8 +21,9 @@ std::string meshLabel(const Mesh& mesh, size_t index) {
 void appendSlots(const Mesh& mesh, size_t index, std::vector<uint32_t>& slots) {
     const uint32_t count = mesh.primitiveCount();
     if (!mesh.primitiveSlots.empty() && mesh.primitiveSlots.size() != count) {
-        throw std::invalid_argument(meshLabel(mesh, index) + ": " + std::to_string(mesh.primitiveSlots.size()) +
-                                    " material slots for " + std::to_string(count) + " primitives");
+        throw std::invalid_argument(meshLabel(mesh, index) + ": " +
+                                    std::to_string(mesh.primitiveSlots.size()) + " material slots for " +
+                                    std::to_string(count) + " primitives");
     }
     for (uint32_t p = 0; p < count; ++p) {
         const uint32_t slot = mesh.primitiveSlots.empty() ? 0u : mesh.primitiveSlots[p];
@@ -43,10 +44,14 @@ void appendTriangles(const Mesh& mesh, size_t index, CompiledScene& out) {
     // BlasRef says so.
     const bool hasNormals = mesh.normals.size() == vertexCount;
     const bool hasUvs = mesh.uvs.size() == vertexCount;
-    if (hasNormals) out.normals.insert(out.normals.end(), mesh.normals.begin(), mesh.normals.end());
-    else out.normals.resize(out.positions.size());
-    if (hasUvs) out.uvs.insert(out.uvs.end(), mesh.uvs.begin(), mesh.uvs.end());
-    else out.uvs.resize(out.positions.size());
+    if (hasNormals)
+        out.normals.insert(out.normals.end(), mesh.normals.begin(), mesh.normals.end());
+    else
+        out.normals.resize(out.positions.size());
+    if (hasUvs)
+        out.uvs.insert(out.uvs.end(), mesh.uvs.begin(), mesh.uvs.end());
+    else
+        out.uvs.resize(out.positions.size());
     // Zero tangents (w = 0) mean "derive from the UVs"; flattenGeometry drops the array when
     // no mesh has any.
     if (mesh.tangents.size() == vertexCount) {

@@ -204,10 +204,10 @@ CompiledScene compileRenderScene(const Scene& scene, const CompileOptions& optio
     out.stats.flattenSeconds = secondsSince(start);
 
     if (options.bruteForce && out.stats.instancedTriangles > options.bruteForceBudget) {
-        throw std::invalid_argument(
-            "BVH off (brute force) refused: the scene traces " +
-            std::to_string(out.stats.instancedTriangles) + " triangles, over the budget of " +
-            std::to_string(options.bruteForceBudget));
+        throw std::invalid_argument("BVH off (brute force) refused: the scene traces " +
+                                    std::to_string(out.stats.instancedTriangles) +
+                                    " triangles, over the budget of " +
+                                    std::to_string(options.bruteForceBudget));
     }
     out.bruteForce = options.bruteForce;
 

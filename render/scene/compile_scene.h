@@ -16,27 +16,27 @@
 namespace pt {
 
 struct CompileOptions {
-    bool bruteForce = false;               // no BVH: validation only
-    bool mergeSmallInstances = true;       // merged_geometry.h (never with bruteForce)
-    uint64_t bruteForceBudget = 100000;    // triangles x instances above which bruteForce is refused
+    bool bruteForce = false;             // no BVH: validation only
+    bool mergeSmallInstances = true;     // merged_geometry.h (never with bruteForce)
+    uint64_t bruteForceBudget = 100000;  // triangles x instances above which bruteForce is refused
 };
 
 struct CompileStats {
     double flattenSeconds = 0, blasSeconds = 0, tlasSeconds = 0, lightSeconds = 0;
-    uint64_t meshTriangles = 0;            // unique triangles over meshes (what BLASes hold)
-    uint64_t instancedTriangles = 0;       // over visible instances (what is traced)
+    uint64_t meshTriangles = 0;       // unique triangles over meshes (what BLASes hold)
+    uint64_t instancedTriangles = 0;  // over visible instances (what is traced)
     uint64_t spheres = 0;
     uint32_t blasCount = 0, instanceCount = 0;
-    uint32_t emitterCount = 0;             // emissive triangles NEE samples
+    uint32_t emitterCount = 0;  // emissive triangles NEE samples
     uint32_t sphereLightCount = 0, punctualLightCount = 0;
-    bool environmentSampled = false;       // the environment is in the light table
+    bool environmentSampled = false;  // the environment is in the light table
     uint64_t blasNodes = 0;
 };
 
 struct CompiledScene {
     std::vector<Vec3> positions, normals;
     std::vector<Vec2> uvs;
-    std::vector<Vec4> tangents;            // parallel to positions, or empty when no mesh has any
+    std::vector<Vec4> tangents;  // parallel to positions, or empty when no mesh has any
     std::vector<TriangleIndices> triangles;
     std::vector<Vec4> spheres;
     std::vector<uint32_t> triangleSlots, sphereSlots;

@@ -21,13 +21,13 @@ static_assert(sizeof(TriangleIndices) == 12, "TriangleIndices: 12 bytes");
 
 // One bottom-level acceleration structure: one Mesh, in object space.
 struct BlasRef {
-    uint32_t nodeOffset;       // into RenderScene::blasNodes; child/leaf indices are relative to it
+    uint32_t nodeOffset;  // into RenderScene::blasNodes; child/leaf indices are relative to it
     uint32_t nodeCount;
     uint32_t primIndexOffset;  // into RenderScene::blasPrimIndices; leaf ranges are relative to it
     uint32_t primitiveOffset;  // first triangle (or sphere) of this mesh in the global arrays
     uint32_t primitiveCount;
     GeometryKind kind;
-    uint32_t hasNormals;       // per-vertex normals present
+    uint32_t hasNormals;  // per-vertex normals present
     uint32_t hasUvs;
 };
 static_assert(sizeof(BlasRef) == 32, "BlasRef: 32 bytes");
@@ -36,8 +36,8 @@ struct RenderInstance {
     Affine3 objectToWorld;
     Affine3 worldToObject;
     uint32_t blas;
-    uint32_t materialOffset;   // into RenderScene::instanceMaterials: one entry per mesh slot
-    uint32_t flipsWinding;     // objectToWorld mirrors (negative determinant)
+    uint32_t materialOffset;  // into RenderScene::instanceMaterials: one entry per mesh slot
+    uint32_t flipsWinding;    // objectToWorld mirrors (negative determinant)
     // Its triangles are traced in world space, in the merged BLAS (merged_geometry.h), so its
     // hits carry world-space rounding (instance_space.h widens their spawn offsets).
     uint32_t tracedInWorldSpace = 0;
@@ -60,7 +60,7 @@ struct TextureView {
     TexelFormat format;
     WrapMode wrapS, wrapT;
     uint32_t nearest;
-    uint32_t texelOffset;      // in texels (4 channels each) into texels8 or texelsF
+    uint32_t texelOffset;  // in texels (4 channels each) into texels8 or texelsF
     uint32_t pad = 0;
 };
 static_assert(sizeof(TextureView) == 32, "TextureView: 32 bytes");
@@ -78,8 +78,8 @@ enum class LightKind : uint32_t {
 // from the same inputs when a BSDF-sampled ray hits the light, so both strategies agree on its
 // probability for MIS.
 struct Emitter {
-    uint32_t instance;         // Triangle, Sphere: RenderScene::instances index; Punctual: light index
-    uint32_t primitive;        // Triangle, Sphere: mesh-local primitive index
+    uint32_t instance;   // Triangle, Sphere: RenderScene::instances index; Punctual: light index
+    uint32_t primitive;  // Triangle, Sphere: mesh-local primitive index
     float weight;
     LightKind kind;
 };
@@ -87,12 +87,12 @@ static_assert(sizeof(Emitter) == 16, "Emitter: 16 bytes");
 
 // A punctual light in world space (Scene's Light, compiled). 48 bytes.
 struct PunctualLight {
-    Vec3 position;             // point, spot
+    Vec3 position;  // point, spot
     LightType type;
-    Vec3 direction;            // spot, directional: unit, where the light shines
-    float cosInner;            // spot: cos of the inner cone angle
-    Vec3 intensity;            // color x intensity: candela (point, spot) or lux (directional)
-    float cosOuter;            // spot: cos of the outer cone angle
+    Vec3 direction;  // spot, directional: unit, where the light shines
+    float cosInner;  // spot: cos of the inner cone angle
+    Vec3 intensity;  // color x intensity: candela (point, spot) or lux (directional)
+    float cosOuter;  // spot: cos of the outer cone angle
 };
 static_assert(sizeof(PunctualLight) == 48, "PunctualLight: 48 bytes");
 
@@ -104,18 +104,18 @@ struct AliasEntry {
 
 struct RenderCamera {
     Vec3 origin;
-    Vec3 forward;              // unit
-    Vec3 right;                // unit, scaled by tan(fov/2) * aspect
-    Vec3 up;                   // unit, scaled by tan(fov/2)
+    Vec3 forward;  // unit
+    Vec3 right;    // unit, scaled by tan(fov/2) * aspect
+    Vec3 up;       // unit, scaled by tan(fov/2)
     float lensRadius;
-    float focusDistance;       // > 0
+    float focusDistance;  // > 0
 };
 
 struct RenderEnvironment {
-    Vec3 color;                // constant radiance x intensity (used when texture < 0)
-    int32_t texture;           // equirectangular RGBA32F
+    Vec3 color;       // constant radiance x intensity (used when texture < 0)
+    int32_t texture;  // equirectangular RGBA32F
     float intensity;
-    float rotationRadians;     // about +Y
+    float rotationRadians;  // about +Y
     // Importance sampling of the image (render/lights/environment_sampling.h): a piecewise-
     // constant density over a distWidth x distHeight grid on the equirect square; 0 x 0 when
     // the environment is a constant colour (sampled uniformly) or black.
@@ -137,19 +137,19 @@ struct IntegratorSettings {
     // Firefly clamp: the luminance of each indirect contribution of a sample (light reaching
     // the first hit through another surface) is limited to this; 0 = off. Biased (darkens).
     float clampRadiance = 0.0f;
-    uint32_t pixelJitter = 1;           // 0: primary rays through pixel centres (no antialiasing)
+    uint32_t pixelJitter = 1;  // 0: primary rays through pixel centres (no antialiasing)
 };
 
 struct RenderScene {
     // Geometry, all meshes concatenated.
     Span<const Vec3> positions;
-    Span<const Vec3> normals;              // parallel to positions where a mesh has them
-    Span<const Vec2> uvs;                  // parallel to positions where a mesh has them
-    Span<const Vec4> tangents;             // parallel to positions, or empty when no mesh has any
+    Span<const Vec3> normals;   // parallel to positions where a mesh has them
+    Span<const Vec2> uvs;       // parallel to positions where a mesh has them
+    Span<const Vec4> tangents;  // parallel to positions, or empty when no mesh has any
     Span<const TriangleIndices> triangles;
-    Span<const Vec4> spheres;              // xyz center, w radius (object space)
-    Span<const uint32_t> triangleSlots;    // parallel to triangles: the mesh slot of each
-    Span<const uint32_t> sphereSlots;      // parallel to spheres
+    Span<const Vec4> spheres;            // xyz center, w radius (object space)
+    Span<const uint32_t> triangleSlots;  // parallel to triangles: the mesh slot of each
+    Span<const uint32_t> sphereSlots;    // parallel to spheres
 
     // Two-level BVH.
     Span<const BlasRef> blases;
@@ -171,7 +171,8 @@ struct RenderScene {
     Span<const uint8_t> texels8;
     Span<const float> texelsF;
 
-    uint32_t transparentMaterials = 0;     // some material may let rays through (alpha mask/blend, culled back faces)
+    uint32_t transparentMaterials =
+        0;  // some material may let rays through (alpha mask/blend, culled back faces)
 
     // Lights: one alias table over every light NEE samples.
     Span<const Emitter> emitters;
@@ -179,14 +180,14 @@ struct RenderScene {
     float emitterTotalWeight = 0.0f;
     Span<const PunctualLight> punctualLights;
     RenderEnvironment environment;
-    Span<const float> envPdf;              // distHeight x distWidth, density on the unit square
-    Span<const float> envMarginalCdf;      // distHeight + 1, over rows
-    Span<const float> envConditionalCdf;   // distHeight x (distWidth + 1), within each row
+    Span<const float> envPdf;             // distHeight x distWidth, density on the unit square
+    Span<const float> envMarginalCdf;     // distHeight + 1, over rows
+    Span<const float> envConditionalCdf;  // distHeight x (distWidth + 1), within each row
 
     RenderCamera camera;
     IntegratorSettings settings;
-    uint32_t bruteForce = 0;               // validation: test every primitive, no BVH
-    FeatureSet features = 0;               // scene_features.h: what this scene uses (host decisions)
+    uint32_t bruteForce = 0;  // validation: test every primitive, no BVH
+    FeatureSet features = 0;  // scene_features.h: what this scene uses (host decisions)
 };
 
 }  // namespace pt

@@ -59,8 +59,7 @@ void growByMesh(const Mesh& mesh, const Affine3& toWorld, Vec3& lo, Vec3& hi) {
     if (mesh.kind == GeometryKind::Spheres) {
         for (const Vec4& s : mesh.spheres) {
             for (int corner = 0; corner < 8; ++corner) {
-                const Vec3 offset{corner & 1 ? s.w : -s.w, corner & 2 ? s.w : -s.w,
-                                  corner & 4 ? s.w : -s.w};
+                const Vec3 offset{corner & 1 ? s.w : -s.w, corner & 2 ? s.w : -s.w, corner & 4 ? s.w : -s.w};
                 grow(toWorld.transformPoint(s.xyz() + offset));
             }
         }

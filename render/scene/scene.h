@@ -30,23 +30,24 @@ struct Mesh {
     std::string name;
     GeometryKind kind = GeometryKind::Triangles;
     std::vector<Vec3> positions;
-    std::vector<Vec3> normals;          // empty, or one unit normal per position
-    std::vector<Vec2> uvs;              // empty, or one per position (glTF TEXCOORD_0)
+    std::vector<Vec3> normals;  // empty, or one unit normal per position
+    std::vector<Vec2> uvs;      // empty, or one per position (glTF TEXCOORD_0)
     // Empty, or one per position (glTF TANGENT): xyz a unit tangent along increasing U, w = +-1
     // the handedness (bitangent = cross(normal, xyz) * w). A zero vector (w = 0) marks a
     // vertex without one; the renderer then derives the frame from the triangle's UVs.
     std::vector<Vec4> tangents;
-    std::vector<uint32_t> indices;      // three per triangle, each < positions.size()
-    std::vector<Vec4> spheres;          // Spheres: xyz = center, w = radius (> 0)
+    std::vector<uint32_t> indices;         // three per triangle, each < positions.size()
+    std::vector<Vec4> spheres;             // Spheres: xyz = center, w = radius (> 0)
     std::vector<uint32_t> primitiveSlots;  // empty (all slot 0), or one per primitive
     uint32_t slotCount = 1;
     // Morph targets (render/scene/morph.h): positions and normals above are the deformed
     // ones, basePositions + sum of weight x delta; a weight change calls applyMorphWeights.
-    std::vector<MorphTarget> morphTargets;   // glTF mesh targets, in file order
-    std::vector<float> morphWeights;         // one per target; the current deformation
-    std::vector<float> defaultMorphWeights;  // one per target: the file's pose (scene JSON writes only changes)
-    std::vector<Vec3> basePositions;         // undeformed positions; empty when no targets
-    std::vector<Vec3> baseNormals;           // undeformed normals; empty when no targets or no normals
+    std::vector<MorphTarget> morphTargets;  // glTF mesh targets, in file order
+    std::vector<float> morphWeights;        // one per target; the current deformation
+    std::vector<float>
+        defaultMorphWeights;          // one per target: the file's pose (scene JSON writes only changes)
+    std::vector<Vec3> basePositions;  // undeformed positions; empty when no targets
+    std::vector<Vec3> baseNormals;    // undeformed normals; empty when no targets or no normals
 
     uint32_t primitiveCount() const {
         return kind == GeometryKind::Spheres ? uint32_t(spheres.size()) : uint32_t(indices.size() / 3);
@@ -57,8 +58,8 @@ struct Instance {
     std::string name;
     uint32_t mesh = 0;
     Affine3 objectToWorld;
-    std::vector<uint32_t> materials;    // one Scene::materials index per mesh slot
-    int32_t object = -1;                // the SceneObject that created it (-1: none)
+    std::vector<uint32_t> materials;  // one Scene::materials index per mesh slot
+    int32_t object = -1;              // the SceneObject that created it (-1: none)
     bool visible = true;
     // glTF KHR_materials_variants, when its object's file has variants: the slots' materials
     // under each variant (SceneObject::variants order; every row complete, a slot the variant
@@ -70,7 +71,7 @@ struct Instance {
 struct NamedMaterial {
     std::string name;
     Material params;
-    int32_t object = -1;                // -1: defined by the scene JSON; else imported by that object
+    int32_t object = -1;  // -1: defined by the scene JSON; else imported by that object
 };
 
 enum class WrapMode : uint32_t { Repeat = 0, ClampToEdge = 1, MirroredRepeat = 2 };
@@ -80,14 +81,14 @@ enum class TexelFormat : uint32_t { RGBA8 = 0, RGBA32F = 1 };
 // slot that samples it (base color and emission are; normal and metallic-roughness are not).
 struct Texture {
     std::string name;
-    std::string sourcePath;             // file it came from ("" when embedded), for messages
+    std::string sourcePath;  // file it came from ("" when embedded), for messages
     uint32_t width = 0, height = 0;
     TexelFormat format = TexelFormat::RGBA8;
-    std::vector<uint8_t> texels8;       // RGBA8: width * height * 4
-    std::vector<float> texelsF;         // RGBA32F: width * height * 4
+    std::vector<uint8_t> texels8;  // RGBA8: width * height * 4
+    std::vector<float> texelsF;    // RGBA32F: width * height * 4
     WrapMode wrapS = WrapMode::Repeat, wrapT = WrapMode::Repeat;
-    bool nearest = false;               // sampler magFilter NEAREST; else bilinear
-    int32_t object = -1;                // as NamedMaterial::object
+    bool nearest = false;  // sampler magFilter NEAREST; else bilinear
+    int32_t object = -1;   // as NamedMaterial::object
 };
 
 struct Camera {
@@ -95,23 +96,23 @@ struct Camera {
     Vec3 lookAt{0.0f, 0.0f, 0.0f};
     Vec3 up{0.0f, 1.0f, 0.0f};
     float verticalFovDegrees = 45.0f;
-    float apertureRadius = 0.0f;        // thin lens radius in world units; 0 is a pinhole
-    float focusDistance = 0.0f;         // world units along the view direction; <= 0: the look-at distance
+    float apertureRadius = 0.0f;  // thin lens radius in world units; 0 is a pinhole
+    float focusDistance = 0.0f;   // world units along the view direction; <= 0: the look-at distance
 };
 
 struct RenderSettings {
     uint32_t width = 512, height = 512;
-    uint32_t maxDepth = 8;              // path vertices after the camera
+    uint32_t maxDepth = 8;  // path vertices after the camera
     uint32_t spp = 64;
     uint32_t seed = 0;
 };
 
 struct Environment {
-    Vec3 color{0.0f, 0.0f, 0.0f};       // constant radiance, used when there is no image
-    std::string imagePath;              // equirectangular HDR (absolute once loaded)
-    int32_t texture = -1;               // Scene::textures index of the decoded image
+    Vec3 color{0.0f, 0.0f, 0.0f};  // constant radiance, used when there is no image
+    std::string imagePath;         // equirectangular HDR (absolute once loaded)
+    int32_t texture = -1;          // Scene::textures index of the decoded image
     float intensity = 1.0f;
-    float rotationDegrees = 0.0f;       // about +Y
+    float rotationDegrees = 0.0f;  // about +Y
 };
 
 // Object-to-parent transform as written in scene JSON: either TRS (Euler XYZ in degrees,
@@ -134,9 +135,9 @@ enum class ObjectKind : uint32_t { File = 0, Sphere = 1, Box = 2, Quad = 3 };
 struct SceneObject {
     std::string name;
     ObjectKind kind = ObjectKind::File;
-    std::string path;                   // File: absolute path of the .gltf/.glb/.obj
+    std::string path;  // File: absolute path of the .gltf/.glb/.obj
     ObjectTransform transform;
-    std::string material;               // shapes: a Scene material name
+    std::string material;                                  // shapes: a Scene material name
     std::map<std::string, std::string> materialOverrides;  // File: file material -> scene material
     // File: mesh name -> morph weights replacing the file's defaults (Mesh::defaultMorphWeights).
     std::map<std::string, std::vector<float>> morphWeights;
@@ -185,15 +186,15 @@ struct ColorSettings {
 };
 
 struct Scene {
-    std::string sourcePath;             // file it was loaded from (absolute), "" if built in code
+    std::string sourcePath;  // file it was loaded from (absolute), "" if built in code
     std::vector<SceneObject> objects;
     std::vector<Mesh> meshes;
     std::vector<Instance> instances;
     std::vector<NamedMaterial> materials;
     std::vector<Texture> textures;
-    std::vector<Light> lights;          // punctual lights (emissive surfaces are materials)
+    std::vector<Light> lights;  // punctual lights (emissive surfaces are materials)
     Camera camera;
-    bool cameraFromFile = false;        // the camera came from the JSON or a glTF camera
+    bool cameraFromFile = false;  // the camera came from the JSON or a glTF camera
     RenderSettings render;
     Environment environment;
     ColorSettings color;
@@ -207,7 +208,7 @@ struct Scene {
     void worldBounds(Vec3& lo, Vec3& hi) const;
     // Bounds of one instance in world space, hidden or not; false where it has no geometry.
     bool instanceBounds(uint32_t instance, Vec3& lo, Vec3& hi) const;
-    uint64_t triangleCount() const;     // over instances (what is traced)
+    uint64_t triangleCount() const;  // over instances (what is traced)
 };
 
 }  // namespace pt

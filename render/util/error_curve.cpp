@@ -38,7 +38,8 @@ ImageError errorAt(const std::vector<ErrorPoint>& points, double seconds) {
         const auto lerp = [t](double x, double y) {
             return x > 0 && y > 0 ? std::exp(std::log(x) + t * (std::log(y) - std::log(x))) : x + t * (y - x);
         };
-        return {lerp(a.error.relMse, b.error.relMse), lerp(a.error.rmse, b.error.rmse), lerp(a.error.mape, b.error.mape)};
+        return {lerp(a.error.relMse, b.error.relMse), lerp(a.error.rmse, b.error.rmse),
+                lerp(a.error.mape, b.error.mape)};
     }
     return points.back().error;
 }

@@ -24,7 +24,7 @@ struct TailSlope {
     double slope = 0.0;
     double decades = 0.0;  // the span of time the fit covers, in decades: 1, or less when less was measured
     size_t points = 0;
-    bool exact = false;    // the last error is 0: nothing left to fall (e.g. a zero-variance estimator)
+    bool exact = false;  // the last error is 0: nothing left to fall (e.g. a zero-variance estimator)
 };
 TailSlope fitTailSlope(const std::vector<ErrorPoint>& points, double referenceNoiseRelMse);
 

@@ -12,8 +12,8 @@ namespace pt::test {
 CliResult runCli(const std::string& args) {
     static int counter = 0;
     const std::string base = tempDir() + "/cli" + std::to_string(counter++);
-    const std::string command = std::string("'") + PT_RENDER_CLI + "' " + args + " >'" + base +
-                                ".out' 2>'" + base + ".err'";
+    const std::string command =
+        std::string("'") + PT_RENDER_CLI + "' " + args + " >'" + base + ".out' 2>'" + base + ".err'";
     const int status = std::system(command.c_str());
     CliResult r;
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

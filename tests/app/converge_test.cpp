@@ -61,7 +61,8 @@ TEST(PtRenderConverge, WritesCsvAndSvgAndPassesAnUnbiasedVariant) {
     const std::string dir = test::tempDir();
     const auto r = runCli("converge " + scene("scenes/stress/furnace_diffuse.json") +
                           " --reference-constant 1,1,1 --size 16x16 --time 1.5 --variant full --variant "
-                          "no-roulette:rr=off --csv " + dir + "/f.csv --plot " + dir + "/f.svg --quiet");
+                          "no-roulette:rr=off --csv " +
+                          dir + "/f.csv --plot " + dir + "/f.svg --quiet");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     std::string header;
     const std::vector<CsvRow> rows = readCsv(dir + "/f.csv", header);
@@ -86,10 +87,11 @@ TEST(PtRenderConverge, WritesCsvAndSvgAndPassesAnUnbiasedVariant) {
     EXPECT_EQ(svg.rfind("<svg", 0), 0u);
     EXPECT_NE(svg.find("</svg>"), std::string::npos);
     size_t polylines = 0;
-    for (size_t at = svg.find("<polyline"); at != std::string::npos; at = svg.find("<polyline", at + 1)) ++polylines;
+    for (size_t at = svg.find("<polyline"); at != std::string::npos; at = svg.find("<polyline", at + 1))
+        ++polylines;
     EXPECT_EQ(polylines, 2u);
-    for (const char* text : {">full<", ">no-roulette<", ">slope -1<", "class=\"guide\"", "10<tspan", "render time (s)",
-                             ">relMSE<"}) {
+    for (const char* text : {">full<", ">no-roulette<", ">slope -1<", "class=\"guide\"", "10<tspan",
+                             "render time (s)", ">relMSE<"}) {
         EXPECT_NE(svg.find(text), std::string::npos) << text;
     }
 }
@@ -102,8 +104,9 @@ TEST(PtRenderConverge, FlagsABiasedVariant) {
     const auto ref = runCli("reference " + scene("scenes/cornell.json") + " -o " + dir +
                             "/ref.exr --spp 256 --size 16x16 --quiet");
     ASSERT_EQ(ref.exitCode, 0) << ref.err;
-    const auto r = runCli("converge " + scene("scenes/cornell.json") + " --reference " + dir +
-                          "/ref.exr --size 16x16 --time 1 --variant clamped:clamp=0.01 --csv " + dir + "/c.csv --quiet");
+    const auto r =
+        runCli("converge " + scene("scenes/cornell.json") + " --reference " + dir +
+               "/ref.exr --size 16x16 --time 1 --variant clamped:clamp=0.01 --csv " + dir + "/c.csv --quiet");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(summaryLine(r.out, "clamped").find("BIASED OR STUCK"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("reference noise"), std::string::npos) << r.out;
@@ -161,10 +164,13 @@ TEST(PtRenderConverge, RefusesAReferenceOfAnotherSize) {
     PT_REQUIRE_OIIO();
     const std::string dir = test::tempDir();
     const std::string furnace = scene("scenes/stress/furnace_diffuse.json");
-    ASSERT_EQ(runCli("reference " + furnace + " -o " + dir + "/small.exr --spp 8 --size 8x8 --quiet").exitCode, 0);
-    const auto r = runCli("converge " + furnace + " --reference " + dir + "/small.exr --size 16x8 --time 0.1");
+    ASSERT_EQ(
+        runCli("reference " + furnace + " -o " + dir + "/small.exr --spp 8 --size 8x8 --quiet").exitCode, 0);
+    const auto r =
+        runCli("converge " + furnace + " --reference " + dir + "/small.exr --size 16x8 --time 0.1");
     EXPECT_EQ(r.exitCode, 1);
-    EXPECT_NE(r.err.find("small.exr: the reference is 8x8 but the render is 16x8"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("small.exr: the reference is 8x8 but the render is 16x8"), std::string::npos)
+        << r.err;
 }
 
 }  // namespace

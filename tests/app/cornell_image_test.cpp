@@ -4,8 +4,8 @@
 
 #include <cstring>
 
-#include "assets/image_write.h"
-#include "assets/scene_json.h"
+#include "assets/image/image_write.h"
+#include "assets/scene_json/scene_json.h"
 #include "render_test_support.h"
 #include "support/test_paths.h"
 
@@ -37,7 +37,8 @@ TEST(CornellImage, MatchesTheReferenceWithinANoiseBound) {
     // everywhere, fails it.
     Scene shallow = scene;
     shallow.render.maxDepth = 2;
-    const double shallowError = test::blockRelativeError(test::renderCpu(shallow, kSpp), reference, kSize, kSize, kBlock);
+    const double shallowError =
+        test::blockRelativeError(test::renderCpu(shallow, kSpp), reference, kSize, kSize, kBlock);
     RecordProperty("shallowBlockRelativeError", std::to_string(shallowError));
     EXPECT_GT(shallowError, kErrorBound);
     std::vector<float> darker = image;

@@ -7,7 +7,7 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "assets/exr_layers.h"
+#include "assets/image/exr_layers.h"
 #include "cli_runner.h"
 #include "render/backend/cpu/cpu_backend.h"
 #include "render/util/image_error.h"

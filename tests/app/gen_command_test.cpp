@@ -9,11 +9,11 @@
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <set>
+#include <sstream>
 #include <unordered_map>
 
-#include "assets/image_write.h"
+#include "assets/image/image_write.h"
 #include "cli_runner.h"
 #include "support/load_scene.h"
 #include "support/test_paths.h"
@@ -58,8 +58,8 @@ void expectClosedAndConsistent(const Mesh& mesh) {
     }
     EXPECT_EQ(bad, 0u) << "edges not shared by exactly two consistently wound triangles";
     // A closed genus-0 surface with no duplicate vertices: V - E + F = 2.
-    const int64_t euler = int64_t(mesh.positions.size()) - int64_t(directed.size() / 2) +
-                          int64_t(mesh.indices.size() / 3);
+    const int64_t euler =
+        int64_t(mesh.positions.size()) - int64_t(directed.size() / 2) + int64_t(mesh.indices.size() / 3);
     EXPECT_EQ(euler, 2);
 }
 
@@ -119,7 +119,8 @@ TEST(GenCommand, SphereIsClosedDisplacedWithinAmplitudeAndNormalsPointOut) {
         const Vec3 facet = cross(b - a, c - a);
         volume += dot(a, cross(b, c)) / 6.0;
         facingIn += !(dot(facet, a + b + c) > 0.0f);
-        agreement += dot(normalize(facet), normalize(mesh.normals[i[0]] + mesh.normals[i[1]] + mesh.normals[i[2]]));
+        agreement +=
+            dot(normalize(facet), normalize(mesh.normals[i[0]] + mesh.normals[i[1]] + mesh.normals[i[2]]));
     }
     EXPECT_EQ(facingIn, 0u);
     EXPECT_NEAR(volume, 4.0 / 3.0 * 3.14159265, 0.6);
@@ -134,7 +135,8 @@ TEST(GenCommand, BufferMatchesTheAccessorsAndPositionBounds) {
     ASSERT_EQ(doc["buffers"].size(), 1u);
     EXPECT_EQ(doc["buffers"][0]["uri"], "s.bin");
     EXPECT_EQ(doc["buffers"][0]["byteLength"].get<size_t>(), bin.size());
-    const nlohmann::json& position = doc["accessors"][doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"].get<size_t>()];
+    const nlohmann::json& position =
+        doc["accessors"][doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"].get<size_t>()];
     const nlohmann::json& view = doc["bufferViews"][position["bufferView"].get<size_t>()];
     const size_t count = position["count"], offset = view.value("byteOffset", 0u);
     ASSERT_LE(offset + count * 12, bin.size());
@@ -157,7 +159,9 @@ TEST(GenCommand, SameSeedGivesIdenticalFilesAndAnotherSeedDifferentOnes) {
     ASSERT_EQ(runCli("gen sphere -o " + a + " --triangles 5000 --seed 7 --quiet").exitCode, 0);
     ASSERT_EQ(runCli("gen sphere -o " + b + " --triangles 5000 --seed 7 --quiet").exitCode, 0);
     ASSERT_EQ(runCli("gen sphere -o " + c + " --triangles 5000 --seed 8 --quiet").exitCode, 0);
-    auto bin = [](const std::string& gltf) { return slurp(fs::path(gltf).replace_extension(".bin").string()); };
+    auto bin = [](const std::string& gltf) {
+        return slurp(fs::path(gltf).replace_extension(".bin").string());
+    };
     EXPECT_EQ(slurp(a), slurp(b));
     EXPECT_EQ(bin(a), bin(b));
     EXPECT_NE(bin(a), bin(c));
@@ -206,7 +210,8 @@ TEST(GenCommand, FieldIsManyInstancesOfOneMesh) {
         const Vec3 p{corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y, corner & 4 ? hi.z : lo.z};
         const float depth = dot(p - camera.position, forward);
         ASSERT_GT(depth, 0.0f) << "corner " << corner << " behind the camera";
-        const float spread = std::max(std::abs(dot(p - camera.position, right)), std::abs(dot(p - camera.position, up)));
+        const float spread =
+            std::max(std::abs(dot(p - camera.position, right)), std::abs(dot(p - camera.position, up)));
         EXPECT_LE(spread / depth, tanHalf * 1.0001f) << "corner " << corner << " out of view";
         widest = std::max(widest, spread / depth);
     }
@@ -289,7 +294,8 @@ TEST(GenCommand, BadUsageExits2AndBadInputExits1WithOneLine) {
         {"gen cube" + out, 2, "cube"},
         {"gen", 2, "sphere or field"},
         {"gen field" + out + " --count 5 --mesh /nonexistent/m.gltf", 1, "/nonexistent/m.gltf"},
-        {"gen field" + out + " --count 5 --mesh '" + test::testDataPath("gltf/bad_json.gltf") + "'", 1, "bad_json.gltf"},
+        {"gen field" + out + " --count 5 --mesh '" + test::testDataPath("gltf/bad_json.gltf") + "'", 1,
+         "bad_json.gltf"},
         {"gen sphere -o /nonexistent-dir/x.gltf --triangles 10", 1, "/nonexistent-dir"},
     };
     for (const Case& c : cases) {

@@ -1,12 +1,12 @@
 // The error metrics of converge, stress and the editor's live curve, against values worked out
 // by hand.
+#include "render/util/image_error.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-
-#include "render/util/image_error.h"
 
 namespace pt {
 namespace {

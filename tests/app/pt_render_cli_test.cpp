@@ -14,7 +14,7 @@
 #include <thread>
 #include <vector>
 
-#include "assets/image_write.h"
+#include "assets/image/image_write.h"
 #include "assets/scene_loader.h"
 #include "cli_runner.h"
 #include "support/test_paths.h"
@@ -38,8 +38,8 @@ TEST(PtRenderCli, RendersExrPngAndStatsAndPrintsThePaths) {
     PT_REQUIRE_OIIO();  // renders to EXR
     const std::string dir = test::tempDir();
     const std::string exr = dir + "/c.exr", png = dir + "/c.png", stats = dir + "/c.json";
-    const auto r = runCli("render " + cornell() + " -o " + exr + " --png " + png + " --spp 4 --size 48x32 --stats " +
-                          stats + " --quiet");
+    const auto r = runCli("render " + cornell() + " -o " + exr + " --png " + png +
+                          " --spp 4 --size 48x32 --stats " + stats + " --quiet");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.out, exr + "\n" + png + "\n");
     uint32_t w = 0, h = 0;
@@ -99,7 +99,8 @@ TEST(PtRenderCli, ErrorsExitNonZeroWithOneClearLine) {
         {"render " + cornell() + out + " --clamp -3", 2, "--clamp"},
         {"render " + cornell(), 2, "output"},
         {"render " + cornell() + out + " --frobnicate", 2, "--frobnicate"},
-        {"render " + cornell() + " -o /nonexistent-dir/x.exr --spp 1 --size 8x8 --quiet", 1, "/nonexistent-dir"},
+        {"render " + cornell() + " -o /nonexistent-dir/x.exr --spp 1 --size 8x8 --quiet", 1,
+         "/nonexistent-dir"},
         {"transmogrify", 2, "unknown command"},
     };
     for (const Case& c : cases) {
@@ -118,7 +119,8 @@ TEST(PtRenderCli, ClampDarkensIndirectLight) {
     const char* extra[2] = {"", " --clamp 0.01"};
     for (int i = 0; i < 2; ++i) {
         const std::string exr = dir + "/clamp" + std::to_string(i) + ".exr";
-        const auto r = runCli("render " + cornell() + " -o " + exr + " --spp 8 --size 32x32 --quiet" + extra[i]);
+        const auto r =
+            runCli("render " + cornell() + " -o " + exr + " --spp 8 --size 32x32 --quiet" + extra[i]);
         ASSERT_EQ(r.exitCode, 0) << r.err;
         uint32_t w = 0, h = 0;
         for (float v : readImageRgba(exr, w, h)) sums[i] += v;
@@ -129,8 +131,8 @@ TEST(PtRenderCli, ClampDarkensIndirectLight) {
 
 TEST(PtRenderCli, BvhOffIsRefusedAboveItsBudget) {
     // The instanced scene traces 64 x 12,288 triangles, far over the brute-force budget.
-    const auto r = runCli("render '" + test::projectPath("scenes/instances.json") + "' -o " + test::tempDir() +
-                          "/i.exr --spp 1 --size 8x8 --bvh-off --quiet");
+    const auto r = runCli("render '" + test::projectPath("scenes/instances.json") + "' -o " +
+                          test::tempDir() + "/i.exr --spp 1 --size 8x8 --bvh-off --quiet");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.err.find("brute force"), std::string::npos) << r.err;
 }
@@ -147,7 +149,8 @@ TEST(PtRenderCli, InfoReportsCountsAsJson) {
     EXPECT_EQ(j["sphere_lights"], 0);
     EXPECT_EQ(j["punctual_lights"], 0);
     EXPECT_EQ(j["features"].get<std::vector<std::string>>(), kCornellFeatures);
-    for (const char* key : {"meshes", "textures", "bounds", "load_seconds", "blas_build_seconds", "tlas_build_seconds"}) {
+    for (const char* key :
+         {"meshes", "textures", "bounds", "load_seconds", "blas_build_seconds", "tlas_build_seconds"}) {
         EXPECT_TRUE(j.contains(key)) << key;
     }
 }
@@ -180,7 +183,8 @@ TEST(PtRenderCli, ExportWritesSceneJsonThatLoadsAgain) {
 
 TEST(PtRenderCli, ExportsAGltfModelAsSceneJson) {
     const std::string out = test::tempDir() + "/knot.json";
-    const auto r = runCli("export '" + test::projectPath("scenes/models/torus_knot.gltf") + "' -o " + out + " --quiet");
+    const auto r =
+        runCli("export '" + test::projectPath("scenes/models/torus_knot.gltf") + "' -o " + out + " --quiet");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const LoadResult reloaded = loadScene(out);
     ASSERT_TRUE(reloaded.ok()) << reloaded.error;
@@ -200,7 +204,7 @@ TEST(PtRenderCli, EachCommandAnswersHelpWithItsOwnUsage) {
     const struct {
         const char* command;
         bool toggles, display;
-    } commands[] = {{"render", true, true},     {"bench", true, false},  {"reference", true, false},
+    } commands[] = {{"render", true, true},     {"bench", true, false},   {"reference", true, false},
                     {"converge", false, false}, {"stress", false, false}, {"export", false, false},
                     {"info", false, false},     {"gen", false, false}};
     for (const auto& c : commands) {
@@ -208,7 +212,8 @@ TEST(PtRenderCli, EachCommandAnswersHelpWithItsOwnUsage) {
         for (const std::string& flag : {std::string(" --help"), std::string(" scene.json -h")}) {
             const auto r = runCli(name + flag);
             EXPECT_EQ(r.exitCode, 0) << name << flag << ": " << r.err;
-            EXPECT_EQ(r.out.rfind("usage: pt-render " + name + " [options]\n\n  " + name + " ", 0), 0u) << r.out;
+            EXPECT_EQ(r.out.rfind("usage: pt-render " + name + " [options]\n\n  " + name + " ", 0), 0u)
+                << r.out;
             EXPECT_EQ(r.out.find("TOGGLES:") != std::string::npos, c.toggles) << name;
             EXPECT_EQ(r.out.find("DISPLAY (") != std::string::npos, c.display) << name;
             for (const auto& other : commands) {  // no other command's usage line
@@ -329,9 +334,10 @@ int interruptedExitCode(std::vector<std::string> args, double seconds, const std
 // was thrown away).
 TEST(PtRenderCli, CtrlCWritesTheSamplesRenderedSoFar) {
     const std::string dir = test::tempDir();
-    const std::string png = dir + "/interrupted.png", stats = dir + "/interrupted.json", err = dir + "/render.err";
-    EXPECT_EQ(interruptedExitCode({"render", test::projectPath("scenes/cornell.json"), "--png", png, "--stats", stats,
-                                   "--time", "120", "--size", "32x32", "--quiet"},
+    const std::string png = dir + "/interrupted.png", stats = dir + "/interrupted.json",
+                      err = dir + "/render.err";
+    EXPECT_EQ(interruptedExitCode({"render", test::projectPath("scenes/cornell.json"), "--png", png,
+                                   "--stats", stats, "--time", "120", "--size", "32x32", "--quiet"},
                                   3.0, err),
               130)
         << test::readTextFile(err);
@@ -368,12 +374,14 @@ TEST(PtRenderCli, CtrlCDuringAReferenceWritesTheFinishedBatches) {
 TEST(PtRenderCli, CtrlCDuringConvergeKeepsWhatWasMeasured) {
     const std::string dir = test::tempDir();
     const std::string csv = dir + "/interrupted.csv", err = dir + "/converge.err";
-    EXPECT_EQ(interruptedExitCode({"converge", test::projectPath("scenes/cornell.json"), "--reference-constant",
-                                   "0.5,0.5,0.5", "--time", "60", "--size", "16x16", "--variant", "first",
-                                   "--variant", "second:nee=off", "--csv", csv, "--quiet"},
-                                  3.0, err),
-              130);
-    EXPECT_NE(test::readTextFile(err).find("interrupted: measured 1 of 2 variants"), std::string::npos) << test::readTextFile(err);
+    EXPECT_EQ(
+        interruptedExitCode({"converge", test::projectPath("scenes/cornell.json"), "--reference-constant",
+                             "0.5,0.5,0.5", "--time", "60", "--size", "16x16", "--variant", "first",
+                             "--variant", "second:nee=off", "--csv", csv, "--quiet"},
+                            3.0, err),
+        130);
+    EXPECT_NE(test::readTextFile(err).find("interrupted: measured 1 of 2 variants"), std::string::npos)
+        << test::readTextFile(err);
     const std::string table = test::readTextFile(csv);
     EXPECT_EQ(table.rfind("variant,seconds,spp,relmse,rmse,mape\n", 0), 0u) << table.substr(0, 200);
     EXPECT_NE(table.find("\nfirst,"), std::string::npos) << table.substr(0, 200);
@@ -390,7 +398,8 @@ namespace {
 // built (issue 17: it named a source path of the build machine). Skips where a GPU renders.
 TEST(PtRenderCli, ACudaFailureNamesNoBuildPath) {
     const std::string png = test::tempDir() + "/cuda.png";
-    const auto r = runCli("render " + cornell() + " --backend cuda --png " + png + " --spp 1 --size 8x8 --quiet");
+    const auto r =
+        runCli("render " + cornell() + " --backend cuda --png " + png + " --spp 1 --size 8x8 --quiet");
     if (r.exitCode == 0) GTEST_SKIP() << "a usable GPU rendered the scene";
     EXPECT_EQ(r.exitCode, 1) << r.err;
     const std::string sourceDir = fs::path(test::projectPath("render")).parent_path().string();

@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <map>
 
-#include "assets/image_metadata.h"
-#include "assets/image_write.h"
+#include "assets/image/image_metadata.h"
+#include "assets/image/image_write.h"
 #include "cli_runner.h"
 #include "support/test_paths.h"
 
@@ -20,7 +20,8 @@ std::string cornell() { return "'" + test::projectPath("scenes/cornell.json") + 
 TEST(PtRenderReference, WritesExrWithNoiseMetadata) {
     PT_REQUIRE_OIIO();
     const std::string exr = test::tempDir() + "/ref.exr";
-    const auto r = runCli("reference " + cornell() + " -o " + exr + " --spp 30 --batches 4 --size 16x12 --quiet");
+    const auto r =
+        runCli("reference " + cornell() + " -o " + exr + " --spp 30 --batches 4 --size 16x12 --quiet");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.out, exr + "\n");
     uint32_t w = 0, h = 0;
@@ -61,7 +62,7 @@ TEST(PtRenderReference, MoreSamplesMeanLessNoise) {
 
 TEST(PtRenderReference, BadUsageExits2AndBadInput1) {
     const std::string out = " -o " + test::tempDir() + "/x.exr";
-    EXPECT_EQ(runCli("reference " + cornell() + out).exitCode, 2);  // no --spp
+    EXPECT_EQ(runCli("reference " + cornell() + out).exitCode, 2);         // no --spp
     EXPECT_EQ(runCli("reference " + cornell() + " --spp 8").exitCode, 2);  // no -o
     EXPECT_EQ(runCli("reference " + cornell() + out + " --spp 8 --batches 1").exitCode, 2);
     const auto missing = runCli("reference /nonexistent/s.json" + out + " --spp 8");

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "assets/exr_layers.h"
+#include "assets/image/exr_layers.h"
 #include "cli_runner.h"
 #include "support/test_paths.h"
 
@@ -34,7 +34,8 @@ TEST(RenderAovCli, WithoutAovsNoneAreAllocatedAndTheExrHoldsRgba) {
     PT_REQUIRE_OIIO();
     const std::string dir = test::tempDir();
     const std::string exr = dir + "/plain.exr", stats = dir + "/plain.json";
-    const auto r = runCli("render " + cornell() + " -o " + exr + " --spp 1 --size 16x12 --stats " + stats + " --quiet");
+    const auto r =
+        runCli("render " + cornell() + " -o " + exr + " --spp 1 --size 16x12 --stats " + stats + " --quiet");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const nlohmann::json j = readJson(stats);
     EXPECT_EQ(j["aov_bytes"], 0);
@@ -51,11 +52,12 @@ TEST(RenderAovCli, AovListWritesTheirChannelsAndAllocatesOnlyThem) {
     PT_REQUIRE_OIIO();
     const std::string dir = test::tempDir();
     const std::string exr = dir + "/aovs.exr", stats = dir + "/aovs.json";
-    const auto r = runCli("render " + cornell() + " -o " + exr + " --spp 2 --size 16x12 --aov albedo,depth,instance_id --half --stats " +
-                          stats);
+    const auto r = runCli("render " + cornell() + " -o " + exr +
+                          " --spp 2 --size 16x12 --aov albedo,depth,instance_id --half --stats " + stats);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.out, exr + "\n");
-    EXPECT_NE(r.err.find("half channels R G B A albedo.R albedo.G albedo.B depth.Z instance_id.Y"), std::string::npos)
+    EXPECT_NE(r.err.find("half channels R G B A albedo.R albedo.G albedo.B depth.Z instance_id.Y"),
+              std::string::npos)
         << r.err;
     const nlohmann::json j = readJson(stats);
     EXPECT_EQ(j["aovs"], "albedo,depth,instance_id");
@@ -64,8 +66,8 @@ TEST(RenderAovCli, AovListWritesTheirChannelsAndAllocatesOnlyThem) {
     EXPECT_LT(j["aov_bytes"].get<uint64_t>(), 16u * 12u * 8u * sizeof(double));
 
     const ExrImage image = readExrChannels(exr);
-    EXPECT_EQ(channelNames(image), (std::vector<std::string>{"A", "B", "G", "R", "albedo.B", "albedo.G", "albedo.R",
-                                                             "depth.Z", "instance_id.Y"}));
+    EXPECT_EQ(channelNames(image), (std::vector<std::string>{"A", "B", "G", "R", "albedo.B", "albedo.G",
+                                                             "albedo.R", "depth.Z", "instance_id.Y"}));
     EXPECT_EQ(image.channel("R")->type, ExrPixelType::Half);
     EXPECT_EQ(image.channel("albedo.G")->type, ExrPixelType::Half);
     EXPECT_EQ(image.channel("depth.Z")->type, ExrPixelType::Float);
@@ -88,7 +90,8 @@ TEST(RenderAovCli, AllWritesEveryAov) {
     const ExrImage image = readExrChannels(exr);
     EXPECT_EQ(image.attribute("pt:aovs"), aovListText(kAllAovs));
     for (uint32_t i = 0; i < kAovCount; ++i) {
-        for (const std::string& name : aovExrChannelNames(Aov(i))) EXPECT_NE(image.channel(name), nullptr) << name;
+        for (const std::string& name : aovExrChannelNames(Aov(i)))
+            EXPECT_NE(image.channel(name), nullptr) << name;
     }
 }
 

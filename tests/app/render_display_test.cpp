@@ -4,9 +4,9 @@
 
 #include <algorithm>
 
-#include "assets/color_processor.h"
-#include "assets/image_metadata.h"
-#include "assets/image_read.h"
+#include "assets/color/color_processor.h"
+#include "assets/image/image_metadata.h"
+#include "assets/image/image_read.h"
 #include "cli_runner.h"
 #include "support/test_paths.h"
 

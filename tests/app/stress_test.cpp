@@ -38,10 +38,12 @@ TEST(PtRenderStress, QuickSuitePassesOnTheCpu) {
     std::ifstream in(csv);
     std::string header;
     std::getline(in, header);
-    EXPECT_EQ(header, "group,case,backend,nonfinite_samples,error,bound,result,seconds,expectation,note,known_issue");
+    EXPECT_EQ(header,
+              "group,case,backend,nonfinite_samples,error,bound,result,seconds,expectation,note,known_issue");
     size_t rows = 0;
     for (std::string line; std::getline(in, line); ++rows) {
-        EXPECT_TRUE(line.find(",pass,") != std::string::npos || line.find(",known,") != std::string::npos) << line;
+        EXPECT_TRUE(line.find(",pass,") != std::string::npos || line.find(",known,") != std::string::npos)
+            << line;
     }
     EXPECT_GE(rows, 20u);
 }
@@ -78,7 +80,8 @@ TEST(StressExpectation, ConstantsAndEnergyBoundsFailWhenBroken) {
     EXPECT_TRUE(cli::meanEquals(flatImage(256, 1.0005f, 1e-6f), {1, 1, 1}, 1e-3).passed());
     // Accumulation in float drifts by far more than 1e-5 over a million samples.
     EXPECT_FALSE(cli::meanEquals(flatImage(1, 0.7001f, 0.0f), {0.7, 0.7, 0.7}, 1e-5).passed());
-    EXPECT_TRUE(cli::meanEquals(flatImage(1, 0.7f, 0.0f), {double(0.7f), double(0.7f), double(0.7f)}, 1e-5).passed());
+    EXPECT_TRUE(
+        cli::meanEquals(flatImage(1, 0.7f, 0.0f), {double(0.7f), double(0.7f), double(0.7f)}, 1e-5).passed());
     // Energy <= 1: the noise of the mean (4 sigma = 4 * sqrt(1e-4 / 256) = 0.0025) is allowed,
     // a gain of 1% is not.
     EXPECT_TRUE(cli::meanWithin(flatImage(256, 1.002f, 1e-4f), {0.2, 0.2, 0.2}, {1, 1, 1}, 0.0).passed());
@@ -87,7 +90,8 @@ TEST(StressExpectation, ConstantsAndEnergyBoundsFailWhenBroken) {
 }
 
 TEST(StressExpectation, ARefusalMustNameFileAndElement) {
-    EXPECT_TRUE(cli::loadRefused(false, "a.json: objects[0].file: a.obj: line 3: bad", {"a.obj", "line 3"}).passed());
+    EXPECT_TRUE(
+        cli::loadRefused(false, "a.json: objects[0].file: a.obj: line 3: bad", {"a.obj", "line 3"}).passed());
     EXPECT_FALSE(cli::loadRefused(true, "", {"a.obj"}).passed());  // loaded NaN without a word
     const cli::StressOutcome vague = cli::loadRefused(false, "cannot load", {"a.obj", "line 3"});
     EXPECT_FALSE(vague.passed());

@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "assets/input_error.h"
-#include "assets/scene_json.h"
+#include "assets/scene_json/scene_json.h"
 #include "scene_test_helpers.h"
 
 namespace pt {

@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <utility>
 #include <string>
+#include <utility>
 
 #include "assets/model_import.h"
 #include "assets/scene_loader.h"
@@ -38,19 +38,23 @@ TEST(MessageText, ControlCharactersAreEscapedAndMessagesBounded) {
 
 TEST(MessageText, AHugeGltfValueIsQuotedShortened) {
     const std::string path = test::writeTempFile(
-        "huge_type.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"accessors\": [{\"count\": 1, \"componentType\": 5126, "
-                          "\"type\": \"" + std::string(10'000'000, 'V') + "\"}]}");
+        "huge_type.gltf",
+        "{\"asset\": {\"version\": \"2.0\"}, \"accessors\": [{\"count\": 1, \"componentType\": 5126, "
+        "\"type\": \"" +
+            std::string(10'000'000, 'V') + "\"}]}");
     Scene scene;
     const std::string message = test::inputErrorOf([&] { importGltf(path, 0, scene); });
     EXPECT_EQ(message.rfind("huge_type.gltf: accessors[0].type: \"VVV", 0), 0u) << message.substr(0, 200);
-    EXPECT_NE(message.find("VVV... is not a glTF accessor type"), std::string::npos) << message.substr(0, 200);
+    EXPECT_NE(message.find("VVV... is not a glTF accessor type"), std::string::npos)
+        << message.substr(0, 200);
     EXPECT_LT(message.size(), 200u);
 }
 
 TEST(MessageText, LoadSceneEscapesAndBoundsWhatTheFileHolds) {
     // JSON escapes in the file: the key itself holds ESC and a newline.
     const std::string key = "\\u001b[2J\\n" + std::string(5000, 'k');
-    const std::string path = test::writeTempFile("escape.json", "{\"version\": 1, \"" + key + "\": 0, \"objects\": []}");
+    const std::string path =
+        test::writeTempFile("escape.json", "{\"version\": 1, \"" + key + "\": 0, \"objects\": []}");
     const LoadResult r = loadScene(path);
     ASSERT_FALSE(r.ok());
     EXPECT_NE(r.error.find("unknown key \"\\u001b[2J\\n"), std::string::npos) << r.error.substr(0, 200);
@@ -76,16 +80,18 @@ TEST(MessageText, GltfImagesThatAreFoldersOrEmptyWarnInTheRightWords) {
     ASSERT_NE(fixture.find(missing), std::string::npos);
     std::filesystem::create_directories(test::tempDir() + "/folder.png");
     test::writeTempFile("empty.png", "");
-    for (const auto& [image, words] : {std::pair<std::string, std::string>{"folder.png", "image a folder, not a file"},
-                                       {"empty.png", "image empty file"},
-                                       {"absent.png", "image no such file"}}) {
+    for (const auto& [image, words] :
+         {std::pair<std::string, std::string>{"folder.png", "image a folder, not a file"},
+          {"empty.png", "image empty file"},
+          {"absent.png", "image no such file"}}) {
         std::string text = fixture;
         text.replace(text.find(missing), missing.size(), image);
         const std::string path = test::writeTempFile("uses_" + image + ".gltf", text);
         Scene scene;
         EXPECT_NO_THROW(importGltf(path, 0, scene)) << image;
         ASSERT_EQ(scene.warnings.size(), 1u) << image;
-        EXPECT_NE(scene.warnings[0].find("'" + image + "': " + words), std::string::npos) << scene.warnings[0];
+        EXPECT_NE(scene.warnings[0].find("'" + image + "': " + words), std::string::npos)
+            << scene.warnings[0];
     }
 }
 

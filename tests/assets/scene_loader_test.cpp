@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "assets/input_error.h"
-#include "assets/scene_json.h"
+#include "assets/scene_json/scene_json.h"
 #include "scene_test_helpers.h"
 #include "support/load_scene.h"
 
@@ -81,7 +81,8 @@ TEST(SceneLoader, ModelFileCameraIsUsed) {
 TEST(SceneLoader, SameFileThreeTimesIsImportedOnce) {
     const Scene single = test::loadSceneOrFail(testDataPath("json/models/panel.obj"));
     const std::string model = testDataPath("json/models/panel.obj");
-    const Scene scene = test::loadSceneOrFail(writeFile(testFolder(), "three.json", R"({"version": 1, "objects": [
+    const Scene scene =
+        test::loadSceneOrFail(writeFile(testFolder(), "three.json", R"({"version": 1, "objects": [
         {"file": ")" + model + R"("},
         {"file": ")" + model + R"(", "transform": {"translate": [3, 0, 0]}},
         {"file": ")" + model + R"(", "transform": {"rotate": [0, 90, 0], "scale": 2}}]})"));
@@ -101,7 +102,8 @@ TEST(SceneLoader, SameFileThreeTimesIsImportedOnce) {
 }
 
 TEST(SceneLoader, ShapesShareOneMeshPerKind) {
-    const Scene scene = test::loadSceneOrFail(writeFile(testFolder(), "shapes.json", R"({"version": 1, "objects": [
+    const Scene scene =
+        test::loadSceneOrFail(writeFile(testFolder(), "shapes.json", R"({"version": 1, "objects": [
         {"shape": "sphere"}, {"shape": "box"}, {"shape": "sphere", "transform": {"translate": [2, 0, 0]}},
         {"shape": "quad"}, {"shape": "box", "name": "crate"}, {"shape": "sphere"}]})"));
     EXPECT_EQ(scene.meshes.size(), 3u);
@@ -119,7 +121,8 @@ TEST(SceneLoader, CameraComesFromTheFirstFileThatHasOne) {
     const std::string objects = R"("objects": [{"file": ")" + testDataPath("json/models/panel.obj") +
                                 R"("}, {"file": ")" + testDataPath("json/models/eye.gltf") +
                                 R"(", "transform": {"translate": [10, 0, 0]}}])";
-    const Scene fromFile = test::loadSceneOrFail(writeFile(folder, "a.json", R"({"version": 1, )" + objects + "}"));
+    const Scene fromFile =
+        test::loadSceneOrFail(writeFile(folder, "a.json", R"({"version": 1, )" + objects + "}"));
     EXPECT_TRUE(fromFile.cameraFromFile);
     expectNear(fromFile.camera.position, {10.0f, 0.0f, 4.0f}, 1e-5f);
     const Scene fromJson = test::loadSceneOrFail(
@@ -131,7 +134,8 @@ TEST(SceneLoader, FrameBoundsFitsTheBoundingSphere) {
     const std::string folder = testFolder();
     const std::string objects =
         R"("objects": [{"shape": "sphere", "transform": {"translate": [1, 2, 3], "scale": 2}}])";
-    const Scene square = test::loadSceneOrFail(writeFile(folder, "square.json", R"({"version": 1, )" + objects + "}"));
+    const Scene square =
+        test::loadSceneOrFail(writeFile(folder, "square.json", R"({"version": 1, )" + objects + "}"));
     EXPECT_FALSE(square.cameraFromFile);
     const float radius = 2.0f * std::sqrt(3.0f);  // half the diagonal of the bounds
     const float halfFov = 22.5f * kPi / 180.0f;
@@ -197,9 +201,10 @@ TEST(SceneLoader, RelativePathsFollowTheSavedFile) {
 
 TEST(SceneLoader, ReportsLoadSceneProgress) {
     std::vector<double> fractions;
-    (void)test::loadSceneOrFail(testDataPath("json/scenes/relative.json"), [&](const std::string& stage, double fraction) {
-        if (stage == "load scene") fractions.push_back(fraction);
-    });
+    (void)test::loadSceneOrFail(testDataPath("json/scenes/relative.json"),
+                                [&](const std::string& stage, double fraction) {
+                                    if (stage == "load scene") fractions.push_back(fraction);
+                                });
     ASSERT_FALSE(fractions.empty());
     EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
     EXPECT_EQ(fractions.back(), 1.0);

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "assets/image_read.h"
+#include "assets/image/image_read.h"
 #include "assets/scene_loader.h"
 #include "render/scene/compile_scene.h"
 #include "support/render_cpu.h"

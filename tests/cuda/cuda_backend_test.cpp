@@ -41,8 +41,8 @@ Scene cornell(uint32_t size, uint32_t maxDepth = 8) {
 }
 
 // Renders in `batches` calls of spp / batches samples (so caches made by one call serve the next).
-std::vector<float> renderWith(Backend& backend, const Scene& scene, uint32_t spp, const IntegratorToggles& toggles = {},
-                              uint32_t batches = 1) {
+std::vector<float> renderWith(Backend& backend, const Scene& scene, uint32_t spp,
+                              const IntegratorToggles& toggles = {}, uint32_t batches = 1) {
     backend.setToggles(toggles);
     backend.sync(scene, SceneChanges::All, {});
     for (uint32_t b = 0; b < batches; ++b) backend.render(spp / batches);
@@ -108,14 +108,16 @@ void expectSameHits(const std::vector<Hit>& a, const std::vector<Hit>& b, const 
                                   (!a[i].valid() || (a[i].primitive == b[i].primitive && a[i].t == b[i].t &&
                                                      a[i].u == b[i].u && a[i].v == b[i].v)));
         if (!same && mismatches++ < 5) {
-            ADD_FAILURE() << what << ": ray " << i << ": instance " << a[i].instance << " vs " << b[i].instance
-                          << ", primitive " << a[i].primitive << " vs " << b[i].primitive << ", t " << a[i].t
-                          << " vs " << b[i].t;
+            ADD_FAILURE() << what << ": ray " << i << ": instance " << a[i].instance << " vs "
+                          << b[i].instance << ", primitive " << a[i].primitive << " vs " << b[i].primitive
+                          << ", t " << a[i].t << " vs " << b[i].t;
         }
     }
     EXPECT_EQ(mismatches, 0u) << what;
     EXPECT_LE(ties, a.size() / 100) << what << ": too many equal-distance ties to be edges";
-    if (ties) std::cout << "[ figures  ] " << what << ": " << ties << " equal-distance ties of " << a.size() << " rays\n";
+    if (ties)
+        std::cout << "[ figures  ] " << what << ": " << ties << " equal-distance ties of " << a.size()
+                  << " rays\n";
     EXPECT_GT(hits, a.size() / 4) << what << ": too few rays hit to test anything";
 }
 
@@ -156,7 +158,8 @@ TEST(CudaBackend, CameraRaysHitWhatTheCpuHits) {
     const RenderCamera camera = makeRenderCamera(scene.camera, 128, 128);
     std::vector<Ray> rays;
     for (uint32_t y = 0; y < 128; ++y) {
-        for (uint32_t x = 0; x < 128; ++x) rays.push_back(generateCameraRay(camera, 128, 128, x, y, {0.5f, 0.5f}, {0.5f, 0.5f}));
+        for (uint32_t x = 0; x < 128; ++x)
+            rays.push_back(generateCameraRay(camera, 128, 128, x, y, {0.5f, 0.5f}, {0.5f, 0.5f}));
     }
     CpuBackend cpu;
     cuda::CudaBackend gpu;
@@ -227,7 +230,8 @@ TEST(CudaBackend, EveryKernelVariantMatchesTheCpu) {
     oneInstance.instances.resize(1);
     Mesh& grid = oneInstance.meshes[0];
     for (const Vec3& p : grid.positions) grid.uvs.push_back({1.5f * p.x, 1.5f * p.z});
-    const int32_t baseColor = addNoiseTexture(oneInstance, 8, 5), metallicRoughness = addNoiseTexture(oneInstance, 4, 6);
+    const int32_t baseColor = addNoiseTexture(oneInstance, 8, 5),
+                  metallicRoughness = addNoiseTexture(oneInstance, 4, 6);
     for (NamedMaterial& m : oneInstance.materials) {  // glossy: half metal, rough
         m.params.metallic = 0.5f;
         m.params.roughness = 0.4f;
@@ -460,7 +464,7 @@ TEST(CudaBackend, SchedulingTogglesLeaveTheImageUnchanged) {
     const Scene scene = cornell(64);
     cuda::CudaBackend backend;
     IntegratorToggles base = wavefrontToggles();  // the wavefront, whose scheduling the toggles change
-    base.pixelJitter = false;  // so that the first-hit cache applies
+    base.pixelJitter = false;                     // so that the first-hit cache applies
     base.firstHitCache = false;
     const std::vector<float> reference = renderWith(backend, scene, 16, base, 2);
     struct Variant {
@@ -716,7 +720,8 @@ TEST(CudaBackend, DeviceFrameEqualsTheHostFrame) {
     ASSERT_EQ(cudaMalloc(&device, host.size() * sizeof(float)), cudaSuccess);
     ASSERT_TRUE(backend.copyBeautyToDevice(device));
     std::vector<float> copied(host.size());
-    ASSERT_EQ(cudaMemcpy(copied.data(), device, copied.size() * sizeof(float), cudaMemcpyDeviceToHost), cudaSuccess);
+    ASSERT_EQ(cudaMemcpy(copied.data(), device, copied.size() * sizeof(float), cudaMemcpyDeviceToHost),
+              cudaSuccess);
     cudaFree(device);
     EXPECT_EQ(maxAbsDifference(host, copied), 0.0f);
     EXPECT_GT(*std::max_element(copied.begin(), copied.end()), 0.0f);

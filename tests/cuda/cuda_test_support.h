@@ -10,9 +10,9 @@
 #include "render/backend/cuda/cuda_device.h"
 #include "render/math/ray.h"
 
-#define PT_REQUIRE_CUDA_DEVICE()                                                     \
-    do {                                                                             \
-        std::string ptWhy_;                                                          \
+#define PT_REQUIRE_CUDA_DEVICE()                                                          \
+    do {                                                                                  \
+        std::string ptWhy_;                                                               \
         if (!::pt::cuda::deviceAvailable(&ptWhy_)) GTEST_SKIP() << "skipped: " << ptWhy_; \
     } while (0)
 

@@ -42,7 +42,8 @@ TEST(ColorView, AnUnknownViewFallsBackToTheDefaultAndSaysWhy) {
 }
 
 TEST(ColorView, ABrokenConfigLeavesTheBuiltInOperatorsAndNamesTheFile) {
-    const std::filesystem::path path = std::filesystem::temp_directory_path() / "pt_color_view_test_broken.ocio";
+    const std::filesystem::path path =
+        std::filesystem::temp_directory_path() / "pt_color_view_test_broken.ocio";
     std::ofstream(path) << "ocio_profile_version: 2.1\nroles: [this is not a map\n";
     const ColorView view = resolveColorView(path.string(), {}, {});
     EXPECT_FALSE(view.config);

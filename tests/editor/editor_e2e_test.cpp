@@ -29,7 +29,7 @@
 #include <thread>
 #include <vector>
 
-#include "assets/image_write.h"
+#include "assets/image/image_write.h"
 #include "assets/scene_loader.h"
 #include "editor/scene_equality.h"
 #include "editor/x11_session.h"

@@ -21,12 +21,12 @@
 #include <string>
 #include <thread>
 
-#include "assets/exr_layers.h"
-#include "assets/image_metadata.h"
-#include "assets/image_read.h"
-#include "assets/image_write.h"
+#include "assets/image/exr_layers.h"
+#include "assets/image/image_metadata.h"
+#include "assets/image/image_read.h"
+#include "assets/image/image_write.h"
 #include "assets/input_error.h"
-#include "assets/scene_json.h"
+#include "assets/scene_json/scene_json.h"
 #include "assets/scene_test_helpers.h"
 #include "editor/color_view.h"
 #include "editor/scene_edits.h"

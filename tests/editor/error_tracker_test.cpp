@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <thread>
 
-#include "assets/image_write.h"
+#include "assets/image/image_write.h"
 #include "assets/input_error.h"
 #include "editor/render_worker.h"
 #include "render/backend/backend.h"
@@ -138,7 +138,8 @@ TEST(ErrorTracker, TheRenderThreadMeasuresAFallingCurve) {
     for (;;) {
         curve = worker.errors().curve();
         if (curve.size() >= 2 && curve.back().spp >= 16 * curve.front().spp) break;
-        ASSERT_LT(std::chrono::steady_clock::now(), deadline) << "the curve has " << curve.size() << " points";
+        ASSERT_LT(std::chrono::steady_clock::now(), deadline)
+            << "the curve has " << curve.size() << " points";
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
     for (size_t i = 1; i < curve.size(); ++i) {

@@ -248,7 +248,8 @@ TEST(SceneEdits, SetColorSettingsIsDisplayOnlyAndSaved) {
     color.display = "Rec.1886";
     color.view = "ACES 1.0 SDR";
     color.look = "Exposure -1";
-    checkEdit(doc, setColorSettings(doc, color), SceneChanges::Display, [&](Document& d) { d.scene.color = color; });
+    checkEdit(doc, setColorSettings(doc, color), SceneChanges::Display,
+              [&](Document& d) { d.scene.color = color; });
 }
 
 void expectNear(const Affine3& expected, const Affine3& actual, const std::string& where) {

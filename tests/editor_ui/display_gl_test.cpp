@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "assets/color_processor.h"
+#include "assets/color/color_processor.h"
 #include "editor/color_view.h"
 #include "editor/ui/display_view.h"
 #include "editor/x11_session.h"
@@ -29,8 +29,9 @@ constexpr uint32_t kWidth = 64, kHeight = 12;
 
 // Rows: greys from 2^-12 to 2^8, then colours at those levels, then odd values.
 std::vector<float> testImage() {
-    const Vec3 hues[] = {{1, 1, 1}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 1, 1}, {1, 0.2f, 0.05f},
-                         {0.3f, 0.5f, 1}, {1, 1, 0}, {0.9f, 0.6f, 0.4f}, {0.05f, 0.8f, 0.3f}, {1, 0, 1}};
+    const Vec3 hues[] = {{1, 1, 1},          {1, 0, 0},           {0, 1, 0},       {0, 0, 1},
+                         {0, 1, 1},          {1, 0.2f, 0.05f},    {0.3f, 0.5f, 1}, {1, 1, 0},
+                         {0.9f, 0.6f, 0.4f}, {0.05f, 0.8f, 0.3f}, {1, 0, 1}};
     std::vector<float> rgba(size_t(kWidth) * kHeight * 4, 1.0f);
     for (uint32_t y = 0; y < kHeight; ++y) {
         for (uint32_t x = 0; x < kWidth; ++x) {
@@ -79,7 +80,8 @@ private:
 
 // Draws `image` through `view` into an 8-bit framebuffer of its size and reads it back as RGB,
 // rows from the top (the CPU's order).
-std::vector<uint8_t> drawOnGpu(DisplayView& view, const ViewerSettings& viewer, const std::vector<float>& image) {
+std::vector<uint8_t> drawOnGpu(DisplayView& view, const ViewerSettings& viewer,
+                               const std::vector<float>& image) {
     DisplayFrame frame;
     frame.width = kWidth, frame.height = kHeight, frame.rgba = image, frame.serial = 1;
     view.upload(frame);
@@ -101,7 +103,8 @@ std::vector<uint8_t> drawOnGpu(DisplayView& view, const ViewerSettings& viewer, 
     std::vector<uint8_t> rgb(size_t(kWidth) * kHeight * 3);
     for (uint32_t y = 0; y < kHeight; ++y) {
         for (uint32_t x = 0; x < kWidth; ++x) {
-            const uint8_t* from = &rgba[(size_t(kHeight - 1 - y) * kWidth + x) * 4];  // GL rows start at the bottom
+            const uint8_t* from =
+                &rgba[(size_t(kHeight - 1 - y) * kWidth + x) * 4];  // GL rows start at the bottom
             std::copy(from, from + 3, &rgb[(size_t(y) * kWidth + x) * 3]);
         }
     }
@@ -124,16 +127,17 @@ Agreement compare(const std::vector<uint8_t>& gpu, const std::vector<uint8_t>& c
     return a;
 }
 
-void expectAgreement(const std::string& what, const std::vector<uint8_t>& gpu, const std::vector<uint8_t>& cpu) {
+void expectAgreement(const std::string& what, const std::vector<uint8_t>& gpu,
+                     const std::vector<uint8_t>& cpu) {
     ASSERT_EQ(gpu.size(), cpu.size()) << what;
     const Agreement a = compare(gpu, cpu);
-    std::printf("  %-44s max |GPU - CPU| = %d/255, %5.2f%% of channels differ\n", what.c_str(), a.maxDifference,
-                100.0 * double(a.differing) / double(a.channels));
+    std::printf("  %-44s max |GPU - CPU| = %d/255, %5.2f%% of channels differ\n", what.c_str(),
+                a.maxDifference, 100.0 * double(a.differing) / double(a.channels));
     EXPECT_LE(a.maxDifference, 1) << what;
     for (size_t i = 0; i < cpu.size(); ++i) {
         if (std::abs(int(gpu[i]) - int(cpu[i])) > 1) {
-            ADD_FAILURE() << what << ": pixel " << (i / 3) % kWidth << ", " << (i / 3) / kWidth << " channel " << i % 3
-                          << ": GPU " << int(gpu[i]) << ", CPU " << int(cpu[i]);
+            ADD_FAILURE() << what << ": pixel " << (i / 3) % kWidth << ", " << (i / 3) / kWidth << " channel "
+                          << i % 3 << ": GPU " << int(gpu[i]) << ", CPU " << int(cpu[i]);
         }
     }
 }
@@ -159,8 +163,9 @@ TEST_F(DisplayGl, BuiltInOperatorsMatchTheCpu) {
             viewer.display.exposureStops = op == 1 ? 1.5f : 0.0f;
             viewer.display.dither = dither;
             const DisplayProcessor cpu(viewer.display);
-            expectAgreement(std::string("built-in ") + toneMapperName(ToneMapper(op)) + (dither ? ", dithered" : ""),
-                            drawOnGpu(*view_, viewer, image_), cpu.encode8(image_, kWidth, dither));
+            expectAgreement(
+                std::string("built-in ") + toneMapperName(ToneMapper(op)) + (dither ? ", dithered" : ""),
+                drawOnGpu(*view_, viewer, image_), cpu.encode8(image_, kWidth, dither));
         }
     }
 }
@@ -209,9 +214,10 @@ TEST_F(DisplayGl, DifferentTransformsDoNotAgree) {
     viewer.display.dither = false;
     DisplaySettings other = viewer.display;
     other.toneMapper = ToneMapper::Clamp;
-    EXPECT_GT(compare(drawOnGpu(*view_, viewer, image_), DisplayProcessor(other).encode8(image_, kWidth, false))
-                  .maxDifference,
-              10);
+    EXPECT_GT(
+        compare(drawOnGpu(*view_, viewer, image_), DisplayProcessor(other).encode8(image_, kWidth, false))
+            .maxDifference,
+        10);
 }
 
 }  // namespace

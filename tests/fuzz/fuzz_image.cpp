@@ -5,7 +5,7 @@
 // (Debian's shared libstb, not instrumented: ASan sees its faults, not its silent
 // out-of-bounds reads); PT_FUZZ_OIIO=ON fuzzes OpenImageIO's readers instead. glTF's embedded
 // images (decodeTextureFromMemory) take the same path without a file.
-#include "assets/image_read.h"
+#include "assets/image/image_read.h"
 #include "fuzz_load.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -1,6 +1,6 @@
 // Fuzz target: the portable float map reader (readPfm) that reads `pt-render converge`
 // references: the "PF"/"Pf" header, its width, height and scale (byte order), and the rows.
-#include "assets/pfm_file.h"
+#include "assets/image/pfm_file.h"
 #include "fuzz_load.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

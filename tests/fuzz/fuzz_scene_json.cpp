@@ -4,7 +4,7 @@
 // loads again (else the editor saves files it cannot reopen). Model files and textures the
 // JSON names do not exist beside it, so objects referencing files fail to load; the model
 // importers have targets of their own.
-#include "assets/scene_json.h"
+#include "assets/scene_json/scene_json.h"
 #include "assets/scene_loader.h"
 #include "fuzz_load.h"
 #include "support/test_paths.h"

@@ -18,9 +18,7 @@ bool sharedAssetExists(const std::string& relativePath) {
     return std::filesystem::exists(sharedAsset(relativePath));
 }
 
-std::string sharedAsset(const std::string& relativePath) {
-    return sharedAssetsDir() + "/" + relativePath;
-}
+std::string sharedAsset(const std::string& relativePath) { return sharedAssetsDir() + "/" + relativePath; }
 
 // $PT_SOURCE_DIR overrides the configured source tree: test binaries built on one machine
 // and run on another (the GPU machine) find the project's files where it was copied.
@@ -37,8 +35,7 @@ std::string testDataPath(const std::string& relativePath) {
 
 std::string tempDir() {
     static const std::string dir = [] {
-        auto base = std::filesystem::temp_directory_path() /
-                    ("pt-tests-" + std::to_string(::getpid()));
+        auto base = std::filesystem::temp_directory_path() / ("pt-tests-" + std::to_string(::getpid()));
         std::filesystem::create_directories(base);
         return base.string();
     }();

@@ -256,16 +256,17 @@ std::vector<double> CpuBackend::traceRays(const std::vector<Ray>& rays, bool any
     const RenderScene& scene = view_;
     for (uint32_t run = 0; run < runs; ++run) {
         const auto start = Clock::now();
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 1024), [&](const tbb::blocked_range<size_t>& r) {
-            for (size_t i = r.begin(); i < r.end(); ++i) {
-                if (anyHit) {
-                    results[i] = Hit{};
-                    results[i].instance = intersectAny(scene, rays[i]) ? 0u : Hit::kNoHit;
-                } else {
-                    intersectClosest(scene, rays[i], results[i]);
-                }
-            }
-        });
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 1024),
+                          [&](const tbb::blocked_range<size_t>& r) {
+                              for (size_t i = r.begin(); i < r.end(); ++i) {
+                                  if (anyHit) {
+                                      results[i] = Hit{};
+                                      results[i].instance = intersectAny(scene, rays[i]) ? 0u : Hit::kNoHit;
+                                  } else {
+                                      intersectClosest(scene, rays[i], results[i]);
+                                  }
+                              }
+                          });
         seconds.push_back(secondsSince(start));
     }
     if (hits) *hits = std::move(results);

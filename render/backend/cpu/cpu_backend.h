@@ -50,10 +50,10 @@ private:
     RenderScene view_{};
     IntegratorToggles toggles_;
     uint32_t width_ = 0, height_ = 0;
-    std::vector<double> sum_;               // RGB per pixel
-    AovMask aovsRequested_ = 0;             // as set, for the next reset
-    AovSet aovs_;                           // as accumulated now
-    std::vector<double> aovSums_;           // render/backend/aov.h's layout; empty without AOVs
+    std::vector<double> sum_;      // RGB per pixel
+    AovMask aovsRequested_ = 0;    // as set, for the next reset
+    AovSet aovs_;                  // as accumulated now
+    std::vector<double> aovSums_;  // render/backend/aov.h's layout; empty without AOVs
     BackendStats stats_;
     std::vector<float> builtSah_;    // per BLAS: its SAH cost as built, kSahUnknown until a refit
     mutable HostDenoiser denoiser_;  // its memory kept from one readDenoised to the next

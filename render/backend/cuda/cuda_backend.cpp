@@ -28,7 +28,9 @@ double timedStep(cudaStream_t stream, SyncReport& report, const char* name, Step
     return seconds;
 }
 
-bool sameBytes(const void* a, const void* b, size_t bytes) { return bytes == 0 || std::memcmp(a, b, bytes) == 0; }
+bool sameBytes(const void* a, const void* b, size_t bytes) {
+    return bytes == 0 || std::memcmp(a, b, bytes) == 0;
+}
 
 // Where `incoming` differs from `stored` (count elements each): copies that range into
 // `stored` and returns it as {first, count}, count 0 when nothing differs. Compared in blocks
@@ -170,7 +172,8 @@ void CudaBackend::fullBuild(const Scene& scene, const ProgressFn& progress, Sync
     options.bruteForce = toggles_.bruteForce;
     options.mergeSmallInstances = toggles_.mergeInstances;
     auto compiled = std::make_unique<CompiledScene>(compileRenderScene(scene, options, progress));
-    report.steps.push_back({"compile scene (host)", compiled->stats.flattenSeconds + compiled->stats.lightSeconds});
+    report.steps.push_back(
+        {"compile scene (host)", compiled->stats.flattenSeconds + compiled->stats.lightSeconds});
     report.steps.push_back({"build BLAS (host, binned SAH)", compiled->stats.blasSeconds});
     pinnedVertices_.clear();
     compiled_ = std::move(compiled);
@@ -181,7 +184,8 @@ void CudaBackend::fullBuild(const Scene& scene, const ProgressFn& progress, Sync
     uint32_t vertices = 0;
     for (size_t i = 0; i < scene.meshes.size(); ++i) {
         meshVertexOffset_[i] = vertices;
-        if (scene.meshes[i].kind == GeometryKind::Triangles) vertices += uint32_t(scene.meshes[i].positions.size());
+        if (scene.meshes[i].kind == GeometryKind::Triangles)
+            vertices += uint32_t(scene.meshes[i].positions.size());
     }
     timedStep(stream_, report, "upload", [&] { device_.uploadAll(*compiled_, stream_); });
     // Measured when a BLAS is first refitted, not here: most meshes never are.
@@ -348,8 +352,10 @@ bool CudaBackend::firstHitCacheApplies(std::string* why) const {
     const char* reason = nullptr;
     if (runsMegakernel())
         reason = "the megakernel traces every ray itself";
-    else if (toggles_.pixelJitter) reason = "pixel jitter is on, so camera rays differ per sample";
-    else if (compiled_ && compiled_->camera.lensRadius > 0.0f) reason = "the thin lens moves camera rays per sample";
+    else if (toggles_.pixelJitter)
+        reason = "pixel jitter is on, so camera rays differ per sample";
+    else if (compiled_ && compiled_->camera.lensRadius > 0.0f)
+        reason = "the thin lens moves camera rays per sample";
     if (reason && why) *why = reason;
     return reason == nullptr;
 }
@@ -453,8 +459,8 @@ std::vector<uint32_t> CudaBackend::pathsAlivePerBounce() const {
 }
 
 bool CudaBackend::copyBeautyToDevice(void* deviceRgba) const {
-    launchMeanToRgba(sum_.data(), size_t(width_) * height_, stats_.samplesPerPixel, static_cast<float*>(deviceRgba),
-                     stream_);
+    launchMeanToRgba(sum_.data(), size_t(width_) * height_, stats_.samplesPerPixel,
+                     static_cast<float*>(deviceRgba), stream_);
     PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
     return true;
 }
@@ -556,7 +562,8 @@ std::vector<double> CudaBackend::traceRays(const std::vector<Ray>& rays, bool an
     StreamTimer timer;
     for (uint32_t run = 0; run < runs; ++run) {
         seconds.push_back(timer.time(stream_, [&] {
-            launchTraceRays(view_, queryRays_.data(), uint32_t(rays.size()), anyHit, queryHits_.data(), stream_);
+            launchTraceRays(view_, queryRays_.data(), uint32_t(rays.size()), anyHit, queryHits_.data(),
+                            stream_);
         }));
     }
     if (hits) queryHits_.download(*hits);

@@ -108,7 +108,7 @@ private:
     DeviceBuffer<uint32_t> refitVisits_;
     DeviceBuffer<Ray> queryRays_;
     DeviceBuffer<Hit> queryHits_;
-    std::vector<float> builtSah_;            // per BLAS, after its last build; kSahUnknown until needed
+    std::vector<float> builtSah_;             // per BLAS, after its last build; kSahUnknown until needed
     std::vector<uint32_t> meshVertexOffset_;  // per mesh: its first vertex in compiled_->positions
     // compiled_->tlasNodes (the host's TLAS, which the light table takes the scene's bounds
     // from) lags moved instances or refitted BLASes; rebuilt only when the lights need it.

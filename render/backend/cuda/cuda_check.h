@@ -25,17 +25,17 @@ inline std::string projectSourceName(const char* file) {
 
 }  // namespace pt::cuda
 
-#define PT_CUDA_CHECK(call)                                                          \
-    do {                                                                             \
-        const cudaError_t ptCudaError_ = (call);                                     \
-        if (ptCudaError_ != cudaSuccess)                                             \
-            ::pt::cuda::throwCudaError(ptCudaError_, #call, __FILE__, __LINE__);     \
+#define PT_CUDA_CHECK(call)                                                      \
+    do {                                                                         \
+        const cudaError_t ptCudaError_ = (call);                                 \
+        if (ptCudaError_ != cudaSuccess)                                         \
+            ::pt::cuda::throwCudaError(ptCudaError_, #call, __FILE__, __LINE__); \
     } while (0)
 
 // After a <<<...>>> launch: launch-configuration errors show up here, not at the launch.
-#define PT_CUDA_CHECK_LAUNCH(kernelName)                                             \
-    do {                                                                             \
-        const cudaError_t ptCudaError_ = cudaGetLastError();                         \
-        if (ptCudaError_ != cudaSuccess)                                             \
+#define PT_CUDA_CHECK_LAUNCH(kernelName)                                              \
+    do {                                                                              \
+        const cudaError_t ptCudaError_ = cudaGetLastError();                          \
+        if (ptCudaError_ != cudaSuccess)                                              \
             ::pt::cuda::throwCudaError(ptCudaError_, kernelName, __FILE__, __LINE__); \
     } while (0)

@@ -10,7 +10,9 @@ bool deviceAvailable(std::string* why) {
     int count = 0;
     const cudaError_t error = cudaGetDeviceCount(&count);
     if (error != cudaSuccess) {
-        if (why) *why = std::string("no usable CUDA device (") + cudaGetErrorName(error) + ": " + cudaGetErrorString(error) + ")";
+        if (why)
+            *why = std::string("no usable CUDA device (") + cudaGetErrorName(error) + ": " +
+                   cudaGetErrorString(error) + ")";
         cudaGetLastError();  // clear the sticky-free error so later checks start clean
         return false;
     }

@@ -7,7 +7,7 @@
 namespace pt::cuda {
 
 struct DeviceInfo {
-    std::string name;              // e.g. "NVIDIA H100 80GB HBM3"
+    std::string name;  // e.g. "NVIDIA H100 80GB HBM3"
     int computeMajor = 0, computeMinor = 0;
     int multiprocessors = 0;
     uint64_t memoryBytes = 0;

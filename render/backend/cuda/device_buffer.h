@@ -43,14 +43,18 @@ public:
 
     void upload(const T* host, size_t count, cudaStream_t stream = nullptr) {
         resize(count);
-        if (count) PT_CUDA_CHECK(cudaMemcpyAsync(data_, host, count * sizeof(T), cudaMemcpyHostToDevice, stream));
+        if (count)
+            PT_CUDA_CHECK(cudaMemcpyAsync(data_, host, count * sizeof(T), cudaMemcpyHostToDevice, stream));
     }
-    void upload(const std::vector<T>& host, cudaStream_t stream = nullptr) { upload(host.data(), host.size(), stream); }
+    void upload(const std::vector<T>& host, cudaStream_t stream = nullptr) {
+        upload(host.data(), host.size(), stream);
+    }
     // Writes `count` elements at element `offset` (within the current size).
     void uploadAt(size_t offset, const T* host, size_t count, cudaStream_t stream = nullptr) {
         PT_CHECK(offset + count <= size_);
         if (count) {
-            PT_CUDA_CHECK(cudaMemcpyAsync(data_ + offset, host, count * sizeof(T), cudaMemcpyHostToDevice, stream));
+            PT_CUDA_CHECK(
+                cudaMemcpyAsync(data_ + offset, host, count * sizeof(T), cudaMemcpyHostToDevice, stream));
         }
     }
     void download(std::vector<T>& host) const {

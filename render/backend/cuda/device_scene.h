@@ -53,7 +53,9 @@ public:
     uint32_t blasCount() const { return uint32_t(hostBlases_.size()); }
     const BlasRef& blas(uint32_t i) const { return hostBlases_[i]; }  // device offsets
     BvhNode* blasNodes(uint32_t i) const { return blasNodes_.data() + hostBlases_[i].nodeOffset; }
-    uint32_t* blasPrimIndices(uint32_t i) const { return blasPrimIndices_.data() + hostBlases_[i].primIndexOffset; }
+    uint32_t* blasPrimIndices(uint32_t i) const {
+        return blasPrimIndices_.data() + hostBlases_[i].primIndexOffset;
+    }
     // BLAS i's parent links: valid after prepareRefit(i).
     uint32_t* blasParents(uint32_t i) const { return blasParents_.data() + hostBlases_[i].nodeOffset; }
     uint32_t blasNodeCapacity(uint32_t i) const { return nodeCapacity_[i]; }

@@ -49,11 +49,11 @@ private:
     uint32_t capacity_ = 0;
     DeviceBuffer<uint64_t> keys_, sortedKeys_;  // Morton code << 32 | primitive index: unique keys
     DeviceBuffer<uint8_t> sortScratch_;
-    DeviceBuffer<Aabb> centroidBounds_;         // one box: the bounds of all box centres
+    DeviceBuffer<Aabb> centroidBounds_;  // one box: the bounds of all box centres
     DeviceBuffer<uint8_t> reduceScratch_;
-    DeviceBuffer<uint32_t> leafSlots_;          // node index of the leaf of each sorted primitive
-    DeviceBuffer<uint32_t> internalSlots_;      // node index of each Karras internal node
-    DeviceBuffer<uint32_t> visits_;             // bottom-up box pass: arrivals per node
+    DeviceBuffer<uint32_t> leafSlots_;      // node index of the leaf of each sorted primitive
+    DeviceBuffer<uint32_t> internalSlots_;  // node index of each Karras internal node
+    DeviceBuffer<uint32_t> visits_;         // bottom-up box pass: arrivals per node
 };
 
 // The object-space box of each primitive of `blas` (mesh-local order), read from the device

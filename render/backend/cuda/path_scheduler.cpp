@@ -159,8 +159,8 @@ void PathScheduler::runWavefront(const RenderScene& scene, WaveBuffers b, const 
     for (uint32_t k = 0;; ++k) {
         BounceCounts* out = &b.counters->bounce[k % 2];
         const bool cameraRays = k == 0;
-        launchExtend(variant_, scene, b, shape, queue, length, cameraRays && cacheReads, cameraRays && cacheWrites,
-                     stream);
+        launchExtend(variant_, scene, b, shape, queue, length, cameraRays && cacheReads,
+                     cameraRays && cacheWrites, stream);
         if (options.materialSort) {
             launchSortByMaterial(scene, b, length.bound, queue == nullptr, keyBits, sortScratch_.data(),
                                  sortScratch_.size(), stream);
@@ -170,7 +170,8 @@ void PathScheduler::runWavefront(const RenderScene& scene, WaveBuffers b, const 
         // A camera segment goes on past bounce 0 only through surfaces that let rays through.
         const bool cameraSegments = k == 0 || scene.transparentMaterials != 0;
         launchShade(variant_, scene, b, queue, length, options.compaction, cameraSegments, out, stream);
-        PT_CUDA_CHECK(cudaMemcpyAsync(&hostBounces_[k % 2], out, sizeof(BounceCounts), cudaMemcpyDeviceToHost, stream));
+        PT_CUDA_CHECK(
+            cudaMemcpyAsync(&hostBounces_[k % 2], out, sizeof(BounceCounts), cudaMemcpyDeviceToHost, stream));
         PT_CUDA_CHECK(cudaEventRecord(bounceDone_[k % 2], stream));
         QueueLength next{length.bound, options.compaction ? &out->queue : nullptr};
         QueueLength shadows{length.bound, options.compaction ? &out->shadow : nullptr};
@@ -213,8 +214,8 @@ RenderCounters PathScheduler::counters() const { return counters_.download()[0];
 
 uint64_t PathScheduler::bytes() const {
     return paths_.bytes() + hits_.bytes() + firstHits_.bytes() + firstHitCosts_.bytes() + shadows_.bytes() +
-           queue0_.bytes() + queue1_.bytes() + shadowQueue_.bytes() + sortKeys0_.bytes() + sortKeys1_.bytes() +
-           sortScratch_.bytes() + radiance_.bytes() + counters_.bytes();
+           queue0_.bytes() + queue1_.bytes() + shadowQueue_.bytes() + sortKeys0_.bytes() +
+           sortKeys1_.bytes() + sortScratch_.bytes() + radiance_.bytes() + counters_.bytes();
 }
 
 }  // namespace pt::cuda

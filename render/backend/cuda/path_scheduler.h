@@ -19,7 +19,7 @@ struct ScheduleOptions {
     bool regeneration = false;  // megakernel: a lane whose path ends takes the next at once
     bool compaction = true;
     bool materialSort = false;
-    bool firstHitCache = false;   // only where camera rays repeat exactly (no jitter, no lens)
+    bool firstHitCache = false;  // only where camera rays repeat exactly (no jitter, no lens)
     uint32_t materialCount = 1;
     int kernelVariant = -1;  // a requested variant (kernel_variants.h); -1: the leanest covering
 };
@@ -36,8 +36,8 @@ public:
 
     // Adds samples firstSample .. firstSample + samples - 1 of every pixel to `sum` (RGB doubles)
     // and to the AOVs of `aovs`.
-    void render(const RenderScene& scene, uint32_t firstSample, uint32_t samples, const ScheduleOptions& options,
-                double* sum, const AovBuffers& aovs, cudaStream_t stream);
+    void render(const RenderScene& scene, uint32_t firstSample, uint32_t samples,
+                const ScheduleOptions& options, double* sum, const AovBuffers& aovs, cudaStream_t stream);
 
     // Samples a pixel each wave of a render of `samples` holds (the last may hold fewer).
     uint32_t samplesPerWave(uint32_t pixelCount, uint32_t samples) const {
@@ -46,7 +46,7 @@ public:
     }
 
     void resetCounters(cudaStream_t stream);
-    RenderCounters counters() const;    // rays and non-finite samples since resetCounters; synchronises
+    RenderCounters counters() const;  // rays and non-finite samples since resetCounters; synchronises
     // Paths alive at the start of each bounce of the last wavefront wave.
     const std::vector<uint32_t>& pathsPerBounce() const { return pathsPerBounce_; }
     uint64_t bytes() const;

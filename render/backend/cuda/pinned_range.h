@@ -14,8 +14,10 @@ namespace pt::cuda {
 class PinnedRange {
 public:
     PinnedRange(const void* data, size_t bytes) : data_(const_cast<void*>(data)) {
-        if (data_ && bytes) PT_CUDA_CHECK(cudaHostRegister(data_, bytes, cudaHostRegisterDefault));
-        else data_ = nullptr;
+        if (data_ && bytes)
+            PT_CUDA_CHECK(cudaHostRegister(data_, bytes, cudaHostRegisterDefault));
+        else
+            data_ = nullptr;
     }
     PinnedRange(const PinnedRange&) = delete;
     PinnedRange& operator=(const PinnedRange&) = delete;

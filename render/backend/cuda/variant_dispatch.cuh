@@ -15,27 +15,13 @@ template <class Fn>
 void forKernelVariant(uint32_t variant, Fn&& fn) {
     static_assert(kKernelVariantCount == 7, "one case per kernel variant");
     switch (variant) {
-        case 0:
-            fn(VariantFeatures<0>{});
-            return;
-        case 1:
-            fn(VariantFeatures<1>{});
-            return;
-        case 2:
-            fn(VariantFeatures<2>{});
-            return;
-        case 3:
-            fn(VariantFeatures<3>{});
-            return;
-        case 4:
-            fn(VariantFeatures<4>{});
-            return;
-        case 5:
-            fn(VariantFeatures<5>{});
-            return;
-        default:
-            fn(VariantFeatures<kFullVariant>{});
-            return;
+        case 0: fn(VariantFeatures<0>{}); return;
+        case 1: fn(VariantFeatures<1>{}); return;
+        case 2: fn(VariantFeatures<2>{}); return;
+        case 3: fn(VariantFeatures<3>{}); return;
+        case 4: fn(VariantFeatures<4>{}); return;
+        case 5: fn(VariantFeatures<5>{}); return;
+        default: fn(VariantFeatures<kFullVariant>{}); return;
     }
 }
 

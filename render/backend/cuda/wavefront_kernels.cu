@@ -100,7 +100,8 @@ __global__ void materialKeyKernel(RenderScene scene, WaveBuffers b, uint32_t cou
         const RenderInstance& inst = scene.instances[hit.instance];
         const BlasRef& blas = scene.blases[inst.blas];
         const uint32_t global = blas.primitiveOffset + hit.primitive;
-        const uint32_t slot = blas.kind == GeometryKind::Spheres ? scene.sphereSlots[global] : scene.triangleSlots[global];
+        const uint32_t slot =
+            blas.kind == GeometryKind::Spheres ? scene.sphereSlots[global] : scene.triangleSlots[global];
         key = 1 + scene.instanceMaterials[inst.materialOffset + slot];
     }
     b.sortKeys[0][i] = key;
@@ -233,9 +234,9 @@ void launchExtend(uint32_t variant, const RenderScene& scene, const WaveBuffers&
 
 size_t sortScratchBytes(uint32_t pathCount) {
     size_t bytes = 0;
-    PT_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, bytes, static_cast<const uint32_t*>(nullptr),
-                                                  static_cast<uint32_t*>(nullptr), static_cast<const uint32_t*>(nullptr),
-                                                  static_cast<uint32_t*>(nullptr), int(pathCount)));
+    PT_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(
+        nullptr, bytes, static_cast<const uint32_t*>(nullptr), static_cast<uint32_t*>(nullptr),
+        static_cast<const uint32_t*>(nullptr), static_cast<uint32_t*>(nullptr), int(pathCount)));
     return bytes;
 }
 
@@ -245,9 +246,11 @@ void launchSortByMaterial(const RenderScene& scene, const WaveBuffers& b, uint32
     materialKeyKernel<<<blocksFor(count), kBlock, 0, stream>>>(scene, b, count, identity);
     PT_CUDA_CHECK_LAUNCH("materialKeyKernel");
     // Sorted into queue[1], then copied back: the shade stage reads queue[0].
-    PT_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(scratch, scratchBytes, b.sortKeys[0], b.sortKeys[1], b.queue[0],
-                                                  b.queue[1], int(count), 0, int(keyBits), stream));
-    PT_CUDA_CHECK(cudaMemcpyAsync(b.queue[0], b.queue[1], count * sizeof(uint32_t), cudaMemcpyDeviceToDevice, stream));
+    PT_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(scratch, scratchBytes, b.sortKeys[0], b.sortKeys[1],
+                                                  b.queue[0], b.queue[1], int(count), 0, int(keyBits),
+                                                  stream));
+    PT_CUDA_CHECK(
+        cudaMemcpyAsync(b.queue[0], b.queue[1], count * sizeof(uint32_t), cudaMemcpyDeviceToDevice, stream));
 }
 
 void launchShade(uint32_t variant, const RenderScene& scene, const WaveBuffers& b, const uint32_t* queue,
@@ -256,7 +259,8 @@ void launchShade(uint32_t variant, const RenderScene& scene, const WaveBuffers& 
     if (length.bound == 0) return;
     const uint32_t blocks = blocksFor(length.bound);
     if (cameraSegments && (b.aovs.mask & kPathAovs)) {  // AOVs run the generic code (kernel_variants.h)
-        shadeKernel<kAllFeatures, true><<<blocks, kBlock, 0, stream>>>(scene, b, queue, length, compaction, out);
+        shadeKernel<kAllFeatures, true>
+            <<<blocks, kBlock, 0, stream>>>(scene, b, queue, length, compaction, out);
     } else {
         forKernelVariant(variant, [&](auto features) {
             shadeKernel<decltype(features)::value, false>

@@ -25,8 +25,8 @@ struct BounceCounts {
 
 // Device counters of a render, summed over kernels.
 struct RenderCounters {
-    unsigned long long rays;          // closest-hit and shadow rays traced
-    unsigned long long nonfinite;     // samples dropped for NaN or Inf
+    unsigned long long rays;       // closest-hit and shadow rays traced
+    unsigned long long nonfinite;  // samples dropped for NaN or Inf
     // Wavefront: bounce k counts into bounce[k % 2] while bounce k + 1's stages read how many
     // paths they have from it, so the host need not wait for a count before it launches them.
     BounceCounts bounce[2];
@@ -50,19 +50,19 @@ struct WaveBuffers {
     SlicedArray<PathState> paths;  // structure of 16-byte slices (sliced_array.cuh)
     Hit* hits;
     ShadowRay* shadows;
-    uint32_t* queue[2];         // this bounce's paths, the next bounce's
+    uint32_t* queue[2];  // this bounce's paths, the next bounce's
     uint32_t* shadowQueue;
-    uint32_t* sortKeys[2];      // material sort: keys in, keys out
-    Hit* firstHits;             // first-hit cache, one per pixel (nullptr: no cache)
+    uint32_t* sortKeys[2];          // material sort: keys in, keys out
+    Hit* firstHits;                 // first-hit cache, one per pixel (nullptr: no cache)
     TraversalStats* firstHitCosts;  // their traversal work, for bvh_cost (nullptr: not needed)
-    float* radiance;            // RGB per path: the finished samples of the wave
+    float* radiance;                // RGB per path: the finished samples of the wave
     RenderCounters* counters;
-    AovBuffers aovs;            // per-pixel AOV sums (mask 0: none)
+    AovBuffers aovs;  // per-pixel AOV sums (mask 0: none)
 };
 
 struct WaveShape {
     uint32_t pixelCount;
-    uint32_t pathCount;         // pixelCount x samples in the wave
+    uint32_t pathCount;  // pixelCount x samples in the wave
     uint32_t firstSample;
 };
 

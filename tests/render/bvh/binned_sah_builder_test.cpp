@@ -121,7 +121,8 @@ TEST(BinnedSahBuilder, PointBoxesTerminate) {
 
 TEST(BinnedSahBuilder, SoupsKeepInvariantsForSeveralOptions) {
     Rng rng(11);
-    for (SoupKind kind : {SoupKind::Uniform, SoupKind::Clustered, SoupKind::Needles, SoupKind::CoincidentCentroids}) {
+    for (SoupKind kind :
+         {SoupKind::Uniform, SoupKind::Clustered, SoupKind::Needles, SoupKind::CoincidentCentroids}) {
         const std::vector<Aabb> bounds = test::triangleBounds(test::makeSoup(kind, 30000, rng));
         for (uint32_t bins : {2u, 8u, 16u, 64u, 1000u}) {
             for (uint32_t leaf : {1u, 4u, 16u}) {
@@ -147,8 +148,8 @@ TEST(BinnedSahBuilder, ChainInputStaysWithinTheStackDepth) {
     }
     BvhBuildOptions options;
     options.maxLeafSize = 1;
-    const TreeShape shape = checkInvariants(buildBinnedSahBvh(boxes.data(), uint32_t(boxes.size()), options),
-                                            boxes, options);
+    const TreeShape shape =
+        checkInvariants(buildBinnedSahBvh(boxes.data(), uint32_t(boxes.size()), options), boxes, options);
     EXPECT_GT(shape.maxDepth, 20u) << "the input should have produced a deep, SAH-driven tree";
     EXPECT_LE(shape.maxDepth, kBvhStackSize);
 }
@@ -172,7 +173,8 @@ TEST(BinnedSahBuilder, MillionTriangleSoupBuildRate) {
     for (int run = 0; run < 3; ++run) {
         const auto start = std::chrono::steady_clock::now();
         bvh = buildBinnedSahBvh(bounds.data(), uint32_t(bounds.size()));
-        best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        best =
+            std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
     std::printf("[ BVH      ] binned SAH, 1M-triangle uniform soup: %.1f ms, %.2f Mtris/s, %zu nodes\n",
                 best * 1e3, 1.0 / best, bvh.nodes.size());

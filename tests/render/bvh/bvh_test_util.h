@@ -99,11 +99,12 @@ inline Mesh makeSphereMesh(const std::vector<Vec4>& spheres) {
 inline Mesh makeIcosphere(int levels) {
     Mesh mesh;
     const float g = (1.0f + std::sqrt(5.0f)) / 2.0f;
-    const Vec3 base[12] = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-                           {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+    const Vec3 base[12] = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+                           {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
     for (const Vec3& v : base) mesh.positions.push_back(normalize(v));
-    mesh.indices = {0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4, 11, 10, 2, 10, 7, 6, 7, 1, 8,
-                    3, 9, 4, 3, 4, 2, 3, 2, 6, 3, 6, 8, 3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1};
+    mesh.indices = {0, 11, 5,  0, 5,  1, 0, 1, 7, 0, 7,  10, 0, 10, 11, 1, 5, 9, 5, 11,
+                    4, 11, 10, 2, 10, 7, 6, 7, 1, 8, 3,  9,  4, 3,  4,  2, 3, 2, 6, 3,
+                    6, 8,  3,  8, 9,  4, 9, 5, 2, 4, 11, 6,  2, 10, 8,  6, 7, 9, 8, 1};
     for (int level = 0; level < levels; ++level) {
         std::map<std::pair<uint32_t, uint32_t>, uint32_t> midpoints;
         auto midpoint = [&](uint32_t a, uint32_t b) {
@@ -160,7 +161,8 @@ inline Ray rayAtTriangle(Rng& rng, const Mesh& mesh, Vec3 lo, Vec3 hi) {
     float a = rng.uniform(), b = rng.uniform();
     if (a + b > 1.0f) a = 1.0f - a, b = 1.0f - b;
     const Vec3 target = mesh.positions[mesh.indices[3 * t]] * (1.0f - a - b) +
-                        mesh.positions[mesh.indices[3 * t + 1]] * a + mesh.positions[mesh.indices[3 * t + 2]] * b;
+                        mesh.positions[mesh.indices[3 * t + 1]] * a +
+                        mesh.positions[mesh.indices[3 * t + 2]] * b;
     const Vec3 o = rng.inBox(lo, hi);
     return {o, target - o, kInf};
 }
@@ -189,8 +191,8 @@ inline bool expectBvhMatchesBruteForce(const RenderScene& bvhScene, const Ray& r
     }
     if (!ok && ++failures <= 10) {
         ADD_FAILURE() << "ray o=(" << ray.origin.x << "," << ray.origin.y << "," << ray.origin.z << ") d=("
-                      << ray.direction.x << "," << ray.direction.y << "," << ray.direction.z << "): bvh "
-                      << a << " t=" << bvhHit.t << " prim " << bvhHit.primitive << " inst " << bvhHit.instance
+                      << ray.direction.x << "," << ray.direction.y << "," << ray.direction.z << "): bvh " << a
+                      << " t=" << bvhHit.t << " prim " << bvhHit.primitive << " inst " << bvhHit.instance
                       << ", brute force " << b << " t=" << bfHit.t << " prim " << bfHit.primitive << " inst "
                       << bfHit.instance << ", any " << any;
     }

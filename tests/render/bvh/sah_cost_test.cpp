@@ -112,14 +112,17 @@ struct RefBuilder {
 
 TEST(SahCost, BinnedIsCloseToFullSweepAndBeatsMedian) {
     Rng rng(21);
-    for (SoupKind kind : {SoupKind::Uniform, SoupKind::Clustered, SoupKind::Needles, SoupKind::CoincidentCentroids}) {
+    for (SoupKind kind :
+         {SoupKind::Uniform, SoupKind::Clustered, SoupKind::Needles, SoupKind::CoincidentCentroids}) {
         const std::vector<Aabb> bounds = test::triangleBounds(test::makeSoup(kind, 20000, rng));
         const BvhBuildOptions options;
-        const float binned = sahCost(buildBinnedSahBvh(bounds.data(), uint32_t(bounds.size()), options), options);
+        const float binned =
+            sahCost(buildBinnedSahBvh(bounds.data(), uint32_t(bounds.size()), options), options);
         const float sweep = sahCost(RefBuilder{bounds, options, true, {}}.run(), options);
         const float median = sahCost(RefBuilder{bounds, options, false, {}}.run(), options);
-        std::printf("[ BVH      ] SAH cost %-21s binned %7.2f  sweep %7.2f  median %7.2f  binned/sweep %.3f\n",
-                    test::soupName(kind), binned, sweep, median, binned / sweep);
+        std::printf(
+            "[ BVH      ] SAH cost %-21s binned %7.2f  sweep %7.2f  median %7.2f  binned/sweep %.3f\n",
+            test::soupName(kind), binned, sweep, median, binned / sweep);
         EXPECT_LT(binned, 1.3f * sweep) << test::soupName(kind);
         EXPECT_LT(binned, median) << test::soupName(kind);
     }

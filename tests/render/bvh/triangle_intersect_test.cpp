@@ -39,8 +39,8 @@ TEST(TriangleIntersect, MissesOutsideBehindAndBeyondTMax) {
     EXPECT_FALSE(intersectTriangle(Ray{{0.2f, 0.2f, 1}, {0, 0, 1}, kInf}, kP0, kP1, kP2, t, u, v));
     EXPECT_FALSE(intersectTriangle(Ray{{0.2f, 0.2f, 1}, {0, 0, -1}, 1.0f}, kP0, kP1, kP2, t, u, v))
         << "tMax is exclusive";
-    EXPECT_TRUE(intersectTriangle(Ray{{0.2f, 0.2f, 1}, {0, 0, -1}, std::nextafter(1.0f, 2.0f)}, kP0, kP1,
-                                  kP2, t, u, v));
+    EXPECT_TRUE(intersectTriangle(Ray{{0.2f, 0.2f, 1}, {0, 0, -1}, std::nextafter(1.0f, 2.0f)}, kP0, kP1, kP2,
+                                  t, u, v));
     EXPECT_FALSE(intersectTriangle(Ray{{0.2f, 0.2f, 0}, {0, 0, -1}, kInf}, kP0, kP1, kP2, t, u, v))
         << "t = 0 is excluded";
 }

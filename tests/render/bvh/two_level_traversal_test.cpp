@@ -34,8 +34,8 @@ CompiledScene makeScene(Rng& rng, std::vector<test::InstanceSpec>& specs, bool m
     meshes.push_back(test::makeSphereMesh({{0, 0, 0, 1}}));
     for (uint32_t i = 0; i < 24; ++i) {
         Vec3 scale{rng.uniform(0.2f, 1.5f), rng.uniform(0.2f, 1.5f), rng.uniform(0.2f, 1.5f)};
-        if (i % 3 == 0) scale.x = -scale.x;        // mirrored
-        if (i % 8 == 1) scale = Vec3(scale.y);     // uniform
+        if (i % 3 == 0) scale.x = -scale.x;     // mirrored
+        if (i % 8 == 1) scale = Vec3(scale.y);  // uniform
         const Affine3 toWorld = translationTransform(rng.inBox(Vec3(-4.0f), Vec3(4.0f))) *
                                 rotationTransform(randomRotation(rng)) * scaleTransform(scale);
         specs.push_back({i % 4, toWorld});

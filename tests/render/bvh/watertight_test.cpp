@@ -28,13 +28,15 @@ Fan makeFan(Rng& rng, int n, float scale, Vec3 offset) {
     Fan fan;
     const Vec3 axis = rng.unitVector();
     const float half = rng.uniform(0.0f, kPi), s = std::sin(half);
-    fan.frame = translationTransform(offset) * rotationTransform({axis.x * s, axis.y * s, axis.z * s, std::cos(half)}) *
+    fan.frame = translationTransform(offset) *
+                rotationTransform({axis.x * s, axis.y * s, axis.z * s, std::cos(half)}) *
                 scaleTransform(Vec3(scale));
     fan.center = fan.frame.transformPoint(rng.inBox({-0.1f, -0.1f, -0.02f}, {0.1f, 0.1f, 0.02f}));
     for (int i = 0; i < n; ++i) {
         const float phi = 2.0f * kPi * (float(i) + rng.uniform(0.3f, 0.7f)) / float(n);
         const float r = rng.uniform(0.5f, 1.0f);
-        fan.ring.push_back(fan.frame.transformPoint({r * std::cos(phi), r * std::sin(phi), rng.uniform(-0.02f, 0.02f)}));
+        fan.ring.push_back(
+            fan.frame.transformPoint({r * std::cos(phi), r * std::sin(phi), rng.uniform(-0.02f, 0.02f)}));
     }
     return fan;
 }
@@ -43,8 +45,9 @@ bool fanHit(const Fan& fan, const Ray& ray) {
     for (size_t i = 0; i < fan.ring.size(); ++i) {
         float t, u, v;
         // Alternate windings: two-sided watertightness must not depend on them.
-        const bool hit = i % 2 ? intersectTriangle(ray, fan.center, fan.vertex(int(i)), fan.vertex(int(i) + 1), t, u, v)
-                               : intersectTriangle(ray, fan.vertex(int(i) + 1), fan.vertex(int(i)), fan.center, t, u, v);
+        const bool hit =
+            i % 2 ? intersectTriangle(ray, fan.center, fan.vertex(int(i)), fan.vertex(int(i) + 1), t, u, v)
+                  : intersectTriangle(ray, fan.vertex(int(i) + 1), fan.vertex(int(i)), fan.center, t, u, v);
         if (hit) return true;
     }
     return false;
@@ -76,7 +79,8 @@ TEST(Watertight, RaysAtSharedEdgesAndVerticesOfAFanAlwaysHit) {
             const Ray ray{origin, target - origin, kInf};
             ++rays;
             if (!fanHit(fan, ray) && ++slipped <= 5) {
-                ADD_FAILURE() << "ray slipped through fan " << f << " (target kind " << r % 3 << ", scale " << scale << ")";
+                ADD_FAILURE() << "ray slipped through fan " << f << " (target kind " << r % 3 << ", scale "
+                              << scale << ")";
             }
         }
     }
@@ -110,7 +114,8 @@ TEST(Watertight, RaysFromInsideAnInstancedBoxAlwaysHit) {
     Rng rng(29);
     const Mesh box = makeUnitBox();
     // Object space is where the triangle test runs: shoot there through a transformed instance.
-    const Affine3 toWorld = translationTransform({3, -2, 1}) * rotationTransform({0.3f, 0.5f, -0.1f, 0.806f}) *
+    const Affine3 toWorld = translationTransform({3, -2, 1}) *
+                            rotationTransform({0.3f, 0.5f, -0.1f, 0.806f}) *
                             scaleTransform({2.0f, 0.5f, -1.5f});
     uint64_t slipped = 0;
     for (const Affine3& transform : {Affine3{}, toWorld}) {

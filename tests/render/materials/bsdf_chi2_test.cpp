@@ -42,7 +42,7 @@ constexpr float kIncidenceDegrees[] = {0.0f, 30.0f, 60.0f, 80.0f, 89.0f};
 struct TestMaterial {
     const char* name;
     BsdfParams params;
-    bool inside;  // wo below the surface (inside a transmissive object)
+    bool inside;                  // wo below the surface (inside a transmissive object)
     float azimuthDegrees = 0.0f;  // of wo: off the anisotropy direction (x) for anisotropic lobes
 };
 
@@ -109,7 +109,8 @@ LobeHistogram histogramFor(const BsdfParams& p, Vec3 wo) {
     DVec3 refracted = normalized(DVec3{-wo.x, -wo.y, wo.z > 0.0f ? -0.05 : 0.05});
     Vec3 wt;
     const float etap = wo.z > 0.0f ? p.ior : 1.0f / p.ior;
-    if (refractDirection(wo, {0.0f, 0.0f, wo.z > 0.0f ? 1.0f : -1.0f}, etap, wt)) refracted = toDouble(normalize(wt));
+    if (refractDirection(wo, {0.0f, 0.0f, wo.z > 0.0f ? 1.0f : -1.0f}, etap, wt))
+        refracted = toDouble(normalize(wt));
     return wo.z > 0.0f ? LobeHistogram(mirror, width, refracted, 0.5 * width)
                        : LobeHistogram(refracted, 0.5 * width, mirror, width);
 }
@@ -127,9 +128,7 @@ DirectionSampler bsdfSampler(const BsdfParams& p, Vec3 wo) {
 }
 
 DirectionPdf bsdfPdf(const BsdfParams& p, Vec3 wo) {
-    return [p, wo](Vec3 wi) {
-        return double(pdfBsdf(p, Frame::fromNormal({0.0f, 0.0f, 1.0f}), wo, wi));
-    };
+    return [p, wo](Vec3 wi) { return double(pdfBsdf(p, Frame::fromNormal({0.0f, 0.0f, 1.0f}), wo, wi)); };
 }
 
 struct Case {
@@ -144,8 +143,8 @@ std::vector<Case> allCases() {
         for (const TestMaterial& m : materials(roughness)) {
             for (float degrees : kIncidenceDegrees) {
                 char name[128];
-                std::snprintf(name, sizeof(name), "%s roughness %.2f incidence %.0f", m.name, double(roughness),
-                              double(degrees));
+                std::snprintf(name, sizeof(name), "%s roughness %.2f incidence %.0f", m.name,
+                              double(roughness), double(degrees));
                 const Vec3 wo = incidentDirection(degrees, m.inside);
                 const float phi = m.azimuthDegrees * (kPi / 180.0f);
                 cases.push_back({name, m.params, {wo.x * cosf(phi), wo.x * sinf(phi), wo.z}});
@@ -221,8 +220,8 @@ TEST(BsdfChiSquare, RejectsAPdfTenPercentOff) {
         EXPECT_LT(r.pValue, level) << c.name << ": chi2 " << r.chi2 << " dof " << r.dof;
         const ChiSquareResult right = runChiSquare(h, bsdfSampler(c.params, c.wo), pdf, sampleCount(), 7);
         EXPECT_GE(right.pValue, level) << c.name;
-        std::printf("%s: wrong pdf p = %.3g (chi2 %.0f, dof %d), right pdf p = %.3f\n", c.name.c_str(), r.pValue,
-                    r.chi2, r.dof, right.pValue);
+        std::printf("%s: wrong pdf p = %.3g (chi2 %.0f, dof %d), right pdf p = %.3f\n", c.name.c_str(),
+                    r.pValue, r.chi2, r.dof, right.pValue);
     }
 }
 
@@ -237,11 +236,11 @@ TEST(BsdfChiSquare, RejectsANarrowLobeOfTheWrongWidth) {
     for (const Case& c : cases) {
         BsdfParams wider = c.params;
         wider.roughness *= 1.05f;
-        const ChiSquareResult r =
-            runChiSquare(histogramFor(c.params, c.wo), bsdfSampler(c.params, c.wo), bsdfPdf(wider, c.wo), sampleCount(), 8);
+        const ChiSquareResult r = runChiSquare(histogramFor(c.params, c.wo), bsdfSampler(c.params, c.wo),
+                                               bsdfPdf(wider, c.wo), sampleCount(), 8);
         EXPECT_LT(r.pValue, level) << c.name << ": chi2 " << r.chi2 << " dof " << r.dof;
-        std::printf("%s roughness 0.05 against 0.0525: p = %.3g (chi2 %.0f, dof %d)\n", c.name.c_str(), r.pValue,
-                    r.chi2, r.dof);
+        std::printf("%s roughness 0.05 against 0.0525: p = %.3g (chi2 %.0f, dof %d)\n", c.name.c_str(),
+                    r.pValue, r.chi2, r.dof);
     }
 }
 

@@ -19,9 +19,7 @@ using test::Pcg32;
 
 const Frame kIdentity = Frame::fromNormal({0.0f, 0.0f, 1.0f});
 
-Vec3 directionAt(float cosTheta) {
-    return {sqrtf(fmaxf(0.0f, 1.0f - cosTheta * cosTheta)), 0.0f, cosTheta};
-}
+Vec3 directionAt(float cosTheta) { return {sqrtf(fmaxf(0.0f, 1.0f - cosTheta * cosTheta)), 0.0f, cosTheta}; }
 
 BsdfParams makeParams(Vec3 base, float metallic, float transmission, float ior, float roughness) {
     BsdfParams p{base, metallic, transmission, ior};
@@ -42,9 +40,9 @@ float relativeEtaFor(const BsdfParams& p, Vec3 wo) { return wo.z > 0.0f ? p.ior 
 
 TEST(Fresnel, DielectricMatchesKnownValues) {
     EXPECT_NEAR(fresnelDielectric(1.0f, 1.5f), 0.04f, 1e-6f);     // ((1.5-1)/(1.5+1))^2
-    EXPECT_NEAR(fresnelDielectric(0.3f, 1.0f), 0.0f, 1e-7f);       // index-matched: no interface
-    EXPECT_FLOAT_EQ(fresnelDielectric(0.1f, 1.0f / 1.5f), 1.0f);   // total internal reflection
-    EXPECT_NEAR(fresnelDielectric(1e-6f, 1.5f), 1.0f, 1e-4f);      // grazing
+    EXPECT_NEAR(fresnelDielectric(0.3f, 1.0f), 0.0f, 1e-7f);      // index-matched: no interface
+    EXPECT_FLOAT_EQ(fresnelDielectric(0.1f, 1.0f / 1.5f), 1.0f);  // total internal reflection
+    EXPECT_NEAR(fresnelDielectric(1e-6f, 1.5f), 1.0f, 1e-4f);     // grazing
     EXPECT_NEAR(fresnelDielectric(1.0f, 4.0f), 0.36f, 1e-6f);
     EXPECT_NEAR(dielectricF0(1.5f), 0.04f, 1e-7f);
     const Vec3 f = fresnelSchlick(Vec3(0.04f), Vec3(0.5f), 0.0f);  // KHR_materials_specular's F90
@@ -102,7 +100,8 @@ TEST(BsdfPresets, SmoothGlassSplitsByFresnelAndConservesEnergy) {
         for (float cosTheta : {1.0f, 0.7f, 0.2f, 1e-3f}) {
             for (bool inside : {false, true}) {
                 const BsdfParams p = makeParams({1, 1, 1}, 0.0f, 1.0f, ior, 0.0f);
-                const Vec3 wo = inside ? Vec3(directionAt(cosTheta).x, 0.0f, -cosTheta) : directionAt(cosTheta);
+                const Vec3 wo =
+                    inside ? Vec3(directionAt(cosTheta).x, 0.0f, -cosTheta) : directionAt(cosTheta);
                 const float etap = relativeEtaFor(p, wo);
                 const int kN = 20000;
                 int reflected = 0;
@@ -167,9 +166,9 @@ TEST(Bsdf, GlassInsideTotallyReflectsBeyondTheCriticalAngle) {
 }
 
 TEST(Bsdf, LobeClassification) {
-    EXPECT_TRUE(hasNonDeltaLobes(makeParams({1, 1, 1}, 0.0f, 1.0f, 1.5f, 0.3f)));   // rough glass
+    EXPECT_TRUE(hasNonDeltaLobes(makeParams({1, 1, 1}, 0.0f, 1.0f, 1.5f, 0.3f)));    // rough glass
     EXPECT_FALSE(hasNonDeltaLobes(makeParams({1, 1, 1}, 0.0f, 1.0f, 1.5f, 1e-4f)));  // smooth glass
-    EXPECT_TRUE(hasNonDeltaLobes(makeParams({1, 1, 1}, 1.0f, 0.0f, 1.5f, 0.3f)));   // rough metal
+    EXPECT_TRUE(hasNonDeltaLobes(makeParams({1, 1, 1}, 1.0f, 0.0f, 1.5f, 0.3f)));    // rough metal
     BsdfParams coatedMirror = makeParams({1, 1, 1}, 1.0f, 0.0f, 1.5f, 0.0f);
     coatedMirror.clearcoat = 1.0f;
     EXPECT_FALSE(hasNonDeltaLobes(coatedMirror));
@@ -204,21 +203,25 @@ TEST(Bsdf, SampleWeightIsEvalOverPdfInAnyFrame) {
         const float tolerance = rotated ? 2e-2f : 1e-5f;
         for (float roughness : {0.05f, 0.3f, 1.0f}) {
             for (BsdfParams p : mixedMaterials(roughness)) {
-            p.clearcoat = 0.5f;
-            p.clearcoatRoughness = 0.2f;
-            for (int i = 0; i < 400; ++i) {
-                const Frame frame = rotated ? Frame::fromNormal(randomDirection(rng, rng.uniform() < 0.5f)) : kIdentity;
-                const Vec3 wo = frame.toWorld(randomDirection(rng, p.transmission == 0.0f || rng.uniform() < 0.5f));
-                const BsdfSample s = sampleBsdf(p, frame, wo, rng.uniform(), {rng.uniform(), rng.uniform()});
-                if (s.delta || isBlack(s.weight)) continue;
-                const float pdf = pdfBsdf(p, frame, wo, s.wi);
-                const Vec3 f = evalBsdf(p, frame, wo, s.wi);
-                ASSERT_GT(pdf, 0.0f);
-                EXPECT_LT(relativeError(s.pdf, pdf), tolerance) << roughness;
-                for (int c = 0; c < 3; ++c) EXPECT_LT(relativeError(s.weight[c], f[c] / pdf), tolerance) << roughness;
-                EXPECT_EQ(s.transmitted, dot(s.wi, frame.normal) * dot(wo, frame.normal) < 0.0f);
-                ++checked;
-            }
+                p.clearcoat = 0.5f;
+                p.clearcoatRoughness = 0.2f;
+                for (int i = 0; i < 400; ++i) {
+                    const Frame frame =
+                        rotated ? Frame::fromNormal(randomDirection(rng, rng.uniform() < 0.5f)) : kIdentity;
+                    const Vec3 wo =
+                        frame.toWorld(randomDirection(rng, p.transmission == 0.0f || rng.uniform() < 0.5f));
+                    const BsdfSample s =
+                        sampleBsdf(p, frame, wo, rng.uniform(), {rng.uniform(), rng.uniform()});
+                    if (s.delta || isBlack(s.weight)) continue;
+                    const float pdf = pdfBsdf(p, frame, wo, s.wi);
+                    const Vec3 f = evalBsdf(p, frame, wo, s.wi);
+                    ASSERT_GT(pdf, 0.0f);
+                    EXPECT_LT(relativeError(s.pdf, pdf), tolerance) << roughness;
+                    for (int c = 0; c < 3; ++c)
+                        EXPECT_LT(relativeError(s.weight[c], f[c] / pdf), tolerance) << roughness;
+                    EXPECT_EQ(s.transmitted, dot(s.wi, frame.normal) * dot(wo, frame.normal) < 0.0f);
+                    ++checked;
+                }
             }
         }
     }
@@ -267,21 +270,25 @@ TEST(Bsdf, SampleWeightsMatchTheirClosedForms) {
         const BsdfParams glass = makeParams({1, 1, 1}, 0.0f, 1.0f, 1.5f, roughness);
         for (int i = 0; i < 300; ++i) {
             const Vec3 wo = randomDirection(rng, true);
-            const BsdfSample s = sampleBsdf(metal, kIdentity, wo, rng.uniform(), {rng.uniform(), rng.uniform()});
+            const BsdfSample s =
+                sampleBsdf(metal, kIdentity, wo, rng.uniform(), {rng.uniform(), rng.uniform()});
             if (isBlack(s.weight)) continue;
             const test::DVec3 o = test::toDouble(wo), w = test::toDouble(s.wi);
             const test::DVec3 h = test::normalized(o + w);
-            const double g2OverG1 = (1.0 + smithLambda(o, alpha)) / (1.0 + smithLambda(o, alpha) + smithLambda(w, alpha));
+            const double g2OverG1 =
+                (1.0 + smithLambda(o, alpha)) / (1.0 + smithLambda(o, alpha) + smithLambda(w, alpha));
             const double m = 1.0 - test::dot(o, h), m5 = m * m * m * m * m;
             EXPECT_NEAR(s.weight.x, (0.9 + 0.1 * m5) * g2OverG1, 2e-4);
             EXPECT_NEAR(s.weight.z, (0.3 + 0.7 * m5) * g2OverG1, 2e-4);
         }
         for (int i = 0; i < 300; ++i) {
             const Vec3 wo = randomDirection(rng, rng.uniform() < 0.5f);
-            const BsdfSample s = sampleBsdf(glass, kIdentity, wo, rng.uniform(), {rng.uniform(), rng.uniform()});
+            const BsdfSample s =
+                sampleBsdf(glass, kIdentity, wo, rng.uniform(), {rng.uniform(), rng.uniform()});
             if (isBlack(s.weight)) continue;
             const test::DVec3 o = test::toDouble(wo), w = test::toDouble(s.wi);
-            const double g2OverG1 = (1.0 + smithLambda(o, alpha)) / (1.0 + smithLambda(o, alpha) + smithLambda(w, alpha));
+            const double g2OverG1 =
+                (1.0 + smithLambda(o, alpha)) / (1.0 + smithLambda(o, alpha) + smithLambda(w, alpha));
             const float etap = relativeEtaFor(glass, wo);
             const double expected = s.transmitted ? g2OverG1 / (double(etap) * etap) : g2OverG1;
             EXPECT_NEAR(s.weight.x, expected, 2e-4 * expected + 1e-6) << s.transmitted;
@@ -388,12 +395,14 @@ TEST(BsdfEnergy, WhiteMaterialsNeverGainEnergy) {
                             << (inside ? " inside" : "");
                         if (e.mean - 4.0 * e.standardError > worst) {
                             worst = e.mean - 4.0 * e.standardError;
-                            std::snprintf(where, sizeof(where), "%s roughness %g ior %g cos %g%s", name, double(roughness),
-                                          double(ior), double(cosTheta), inside ? " inside" : "");
+                            std::snprintf(where, sizeof(where), "%s roughness %g ior %g cos %g%s", name,
+                                          double(roughness), double(ior), double(cosTheta),
+                                          inside ? " inside" : "");
                         }
                         // One-lobe white materials: every single weight is at most 1.
                         if (p.metallic == 1.0f || p.transmission == 1.0f) {
-                            EXPECT_LE(e.maxWeight, 1.0 + 1e-4) << name << " roughness " << roughness << " cos " << cosTheta;
+                            EXPECT_LE(e.maxWeight, 1.0 + 1e-4)
+                                << name << " roughness " << roughness << " cos " << cosTheta;
                         }
                     }
                 }
@@ -410,13 +419,15 @@ TEST(BsdfEnergy, SmoothWhiteMaterialsAreLossless) {
     for (float cosTheta : {1.0f, 0.5f, 0.1f, 0.01f}) {
         const Vec3 wo = directionAt(cosTheta);
         for (float ior : {1.0f, 1.33f, 1.5f, 2.42f, 4.0f}) {
-            const EnergyEstimate glass = whiteFurnace(makeParams({1, 1, 1}, 0.0f, 1.0f, ior, 0.0f), wo, 20000, 1);
+            const EnergyEstimate glass =
+                whiteFurnace(makeParams({1, 1, 1}, 0.0f, 1.0f, ior, 0.0f), wo, 20000, 1);
             EXPECT_NEAR(glass.mean, 1.0, 1e-5);
             const EnergyEstimate inside =
                 whiteFurnace(makeParams({1, 1, 1}, 0.0f, 1.0f, ior, 0.0f), {wo.x, wo.y, -wo.z}, 20000, 1);
             EXPECT_NEAR(inside.mean, 1.0, 1e-5);
         }
-        const EnergyEstimate plastic = whiteFurnace(makeParams({1, 1, 1}, 0.0f, 0.0f, 1.5f, 0.0f), wo, 100000, 2);
+        const EnergyEstimate plastic =
+            whiteFurnace(makeParams({1, 1, 1}, 0.0f, 0.0f, 1.5f, 0.0f), wo, 100000, 2);
         EXPECT_NEAR(plastic.mean, 1.0, 4.0 * plastic.standardError + 1e-3) << cosTheta;
         const EnergyEstimate metal = whiteFurnace(makeParams({1, 1, 1}, 1.0f, 0.0f, 1.5f, 0.0f), wo, 1000, 3);
         EXPECT_NEAR(metal.mean, 1.0, 1e-6);
@@ -455,7 +466,8 @@ TEST(BsdfEnergy, SmoothWhiteMaterialsAreLossless) {
         }
     }
     // Rough white plastic keeps most of its energy: the diffuse base gets what the layer leaves.
-    const EnergyEstimate roughPlastic = whiteFurnace(makeParams({1, 1, 1}, 0.0f, 0.0f, 1.5f, 0.5f), directionAt(0.7f), 100000, 4);
+    const EnergyEstimate roughPlastic =
+        whiteFurnace(makeParams({1, 1, 1}, 0.0f, 0.0f, 1.5f, 0.5f), directionAt(0.7f), 100000, 4);
     EXPECT_GT(roughPlastic.mean, 0.97);
 }
 
@@ -473,8 +485,10 @@ TEST(BsdfStiff, NoNanOrInfAtExtremes) {
                     Vec3 wo = directionAt(fabsf(cosTheta));
                     if (cosTheta < 0.0f) wo.z = -wo.z;
                     for (int i = 0; i < 64; ++i) {
-                        const BsdfSample s = sampleBsdf(p, kIdentity, wo, rng.uniform(), {rng.uniform(), rng.uniform()});
-                        ASSERT_TRUE(isFinite(s.weight)) << name << " roughness " << roughness << " ior " << ior;
+                        const BsdfSample s =
+                            sampleBsdf(p, kIdentity, wo, rng.uniform(), {rng.uniform(), rng.uniform()});
+                        ASSERT_TRUE(isFinite(s.weight))
+                            << name << " roughness " << roughness << " ior " << ior;
                         ASSERT_TRUE(isFinite(s.pdf) && s.pdf >= 0.0f) << name;
                         if (!isBlack(s.weight)) {
                             ASSERT_NEAR(length(s.wi), 1.0f, 1e-4f) << name;

@@ -100,14 +100,19 @@ inline double chiSquarePValue(double chi2, int dof) {
 
 // Šidák-corrected per-test significance so that `tests` tests together reject a correct
 // implementation with probability `familyLevel`.
-inline double sidakLevel(double familyLevel, int tests) { return 1.0 - std::pow(1.0 - familyLevel, 1.0 / tests); }
+inline double sidakLevel(double familyLevel, int tests) {
+    return 1.0 - std::pow(1.0 - familyLevel, 1.0 / tests);
+}
 
 // t = (asinh((v - center) / width) - A) / (B - A) maps [lo, hi] onto [0, 1], densely near center.
 struct AsinhWarp {
     double center = 0.0, width = 1.0, a = 0.0, b = 1.0;
     AsinhWarp() = default;
     AsinhWarp(double center_, double width_, double lo, double hi)
-        : center(center_), width(width_), a(std::asinh((lo - center_) / width_)), b(std::asinh((hi - center_) / width_)) {}
+        : center(center_),
+          width(width_),
+          a(std::asinh((lo - center_) / width_)),
+          b(std::asinh((hi - center_) / width_)) {}
     double toUnit(double v) const { return (std::asinh((v - center) / width) - a) / (b - a); }
     double fromUnit(double t, double& derivative) const {
         const double u = a + t * (b - a);
@@ -167,7 +172,7 @@ struct ChiSquareResult {
     double pValue = 0.0;
     double chi2 = 0.0;
     int dof = 0;
-    double pdfIntegral = 0.0;     // of the pdf over the sphere
+    double pdfIntegral = 0.0;      // of the pdf over the sphere
     double sampledFraction = 0.0;  // valid non-delta samples / samples drawn
     std::string failure;           // non-empty when a sample fell where the pdf is zero
 };
@@ -195,7 +200,8 @@ double integrateAdaptive(const F& f, double a0, double a1, double b0, double b1,
         return s * hx * hy;
     };
     const double am = 0.5 * (a0 + a1), bm = 0.5 * (b0 + b1);
-    const double q[4] = {gauss(a0, am, b0, bm), gauss(am, a1, b0, bm), gauss(a0, am, bm, b1), gauss(am, a1, bm, b1)};
+    const double q[4] = {gauss(a0, am, b0, bm), gauss(am, a1, b0, bm), gauss(a0, am, bm, b1),
+                         gauss(am, a1, bm, b1)};
     const double sum = q[0] + q[1] + q[2] + q[3];
     if (depth <= 0 || (minDepth <= 0 && std::fabs(sum - whole) <= tolerance)) return sum;
     const double t = 0.5 * tolerance;
@@ -207,7 +213,8 @@ double integrateAdaptive(const F& f, double a0, double a1, double b0, double b1,
 }
 
 // Expected probability of each cell under `pdf`.
-inline std::vector<double> integrateCells(const LobeHistogram& h, const DirectionPdf& pdf, double sampleCount) {
+inline std::vector<double> integrateCells(const LobeHistogram& h, const DirectionPdf& pdf,
+                                          double sampleCount) {
     std::vector<double> p(LobeHistogram::kCells, 0.0);
     for (int side = 0; side < LobeHistogram::kSides; ++side) {
         auto f = [&](double t, double u) {
@@ -217,8 +224,10 @@ inline std::vector<double> integrateCells(const LobeHistogram& h, const Directio
         };
         for (int ia = 0; ia < LobeHistogram::kThetaBins; ++ia) {
             for (int ib = 0; ib < LobeHistogram::kPhiBins; ++ib) {
-                const double a0 = double(ia) / LobeHistogram::kThetaBins, a1 = double(ia + 1) / LobeHistogram::kThetaBins;
-                const double b0 = double(ib) / LobeHistogram::kPhiBins, b1 = double(ib + 1) / LobeHistogram::kPhiBins;
+                const double a0 = double(ia) / LobeHistogram::kThetaBins,
+                             a1 = double(ia + 1) / LobeHistogram::kThetaBins;
+                const double b0 = double(ib) / LobeHistogram::kPhiBins,
+                             b1 = double(ib + 1) / LobeHistogram::kPhiBins;
                 const double hx = 0.5 * (a1 - a0), hy = 0.5 * (b1 - b0);
                 const double coarse = 4.0 * hx * hy * f(0.5 * (a0 + a1), 0.5 * (b0 + b1));
                 // Accuracy that keeps the count error well under its Poisson deviation.
@@ -266,8 +275,8 @@ inline ChiSquareResult chiSquare(const std::vector<double>& observed, const std:
 
 // Draws `sampleCount` samples, histograms them, and tests them against `pdf` (or against
 // `expectedPdf` where given: the negative controls pass a deliberately wrong density).
-inline ChiSquareResult runChiSquare(const LobeHistogram& h, const DirectionSampler& sample, const DirectionPdf& pdf,
-                                    int sampleCount, uint64_t seed) {
+inline ChiSquareResult runChiSquare(const LobeHistogram& h, const DirectionSampler& sample,
+                                    const DirectionPdf& pdf, int sampleCount, uint64_t seed) {
     std::vector<double> observed(LobeHistogram::kCells, 0.0);
     Pcg32 rng(seed);
     int valid = 0;

@@ -28,7 +28,8 @@ double projectedArea(float alpha) {
 }
 
 TEST(Ggx, DistributionIsNormalised) {
-    for (float alpha : {1e-3f, 0.01f, 0.1f, 0.5f, 1.0f}) EXPECT_NEAR(projectedArea(alpha), 1.0, 2e-4) << alpha;
+    for (float alpha : {1e-3f, 0.01f, 0.1f, 0.5f, 1.0f})
+        EXPECT_NEAR(projectedArea(alpha), 1.0, 2e-4) << alpha;
 }
 
 // The visible normals of any view integrate to 1 (Heitz 2014, eq. 18): Monte Carlo over

@@ -13,9 +13,9 @@ namespace {
 // Three 2 x 1 RGBA8 textures with nearest filtering: base color, metallic-roughness, transmission.
 struct TexturedScene {
     std::vector<uint8_t> texels = {
-        128, 64, 255, 200, /**/ 255, 255, 255, 255,  // base color: left texel, right texel
-        0, 128, 255, 0, /**/ 0, 255, 51, 0,          // metallic-roughness: G roughness, B metallic
-        51, 0, 0, 0, /**/ 255, 0, 0, 0,              // transmission: R
+        128, 64,  255, 200, /**/ 255, 255, 255, 255,  // base color: left texel, right texel
+        0,   128, 255, 0,   /**/ 0,   255, 51,  0,    // metallic-roughness: G roughness, B metallic
+        51,  0,   0,   0,   /**/ 255, 0,   0,   0,    // transmission: R
     };
     std::vector<TextureView> views;
     RenderScene scene{};

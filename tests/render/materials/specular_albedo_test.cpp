@@ -32,8 +32,10 @@ double gridRoughnessAt(double y) { return kMinRoughness + (1.0 - kMinRoughness) 
 // 6 * integral of v(x) x^5 over [0, 1] for v piecewise linear on the mu grid: the average
 // 2 * integral of E(mu) mu dmu with mu = x^3. Four-point Gauss-Legendre is exact per segment.
 double hemisphericalAverage(const float* v) {
-    const double nodes[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
-    const double weights[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
+    const double nodes[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
+                             0.8611363115940526};
+    const double weights[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
+                               0.3478548451374538};
     double sum = 0.0;
     const double h = 1.0 / (kMuCount - 1);
     for (int i = 0; i + 1 < kMuCount; ++i) {
@@ -128,7 +130,7 @@ TEST(SpecularAlbedo, DISABLED_GenerateTable) {
         }
         return s + "}";
     };
-    auto table = [&](const float (&v)[kRoughnessCount][kMuCount]) {
+    auto table = [&](const float(&v)[kRoughnessCount][kMuCount]) {
         std::string s = "    {\n";
         for (int j = 0; j < kNy; ++j) s += "        " + row(v[j], kNx) + ",\n";
         return s + "    },\n";

@@ -44,8 +44,8 @@ TEST(Sampler, PairsWithinAGroupAreStratifiedInEveryElementaryInterval) {
                     const uint32_t cy = uint32_t(y * float(1u << yBits));
                     cells.insert((cx << yBits) | cy);
                 }
-                EXPECT_EQ(cells.size(), kCount) << "pixel " << pixel << " dims " << pairStart << " shape "
-                                                << xBits << "x" << yBits;
+                EXPECT_EQ(cells.size(), kCount)
+                    << "pixel " << pixel << " dims " << pairStart << " shape " << xBits << "x" << yBits;
             }
         }
     }

@@ -115,7 +115,9 @@ TEST(CompileScene, BruteForceIsRefusedAboveItsBudgetWithAClearMessage) {
         compileRenderScene(sceneWithGrid(10, 6), options);
         FAIL() << "expected a refusal";
     } catch (const std::invalid_argument& e) {
-        EXPECT_STREQ(e.what(), "BVH off (brute force) refused: the scene traces 1200 triangles, over the budget of 1000");
+        EXPECT_STREQ(
+            e.what(),
+            "BVH off (brute force) refused: the scene traces 1200 triangles, over the budget of 1000");
     }
 }
 
@@ -137,9 +139,9 @@ TEST(CompileScene, EmittersAreWeightedByWorldAreaTimesLuminance) {
     bright.emission = {1, 1, 1};
     bright.emissionStrength = 4.0f;
     const uint32_t light = addMaterial(scene, "light", bright);
-    addShape(scene, ObjectKind::Quad, trs({0, 0, 0}), light);                       // area 4
-    addShape(scene, ObjectKind::Quad, trs({0, 5, 0}, {0, 0, 0}, {2, 1, 3}), light);  // area 24
-    addShape(scene, ObjectKind::Sphere, trs({0, -5, 0}), light);                     // area 4 pi
+    addShape(scene, ObjectKind::Quad, trs({0, 0, 0}), light);                           // area 4
+    addShape(scene, ObjectKind::Quad, trs({0, 5, 0}, {0, 0, 0}, {2, 1, 3}), light);     // area 24
+    addShape(scene, ObjectKind::Sphere, trs({0, -5, 0}), light);                        // area 4 pi
     addShape(scene, ObjectKind::Sphere, trs({0, -9, 0}, {0, 0, 0}, {1, 2, 1}), light);  // ellipsoid: no NEE
     const CompiledScene compiled = compileRenderScene(scene);
     ASSERT_EQ(compiled.emitters.emitters.size(), 5u);
@@ -189,7 +191,8 @@ TEST(CompileScene, HiddenInstancesAndUnmappedSlotsAreHandled) {
     scene.instances[2].materials.clear();  // falls back to the default material
     const CompiledScene compiled = compileRenderScene(scene);
     EXPECT_EQ(compiled.stats.instanceCount, 2u);
-    EXPECT_EQ(compiled.instanceMaterials[compiled.instances[1].materialOffset], compiled.materials.size() - 1);
+    EXPECT_EQ(compiled.instanceMaterials[compiled.instances[1].materialOffset],
+              compiled.materials.size() - 1);
 }
 
 // The light table skips meshes no instance shades with an emissive material (so a scene

@@ -1,0 +1,294 @@
+#include "assets/gltf/gltf_primitive.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "assets/gltf/gltf_accessors.h"
+#include "assets/gltf/gltf_draco.h"
+#include "assets/mesh_normals.h"
+
+namespace pt {
+namespace {
+
+const char* modeName(int mode) {
+    switch (mode) {
+        case TINYGLTF_MODE_POINTS: return "POINTS";
+        case TINYGLTF_MODE_LINE: return "LINES";
+        case TINYGLTF_MODE_LINE_LOOP: return "LINE_LOOP";
+        case TINYGLTF_MODE_LINE_STRIP: return "LINE_STRIP";
+        case TINYGLTF_MODE_TRIANGLES: return "TRIANGLES";
+        case TINYGLTF_MODE_TRIANGLE_STRIP: return "TRIANGLE_STRIP";
+        case TINYGLTF_MODE_TRIANGLE_FAN: return "TRIANGLE_FAN";
+        default: return nullptr;
+    }
+}
+
+// Triangle list from the primitive's corner sequence (glTF 2.0 section 3.7.2.1):
+// strips p_i = {v_i, v_(i+1+i%2), v_(i+2-i%2)}, fans p_i = {v_(i+1), v_(i+2), v_0}.
+std::vector<uint32_t> toTriangleList(const GltfContext& ctx, std::vector<uint32_t> corners, int mode,
+                                     const std::string& element) {
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+        if (corners.size() % 3 != 0) {
+            ctx.fail(element,
+                     "TRIANGLES with " + std::to_string(corners.size()) + " indices, not a multiple of 3");
+        }
+        return corners;
+    }
+    std::vector<uint32_t> triangles;
+    for (size_t i = 0; i + 2 < corners.size(); ++i) {
+        if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+            triangles.insert(triangles.end(), {corners[i], corners[i + 1 + i % 2], corners[i + 2 - i % 2]});
+        } else {
+            triangles.insert(triangles.end(), {corners[i + 1], corners[i + 2], corners[0]});
+        }
+    }
+    return triangles;
+}
+
+std::vector<float> readFiniteFloats(const GltfContext& ctx, int accessor, int components,
+                                    const std::string& element, const std::string& role) {
+    std::vector<float> values = readGltfFloats(ctx, accessor, components, {element, role});
+    for (size_t i = 0; i < values.size(); ++i) {
+        if (!std::isfinite(values[i])) {
+            ctx.fail(element, role + " accessor " + std::to_string(accessor) + " element " +
+                                  std::to_string(i / size_t(components)) + " is not finite (" +
+                                  std::to_string(values[i]) + ")");
+        }
+    }
+    return values;
+}
+
+int attribute(const tinygltf::Primitive& primitive, const char* name) {
+    auto it = primitive.attributes.find(name);
+    return it == primitive.attributes.end() ? -1 : it->second;
+}
+
+// A per-vertex attribute with exactly one element per position.
+std::vector<float> readVertexAttribute(const GltfContext& ctx, int accessor, int components,
+                                       size_t vertexCount, const std::string& element,
+                                       const std::string& role) {
+    std::vector<float> values = readFiniteFloats(ctx, accessor, components, element, role);
+    if (values.size() != vertexCount * size_t(components)) {
+        ctx.fail(element, role + " accessor " + std::to_string(accessor) + " has " +
+                              std::to_string(values.size() / size_t(components)) +
+                              " elements but POSITION has " + std::to_string(vertexCount));
+    }
+    return values;
+}
+
+// The primitive's corners: Draco's decoded ones, its indices, or (neither) 0, 1, 2, ...; each
+// checked against the vertex count.
+std::vector<uint32_t> readCorners(const GltfContext& ctx, const tinygltf::Primitive& primitive,
+                                  std::optional<std::vector<uint32_t>> draco, size_t vertexCount,
+                                  const std::string& element) {
+    if (!draco && primitive.indices < 0) {
+        std::vector<uint32_t> corners(vertexCount);
+        std::iota(corners.begin(), corners.end(), 0u);
+        return corners;
+    }
+    const std::string source = draco ? std::string("Draco corner")
+                                     : "indices accessor " + std::to_string(primitive.indices) + " element";
+    std::vector<uint32_t> corners =
+        draco ? std::move(*draco)
+              : readGltfIndices(ctx, primitive.indices, {element, std::string("indices")});
+    for (size_t i = 0; i < corners.size(); ++i) {
+        if (corners[i] >= vertexCount) {
+            ctx.fail(element, source + " " + std::to_string(i) + " is " + std::to_string(corners[i]) +
+                                  ", past the vertex count " + std::to_string(vertexCount));
+        }
+    }
+    return corners;
+}
+
+// TANGENT: xyz normalised, w reduced to its sign; zero tangents (some exporters write them
+// for vertices without UVs) stay zero, which tells the renderer to derive a frame.
+std::vector<Vec4> readTangents(const GltfContext& ctx, int accessor, size_t vertexCount,
+                               const std::string& element) {
+    const std::vector<float> t = readVertexAttribute(ctx, accessor, 4, vertexCount, element, "TANGENT");
+    std::vector<Vec4> tangents(vertexCount);
+    for (size_t v = 0; v < vertexCount; ++v) {
+        const Vec3 xyz{t[4 * v], t[4 * v + 1], t[4 * v + 2]};
+        const float len = length(xyz);
+        if (!(len > 0.0f)) continue;
+        const Vec3 unitXyz = xyz / len;
+        tangents[v] = {unitXyz.x, unitXyz.y, unitXyz.z, t[4 * v + 3] < 0.0f ? -1.0f : 1.0f};
+    }
+    return tangents;
+}
+
+// values[from[k]] for each k; an empty (absent) attribute stays empty.
+template <class T>
+std::vector<T> gather(const std::vector<T>& values, const std::vector<uint32_t>& from) {
+    if (values.empty()) return {};
+    std::vector<T> out(from.size());
+    for (size_t k = 0; k < from.size(); ++k) out[k] = values[from[k]];
+    return out;
+}
+
+// Makes new vertex k a copy of old vertex from[k], every per-vertex array alike (morph
+// deltas included, so they keep following their positions); indices are the caller's.
+void remapVertices(PrimitiveGeometry& g, const std::vector<uint32_t>& from) {
+    g.positions = gather(g.positions, from);
+    g.normals = gather(g.normals, from);
+    g.uvs = gather(g.uvs, from);
+    g.tangents = gather(g.tangents, from);
+    for (MorphTarget& target : g.targets) {
+        target.positionDeltas = gather(target.positionDeltas, from);
+        target.normalDeltas = gather(target.normalDeltas, from);
+    }
+}
+
+// Flat shading needs a vertex per triangle corner.
+void unshareVertices(PrimitiveGeometry& g) {
+    remapVertices(g, g.indices);
+    std::iota(g.indices.begin(), g.indices.end(), 0u);
+}
+
+// Keeps only the vertices the triangles use, in first-use order: several primitives often
+// index one shared vertex accessor, which would otherwise be copied whole into each.
+void compactVertices(PrimitiveGeometry& g) {
+    constexpr uint32_t kUnused = ~0u;
+    std::vector<uint32_t> remap(g.positions.size(), kUnused);
+    std::vector<uint32_t> used;
+    for (uint32_t& index : g.indices) {
+        if (remap[index] == kUnused) {
+            remap[index] = uint32_t(used.size());
+            used.push_back(index);
+        }
+        index = remap[index];
+    }
+    remapVertices(g, used);
+}
+
+std::vector<Vec3> toVec3s(const std::vector<float>& xyz) {
+    std::vector<Vec3> out(xyz.size() / 3);
+    for (size_t v = 0; v < out.size(); ++v) out[v] = {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
+    return out;
+}
+
+// The primitive's morph targets (glTF 2.0 section 3.7.2.2), one element per position each.
+// TANGENT deltas are dropped without a warning: tangents are not deformed, and the shading
+// frame re-orthogonalizes the tangent against the deformed normal (integrator/surface_hit.h),
+// which is close for the moderate bends morph targets make. NORMAL deltas of a primitive
+// without NORMAL are dropped too: they would move generated normals the author never saw.
+// Such a primitive's flat normals stay those of the undeformed triangles (Mesh keeps no
+// record of which normals were generated, so applyMorphWeights cannot regenerate them).
+std::vector<MorphTarget> readMorphTargets(const GltfContext& ctx, const tinygltf::Primitive& primitive,
+                                          size_t vertexCount, bool hasNormals, const std::string& element) {
+    std::vector<MorphTarget> targets(primitive.targets.size());
+    for (size_t t = 0; t < targets.size(); ++t) {
+        const std::string at = element + ".targets[" + std::to_string(t) + "]";
+        for (const auto& [name, accessor] : primitive.targets[t]) {
+            if (name == "TANGENT" || (name == "NORMAL" && !hasNormals)) continue;
+            if (name != "POSITION" && name != "NORMAL") {
+                ctx.warn(at, "morph target attribute " + name + " is not applied; ignored");
+                continue;
+            }
+            std::vector<Vec3> deltas = toVec3s(readVertexAttribute(ctx, accessor, 3, vertexCount, at, name));
+            (name == "POSITION" ? targets[t].positionDeltas : targets[t].normalDeltas) = std::move(deltas);
+        }
+        // A target without POSITION leaves the positions where they are.
+        if (targets[t].positionDeltas.empty()) targets[t].positionDeltas.assign(vertexCount, Vec3(0.0f));
+    }
+    return targets;
+}
+
+// Normalizes the file's normals; regenerates zero ones (with one warning) or, when the file
+// has none, all of them.
+void finishNormals(const GltfContext& ctx, bool fromFile, PrimitiveGeometry& g, const std::string& element) {
+    std::vector<bool> regenerate(g.positions.size(), !fromFile);
+    if (!fromFile) g.normals.assign(g.positions.size(), Vec3(0.0f, 0.0f, 1.0f));
+    size_t zero = 0;
+    for (size_t v = 0; fromFile && v < g.normals.size(); ++v) {
+        const float len = length(g.normals[v]);
+        regenerate[v] = !(len > 0.0f);
+        if (regenerate[v])
+            ++zero;
+        else
+            g.normals[v] = g.normals[v] / len;
+    }
+    if (zero > 0) {
+        ctx.warn(element, std::to_string(zero) +
+                              " zero-length NORMAL vectors replaced by the surrounding "
+                              "triangles' normal");
+    }
+    if (!fromFile || zero > 0) {
+        generateAreaWeightedNormals(g.positions, g.indices, regenerate, g.normals);
+    }
+}
+
+}  // namespace
+
+std::optional<PrimitiveGeometry> readGltfPrimitive(const GltfContext& ctx, size_t meshIndex,
+                                                   size_t primitiveIndex) {
+    const auto& primitive = ctx.model().meshes[meshIndex].primitives[primitiveIndex];
+    const std::string element =
+        gltfPath("meshes", meshIndex) + ".primitives[" + std::to_string(primitiveIndex) + "]";
+    // Draco-compressed attributes and indices are decoded first; the accessor readers then
+    // return them (gltf_draco.h). No other primitive extension changes how geometry is read
+    // (KHR_materials_variants maps materials; gltf_variants reads it). Any other optional one is
+    // ignored, as the glTF specification asks, and the primitive is read as it stands; the
+    // file-level warning names it. Only one the file requires is a reason to skip: its data is
+    // not readable without it.
+    const auto& required = ctx.model().extensionsRequired;
+    std::optional<std::vector<uint32_t>> draco;
+    try {
+        draco = decodeGltfDraco(ctx, primitive, element);
+    } catch (const InputError& e) {
+        // Like an undecodable texture: one warning, and the rest of the file still shows. An
+        // optional extension's primitive is read from its uncompressed fallback instead.
+        const bool needed = std::find(required.begin(), required.end(), kDracoExtension) != required.end();
+        ctx.scene.warnings.push_back(std::string(e.what()) +
+                                     (needed ? "; primitive skipped" : "; read without it"));
+        if (needed) return std::nullopt;
+    }
+    for (const auto& extension : primitive.extensions) {
+        if (extension.first == kDracoExtension && (draco || gltfDracoAvailable())) continue;
+        if (std::find(required.begin(), required.end(), extension.first) != required.end()) {
+            ctx.warn(element,
+                     "requires extension " + extension.first + ", which is not supported; primitive skipped");
+            return std::nullopt;
+        }
+    }
+    const char* mode = modeName(primitive.mode);
+    if (!mode) ctx.fail(element, "mode " + std::to_string(primitive.mode) + " is not a glTF mode");
+    if (primitive.mode < TINYGLTF_MODE_TRIANGLES) {
+        ctx.warn(element, std::string(mode) + " primitives are not rendered; skipped");
+        return std::nullopt;
+    }
+    const int position = attribute(primitive, "POSITION");
+    if (position < 0) {
+        ctx.warn(element, "has no POSITION attribute; skipped");
+        return std::nullopt;
+    }
+    PrimitiveGeometry g;
+    const std::vector<float> p = readFiniteFloats(ctx, position, 3, element, "POSITION");
+    const size_t vertexCount = p.size() / 3;
+    g.positions = toVec3s(p);
+    g.indices = toTriangleList(ctx, readCorners(ctx, primitive, std::move(draco), vertexCount, element),
+                               primitive.mode, element);
+    if (g.indices.empty()) {
+        ctx.warn(element, "has no triangles; skipped");
+        return std::nullopt;
+    }
+    if (const int uv = attribute(primitive, "TEXCOORD_0"); uv >= 0) {
+        const std::vector<float> t = readVertexAttribute(ctx, uv, 2, vertexCount, element, "TEXCOORD_0");
+        for (size_t v = 0; v < vertexCount; ++v) g.uvs.push_back({t[2 * v], t[2 * v + 1]});
+    }
+    const int normal = attribute(primitive, "NORMAL");
+    g.targets = readMorphTargets(ctx, primitive, vertexCount, normal >= 0, element);
+    if (normal >= 0) {
+        g.normals = toVec3s(readVertexAttribute(ctx, normal, 3, vertexCount, element, "NORMAL"));
+        if (const int tangent = attribute(primitive, "TANGENT"); tangent >= 0) {
+            g.tangents = readTangents(ctx, tangent, vertexCount, element);
+        }
+        compactVertices(g);
+    } else {
+        unshareVertices(g);
+    }
+    finishNormals(ctx, normal >= 0, g, element);
+    return g;
+}
+
+}  // namespace pt
