@@ -258,9 +258,9 @@ AovMask EditorSession::exportRender(const std::string& exrPath, const std::strin
     AovMask written = 0;
     if (!exrPath.empty()) {
         const ViewerSettings& viewer = doc_.viewer;
-        LayeredExr exr = renderedExr(*backend_, viewer.exportAovs,
-                                     viewer.exportHalf ? ExrPixelType::Half : ExrPixelType::Float,
-                                     doc_.scene.camera, metadata);
+        LayeredExr exr = layeredExr(readRenderedImages(*backend_, viewer.exportAovs),
+                                    viewer.exportHalf ? ExrPixelType::Half : ExrPixelType::Float,
+                                    doc_.scene.camera, metadata);
         if (denoises(viewer.denoise)) exr.denoised = beauty;  // beside the raw beauty
         writeLayeredExr(exrPath, exr);
         for (const AovImage& layer : exr.aovs) written |= aovBit(layer.aov);

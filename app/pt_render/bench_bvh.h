@@ -5,10 +5,13 @@
 #include <cstdint>
 
 #include "bench_report.h"
+#include "render/backend/backend.h"
 #include "render/scene/compile_scene.h"
 
 namespace pt::cli {
 
-void benchBvhBuilds(const CompiledScene& scene, bool gpu, uint32_t runs, BenchReport& report);
+// The GPU figures come from the backend (Backend::measureDeviceBvh); none where it has no
+// device builders.
+void benchBvhBuilds(const CompiledScene& scene, Backend& backend, uint32_t runs, BenchReport& report);
 
 }  // namespace pt::cli

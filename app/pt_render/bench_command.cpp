@@ -14,9 +14,6 @@
 #include "render/util/stopwatch.h"
 #include "scene_input.h"
 #include "toggle_options.h"
-#if PT_HAVE_CUDA
-#include "render/backend/cuda/cuda_device.h"
-#endif
 
 namespace pt::cli {
 
@@ -85,13 +82,6 @@ void benchRays(Backend& backend, const Scene& scene, const CompiledScene& compil
     backend.sync(scene, SceneChanges::Settings, {});
 }
 
-std::string deviceName(const std::string& backend) {
-#if PT_HAVE_CUDA
-    if (backend == "cuda") return cuda::deviceInfo().name;
-#endif
-    return backend == "cpu" ? "CPU" : backend;
-}
-
 }  // namespace
 
 int runBench(const std::vector<std::string>& args) {
@@ -128,7 +118,7 @@ int runBench(const std::vector<std::string>& args) {
     phase("path tracing");
     benchPathTracing(*backend, scene, r.settings, report);
     phase("BVH builds");
-    benchBvhBuilds(compiled, r.backend == "cuda", r.settings.runs, report);
+    benchBvhBuilds(compiled, *backend, r.settings.runs, report);
     phase("edits");
     benchEdits(r.backend, scene, r.settings, report);
     benchEditInFlight(r.backend, scene, r.settings, report);
@@ -136,7 +126,7 @@ int runBench(const std::vector<std::string>& args) {
     benchDenoise(*backend, scene, r.settings, report);
     phase("image check");
     benchImageCheck(*backend, scene, r.settings, report);
-    if (r.backend == "cuda") {
+    if (backend->capabilities().gpuScheduling) {
         benchWavefrontOverhead(*backend, scene, r.settings, report);
         benchKernelVariants(report);
     }
@@ -144,7 +134,7 @@ int runBench(const std::vector<std::string>& args) {
                 double(backend->deviceMemoryBytes()) / (1 << 20), "MiB", ""});
 
     std::printf("pt-render bench %s: backend %s (%s), %ux%u, depth %u, %u spp per run, median of %u runs\n",
-                r.scenePath.c_str(), backend->name().c_str(), deviceName(r.backend).c_str(),
+                r.scenePath.c_str(), backend->name().c_str(), backend->deviceName().c_str(),
                 scene.render.width, scene.render.height, scene.render.maxDepth, r.settings.spp,
                 r.settings.runs);
     report.print(stdout);
@@ -152,7 +142,7 @@ int runBench(const std::vector<std::string>& args) {
         nlohmann::ordered_json j;
         j["scene"] = r.scenePath;
         j["backend"] = backend->name();
-        j["device"] = deviceName(r.backend);
+        j["device"] = backend->deviceName();
         j["width"] = scene.render.width;
         j["height"] = scene.render.height;
         j["max_depth"] = scene.render.maxDepth;

@@ -4,10 +4,6 @@
 #include <cstdio>
 #include <functional>
 
-#if defined(PT_HAVE_CUDA)
-#include <cuda_runtime.h>
-#endif
-
 #include "editor/editor_session.h"
 #include "editor/scene_edits.h"
 #include "render/scene/morph.h"
@@ -91,34 +87,6 @@ std::vector<EditKind> editKinds(const Scene& scene) {
     return kinds;
 }
 
-// Device memory standing in for the editor's OpenGL pixel buffer (mapped through CUDA-GL
-// interop there), so the GPU frame path is timed where there is no display.
-class DeviceFrame {
-public:
-    explicit DeviceFrame(const Backend& backend) {
-#if defined(PT_HAVE_CUDA)
-        if (backend.capabilities().deviceFrames &&
-            cudaMalloc(&memory_, size_t(backend.width()) * backend.height() * 4 * sizeof(float)) !=
-                cudaSuccess) {
-            memory_ = nullptr;
-        }
-#else
-        (void)backend;
-#endif
-    }
-    ~DeviceFrame() {
-#if defined(PT_HAVE_CUDA)
-        if (memory_) cudaFree(memory_);
-#endif
-    }
-    DeviceFrame(const DeviceFrame&) = delete;
-    DeviceFrame& operator=(const DeviceFrame&) = delete;
-    void* memory() const { return memory_; }
-
-private:
-    void* memory_ = nullptr;
-};
-
 }  // namespace
 
 void benchEdits(const std::string& backendName, Scene scene, const BenchSettings& settings,
@@ -130,7 +98,9 @@ void benchEdits(const std::string& backendName, Scene scene, const BenchSettings
     session.sync();
     session.render(1);
     std::vector<float> frame;
-    const DeviceFrame deviceFrame(session.backend());
+    // Device memory standing in for the editor's OpenGL pixel buffer (mapped through CUDA-GL
+    // interop there), so the GPU frame path is timed where there is no display.
+    const std::shared_ptr<void> deviceFrame = session.backend().allocateDeviceFrame();
     for (const EditKind& kind : kinds) {
         std::vector<double> toFrame, toApply, toDisplay, toDeviceFrame;
         editor::EditLatency last;
@@ -146,8 +116,7 @@ void benchEdits(const std::string& backendName, Scene scene, const BenchSettings
             session.render(1);
             const double samplesDone = secondsSince(start);
             // The editor's CUDA-GL path: the frame is written into (here: stand-in) GL memory.
-            const bool onDevice =
-                deviceFrame.memory() && session.backend().copyBeautyToDevice(deviceFrame.memory());
+            const bool onDevice = deviceFrame && session.backend().copyBeautyToDevice(deviceFrame.get());
             const double deviceDisplayed = secondsSince(start);
             session.readDisplayed(session.document().viewer.aov, session.document().viewer.denoise, frame);
             const double displayed = secondsSince(start);

@@ -144,8 +144,8 @@ void writeStats(const RenderRequest& r, const Backend& backend, double loadSecon
 // `denoised` (RGBA; empty: none) as its denoised layer.
 void writeRenderExr(const RenderRequest& r, const Backend& backend, const Camera& camera,
                     const ImageMetadata& metadata, const std::vector<float>& denoised) {
-    LayeredExr exr =
-        renderedExr(backend, r.aovs, r.half ? ExrPixelType::Half : ExrPixelType::Float, camera, metadata);
+    LayeredExr exr = layeredExr(readRenderedImages(backend, r.aovs),
+                                r.half ? ExrPixelType::Half : ExrPixelType::Float, camera, metadata);
     exr.denoised = denoised;
     writeLayeredExr(r.exrPath, exr);
     if (r.quiet) return;

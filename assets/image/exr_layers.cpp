@@ -4,7 +4,6 @@
 #include "assets/image/image_metadata.h"
 #include "assets/image/image_read_format.h"
 #include "assets/input_error.h"
-#include "render/backend/backend.h"
 #if PT_HAVE_OIIO
 #include "assets/image/oiio_image_io.h"
 #endif
@@ -106,22 +105,15 @@ void writeLayeredExr(const std::string& path, const LayeredExr& image) {
     writeExrChannels(path, w, h, channels, metadata);
 }
 
-std::vector<AovImage> readAovImages(const Backend& backend, AovMask wanted) {
-    std::vector<AovImage> images;
-    const AovMask available = wanted & backend.aovs();
-    for (uint32_t i = 0; i < kAovCount; ++i) {
-        if (!(available & aovBit(Aov(i)))) continue;
-        images.push_back({Aov(i), {}});
-        backend.readAov(Aov(i), images.back().rgba);
-    }
-    return images;
-}
-
-LayeredExr renderedExr(const Backend& backend, AovMask wanted, ExrPixelType precision, const Camera& camera,
-                       ImageMetadata metadata) {
-    LayeredExr exr{backend.width(), backend.height(),    {}, readAovImages(backend, wanted),
-                   precision,       std::move(metadata), {}};
-    backend.readBeauty(exr.beauty);
+LayeredExr layeredExr(RenderedImages images, ExrPixelType precision, const Camera& camera,
+                      ImageMetadata metadata) {
+    LayeredExr exr{images.width,
+                   images.height,
+                   std::move(images.beauty),
+                   std::move(images.aovs),
+                   precision,
+                   std::move(metadata),
+                   {}};
     const ImageMetadata view = cameraMetadata(camera, exr.width, exr.height);
     exr.metadata.insert(exr.metadata.end(), view.begin(), view.end());
     return exr;

@@ -39,11 +39,10 @@
 
 #include "assets/image/image_write.h"
 #include "render/backend/aov.h"
+#include "render/backend/rendered_images.h"
 #include "render/scene/scene.h"
 
 namespace pt {
-
-class Backend;
 
 enum class ExrPixelType { Half, Float, Uint };
 
@@ -64,12 +63,6 @@ std::vector<std::string> aovExrChannelNames(Aov aov);
 // The pixel type `aov`'s channels get in a file of `precision` (Half or Float).
 ExrPixelType aovExrPixelType(Aov aov, ExrPixelType precision);
 
-// An AOV as Backend::readAov gives it: RGBA float, the beauty's size.
-struct AovImage {
-    Aov aov = Aov::Albedo;
-    std::vector<float> rgba;
-};
-
 struct LayeredExr {
     uint32_t width = 0, height = 0;
     std::vector<float> beauty;                     // RGBA float, as Backend::readBeauty gives it
@@ -89,14 +82,10 @@ void writeLayeredExr(const std::string& path, const LayeredExr& image);
 void writeExrChannels(const std::string& path, uint32_t width, uint32_t height,
                       const std::vector<ExrChannelSource>& channels, const ImageMetadata& metadata);
 
-// The AOVs of `wanted` that `backend` accumulates now (Backend::aovs()), read through readAov,
-// in the enum's order. AOVs wanted but not accumulated are left out.
-std::vector<AovImage> readAovImages(const Backend& backend, AovMask wanted);
-
-// What `backend` holds now as a layered EXR: its beauty, the AOVs of `wanted` it accumulates
-// (readAovImages), and `metadata` followed by cameraMetadata(camera) (image_metadata.h).
-LayeredExr renderedExr(const Backend& backend, AovMask wanted, ExrPixelType precision, const Camera& camera,
-                       ImageMetadata metadata);
+// A render's images (render/backend/rendered_images.h) as a layered EXR, with `metadata`
+// followed by cameraMetadata(camera) (image_metadata.h).
+LayeredExr layeredExr(RenderedImages images, ExrPixelType precision, const Camera& camera,
+                      ImageMetadata metadata);
 
 // A comma-separated list of AOV names ("albedo,depth"; "all" stands for every AOV) as a mask.
 // Throws InputError for an empty list or name, or an unknown name, listing the valid names.

@@ -5,10 +5,12 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "render/backend/aov.h"
+#include "render/backend/device_bvh_figures.h"
 #include "render/backend/toggle_table.h"
 #include "render/bvh/hit.h"
 #include "render/math/ray.h"
@@ -78,6 +80,7 @@ public:
     virtual ~Backend() = default;
     virtual std::string name() const = 0;  // for display and reports: "cpu", "cuda"
     virtual BackendCapabilities capabilities() const { return {}; }
+    virtual std::string deviceName() const { return "CPU"; }  // what it runs on, for reports
 
     // Throws std::invalid_argument when the scene or toggles cannot be honoured; the previous
     // state is then kept.
@@ -110,15 +113,25 @@ public:
     // GPU backends: every device buffer's allocated bytes by name (geometry, BVHs, materials,
     // lights, accumulation, scheduler, scratch), summing to deviceMemoryBytes(); empty elsewhere.
     virtual std::vector<std::pair<std::string, uint64_t>> deviceMemoryByBuffer() const { return {}; }
-    // GPU backends: writes the beauty as readBeauty() gives it (RGBA float, width x height) into
-    // device memory at `deviceRgba` (e.g. an OpenGL buffer mapped through CUDA-GL interop) and
-    // returns true once it is there. False where frames live on the host.
     // Wavefront schedulers: the paths alive at the start of each bounce of the last wave (what
     // stream compaction keeps the GPU busy with); empty where paths are not queued.
     virtual std::vector<uint32_t> pathsAlivePerBounce() const { return {}; }
+    // GPU backends: writes the beauty as readBeauty() gives it (RGBA float, width x height) into
+    // device memory at `deviceRgba` (e.g. an OpenGL buffer mapped through CUDA-GL interop) and
+    // returns true once it is there. False where frames live on the host.
     virtual bool copyBeautyToDevice(void* deviceRgba) const {
         (void)deviceRgba;
         return false;
+    }
+    // GPU backends: device memory for one RGBA float frame of the current size, freed with the
+    // returned object, for timing the device frame path where no display is (pt-render bench);
+    // null where frames live on the host.
+    virtual std::shared_ptr<void> allocateDeviceFrame() const { return nullptr; }
+    // GPU backends: the device BVH builders timed on `input` (device_bvh_figures.h); nothing
+    // where the backend builds no BVH on a device.
+    virtual std::optional<DeviceBvhFigures> measureDeviceBvh(const BvhBuildInput& input, uint32_t runs) {
+        (void)input, (void)runs;
+        return std::nullopt;
     }
 
     // AOVs (render/integrator/aov.h says what each holds). setAovs chooses which to accumulate

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "render/backend/cuda/cuda_device.h"
+#include "render/backend/cuda/device_bvh_figures.h"
 #include "render/backend/cuda/display_copy.h"
 #include "render/backend/cuda/stream_timer.h"
 #include "render/backend/mean_image.h"
@@ -456,6 +457,22 @@ void CudaBackend::readBeauty(std::vector<float>& rgba) const {
 
 std::vector<uint32_t> CudaBackend::pathsAlivePerBounce() const {
     return runsMegakernel() ? std::vector<uint32_t>{} : scheduler_.pathsPerBounce();
+}
+
+std::string CudaBackend::deviceName() const { return deviceInfo().name; }
+
+std::shared_ptr<void> CudaBackend::allocateDeviceFrame() const {
+    void* memory = nullptr;
+    if (cudaMalloc(&memory, size_t(width_) * height_ * 4 * sizeof(float)) != cudaSuccess) {
+        cudaGetLastError();  // clear it: later calls must not see it
+        return nullptr;
+    }
+    return std::shared_ptr<void>(memory, [](void* p) { cudaFree(p); });
+}
+
+std::optional<DeviceBvhFigures> CudaBackend::measureDeviceBvh(const BvhBuildInput& input, uint32_t runs) {
+    if (input.meshBoxes.empty()) return std::nullopt;
+    return measureDeviceBvhBuilds(input, runs, stream_);
 }
 
 bool CudaBackend::copyBeautyToDevice(void* deviceRgba) const {

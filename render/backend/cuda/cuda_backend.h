@@ -31,6 +31,7 @@ public:
 
     std::string name() const override { return "cuda"; }
     BackendCapabilities capabilities() const override { return {true, true}; }
+    std::string deviceName() const override;
     SyncReport sync(const Scene& scene, const SceneDelta& changes, const ProgressFn& progress) override;
     void setToggles(const IntegratorToggles& toggles) override;
     void render(uint32_t passes) override;
@@ -39,6 +40,8 @@ public:
     uint32_t height() const override { return height_; }
     void readBeauty(std::vector<float>& rgba) const override;
     bool copyBeautyToDevice(void* deviceRgba) const override;
+    std::shared_ptr<void> allocateDeviceFrame() const override;
+    std::optional<DeviceBvhFigures> measureDeviceBvh(const BvhBuildInput& input, uint32_t runs) override;
     std::vector<uint32_t> pathsAlivePerBounce() const override;
     BackendStats stats() const override;
     std::vector<ToggleState> toggleStates() const override;

@@ -1,0 +1,69 @@
+// The CUDA backend's BVH builders timed for pt-render bench (render/backend/device_bvh_figures.h).
+#include "render/backend/cuda/device_bvh_figures.h"
+
+#include <algorithm>
+
+#include "render/backend/cuda/gpu_bvh.h"
+#include "render/backend/cuda/stream_timer.h"
+
+namespace pt::cuda {
+
+namespace {
+
+// The median of `runs` timings of `queue` on `stream`, after one untimed warm-up.
+template <class Queue>
+double medianDeviceSeconds(uint32_t runs, cudaStream_t stream, Queue&& queue) {
+    StreamTimer timer;
+    queue();
+    std::vector<double> seconds;
+    for (uint32_t r = 0; r < std::max(runs, 1u); ++r) seconds.push_back(timer.time(stream, queue));
+    std::sort(seconds.begin(), seconds.end());
+    return seconds[seconds.size() / 2];
+}
+
+}  // namespace
+
+DeviceBvhFigures measureDeviceBvhBuilds(const BvhBuildInput& in, uint32_t runs, cudaStream_t stream) {
+    DeviceBvhFigures figures;
+    const uint32_t n = uint32_t(in.meshBoxes.size());
+    DeviceBuffer<Aabb> boxes;
+    boxes.upload(in.meshBoxes, stream);
+    DeviceBuffer<BvhNode> nodes(lbvhNodeCount(n));
+    DeviceBuffer<uint32_t> primIndices(std::max(n, 1u));
+    const uint32_t parentCount = std::max(lbvhNodeCount(n), uint32_t(in.cpuTree.nodes.size()));
+    DeviceBuffer<uint32_t> parents(parentCount), visits(parentCount);
+    LbvhBuilder builder;
+    figures.buildSeconds = medianDeviceSeconds(
+        runs, stream, [&] { builder.build(boxes.data(), n, nodes.data(), primIndices.data(), stream); });
+    figures.sahCost = sahCostOnDevice(nodes.data(), lbvhNodeCount(n), stream);
+
+    computeParents(nodes.data(), lbvhNodeCount(n), parents.data(), stream);
+    figures.refitSeconds = medianDeviceSeconds(runs, stream, [&] {
+        refitBvh(nodes.data(), lbvhNodeCount(n), parents.data(), primIndices.data(), boxes.data(),
+                 visits.data(), stream);
+    });
+    // The CPU-built tree, as the backend uploads it, refitted on the GPU.
+    DeviceBuffer<BvhNode> cpuNodes;
+    DeviceBuffer<uint32_t> cpuPrims;
+    cpuNodes.upload(in.cpuTree.nodes, stream);
+    cpuPrims.upload(in.cpuTree.primIndices, stream);
+    const uint32_t cpuCount = uint32_t(in.cpuTree.nodes.size());
+    computeParents(cpuNodes.data(), cpuCount, parents.data(), stream);
+    figures.refitCpuTreeSeconds = medianDeviceSeconds(runs, stream, [&] {
+        refitBvh(cpuNodes.data(), cpuCount, parents.data(), cpuPrims.data(), boxes.data(), visits.data(),
+                 stream);
+    });
+
+    const uint32_t instances = uint32_t(in.instanceBoxes.size());
+    DeviceBuffer<Aabb> instanceBoxes;
+    instanceBoxes.upload(in.instanceBoxes, stream);
+    DeviceBuffer<BvhNode> tlas(lbvhNodeCount(instances));
+    DeviceBuffer<uint32_t> tlasIndices(std::max(instances, 1u));
+    figures.tlasSeconds = medianDeviceSeconds(runs, stream, [&] {
+        builder.build(instanceBoxes.data(), instances, tlas.data(), tlasIndices.data(), stream);
+    });
+    PT_CUDA_CHECK(cudaStreamSynchronize(stream));
+    return figures;
+}
+
+}  // namespace pt::cuda
