@@ -6,7 +6,7 @@
 #include <tuple>
 #include <vector>
 
-#include "cli_options.h"
+#include "cli/cli_options.h"
 #include "editor/ui/editor_window.h"
 
 namespace {

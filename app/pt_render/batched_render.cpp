@@ -1,4 +1,4 @@
-#include "batched_render.h"
+#include "pt_render/batched_render.h"
 
 #include <algorithm>
 #include <stdexcept>

@@ -2,9 +2,9 @@
 #include <cstdio>
 
 #include "assets/scene_json/scene_json.h"
-#include "cli_options.h"
-#include "commands.h"
-#include "scene_input.h"
+#include "cli/cli_options.h"
+#include "cli/scene_input.h"
+#include "pt_render/commands.h"
 
 namespace pt::cli {
 

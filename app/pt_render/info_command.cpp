@@ -3,11 +3,11 @@
 #include <nlohmann/json.hpp>
 
 #include "assets/scene_loader.h"
-#include "cli_options.h"
-#include "commands.h"
+#include "cli/cli_options.h"
+#include "cli/scene_input.h"
+#include "pt_render/commands.h"
 #include "render/scene/compile_scene.h"
 #include "render/scene/scene_features.h"
-#include "scene_input.h"
 
 namespace pt::cli {
 

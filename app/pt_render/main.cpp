@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "assets/message_text.h"
-#include "cli_options.h"
-#include "commands.h"
-#include "usage.h"
+#include "cli/cli_options.h"
+#include "pt_render/commands.h"
+#include "pt_render/usage.h"
 
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);

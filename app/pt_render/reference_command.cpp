@@ -5,16 +5,16 @@
 
 #include "assets/image/image_write.h"
 #include "assets/image/pfm_file.h"
-#include "batched_render.h"
-#include "cli_options.h"
-#include "commands.h"
-#include "interrupt.h"
-#include "output_paths.h"
-#include "progress_bar.h"
+#include "cli/cli_options.h"
+#include "cli/interrupt.h"
+#include "cli/output_paths.h"
+#include "cli/progress_bar.h"
+#include "cli/render_setup.h"
+#include "cli/scene_input.h"
+#include "cli/toggle_options.h"
+#include "pt_render/batched_render.h"
+#include "pt_render/commands.h"
 #include "render/util/image_error.h"
-#include "render_setup.h"
-#include "scene_input.h"
-#include "toggle_options.h"
 
 namespace pt::cli {
 

@@ -1,4 +1,4 @@
-#include "usage.h"
+#include "pt_render/usage.h"
 
 namespace pt::cli {
 

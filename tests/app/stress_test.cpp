@@ -7,8 +7,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "app/pt_render/stress_expectation.h"
 #include "cli_runner.h"
+#include "pt_render/stress/stress_expectation.h"
 #include "support/test_paths.h"
 
 namespace pt {

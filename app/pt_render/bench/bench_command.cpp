@@ -1,0 +1,156 @@
+// pt-render bench: traversal, path tracing, BVH build and edit-latency figures of one backend,
+// with the toggles on and off, each the median of several runs after a warm-up.
+#include <cstdio>
+
+#include "assets/atomic_file.h"
+#include "cli/cli_options.h"
+#include "cli/scene_input.h"
+#include "cli/toggle_options.h"
+#include "pt_render/bench/bench_bvh.h"
+#include "pt_render/bench/bench_edits.h"
+#include "pt_render/bench/bench_kernels.h"
+#include "pt_render/bench/bench_rays.h"
+#include "pt_render/bench/bench_render.h"
+#include "pt_render/bench/bench_report.h"
+#include "pt_render/commands.h"
+#include "render/util/stopwatch.h"
+
+namespace pt::cli {
+
+namespace {
+
+struct BenchRequest {
+    std::string scenePath, backend = "cpu", jsonPath;
+    std::optional<std::pair<uint32_t, uint32_t>> size;
+    std::optional<uint32_t> maxDepth;
+    BenchSettings settings;
+    bool quiet = false;
+};
+
+BenchRequest parseBench(const std::vector<std::string>& args) {
+    const Options o(
+        args,
+        joined({"--backend", "--size", "--json", "--runs", "--spp", "--max-depth"}, toggleValuedFlags()),
+        joined({"--quiet"}, toggleSwitches()));
+    if (o.positional().size() != 1) throw UsageError("expected one SCENE argument");
+    BenchRequest r;
+    r.scenePath = o.positional()[0];
+    r.backend = o.value("--backend").value_or("cpu");
+    r.jsonPath = o.value("--json").value_or("");
+    r.size = o.size("--size");
+    r.maxDepth = o.positiveInt("--max-depth");
+    r.settings.runs = o.positiveInt("--runs").value_or(5);
+    r.settings.spp = o.positiveInt("--spp").value_or(4);
+    r.settings.toggles = parseToggles(o);
+    r.quiet = o.has("--quiet");
+    return r;
+}
+
+void benchRays(Backend& backend, const Scene& scene, const CompiledScene& compiled,
+               const BenchSettings& settings, BenchReport& report) {
+    const BenchRays rays =
+        makeBenchRays(compiled, scene.render.width, scene.render.height, scene.render.seed);
+    struct Set {
+        const char* name;
+        const std::vector<Ray>* rays;
+        bool anyHit;
+    };
+    const Set sets[] = {{"primary", &rays.primary, false},
+                        {"diffuse bounce", &rays.diffuse, false},
+                        {"shadow (any hit)", &rays.shadow, true}};
+    for (const bool bvh : {true, false}) {
+        IntegratorToggles toggles = settings.toggles;
+        toggles.bruteForce = !bvh;
+        backend.setToggles(toggles);
+        try {
+            backend.sync(scene, SceneChanges::Settings, {});
+        } catch (const std::invalid_argument& e) {
+            report.add({"rays", "all", "BVH off", 0.0, "Mrays/s", e.what()});
+            continue;
+        }
+        for (const Set& set : sets) {
+            if (set.rays->empty()) continue;
+            const std::vector<double> seconds =
+                backend.traceRays(*set.rays, set.anyHit, settings.runs + 1, nullptr);
+            const std::vector<double> timed(seconds.begin() + 1, seconds.end());  // the first run warms up
+            report.add({"rays", set.name, bvh ? "BVH on" : "BVH off",
+                        double(set.rays->size()) / median(timed) / 1e6, "Mrays/s",
+                        std::to_string(set.rays->size()) + " rays"});
+        }
+    }
+    backend.setToggles(settings.toggles);
+    backend.sync(scene, SceneChanges::Settings, {});
+}
+
+}  // namespace
+
+int runBench(const std::vector<std::string>& args) {
+    const BenchRequest r = parseBench(args);
+    std::unique_ptr<Backend> backend = createBackend(r.backend);
+    ProgressBar bar(!r.quiet);
+    SceneInput input = loadSceneInput(r.scenePath, bar);
+    Scene& scene = input.scene;
+    if (r.size) std::tie(scene.render.width, scene.render.height) = *r.size;
+    if (r.maxDepth) scene.render.maxDepth = *r.maxDepth;
+
+    BenchReport report;
+    backend->setToggles(r.settings.toggles);
+    const SyncReport sync = backend->sync(scene, SceneChanges::All, bar.callback());
+    bar.finish();
+    report.add({"scene", "load", "", input.loadSeconds, "s", r.scenePath});
+    report.add({"scene", "first sync (compile, BVH, upload)", "", sync.seconds, "s", sync.action});
+    report.add({"scene", "triangles traced", "", double(backend->stats().triangles), "", ""});
+    report.add({"scene", "instances", "", double(backend->stats().instances), "", ""});
+    report.add({"scene", "device memory after the first sync", "",
+                double(backend->deviceMemoryBytes()) / (1 << 20), "MiB", ""});
+    // GPU backends: that memory by buffer, so what a scene does not use is seen not to be there.
+    for (const auto& [buffer, bytes] : backend->deviceMemoryByBuffer()) {
+        report.add({"memory", buffer, "after the first sync", double(bytes) / (1 << 20), "MiB",
+                    bytes == 0 ? "not allocated" : ""});
+    }
+    const auto phase = [&](const char* name) {
+        if (!r.quiet) std::fprintf(stderr, "bench: %s...\n", name);
+    };
+    // The host's own compile of the scene: ray sets are made and BVH builds timed from it.
+    const CompiledScene compiled = compileRenderScene(scene);
+    phase("rays");
+    benchRays(*backend, scene, compiled, r.settings, report);
+    phase("path tracing");
+    benchPathTracing(*backend, scene, r.settings, report);
+    phase("BVH builds");
+    benchBvhBuilds(compiled, *backend, r.settings.runs, report);
+    phase("edits");
+    benchEdits(r.backend, scene, r.settings, report);
+    benchEditInFlight(r.backend, scene, r.settings, report);
+    phase("denoise");
+    benchDenoise(*backend, scene, r.settings, report);
+    phase("image check");
+    benchImageCheck(*backend, scene, r.settings, report);
+    if (backend->capabilities().gpuScheduling) {
+        benchWavefrontOverhead(*backend, scene, r.settings, report);
+        benchKernelVariants(report);
+    }
+    report.add({"memory", "device memory after the benchmark", "",
+                double(backend->deviceMemoryBytes()) / (1 << 20), "MiB", ""});
+
+    std::printf("pt-render bench %s: backend %s (%s), %ux%u, depth %u, %u spp per run, median of %u runs\n",
+                r.scenePath.c_str(), backend->name().c_str(), backend->deviceName().c_str(),
+                scene.render.width, scene.render.height, scene.render.maxDepth, r.settings.spp,
+                r.settings.runs);
+    report.print(stdout);
+    if (!r.jsonPath.empty()) {
+        nlohmann::ordered_json j;
+        j["scene"] = r.scenePath;
+        j["backend"] = backend->name();
+        j["device"] = backend->deviceName();
+        j["width"] = scene.render.width;
+        j["height"] = scene.render.height;
+        j["max_depth"] = scene.render.maxDepth;
+        j["runs"] = r.settings.runs;
+        j["rows"] = report.json();
+        writeTextAtomically(r.jsonPath, j.dump(2) + "\n");
+    }
+    return 0;
+}
+
+}  // namespace pt::cli
