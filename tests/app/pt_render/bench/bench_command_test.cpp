@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
-#include "cli_runner.h"
+#include "app/cli_runner.h"
 #include "render/backend/toggle_table.h"
 #include "support/test_paths.h"
 

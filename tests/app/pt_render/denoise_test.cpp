@@ -7,8 +7,8 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "app/cli_runner.h"
 #include "assets/image/exr_layers.h"
-#include "cli_runner.h"
 #include "render/backend/cpu/cpu_backend.h"
 #include "render/util/image_error.h"
 #include "support/load_scene.h"

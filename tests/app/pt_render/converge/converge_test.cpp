@@ -7,7 +7,7 @@
 #include <map>
 #include <sstream>
 
-#include "cli_runner.h"
+#include "app/cli_runner.h"
 #include "support/test_paths.h"
 
 namespace pt {

@@ -4,9 +4,9 @@
 
 #include <cstring>
 
+#include "app/render_test_support.h"
 #include "assets/image/image_write.h"
 #include "assets/scene_json/scene_json.h"
-#include "render_test_support.h"
 #include "support/test_paths.h"
 
 namespace pt {

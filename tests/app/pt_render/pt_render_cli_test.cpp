@@ -14,9 +14,9 @@
 #include <thread>
 #include <vector>
 
+#include "app/cli_runner.h"
 #include "assets/image/image_write.h"
 #include "assets/scene_loader.h"
-#include "cli_runner.h"
 #include "support/test_paths.h"
 
 extern char** environ;

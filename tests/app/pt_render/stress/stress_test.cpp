@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "cli_runner.h"
+#include "app/cli_runner.h"
 #include "pt_render/stress/stress_expectation.h"
 #include "support/test_paths.h"
 

@@ -5,9 +5,9 @@
 #include <cstdlib>
 #include <map>
 
+#include "app/cli_runner.h"
 #include "assets/image/image_metadata.h"
 #include "assets/image/image_write.h"
-#include "cli_runner.h"
 #include "support/test_paths.h"
 
 namespace pt {

@@ -7,8 +7,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "app/cli_runner.h"
 #include "assets/image/exr_layers.h"
-#include "cli_runner.h"
 #include "support/test_paths.h"
 
 namespace pt {

@@ -13,8 +13,8 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "app/cli_runner.h"
 #include "assets/image/image_write.h"
-#include "cli_runner.h"
 #include "support/load_scene.h"
 #include "support/test_paths.h"
 

@@ -4,10 +4,10 @@
 
 #include <algorithm>
 
+#include "app/cli_runner.h"
 #include "assets/color/color_processor.h"
 #include "assets/image/image_metadata.h"
 #include "assets/image/image_read.h"
-#include "cli_runner.h"
 #include "support/test_paths.h"
 
 namespace pt {
