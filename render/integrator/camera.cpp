@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "render/scene/scene.h"
+
 namespace pt {
 
 RenderCamera makeRenderCamera(const Camera& camera, uint32_t width, uint32_t height) {

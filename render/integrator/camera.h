@@ -6,6 +6,8 @@
 
 namespace pt {
 
+struct Camera;  // render/scene/scene.h: the editable form, which per-ray code does not include
+
 // Host: the render form of a Camera for an image of width x height pixels.
 RenderCamera makeRenderCamera(const Camera& camera, uint32_t width, uint32_t height);
 

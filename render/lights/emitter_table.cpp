@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "render/lights/light_sample.h"
+#include "render/sampling/alias_table_builder.h"
 
 namespace pt {
 

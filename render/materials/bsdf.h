@@ -22,7 +22,7 @@
 // direction it returns the weight and pdf of the whole non-delta mixture (one-sample MIS over
 // the lobes), so pdfBsdf() is exactly the density of the directions it produces.
 //
-// kF, a scene feature set (scene_features.h), leaves out the coat without feature::kClearcoat
+// kF, a scene feature set (feature_set.h), leaves out the coat without feature::kClearcoat
 // and the glass lobe without feature::kTransmission: kernels specialised on a scene with
 // neither carry no code for them, the diffuse transmission lobe without
 // feature::kDiffuseTransmission and the sheen without feature::kSheen. The parameters must then
@@ -39,7 +39,7 @@
 #include "render/materials/sheen.h"
 #include "render/math/frame.h"
 #include "render/sampling/warp.h"
-#include "render/scene/scene_features.h"
+#include "render/scene/feature_set.h"
 
 namespace pt {
 

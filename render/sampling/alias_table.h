@@ -1,15 +1,12 @@
 #pragma once
 // Walker/Vose alias table: draws index i with probability weight[i] / sum in O(1).
 #include <cstdint>
-#include <vector>
 
 #include "render/scene/render_scene.h"
 
 namespace pt {
 
-// Host: builds the table. Zero or negative weights are never drawn; all-zero input gives an
-// empty table.
-std::vector<AliasEntry> buildAliasTable(const std::vector<float>& weights);
+// The table is built on the host by alias_table_builder.h.
 
 // Device and host: draws an index from `u` in [0, 1).
 PT_HD uint32_t sampleAliasTable(Span<const AliasEntry> table, float u) {

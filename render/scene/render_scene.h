@@ -9,8 +9,8 @@
 #include "render/math/affine.h"
 #include "render/math/span.h"
 #include "render/math/vec.h"
-#include "render/scene/scene.h"
-#include "render/scene/scene_features.h"
+#include "render/scene/feature_set.h"
+#include "render/scene/scene_kinds.h"
 
 namespace pt {
 

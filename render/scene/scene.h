@@ -10,10 +10,9 @@
 #include "render/materials/material.h"
 #include "render/math/affine.h"
 #include "render/math/vec.h"
+#include "render/scene/scene_kinds.h"
 
 namespace pt {
-
-enum class GeometryKind : uint32_t { Triangles = 0, Spheres = 1 };
 
 // One glTF morph target of a Mesh: per-vertex offsets added, scaled by the target's weight,
 // to the undeformed vertices (glTF 2.0 section 3.7.2.2). Indexed like Mesh::positions.
@@ -73,9 +72,6 @@ struct NamedMaterial {
     Material params;
     int32_t object = -1;  // -1: defined by the scene JSON; else imported by that object
 };
-
-enum class WrapMode : uint32_t { Repeat = 0, ClampToEdge = 1, MirroredRepeat = 2 };
-enum class TexelFormat : uint32_t { RGBA8 = 0, RGBA32F = 1 };
 
 // An image as decoded from its file. Whether its texels are sRGB-encoded is decided by the
 // slot that samples it (base color and emission are; normal and metallic-roughness are not).
@@ -152,8 +148,6 @@ struct SceneObject {
 // lists rather than a Scene so that editor commands can apply it to a copy of the layout.
 void selectObjectVariant(std::vector<SceneObject>& objects, std::vector<Instance>& instances, uint32_t object,
                          int32_t variant);
-
-enum class LightType : uint32_t { Point = 0, Spot = 1, Directional = 2 };
 
 // A punctual light (KHR_lights_punctual), in world space. Photometric units as in glTF, taken
 // as the renderer's radiometric units without a 683 lm/W factor, the same convention as

@@ -1,5 +1,5 @@
 #pragma once
-// The feature sets the CUDA kernels are compiled for (scene_features.h; Cycles' kernel
+// The feature sets the CUDA kernels are compiled for (feature_set.h; Cycles' kernel
 // features). Each variant is the megakernel and the wavefront stages instantiated with its set
 // as a compile-time constant, so code a scene does not need is not in the kernel that runs.
 // A scene runs the first variant, from the leanest, whose set covers the scene's; "full", the
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "render/scene/scene_features.h"
+#include "render/scene/feature_set.h"
 
 namespace pt::cuda {
 

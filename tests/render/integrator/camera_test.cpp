@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "render/lights/environment.h"
+#include "render/scene/scene.h"
 
 namespace pt {
 namespace {

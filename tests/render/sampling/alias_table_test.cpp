@@ -1,8 +1,8 @@
-#include "render/sampling/alias_table.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "render/sampling/alias_table_builder.h"
 
 namespace pt {
 namespace {

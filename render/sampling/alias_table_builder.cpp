@@ -1,4 +1,4 @@
-#include "render/sampling/alias_table.h"
+#include "render/sampling/alias_table_builder.h"
 
 namespace pt {
 
