@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "render/integrator/camera.h"
-#include "render/scene/compile_scene.h"
 
 namespace pt::editor {
 
@@ -25,15 +24,9 @@ PickResult pick(Backend& backend, const Scene& scene, float px, float py) {
     std::vector<Hit> hits;
     backend.traceRays({ray}, false, 1, &hits);
     if (hits.empty() || !hits[0].valid()) return result;
-    // Render instance k is the k-th traced scene instance.
-    uint32_t traced = 0;
-    for (size_t i = 0; i < scene.instances.size(); ++i) {
-        if (!isTracedInstance(scene, i)) continue;
-        if (traced++ != hits[0].instance) continue;
-        result.instance = int32_t(i);
-        result.object = scene.instances[i].object;
-        break;
-    }
+    result.instance = backend.sceneInstance(hits[0].instance);
+    if (result.instance >= 0 && size_t(result.instance) < scene.instances.size())
+        result.object = scene.instances[size_t(result.instance)].object;
     result.distance = hits[0].t * length(ray.direction);
     const RenderCamera rc = makeRenderCamera(scene.camera, width, height);
     result.focusDistance = result.distance * std::fabs(dot(normalize(ray.direction), rc.forward));

@@ -15,7 +15,7 @@
 #include <optional>
 #include <vector>
 
-#include "render/scene/render_scene.h"
+#include "render/kernel/render_scene.h"
 #include "render/scene/scene.h"
 
 namespace pt::editor {

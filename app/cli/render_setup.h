@@ -1,5 +1,5 @@
 #pragma once
-// What the commands that render a scene for measurement (reference, converge, stress) share:
+// What the commands that render a scene (render, bench, reference, converge, stress) share:
 // the --backend, --size, --seed, --max-depth, --threads and --quiet options, a backend with
 // the scene loaded and synced, and the thread limit.
 #include <tbb/global_control.h>

@@ -6,8 +6,8 @@
 #include "cli/cli_options.h"
 #include "cli/scene_input.h"
 #include "pt_render/commands.h"
-#include "render/scene/compile_scene.h"
-#include "render/scene/scene_features.h"
+#include "render/compile/compile_scene.h"
+#include "render/compile/scene_features.h"
 
 namespace pt::cli {
 

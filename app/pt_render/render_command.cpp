@@ -16,12 +16,13 @@
 #include "cli/display_options.h"
 #include "cli/interrupt.h"
 #include "cli/progress_bar.h"
+#include "cli/render_setup.h"
 #include "cli/scene_input.h"
 #include "cli/toggle_options.h"
 #include "pt_render/commands.h"
 #include "render/backend/backend.h"
+#include "render/compile/scene_features.h"
 #include "render/display/display_transform.h"
-#include "render/scene/scene_features.h"
 #include "render/util/stopwatch.h"
 
 namespace pt::cli {
@@ -29,12 +30,11 @@ namespace pt::cli {
 namespace {
 
 struct RenderRequest {
-    std::string scenePath, exrPath, pngPath, statsPath, backend = "cpu";
-    std::optional<uint32_t> spp, seed, threads, maxDepth;
+    std::string scenePath, exrPath, pngPath, statsPath;
+    RenderSetup setup;  // --backend --size --seed --max-depth --threads --quiet
+    std::optional<uint32_t> spp;
     std::optional<double> seconds;
-    std::optional<std::pair<uint32_t, uint32_t>> size;
     IntegratorToggles toggles;
-    bool quiet = false;
     AovMask aovs = 0;   // --aov: EXR layers beside the beauty (only these are accumulated)
     bool half = false;  // --half: 16-bit EXR channels (exr_layers.h says which stay float)
     // --denoise: the EXR gains a denoised layer beside the raw beauty, the PNG shows the
@@ -56,11 +56,12 @@ void parseExrOptions(const Options& o, RenderRequest& r) {
 }
 
 RenderRequest parseRequest(const std::vector<std::string>& args) {
-    const Options o(args,
-                    joined({"-o", "--png", "--spp", "--time", "--size", "--seed", "--threads", "--backend",
-                            "--stats", "--max-depth", "--aov"},
-                           joined(toggleValuedFlags(), displayValuedFlags())),
-                    joined(joined({"--quiet", "--half", "--denoise"}, toggleSwitches()), displaySwitches()));
+    const Options o(
+        args,
+        joined(joined({"-o", "--png", "--spp", "--time", "--stats", "--aov"}, renderSetupValuedFlags()),
+               joined(toggleValuedFlags(), displayValuedFlags())),
+        joined(joined(joined({"--half", "--denoise"}, renderSetupSwitches()), toggleSwitches()),
+               displaySwitches()));
     if (o.positional().size() != 1) throw UsageError("expected one SCENE argument");
     RenderRequest r;
     r.scenePath = o.positional()[0];
@@ -69,15 +70,10 @@ RenderRequest parseRequest(const std::vector<std::string>& args) {
     if (r.exrPath.empty() && r.pngPath.empty())
         throw UsageError("give an output: -o OUT.exr and/or --png OUT.png");
     r.statsPath = o.value("--stats").value_or("");
-    r.backend = o.value("--backend").value_or("cpu");
+    r.setup = parseRenderSetup(o);
     r.spp = o.positiveInt("--spp");
     r.seconds = o.positiveNumber("--time");
     if (r.spp && r.seconds) throw UsageError("--spp and --time exclude each other");
-    r.seed = o.nonNegativeInt("--seed");
-    r.threads = o.positiveInt("--threads");
-    r.maxDepth = o.nonNegativeInt("--max-depth");
-    r.size = o.size("--size");
-    r.quiet = o.has("--quiet");
     r.toggles = parseToggles(o);
     parseExrOptions(o, r);
     r.display = parseDisplayOptions(o);
@@ -148,7 +144,7 @@ void writeRenderExr(const RenderRequest& r, const Backend& backend, const Camera
                                 r.half ? ExrPixelType::Half : ExrPixelType::Float, camera, metadata);
     exr.denoised = denoised;
     writeLayeredExr(r.exrPath, exr);
-    if (r.quiet) return;
+    if (r.setup.quiet) return;
     std::string channels = "R G B A";
     for (const AovImage& layer : exr.aovs) {
         for (const std::string& name : aovExrChannelNames(layer.aov)) channels += " " + name;
@@ -174,19 +170,13 @@ void checkOutputFolders(const RenderRequest& r) {
 int runRender(const std::vector<std::string>& args) {
     const RenderRequest r = parseRequest(args);
     checkOutputFolders(r);
-    std::unique_ptr<tbb::global_control> threadLimit;
-    if (r.threads) {
-        threadLimit =
-            std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, *r.threads);
-    }
-    std::unique_ptr<Backend> backend = createBackend(r.backend);
+    const std::unique_ptr<tbb::global_control> threadLimit = limitThreads(r.setup);
+    std::unique_ptr<Backend> backend = createBackend(r.setup.backend);
     const InterruptCatcher interrupt;  // Ctrl-C from here on writes what was rendered
-    ProgressBar bar(!r.quiet);
+    ProgressBar bar(!r.setup.quiet);
     SceneInput input = loadSceneInput(r.scenePath, bar);
     Scene& scene = input.scene;
-    if (r.size) std::tie(scene.render.width, scene.render.height) = *r.size;
-    if (r.seed) scene.render.seed = *r.seed;
-    if (r.maxDepth) scene.render.maxDepth = *r.maxDepth;
+    applyRenderSetup(r.setup, scene);
     const uint32_t targetSpp = r.spp.value_or(scene.render.spp);
     // Before rendering, so that a bad config or view name fails fast.
     std::optional<DisplayProcessor> display;
@@ -230,7 +220,7 @@ int runRender(const std::vector<std::string>& args) {
         std::printf("%s\n", r.pngPath.c_str());
     }
     if (!r.statsPath.empty()) writeStats(r, *backend, input.loadSeconds, sync);
-    if (!r.quiet) {
+    if (!r.setup.quiet) {
         std::fprintf(
             stderr,
             "%ux%u, %u spp in %.2f s (load %.2f s, BVH %.3f s), %.1f Mrays/s, %llu non-finite samples\n",

@@ -25,8 +25,8 @@ constexpr CommandUsage kCommands[] = {
       the denoised image (an a-trous filter guided by albedo, normal, depth, alpha and variance).
 )",
      kToggles | kDisplay},
-    {"bench", R"(  bench SCENE [--backend cpu|cuda] [--size WxH] [--max-depth N] [--runs N] [--spp N]
-                [--json OUT.json] [--quiet] [TOGGLES]
+    {"bench", R"(  bench SCENE [--backend cpu|cuda] [--size WxH] [--seed N] [--threads N] [--max-depth N]
+                [--runs N] [--spp N] [--json OUT.json] [--quiet] [TOGGLES]
       Medians of several runs: traversal Mrays/s (primary, diffuse, shadow; BVH on and off),
       path tracing spp/s and Mpaths/s with each toggle flipped, BLAS/TLAS build and refit
       times (CPU binned SAH; GPU LBVH with the cuda backend), edit-to-first-frame latency, and

@@ -46,7 +46,7 @@ public:
     // build, the built-in operators draw and shaderError() says why.
     void setColorView(const ColorView& color);
     const std::string& shaderError() const { return shaderError_; }
-    // A frame whose pixels arrive on the GPU (CudaGlFrame): sizes the texture, keeps the AOV.
+    // A frame whose pixels arrive on the GPU (InteropFrame): sizes the texture, keeps the AOV.
     void prepareDeviceFrame(const DisplayFrame& frame);
     GLuint texture() const { return texture_; }
     // Uploads the reference once per image (it is compared by pointer); nullptr: none.

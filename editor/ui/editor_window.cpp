@@ -13,18 +13,15 @@
 #include "editor/scene_edits.h"
 #include "editor/selection_box.h"
 #include "editor/ui/background_render_threads.h"
-#include "editor/ui/cuda_gl_frame.h"
 #include "editor/ui/gl.h"
 #include "editor/ui/input_events.h"
+#include "editor/ui/interop_frame.h"
 #include "editor/ui/panel_layout.h"
 #include "editor/ui/redraw_policy.h"
 #include "editor/ui/screenshot.h"
 #include "editor/ui/viewport_input.h"
 #include "editor/ui/viewport_toolbar.h"
 #include "editor/viewport_resolution.h"
-#if defined(PT_HAVE_CUDA)
-#include "render/backend/cuda/cuda_device.h"
-#endif
 #include "render/util/stopwatch.h"
 
 namespace pt::editor {
@@ -53,11 +50,7 @@ void onDrop(GLFWwindow*, int count, const char** paths) {
 }
 
 std::string chooseBackend(const std::string& requested) {
-    if (!requested.empty()) return requested;
-#if defined(PT_HAVE_CUDA)
-    if (cuda::deviceAvailable()) return "cuda";
-#endif
-    return "cpu";
+    return requested.empty() ? defaultBackendName() : requested;
 }
 
 // The numbered path of the n-th F12 screenshot: shot.png, shot-1.png, shot-2.png, ...
@@ -268,7 +261,7 @@ public:
 
 // A new frame on screen: through CUDA-GL interop for the CUDA backend's beauty where the GL
 // allows it, else from the frame's host copy.
-void showFrame(EditorUi& ui, DisplayView& view, CudaGlFrame& interop) {
+void showFrame(EditorUi& ui, DisplayView& view, InteropFrame& interop) {
     const DisplayFrame& frame = ui.lastFrame;
     const bool device = ui.backendCaps.deviceFrames && frame.aov < 0;
     if (!frame.rgba.empty()) view.upload(frame);
@@ -286,7 +279,7 @@ void showFrame(EditorUi& ui, DisplayView& view, CudaGlFrame& interop) {
 
 int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
     DisplayView view;
-    CudaGlFrame interop;
+    InteropFrame interop;
     ViewportInput input;
     ImageRect image;
     int64_t renderedFrames = 0;

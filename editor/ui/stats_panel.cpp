@@ -8,7 +8,7 @@
 
 #include "editor/ui/error_plot.h"
 #include "editor/ui/widgets.h"
-#include "render/scene/scene_features.h"
+#include "render/compile/scene_features.h"
 
 namespace pt::editor {
 

@@ -11,12 +11,13 @@
 
 #include "render/backend/aov.h"
 #include "render/backend/device_bvh_figures.h"
+#include "render/backend/kernel_figures.h"
 #include "render/backend/toggle_table.h"
 #include "render/bvh/hit.h"
+#include "render/compile/scene_features.h"
 #include "render/math/ray.h"
 #include "render/scene/scene.h"
 #include "render/scene/scene_changes.h"
-#include "render/scene/scene_features.h"
 #include "render/util/progress.h"
 
 namespace pt {
@@ -52,7 +53,7 @@ struct BackendStats {
     uint64_t nonfiniteSamples = 0;  // NaN/Inf samples dropped since the last reset
     uint64_t triangles = 0;         // traced (over instances)
     uint32_t instances = 0;
-    // What the scene uses (render/scene/scene_features.h), with the AOVs and brute-force bits
+    // What the scene uses (render/compile/scene_features.h), with the AOVs and brute-force bits
     // this backend's outputs and toggles add; recomputed at every sync.
     FeatureSet features = 0;
     // GPU backends: the kernel variant that runs (render/backend/cuda/kernel_variants.h) and the
@@ -109,6 +110,9 @@ public:
     // (may be null) receives the last run's results.
     virtual std::vector<double> traceRays(const std::vector<Ray>& rays, bool anyHit, uint32_t runs,
                                           std::vector<Hit>* hits) = 0;
+    // The Scene::instances index of a hit's instance (Hit::instance), as of the last sync;
+    // -1 where there is none.
+    virtual int32_t sceneInstance(uint32_t hitInstance) const = 0;
     virtual uint64_t deviceMemoryBytes() const { return 0; }  // GPU backends: buffers allocated
     // GPU backends: every device buffer's allocated bytes by name (geometry, BVHs, materials,
     // lights, accumulation, scheduler, scratch), summing to deviceMemoryBytes(); empty elsewhere.
@@ -129,6 +133,8 @@ public:
     virtual std::shared_ptr<void> allocateDeviceFrame() const { return nullptr; }
     // GPU backends: the device BVH builders timed on `input` (device_bvh_figures.h); nothing
     // where the backend builds no BVH on a device.
+    // GPU backends: the kernel variants compiled and each kernel's resources (kernel_figures.h).
+    virtual KernelFigures kernelFigures() const { return {}; }
     virtual std::optional<DeviceBvhFigures> measureDeviceBvh(const BvhBuildInput& input, uint32_t runs) {
         (void)input, (void)runs;
         return std::nullopt;
@@ -196,5 +202,8 @@ void requireDenoiseGuides(const Backend& backend);
 // "cpu", or "cuda" where built. Throws std::invalid_argument naming the backends available,
 // or, for "cuda" on a machine without a usable GPU, saying why.
 std::unique_ptr<Backend> createBackend(const std::string& name);
+// The backend a front end opens when the user names none: "cuda" where this build has it and
+// a usable GPU is present, else "cpu".
+std::string defaultBackendName();
 
 }  // namespace pt

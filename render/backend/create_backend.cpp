@@ -4,6 +4,7 @@
 #include "render/backend/cpu/cpu_backend.h"
 #if PT_HAVE_CUDA
 #include "render/backend/cuda/cuda_backend.h"
+#include "render/backend/cuda/cuda_device.h"
 #endif
 
 namespace pt {
@@ -27,6 +28,13 @@ std::unique_ptr<Backend> createBackend(const std::string& name) {
     }
     throw std::invalid_argument("unknown backend \"" + name + "\" (available: cpu)");
 #endif
+}
+
+std::string defaultBackendName() {
+#if PT_HAVE_CUDA
+    if (cuda::deviceAvailable()) return "cuda";
+#endif
+    return "cpu";
 }
 
 }  // namespace pt

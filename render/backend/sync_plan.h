@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "render/backend/backend.h"
-#include "render/scene/compile_scene.h"
+#include "render/compile/compile_scene.h"
 #include "render/scene/scene_changes.h"
 #include "render/util/stopwatch.h"
 

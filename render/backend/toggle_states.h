@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "render/backend/backend.h"
-#include "render/scene/render_scene.h"
+#include "render/kernel/render_scene.h"
 
 namespace pt {
 

@@ -14,7 +14,7 @@ struct IntegratorToggles {
     bool multipleImportance = true;
     bool russianRoulette = true;
     bool bruteForce = false;  // BVH off: validation only, refused above a triangle budget
-    // Small instances' triangles in one world-space BLAS (render/scene/merged_geometry.h).
+    // Small instances' triangles in one world-space BLAS (render/compile/merged_geometry.h).
     bool mergeInstances = true;
     float clampRadiance = 0.0f;  // firefly clamp on indirect luminance per sample; 0 = off
     // Jitter primary rays inside the pixel (antialiasing). Off: every sample of a pixel starts

@@ -5,7 +5,7 @@
 #include "render/bvh/hit.h"
 #include "render/bvh/sphere_intersect.h"
 #include "render/bvh/triangle_intersect.h"
-#include "render/scene/render_scene.h"
+#include "render/kernel/render_scene.h"
 
 namespace pt {
 

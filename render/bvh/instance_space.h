@@ -12,9 +12,9 @@
 //
 // Object to world: objectToWorld.transformPoint, whose only large error is the final rounding
 // to the world coordinate's ulp.
+#include "render/kernel/render_scene.h"
 #include "render/math/affine.h"
 #include "render/math/float_error.h"
-#include "render/scene/render_scene.h"
 
 namespace pt {
 

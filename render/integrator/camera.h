@@ -1,8 +1,8 @@
 #pragma once
 // Camera rays: pinhole or thin lens, with a box-filtered jitter inside the pixel.
+#include "render/kernel/render_scene.h"
 #include "render/math/ray.h"
 #include "render/sampling/warp.h"
-#include "render/scene/render_scene.h"
 
 namespace pt {
 

@@ -9,8 +9,8 @@
 //     unless KHR_materials_volume_scatter's multiscatterColor gives an albedo (van de Hulst);
 //   - subsurface: colour and mean free path by Chiang et al.'s inversion (random_walk_albedo.h).
 #include "render/integrator/path_state.h"
+#include "render/kernel/render_scene.h"
 #include "render/materials/random_walk_albedo.h"
-#include "render/scene/render_scene.h"
 
 namespace pt {
 

@@ -5,9 +5,9 @@
 // 1997) for area lights and the environment, at full weight for delta (punctual) lights, and
 // the firefly clamp on what reaches the first vertex through others.
 #include "render/integrator/path_state.h"
+#include "render/kernel/render_scene.h"
 #include "render/lights/light_sample.h"
 #include "render/sampling/warp.h"
-#include "render/scene/render_scene.h"
 
 namespace pt {
 

@@ -10,7 +10,7 @@
 // and, where the volume scatters, scatter inside it (medium_scattering.h). AOVs (aov.h) are recorded at the
 // camera ray's first visible surface where the caller passes an AovSample.
 //
-// Every stage takes the feature set kF it is compiled for (render/scene/scene_features.h):
+// Every stage takes the feature set kF it is compiled for (render/compile/scene_features.h):
 // the CUDA backend instantiates them per kernel variant, so a scene without textures, volumes,
 // clearcoat, ... runs code without them; the default, kAllFeatures, is the generic code.
 #include "render/bvh/traversal.h"

@@ -10,9 +10,9 @@
 // and are never flipped for mirroring; the emitter code agrees (emitter_sample.h).
 #include "render/bvh/hit.h"
 #include "render/bvh/instance_space.h"
+#include "render/kernel/render_scene.h"
 #include "render/lights/sphere_light.h"
 #include "render/math/ray.h"
-#include "render/scene/render_scene.h"
 
 namespace pt {
 

@@ -5,11 +5,11 @@
 // object space; a mirroring instance transform keeps the front face, as glTF specifies), as
 // pbrt's one-sided area lights do.
 #include "render/bvh/instance_space.h"
+#include "render/kernel/render_scene.h"
 #include "render/materials/alpha.h"
 #include "render/materials/texture_sample.h"
 #include "render/sampling/alias_table.h"
 #include "render/sampling/warp.h"
-#include "render/scene/render_scene.h"
 
 namespace pt {
 

@@ -16,8 +16,8 @@
 // bright sky, still gets at least a quarter of the samples, and neither starves the other.
 #include <vector>
 
+#include "render/kernel/render_scene.h"
 #include "render/lights/environment_distribution.h"
-#include "render/scene/render_scene.h"
 
 namespace pt {
 

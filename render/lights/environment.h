@@ -2,8 +2,8 @@
 // Radiance from the environment for rays that leave the scene: a constant color, or an
 // equirectangular image (+Y up; u = 0.5 looks down -Z, u grows towards +X; v = 0 is up),
 // rotated about +Y and scaled by its intensity.
+#include "render/kernel/render_scene.h"
 #include "render/materials/texture_sample.h"
-#include "render/scene/render_scene.h"
 
 namespace pt {
 

@@ -3,7 +3,7 @@
 // (render/lights/environment_sampling.h samples it), and the environment's average radiance.
 #include <vector>
 
-#include "render/scene/render_scene.h"
+#include "render/kernel/render_scene.h"
 #include "render/scene/scene.h"
 
 namespace pt {

@@ -3,7 +3,7 @@
 // with probability 1 once picked, and BSDF sampling never hits them. Spot lights fade
 // between the inner and outer cone with the extension's smooth falloff (its implementation
 // note): t = saturate((cos(angle) - cos(outer)) / max(1e-3, cos(inner) - cos(outer))), t^2.
-#include "render/scene/render_scene.h"
+#include "render/kernel/render_scene.h"
 
 namespace pt {
 

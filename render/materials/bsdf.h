@@ -32,6 +32,7 @@
 // frame's x (feature::kAnisotropy); KHR_materials_iridescence puts a thin film (iridescence.h)
 // on the Fresnel terms of the specular and glass lobes (feature::kIridescence), and the diffuse
 // base under it gets what the film lets through at wo.
+#include "render/kernel/feature_set.h"
 #include "render/materials/clearcoat.h"
 #include "render/materials/iridescence.h"
 #include "render/materials/layered_diffuse.h"
@@ -39,7 +40,6 @@
 #include "render/materials/sheen.h"
 #include "render/math/frame.h"
 #include "render/sampling/warp.h"
-#include "render/scene/feature_set.h"
 
 namespace pt {
 

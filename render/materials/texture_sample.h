@@ -1,7 +1,7 @@
 #pragma once
 // Texture lookups: KHR_texture_transform, glTF wrap modes, bilinear or nearest filtering,
 // and sRGB decode for color slots. Returns linear RGBA.
-#include "render/scene/render_scene.h"
+#include "render/kernel/render_scene.h"
 
 namespace pt {
 

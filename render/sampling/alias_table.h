@@ -2,9 +2,16 @@
 // Walker/Vose alias table: draws index i with probability weight[i] / sum in O(1).
 #include <cstdint>
 
-#include "render/scene/render_scene.h"
+#include "render/math/hd.h"
+#include "render/math/span.h"
 
 namespace pt {
+
+// Walker alias table entry: pick i uniformly, keep it with probability `keep`, else `alias`.
+struct AliasEntry {
+    float keep;
+    uint32_t alias;
+};
 
 // The table is built on the host by alias_table_builder.h.
 

@@ -1,6 +1,7 @@
 #pragma once
 // Host: builds the Walker/Vose alias table that alias_table.h samples. Apart from it so per-ray
 // code, which only samples, does not include std::vector.
+#include <cstddef>
 #include <vector>
 
 #include "render/sampling/alias_table.h"

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "render/kernel/scene_kinds.h"
 #include "render/materials/material.h"
 #include "render/math/affine.h"
 #include "render/math/vec.h"
-#include "render/scene/scene_kinds.h"
 
 namespace pt {
 

@@ -2,13 +2,13 @@
 // shared sample asset shows (sheen, diffuse transmission, anisotropy, iridescence, dispersion;
 // scenes/models/make_extension_samples.py). Each loads without a warning, its extension
 // honoured, and the scene renders finite on the CPU (CUDA against the CPU:
-// tests/cuda/cuda_backend_test.cpp).
+// tests/render/backend/cuda/cuda_backend_test.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "render/backend/cpu/cpu_backend.h"
-#include "render/scene/scene_features.h"
+#include "render/compile/scene_features.h"
 #include "support/load_scene.h"
 #include "support/test_paths.h"
 

@@ -9,8 +9,8 @@
 
 #include "assets/scene_loader.h"
 #include "render/bvh/traversal.h"
+#include "render/compile/compile_scene.h"
 #include "render/lights/emitter_sample.h"
-#include "render/scene/compile_scene.h"
 #include "support/test_paths.h"
 
 namespace pt {
@@ -54,7 +54,7 @@ RayBatch makeRays(const RenderScene& scene, Vec3 lo, Vec3 hi, size_t count, uint
 // Whether `hit` lies within a rounding error of its triangle's edges (barycentrics).
 bool nearAnEdge(const Hit& hit) { return std::min(std::min(hit.u, hit.v), 1.0f - hit.u - hit.v) < 1e-3f; }
 
-// Merged small instances (render/scene/merged_geometry.h) are intersected in world space, so
+// Merged small instances (render/compile/merged_geometry.h) are intersected in world space, so
 // a ray aimed exactly at an edge or a vertex (two in three of makeRays' rays) may land on the
 // other side of it than in object space: with `merge`, a difference is allowed where one of
 // the two hits lies on an edge, and t within 1e-6 of the scene's largest coordinate, or 1e-4 of t on the same

@@ -8,7 +8,7 @@
 
 #include "assets/image/image_read.h"
 #include "assets/scene_loader.h"
-#include "render/scene/compile_scene.h"
+#include "render/compile/compile_scene.h"
 #include "support/render_cpu.h"
 #include "support/scene_builder.h"
 #include "support/test_paths.h"

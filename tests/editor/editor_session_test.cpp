@@ -68,6 +68,7 @@ public:
                                   std::vector<Hit>* hits) override {
         return cpu_->traceRays(rays, anyHit, runs, hits);
     }
+    int32_t sceneInstance(uint32_t hitInstance) const override { return cpu_->sceneInstance(hitInstance); }
     uint64_t deviceMemoryBytes() const override { return cpu_->deviceMemoryBytes(); }
     void setAovs(AovMask aovs) override { cpu_->setAovs(aovs); }
     void changeAovs(AovMask aovs) override { cpu_->changeAovs(aovs); }

@@ -7,7 +7,7 @@
 
 #include "assets/input_error.h"
 #include "assets/scene_loader.h"
-#include "render/scene/compile_scene.h"
+#include "render/compile/compile_scene.h"
 #include "support/test_paths.h"
 
 namespace pt::fuzz {

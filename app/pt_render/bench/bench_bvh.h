@@ -6,7 +6,7 @@
 
 #include "pt_render/bench/bench_report.h"
 #include "render/backend/backend.h"
-#include "render/scene/compile_scene.h"
+#include "render/compile/compile_scene.h"
 
 namespace pt::cli {
 

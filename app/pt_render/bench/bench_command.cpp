@@ -1,9 +1,12 @@
 // pt-render bench: traversal, path tracing, BVH build and edit-latency figures of one backend,
 // with the toggles on and off, each the median of several runs after a warm-up.
+#include <tbb/global_control.h>
+
 #include <cstdio>
 
 #include "assets/atomic_file.h"
 #include "cli/cli_options.h"
+#include "cli/render_setup.h"
 #include "cli/scene_input.h"
 #include "cli/toggle_options.h"
 #include "pt_render/bench/bench_bvh.h"
@@ -20,29 +23,23 @@ namespace pt::cli {
 namespace {
 
 struct BenchRequest {
-    std::string scenePath, backend = "cpu", jsonPath;
-    std::optional<std::pair<uint32_t, uint32_t>> size;
-    std::optional<uint32_t> maxDepth;
+    std::string scenePath, jsonPath;
+    RenderSetup setup;  // --backend --size --seed --max-depth --threads --quiet
     BenchSettings settings;
-    bool quiet = false;
 };
 
 BenchRequest parseBench(const std::vector<std::string>& args) {
     const Options o(
-        args,
-        joined({"--backend", "--size", "--json", "--runs", "--spp", "--max-depth"}, toggleValuedFlags()),
-        joined({"--quiet"}, toggleSwitches()));
+        args, joined(joined({"--json", "--runs", "--spp"}, renderSetupValuedFlags()), toggleValuedFlags()),
+        joined(renderSetupSwitches(), toggleSwitches()));
     if (o.positional().size() != 1) throw UsageError("expected one SCENE argument");
     BenchRequest r;
     r.scenePath = o.positional()[0];
-    r.backend = o.value("--backend").value_or("cpu");
+    r.setup = parseRenderSetup(o);
     r.jsonPath = o.value("--json").value_or("");
-    r.size = o.size("--size");
-    r.maxDepth = o.positiveInt("--max-depth");
     r.settings.runs = o.positiveInt("--runs").value_or(5);
     r.settings.spp = o.positiveInt("--spp").value_or(4);
     r.settings.toggles = parseToggles(o);
-    r.quiet = o.has("--quiet");
     return r;
 }
 
@@ -86,12 +83,12 @@ void benchRays(Backend& backend, const Scene& scene, const CompiledScene& compil
 
 int runBench(const std::vector<std::string>& args) {
     const BenchRequest r = parseBench(args);
-    std::unique_ptr<Backend> backend = createBackend(r.backend);
-    ProgressBar bar(!r.quiet);
+    const std::unique_ptr<tbb::global_control> threadLimit = limitThreads(r.setup);
+    std::unique_ptr<Backend> backend = createBackend(r.setup.backend);
+    ProgressBar bar(!r.setup.quiet);
     SceneInput input = loadSceneInput(r.scenePath, bar);
     Scene& scene = input.scene;
-    if (r.size) std::tie(scene.render.width, scene.render.height) = *r.size;
-    if (r.maxDepth) scene.render.maxDepth = *r.maxDepth;
+    applyRenderSetup(r.setup, scene);
 
     BenchReport report;
     backend->setToggles(r.settings.toggles);
@@ -109,7 +106,7 @@ int runBench(const std::vector<std::string>& args) {
                     bytes == 0 ? "not allocated" : ""});
     }
     const auto phase = [&](const char* name) {
-        if (!r.quiet) std::fprintf(stderr, "bench: %s...\n", name);
+        if (!r.setup.quiet) std::fprintf(stderr, "bench: %s...\n", name);
     };
     // The host's own compile of the scene: ray sets are made and BVH builds timed from it.
     const CompiledScene compiled = compileRenderScene(scene);
@@ -120,15 +117,15 @@ int runBench(const std::vector<std::string>& args) {
     phase("BVH builds");
     benchBvhBuilds(compiled, *backend, r.settings.runs, report);
     phase("edits");
-    benchEdits(r.backend, scene, r.settings, report);
-    benchEditInFlight(r.backend, scene, r.settings, report);
+    benchEdits(r.setup.backend, scene, r.settings, report);
+    benchEditInFlight(r.setup.backend, scene, r.settings, report);
     phase("denoise");
     benchDenoise(*backend, scene, r.settings, report);
     phase("image check");
     benchImageCheck(*backend, scene, r.settings, report);
     if (backend->capabilities().gpuScheduling) {
         benchWavefrontOverhead(*backend, scene, r.settings, report);
-        benchKernelVariants(report);
+        benchKernelVariants(*backend, report);
     }
     report.add({"memory", "device memory after the benchmark", "",
                 double(backend->deviceMemoryBytes()) / (1 << 20), "MiB", ""});

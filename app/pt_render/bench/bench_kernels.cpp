@@ -7,14 +7,10 @@
 #include <regex>
 #include <string>
 
-#include "render/scene/scene_features.h"
-#if PT_HAVE_CUDA
-#include "render/backend/cuda/kernel_variants.h"
-#endif
+#include "render/compile/scene_features.h"
 
 namespace pt::cli {
 
-#if PT_HAVE_CUDA
 namespace {
 
 // Instruction count of every kernel in this executable's machine code, by mangled name, from
@@ -50,16 +46,16 @@ std::map<std::string, int> sassInstructionCounts() {
 }
 
 }  // namespace
-#endif
 
-void benchKernelVariants(BenchReport& report) {
-#if PT_HAVE_CUDA
-    for (const cuda::KernelVariant& v : cuda::kKernelVariants) {
+void benchKernelVariants(const Backend& backend, BenchReport& report) {
+    const KernelFigures figures = backend.kernelFigures();
+    for (const KernelVariantFigures& v : figures.variants) {
         report.add({"kernels", "variant features", v.name, double(featureNames(v.features).size()),
                     "features", v.features == kAllFeatures ? "all" : describeFeatures(v.features)});
     }
+    if (figures.kernels.empty()) return;
     const std::map<std::string, int> instructions = sassInstructionCounts();
-    for (const cuda::KernelResources& k : cuda::kernelResources()) {
+    for (const KernelResources& k : figures.kernels) {
         const std::string variant = k.variant + ", " + k.kernel;
         report.add({"kernels", "registers per thread", variant, double(k.registers), "", ""});
         report.add(
@@ -69,9 +65,6 @@ void benchKernelVariants(BenchReport& report) {
                     found != instructions.end() ? double(found->second) : 0.0, "",
                     found != instructions.end() ? "" : "no cuobjdump, or the symbol is not in its output"});
     }
-#else
-    (void)report;
-#endif
 }
 
 }  // namespace pt::cli

@@ -4,8 +4,8 @@
 // shadow ray from each camera hit towards a light sample.
 #include <vector>
 
+#include "render/compile/compile_scene.h"
 #include "render/math/ray.h"
-#include "render/scene/compile_scene.h"
 
 namespace pt::cli {
 

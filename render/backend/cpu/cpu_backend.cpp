@@ -9,12 +9,12 @@
 #include <atomic>
 
 #include "render/backend/mean_image.h"
-#include "render/backend/sync_plan.h"
+#include "render/backend/sync_steps.h"
 #include "render/backend/toggle_states.h"
+#include "render/compile/host_refit.h"
+#include "render/compile/scene_features.h"
 #include "render/integrator/camera.h"
 #include "render/integrator/path_tracer.h"
-#include "render/scene/host_refit.h"
-#include "render/scene/scene_features.h"
 #include "render/util/stopwatch.h"
 
 namespace pt {
@@ -24,58 +24,7 @@ SyncReport CpuBackend::sync(const Scene& scene, const SceneDelta& changes, const
     SyncReport report;
     const bool resized = scene.render.width != width_ || scene.render.height != height_;
     const SyncPlan plan = planSync(compiled_.get(), scene, changes);
-    SyncActions actions;
-    if (plan.reset) actions.add(SyncAction::Reset);
-    // Brute force (validation only) keeps no BVH to refit.
-    bool compile = plan.fullBuild || ((plan.instances || plan.refitGeometry) && compiled_->bruteForce);
-    bool lights = plan.lights;
-    bool tlas = false;
-    if (!compile && plan.refitGeometry) {
-        bool refitted = false;
-        compile = !refitMovedMeshes(scene, plan.meshes, report, refitted);
-        if (!compile && refitted) {
-            actions.add(SyncAction::Refit);
-            tlas = lights = true;  // the instances' world boxes moved; emitter areas changed
-        }
-    }
-    if (!compile && plan.materials) {
-        timedHostStep(report, "materials", [&] {
-            lights |= updateEditedMaterials(scene, *compiled_, plan.materialIds).emissionChanged;
-        });
-        actions.add(SyncAction::Materials);
-    }
-    if (!compile && plan.instances) {
-        // Transforms and visibility: the instances, then the TLAS over them; a merged instance
-        // that moved moves its copy in the merged BLAS, which is refitted.
-        bool mergedMoved = false;
-        timedHostStep(report, "instances", [&] { mergedMoved = compileInstances(scene, *compiled_); });
-        if (mergedMoved) {
-            compile = !refitOnHost(compiled_->merged.blas, report);
-            actions.add(SyncAction::Refit);
-        }
-        tlas = lights = true;  // emitters name instances, and the scene's bounds weigh distant lights
-    }
-    if (!compile && tlas) {
-        report.bvhSeconds += timedHostStep(report, "TLAS", [&] { buildTlas(*compiled_); });
-        actions.add(SyncAction::Tlas);
-    }
-    if (compile) {
-        CompileOptions options;
-        options.bruteForce = toggles_.bruteForce;
-        options.mergeSmallInstances = toggles_.mergeInstances;
-        compiled_ = std::make_unique<CompiledScene>(compileRenderScene(scene, options, progress));
-        builtSah_.assign(compiled_->blases.size(), kSahUnknown);  // measured at a first refit
-        actions.add(SyncAction::FullBuild);
-        report.bvhSeconds = compiled_->stats.blasSeconds + compiled_->stats.tlasSeconds;
-    } else if (lights) {
-        // The environment's sampling tables change only with the environment.
-        timedHostStep(report, "lights", [&] {
-            compileLights(scene, *compiled_,
-                          plan.environment ? LightsUpdate::All : LightsUpdate::KeepEnvironment);
-        });
-        actions.add(SyncAction::Lights);
-    }
-    report.action = syncActionName(actions.most);
+    report.action = syncActionName(executeSyncPlan(plan, scene, *this, report, progress));
     compiled_->camera = makeRenderCamera(scene.camera, scene.render.width, scene.render.height);
     compiled_->settings = compileSettings(scene.render);
     // Edits patch the compiled scene; what it uses now is what the kernels must cover.
@@ -90,6 +39,55 @@ SyncReport CpuBackend::sync(const Scene& scene, const SceneDelta& changes, const
     stats_.instances = compiled_->stats.instanceCount;
     report.seconds = secondsSince(start);
     return report;
+}
+
+bool CpuBackend::refitMeshes(const Scene& scene, const TouchedIds& meshes, SyncReport& report,
+                             SyncActions& actions, bool* moved) {
+    if (compiled_->bruteForce) return false;  // brute force (validation only) keeps no BVH to refit
+    if (!refitMovedMeshes(scene, meshes, report, *moved)) return false;
+    if (*moved) actions.add(SyncAction::Refit);
+    return true;
+}
+
+bool CpuBackend::updateMaterials(const Scene& scene, const TouchedIds& materials, SyncReport& report) {
+    bool emissionChanged = false;
+    timedHostStep(report, "materials", [&] {
+        emissionChanged = updateEditedMaterials(scene, *compiled_, materials).emissionChanged;
+    });
+    return emissionChanged;
+}
+
+bool CpuBackend::updateInstances(const Scene& scene, SyncReport& report, SyncActions& actions,
+                                 bool* countChanged) {
+    if (compiled_->bruteForce) return false;
+    const size_t before = compiled_->instances.size();
+    // A merged instance that moved moves its copy in the merged BLAS, which is refitted.
+    bool mergedMoved = false;
+    timedHostStep(report, "instances", [&] { mergedMoved = compileInstances(scene, *compiled_); });
+    *countChanged = compiled_->instances.size() != before;
+    if (!mergedMoved) return true;
+    actions.add(SyncAction::Refit);
+    return refitOnHost(compiled_->merged.blas, report);
+}
+
+void CpuBackend::buildTlas(SyncReport& report) {
+    report.bvhSeconds += timedHostStep(report, "TLAS", [&] { pt::buildTlas(*compiled_); });
+}
+
+void CpuBackend::updateLights(const Scene& scene, bool environment, SyncReport& report) {
+    // The environment's sampling tables change only with the environment.
+    timedHostStep(report, "lights", [&] {
+        compileLights(scene, *compiled_, environment ? LightsUpdate::All : LightsUpdate::KeepEnvironment);
+    });
+}
+
+void CpuBackend::fullBuild(const Scene& scene, const ProgressFn& progress, SyncReport& report) {
+    CompileOptions options;
+    options.bruteForce = toggles_.bruteForce;
+    options.mergeSmallInstances = toggles_.mergeInstances;
+    compiled_ = std::make_unique<CompiledScene>(compileRenderScene(scene, options, progress));
+    builtSah_.assign(compiled_->blases.size(), kSahUnknown);  // measured at a first refit
+    report.bvhSeconds = compiled_->stats.blasSeconds + compiled_->stats.tlasSeconds;
 }
 
 bool CpuBackend::refitMovedMeshes(const Scene& scene, const TouchedIds& meshes, SyncReport& report,

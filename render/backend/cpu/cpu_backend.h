@@ -5,12 +5,13 @@
 
 #include "render/backend/backend.h"
 #include "render/backend/host_denoiser.h"
+#include "render/backend/sync_steps.h"
+#include "render/compile/compile_scene.h"
 #include "render/integrator/path_state.h"
-#include "render/scene/compile_scene.h"
 
 namespace pt {
 
-class CpuBackend final : public Backend {
+class CpuBackend final : public Backend, private SyncSteps {
 public:
     std::string name() const override { return "cpu"; }
     SyncReport sync(const Scene& scene, const SceneDelta& changes, const ProgressFn& progress) override;
@@ -24,6 +25,9 @@ public:
     std::vector<ToggleState> toggleStates() const override;
     std::vector<double> traceRays(const std::vector<Ray>& rays, bool anyHit, uint32_t runs,
                                   std::vector<Hit>* hits) override;
+    int32_t sceneInstance(uint32_t hitInstance) const override {
+        return compiled_ ? sceneInstanceOfHit(*compiled_, hitInstance) : -1;
+    }
     void setAovs(AovMask aovs) override { aovsRequested_ = aovs; }
     void changeAovs(AovMask aovs) override;
     AovMask aovs() const override { return aovs_.mask; }
@@ -36,6 +40,18 @@ private:
     template <bool kAovs>
     bool renderTile(const RenderScene& scene, uint32_t y0, uint32_t y1, uint32_t x0, uint32_t x1,
                     uint32_t firstSample, uint32_t passes, PathCounters& counters);
+    // The sync plan's steps (sync_steps.h), on the host: a host refit, materials and
+    // instances compiled in place, the binned-SAH TLAS; the light table after every move (so an
+    // edited scene renders bit for bit what a fresh compile of it renders).
+    bool refitMeshes(const Scene& scene, const TouchedIds& meshes, SyncReport& report, SyncActions& actions,
+                     bool* moved) override;
+    bool updateMaterials(const Scene& scene, const TouchedIds& materials, SyncReport& report) override;
+    bool updateInstances(const Scene& scene, SyncReport& report, SyncActions& actions,
+                         bool* countChanged) override;
+    bool lightsFollowMoves(bool) const override { return true; }
+    void buildTlas(SyncReport& report) override;
+    void updateLights(const Scene& scene, bool environment, SyncReport& report) override;
+    void fullBuild(const Scene& scene, const ProgressFn& progress, SyncReport& report) override;
     // stats_.features: the compiled scene's, plus the AOVs applied now and the brute-force toggle.
     void updateStatsFeatures();
     // Refits BLAS `blas` on the host (host_refit.h); false where its SAH cost has drifted past

@@ -74,77 +74,7 @@ SyncReport CudaBackend::sync(const Scene& scene, const SceneDelta& changes, cons
     SyncReport report;
     const bool resized = scene.render.width != width_ || scene.render.height != height_;
     const SyncPlan plan = planSync(compiled_.get(), scene, changes);
-    bool needsFullBuild = plan.fullBuild;
-    bool lightsDirty = plan.lights;
-    bool tlasDirty = false;
-    SyncActions actions;
-    if (plan.reset) actions.add(SyncAction::Reset);
-
-    if (!needsFullBuild && plan.refitGeometry) {
-        if (const std::optional<SyncAction> done =
-                refitChangedMeshes(scene, plan.meshes, report, needsFullBuild)) {
-            tlasDirty = true;
-            hostTlasStale_ = true;
-            // The light table's weights follow emitter areas and the scene's bounds. Stale weights
-            // would stay unbiased (NEE and MIS read the same table), but emissive triangles
-            // deserve a table that matches their areas; other lights keep theirs.
-            lightsDirty |= compiled_->emitters.triangles + compiled_->emitters.spheres > 0;
-            actions.add(*done);
-        }
-    }
-    if (!needsFullBuild && plan.instances) {
-        const size_t instancesBefore = compiled_->instances.size();
-        // O(instances x slots): transforms, materials of each slot, statistics.
-        bool mergedMoved = false;
-        timedStep(stream_, report, "instances", [&] {
-            mergedMoved = compileInstances(scene, *compiled_);
-            device_.uploadInstances(*compiled_, stream_);
-        });
-        if (mergedMoved) actions.add(refitMergedBlas(report));
-        tlasDirty = true;
-        hostTlasStale_ = true;
-        // Emitters name instances by index: a changed instance list needs a new table, and so
-        // do moved emissive surfaces (see above).
-        lightsDirty |= compiled_->instances.size() != instancesBefore ||
-                       compiled_->emitters.triangles + compiled_->emitters.spheres > 0;
-        actions.add(SyncAction::Tlas);
-    }
-    if (!needsFullBuild && plan.materials) {
-        timedStep(stream_, report, "materials", [&] {
-            const MaterialsUpdate update = updateEditedMaterials(scene, *compiled_, plan.materialIds);
-            lightsDirty |= update.emissionChanged;
-            if (update.all) {
-                device_.uploadMaterials(*compiled_, stream_);
-            } else {
-                for (const uint32_t m : update.copied) device_.uploadMaterial(*compiled_, m, stream_);
-            }
-        });
-        actions.add(SyncAction::Materials);
-    }
-    if (needsFullBuild) {
-        fullBuild(scene, progress, report);
-        actions.add(SyncAction::FullBuild);
-        lightsDirty = false;
-        tlasDirty = false;
-        hostTlasStale_ = false;
-    }
-    if (tlasDirty) buildTlasOnDevice(report);
-    if (lightsDirty) {
-        if (hostTlasStale_) {
-            // The light table weighs the environment and directional lights by the scene's
-            // bounds, the host TLAS's root: O(instances log instances) from the BLAS roots.
-            timedStep(stream_, report, "TLAS (host, scene bounds)", [&] { buildTlas(*compiled_); });
-            hostTlasStale_ = false;
-        }
-        // The environment's sampling tables change only with the environment.
-        timedStep(stream_, report, "lights", [&] {
-            compileLights(scene, *compiled_,
-                          plan.environment ? LightsUpdate::All : LightsUpdate::KeepEnvironment);
-            device_.uploadLights(*compiled_, stream_, plan.environment);
-        });
-        actions.add(SyncAction::Lights);
-    }
-    report.action = syncActionName(actions.most);
+    report.action = syncActionName(executeSyncPlan(plan, scene, *this, report, progress));
     compiled_->camera = makeRenderCamera(scene.camera, scene.render.width, scene.render.height);
     compiled_->settings = compileSettings(scene.render);
     width_ = scene.render.width;
@@ -166,6 +96,71 @@ SyncReport CudaBackend::sync(const Scene& scene, const SceneDelta& changes, cons
     }
     report.seconds = secondsSince(start);
     return report;
+}
+
+bool CudaBackend::refitMeshes(const Scene& scene, const TouchedIds& meshes, SyncReport& report,
+                              SyncActions& actions, bool* moved) {
+    bool needsFullBuild = false;
+    const std::optional<SyncAction> done = refitChangedMeshes(scene, meshes, report, needsFullBuild);
+    if (done) {
+        actions.add(*done);
+        hostTlasStale_ = true;
+    }
+    *moved = done.has_value();
+    return !needsFullBuild;
+}
+
+bool CudaBackend::updateMaterials(const Scene& scene, const TouchedIds& materials, SyncReport& report) {
+    bool emissionChanged = false;
+    timedStep(stream_, report, "materials", [&] {
+        const MaterialsUpdate update = updateEditedMaterials(scene, *compiled_, materials);
+        emissionChanged = update.emissionChanged;
+        if (update.all) {
+            device_.uploadMaterials(*compiled_, stream_);
+        } else {
+            for (const uint32_t m : update.copied) device_.uploadMaterial(*compiled_, m, stream_);
+        }
+    });
+    return emissionChanged;
+}
+
+bool CudaBackend::updateInstances(const Scene& scene, SyncReport& report, SyncActions& actions,
+                                  bool* countChanged) {
+    const size_t before = compiled_->instances.size();
+    // O(instances x slots): transforms, materials of each slot, statistics.
+    bool mergedMoved = false;
+    timedStep(stream_, report, "instances", [&] {
+        mergedMoved = compileInstances(scene, *compiled_);
+        device_.uploadInstances(*compiled_, stream_);
+    });
+    if (mergedMoved) actions.add(refitMergedBlas(report));
+    hostTlasStale_ = true;
+    *countChanged = compiled_->instances.size() != before;
+    return true;
+}
+
+bool CudaBackend::lightsFollowMoves(bool instanceCountChanged) const {
+    // Emitters name instances by index: a changed instance list needs a new table. Moved
+    // emissive surfaces deserve one that matches their areas; other lights keep their weights,
+    // stale but unbiased (NEE and MIS read the same table), which spares a drag the host TLAS
+    // the scene bounds come from.
+    return instanceCountChanged || compiled_->emitters.triangles + compiled_->emitters.spheres > 0;
+}
+
+void CudaBackend::buildTlas(SyncReport& report) { buildTlasOnDevice(report); }
+
+void CudaBackend::updateLights(const Scene& scene, bool environment, SyncReport& report) {
+    if (hostTlasStale_) {
+        // The light table weighs the environment and directional lights by the scene's
+        // bounds, the host TLAS's root: O(instances log instances) from the BLAS roots.
+        timedStep(stream_, report, "TLAS (host, scene bounds)", [&] { pt::buildTlas(*compiled_); });
+        hostTlasStale_ = false;
+    }
+    // The environment's sampling tables change only with the environment.
+    timedStep(stream_, report, "lights", [&] {
+        compileLights(scene, *compiled_, environment ? LightsUpdate::All : LightsUpdate::KeepEnvironment);
+        device_.uploadLights(*compiled_, stream_, environment);
+    });
 }
 
 void CudaBackend::fullBuild(const Scene& scene, const ProgressFn& progress, SyncReport& report) {
@@ -192,6 +187,7 @@ void CudaBackend::fullBuild(const Scene& scene, const ProgressFn& progress, Sync
     // Measured when a BLAS is first refitted, not here: most meshes never are.
     builtSah_.assign(device_.blasCount(), kSahUnknown);
     buildTlasOnDevice(report);
+    hostTlasStale_ = false;  // the compile built the host's TLAS too
 }
 
 bool CudaBackend::uploadChangedVertices(const Mesh& mesh, uint32_t meshIndex) {
@@ -315,7 +311,7 @@ void CudaBackend::buildTlasOnDevice(SyncReport& report) {
     // The GPU build boxes every instance; with a merged BLAS the TLAS holds other entries.
     if (compiled_->merged.active() || (instances > 1 && instances <= kHostTlasMaxInstances)) {
         timedStep(stream_, report, "build TLAS (host SAH)", [&] {
-            buildTlas(*compiled_);
+            pt::buildTlas(*compiled_);
             hostTlasStale_ = false;
             device_.uploadTlas(*compiled_, stream_);
         });
@@ -460,6 +456,13 @@ std::vector<uint32_t> CudaBackend::pathsAlivePerBounce() const {
 }
 
 std::string CudaBackend::deviceName() const { return deviceInfo().name; }
+
+KernelFigures CudaBackend::kernelFigures() const {
+    KernelFigures figures;
+    for (const KernelVariant& v : kKernelVariants) figures.variants.push_back({v.name, v.features});
+    figures.kernels = kernelResources();
+    return figures;
+}
 
 std::shared_ptr<void> CudaBackend::allocateDeviceFrame() const {
     void* memory = nullptr;

@@ -19,12 +19,12 @@
 #include "render/backend/cuda/path_scheduler.h"
 #include "render/backend/cuda/pinned_range.h"
 #include "render/backend/schedule_chooser.h"
-#include "render/backend/sync_plan.h"
-#include "render/scene/compile_scene.h"
+#include "render/backend/sync_steps.h"
+#include "render/compile/compile_scene.h"
 
 namespace pt::cuda {
 
-class CudaBackend final : public Backend {
+class CudaBackend final : public Backend, private SyncSteps {
 public:
     CudaBackend();  // throws std::runtime_error when no CUDA device can be used
     ~CudaBackend() override;
@@ -42,6 +42,7 @@ public:
     bool copyBeautyToDevice(void* deviceRgba) const override;
     std::shared_ptr<void> allocateDeviceFrame() const override;
     std::optional<DeviceBvhFigures> measureDeviceBvh(const BvhBuildInput& input, uint32_t runs) override;
+    KernelFigures kernelFigures() const override;
     std::vector<uint32_t> pathsAlivePerBounce() const override;
     BackendStats stats() const override;
     std::vector<ToggleState> toggleStates() const override;
@@ -49,6 +50,9 @@ public:
     std::vector<std::pair<std::string, uint64_t>> deviceMemoryByBuffer() const override;
     std::vector<double> traceRays(const std::vector<Ray>& rays, bool anyHit, uint32_t runs,
                                   std::vector<Hit>* hits) override;
+    int32_t sceneInstance(uint32_t hitInstance) const override {
+        return compiled_ ? sceneInstanceOfHit(*compiled_, hitInstance) : -1;
+    }
     void setAovs(AovMask aovs) override { aovsRequested_ = aovs; }
     void changeAovs(AovMask aovs) override;
     AovMask aovs() const override { return aovs_.mask; }
@@ -67,7 +71,18 @@ public:
     static constexpr float kSahUnknown = -1.0f;
 
 private:
-    void fullBuild(const Scene& scene, const ProgressFn& progress, SyncReport& report);
+    // The sync plan's steps (sync_steps.h), on the device: GPU refits (or LBVH rebuilds) of the
+    // BLASes whose vertices moved, materials and instances uploaded in place, a GPU TLAS; the
+    // host's TLAS only where the light table needs the scene's bounds.
+    bool refitMeshes(const Scene& scene, const TouchedIds& meshes, SyncReport& report, SyncActions& actions,
+                     bool* moved) override;
+    bool updateMaterials(const Scene& scene, const TouchedIds& materials, SyncReport& report) override;
+    bool updateInstances(const Scene& scene, SyncReport& report, SyncActions& actions,
+                         bool* countChanged) override;
+    bool lightsFollowMoves(bool instanceCountChanged) const override;
+    void buildTlas(SyncReport& report) override;
+    void updateLights(const Scene& scene, bool environment, SyncReport& report) override;
+    void fullBuild(const Scene& scene, const ProgressFn& progress, SyncReport& report) override;
     // Uploads the vertices that changed, of the meshes the edit touched, and refits (or
     // rebuilds) the BLASes of meshes whose positions moved; returns Refit or Rebuild, or nothing
     // when no mesh moved. Sets needsFullBuild when a mesh changed size (a topology edit).

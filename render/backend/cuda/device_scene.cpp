@@ -191,64 +191,16 @@ void DeviceScene::uploadTlas(const CompiledScene& host, cudaStream_t stream) {
 
 RenderScene DeviceScene::view(const CompiledScene& host) const {
     RenderScene s = host.view();  // scalars: counts of lights, environment, camera, settings
-    s.positions = positions_.span();
-    s.normals = normals_.span();
-    s.uvs = uvs_.span();
-    s.tangents = tangents_.span();
-    s.triangles = triangles_.span();
-    s.spheres = spheres_.span();
-    s.triangleSlots = triangleSlots_.span();
-    s.sphereSlots = sphereSlots_.span();
-    s.blases = blases_.span();
-    s.blasNodes = blasNodes_.span();
-    s.blasPrimIndices = blasPrimIndices_.span();
-    s.instances = instances_.span();
-    s.tlasNodes = tlasNodes_.span();
-    s.tlasInstanceIndices = tlasInstanceIndices_.span();
-    s.mergedTriangles = mergedTriangles_.span();
-    s.instanceMaterials = instanceMaterials_.span();
-    s.materials = materials_.span();
-    s.textures = textures_.span();
-    s.texels8 = texels8_.span();
-    s.texelsF = texelsF_.span();
-    s.emitters = emitters_.span();
-    s.emitterAlias = emitterAlias_.span();
-    s.punctualLights = punctualLights_.span();
-    s.envPdf = envPdf_.span();
-    s.envMarginalCdf = envMarginalCdf_.span();
-    s.envConditionalCdf = envConditionalCdf_.span();
+#define PT_SCENE_ARRAY(Type, name, label) s.name = name##_.span();
+#include "render/kernel/scene_arrays.h"
     return s;
 }
 
 std::vector<BufferBytes> DeviceScene::buffers() const {
     std::vector<BufferBytes> out;
-    add(out, "positions", positions_);
-    add(out, "normals", normals_);
-    add(out, "uvs", uvs_);
-    add(out, "tangents", tangents_);
-    add(out, "triangles", triangles_);
-    add(out, "spheres", spheres_);
-    add(out, "triangle material slots", triangleSlots_);
-    add(out, "sphere material slots", sphereSlots_);
-    add(out, "BLAS refs", blases_);
-    add(out, "BLAS nodes", blasNodes_);
-    add(out, "BLAS primitive indices", blasPrimIndices_);
+#define PT_SCENE_ARRAY(Type, name, label) add(out, label, name##_);
+#include "render/kernel/scene_arrays.h"
     add(out, "BLAS parents (refit)", blasParents_);
-    add(out, "instances", instances_);
-    add(out, "instance materials", instanceMaterials_);
-    add(out, "TLAS nodes", tlasNodes_);
-    add(out, "TLAS instance indices", tlasInstanceIndices_);
-    add(out, "merged triangles (hit map)", mergedTriangles_);
-    add(out, "materials", materials_);
-    add(out, "texture views", textures_);
-    add(out, "texels (8-bit)", texels8_);
-    add(out, "texels (float)", texelsF_);
-    add(out, "emitters", emitters_);
-    add(out, "emitter alias table", emitterAlias_);
-    add(out, "punctual lights", punctualLights_);
-    add(out, "environment pdf", envPdf_);
-    add(out, "environment marginal cdf", envMarginalCdf_);
-    add(out, "environment conditional cdf", envConditionalCdf_);
     return out;
 }
 

@@ -17,7 +17,7 @@
 
 #include "render/backend/cuda/device_buffer.h"
 #include "render/backend/cuda/gpu_bvh.h"
-#include "render/scene/compile_scene.h"
+#include "render/compile/compile_scene.h"
 
 namespace pt::cuda {
 
@@ -80,28 +80,11 @@ public:
     uint64_t bytes() const;
 
 private:
-    DeviceBuffer<Vec3> positions_, normals_;
-    DeviceBuffer<Vec2> uvs_;
-    DeviceBuffer<Vec4> tangents_;
-    DeviceBuffer<TriangleIndices> triangles_;
-    DeviceBuffer<Vec4> spheres_;
-    DeviceBuffer<uint32_t> triangleSlots_, sphereSlots_;
-    DeviceBuffer<BlasRef> blases_;
-    DeviceBuffer<BvhNode> blasNodes_;
-    DeviceBuffer<uint32_t> blasPrimIndices_, blasParents_;
-    DeviceBuffer<RenderInstance> instances_;
-    DeviceBuffer<uint32_t> instanceMaterials_;
-    DeviceBuffer<BvhNode> tlasNodes_;
-    DeviceBuffer<uint32_t> tlasInstanceIndices_;
-    DeviceBuffer<MergedTriangle> mergedTriangles_;
-    DeviceBuffer<Material> materials_;
-    DeviceBuffer<TextureView> textures_;
-    DeviceBuffer<uint8_t> texels8_;
-    DeviceBuffer<float> texelsF_;
-    DeviceBuffer<Emitter> emitters_;
-    DeviceBuffer<AliasEntry> emitterAlias_;
-    DeviceBuffer<PunctualLight> punctualLights_;
-    DeviceBuffer<float> envPdf_, envMarginalCdf_, envConditionalCdf_;
+    // One buffer per scene array (render/kernel/scene_arrays.h), named as the array with a
+    // trailing underscore.
+#define PT_SCENE_ARRAY(Type, name, label) DeviceBuffer<Type> name##_;
+#include "render/kernel/scene_arrays.h"
+    DeviceBuffer<uint32_t> blasParents_;  // per BLAS region, as blasNodes_: for refits
 
     std::vector<BlasRef> hostBlases_;     // as on the device: offsets into the node regions
     std::vector<uint32_t> nodeCapacity_;  // nodes each BLAS's region holds

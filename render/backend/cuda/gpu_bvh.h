@@ -11,7 +11,7 @@
 #include "render/backend/cuda/device_buffer.h"
 #include "render/bvh/aabb.h"
 #include "render/bvh/bvh_node.h"
-#include "render/scene/render_scene.h"
+#include "render/kernel/render_scene.h"
 
 namespace pt::cuda {
 

@@ -16,7 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "render/scene/feature_set.h"
+#include "render/backend/kernel_figures.h"
+#include "render/kernel/feature_set.h"
 
 namespace pt::cuda {
 
@@ -85,15 +86,7 @@ inline int kernelVariantIndex(const std::string& name) {
     return -1;
 }
 
-// Resources of one compiled kernel, read from the module (cudaFuncGetAttributes).
-struct KernelResources {
-    std::string variant;  // kKernelVariants name
-    std::string kernel;   // "megakernel", "extend", "shade", "shadow"
-    std::string symbol;   // the mangled name (cudaFuncGetName), to find it in a disassembly
-    int registers = 0;
-    size_t localBytes = 0;  // per thread: stack frame and spills
-    size_t constantBytes = 0;
-};
+// Each kernel's resources, read from the module (cudaFuncGetAttributes).
 std::vector<KernelResources> kernelResources();
 
 }  // namespace pt::cuda

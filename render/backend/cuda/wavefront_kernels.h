@@ -11,7 +11,7 @@
 #include "render/bvh/hit.h"
 #include "render/integrator/aov.h"
 #include "render/integrator/path_state.h"
-#include "render/scene/render_scene.h"
+#include "render/kernel/render_scene.h"
 
 namespace pt::cuda {
 

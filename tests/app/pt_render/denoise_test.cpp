@@ -1,4 +1,4 @@
-// The denoiser on real renders (the CPU backend; tests/cuda compares the GPU's) and through
+// The denoiser on real renders (the CPU backend; tests/render/backend/cuda compares the GPU's) and through
 // `pt-render render --denoise`.
 #include <gtest/gtest.h>
 

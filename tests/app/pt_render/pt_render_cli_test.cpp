@@ -29,7 +29,7 @@ using test::runCli;
 
 std::string cornell() { return "'" + test::projectPath("scenes/cornell.json") + "'"; }
 
-// What scenes/cornell.json uses (render/scene/scene_features.h), in bit order: its glass sphere
+// What scenes/cornell.json uses (render/compile/scene_features.h), in bit order: its glass sphere
 // (smooth, analytic), diffuse walls (specular 0), mirror box, lamp and eight instances.
 const std::vector<std::string> kCornellFeatures = {"smooth_transmission", "specular_layer",     "metal",
                                                    "emissive_triangles",  "multiple_instances", "spheres"};

@@ -10,7 +10,7 @@
 
 #include "render/bvh/aabb.h"
 #include "render/bvh/traversal.h"
-#include "render/scene/compile_scene.h"
+#include "render/compile/compile_scene.h"
 #include "render/scene/scene.h"
 
 namespace pt::test {

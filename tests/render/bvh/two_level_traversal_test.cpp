@@ -102,7 +102,7 @@ TEST(TwoLevelTraversal, SharedEdgesAcrossMirroredInstancesStayWatertight) {
     EXPECT_EQ(slipped, 0u);
 }
 
-// Merged small instances (render/scene/merged_geometry.h): the same scene with its triangle
+// Merged small instances (render/compile/merged_geometry.h): the same scene with its triangle
 // instances copied into one world-space BLAS hits what the two-level walk hits. Hits come back
 // as the instance and mesh-local triangle they copy; t differs by the rounding of a world-space
 // test (relative 1e-5 allowed); grazing rays along shared edges may go either way (a few).

@@ -13,8 +13,8 @@
 #include "render/backend/aov.h"
 #include "render/backend/cpu/cpu_backend.h"
 #include "render/backend/toggle_states.h"
+#include "render/compile/compile_scene.h"
 #include "render/integrator/path_tracer.h"
-#include "render/scene/compile_scene.h"
 #include "support/aov_scenes.h"
 #include "support/scene_builder.h"
 

@@ -5,8 +5,8 @@
 
 #include <cmath>
 
+#include "render/compile/compile_scene.h"
 #include "render/integrator/path_tracer.h"
-#include "render/scene/compile_scene.h"
 #include "support/render_cpu.h"
 #include "support/scene_builder.h"
 

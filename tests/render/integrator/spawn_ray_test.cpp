@@ -10,7 +10,7 @@
 
 #include "render/bvh/bvh_test_util.h"
 #include "render/bvh/traversal.h"
-#include "render/scene/compile_scene.h"
+#include "render/compile/compile_scene.h"
 #include "support/render_cpu.h"
 #include "support/scene_builder.h"
 

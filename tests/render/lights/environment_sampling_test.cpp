@@ -8,8 +8,8 @@
 #include <cmath>
 #include <random>
 
+#include "render/compile/compile_scene.h"
 #include "render/lights/environment_distribution.h"
-#include "render/scene/compile_scene.h"
 #include "support/scene_builder.h"
 
 namespace pt {

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "render/scene/scene_features.h"
+#include "render/compile/scene_features.h"
 #include "support/scene_builder.h"
 
 namespace pt {

@@ -6,7 +6,7 @@
 #include <optional>
 #include <vector>
 
-#include "render/scene/compile_scene.h"
+#include "render/compile/compile_scene.h"
 #include "render/scene/scene_changes.h"
 
 namespace pt {

@@ -1,4 +1,4 @@
-#include "render/scene/compile_scene.h"
+#include "render/compile/compile_scene.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,10 +6,10 @@
 
 #include "render/bvh/binned_sah_builder.h"
 #include "render/bvh/instance_bounds.h"
+#include "render/compile/compile_geometry.h"
+#include "render/compile/scene_features.h"
 #include "render/integrator/camera.h"
 #include "render/materials/alpha.h"
-#include "render/scene/compile_geometry.h"
-#include "render/scene/scene_features.h"
 #include "render/util/stopwatch.h"
 
 namespace pt {
@@ -49,11 +49,16 @@ bool isTracedInstance(const Scene& scene, size_t i) {
            scene.meshes[instance.mesh].primitiveCount() > 0;
 }
 
+int32_t sceneInstanceOfHit(const CompiledScene& compiled, uint32_t r) {
+    return r < compiled.sceneInstanceOf.size() ? int32_t(compiled.sceneInstanceOf[r]) : -1;
+}
+
 bool compileInstances(const Scene& scene, CompiledScene& out) {
     const std::vector<Material>& materials = out.materials;
     // Built aside and swapped in, so that a refused instance leaves `out` as it was.
     std::vector<RenderInstance> instances;
-    std::vector<uint32_t> instanceMaterials;
+    std::vector<uint32_t> instanceMaterials, sceneInstanceOf,
+        renderInstanceOf(scene.instances.size(), kNotTraced);
     instances.reserve(scene.instances.size());
     for (size_t i = 0; i < scene.instances.size(); ++i) {
         const Instance& src = scene.instances[i];
@@ -82,10 +87,14 @@ bool compileInstances(const Scene& scene, CompiledScene& out) {
             }
             instanceMaterials.push_back(m);
         }
+        renderInstanceOf[i] = uint32_t(instances.size());
+        sceneInstanceOf.push_back(uint32_t(i));
         instances.push_back(inst);
     }
     out.instances.swap(instances);
     out.instanceMaterials.swap(instanceMaterials);
+    out.sceneInstanceOf.swap(sceneInstanceOf);
+    out.renderInstanceOf.swap(renderInstanceOf);
     out.stats.instanceCount = uint32_t(out.instances.size());
     out.stats.instancedTriangles = 0;
     for (const RenderInstance& inst : out.instances) {
@@ -239,36 +248,13 @@ void updateFeatures(const Scene& scene, CompiledScene& out) {
 
 RenderScene CompiledScene::view() const {
     RenderScene s;
-    s.positions = spanOf(positions);
-    s.normals = spanOf(normals);
-    s.uvs = spanOf(uvs);
-    s.tangents = spanOf(tangents);
-    s.triangles = spanOf(triangles);
-    s.spheres = spanOf(spheres);
-    s.triangleSlots = spanOf(triangleSlots);
-    s.sphereSlots = spanOf(sphereSlots);
-    s.blases = spanOf(blases);
-    s.blasNodes = spanOf(blasNodes);
-    s.blasPrimIndices = spanOf(blasPrimIndices);
-    s.instances = spanOf(instances);
-    s.tlasNodes = spanOf(tlasNodes);
-    s.tlasInstanceIndices = spanOf(tlasInstanceIndices);
+#define PT_SCENE_ARRAY(Type, name, label) s.name = spanOf(name);
+#define PT_SCENE_LIGHT_ARRAY(Type, name, compiledMember, label) s.name = spanOf(compiledMember);
+#include "render/kernel/scene_arrays.h"
     s.mergedBlas = merged.active() ? merged.blas : kNoMergedBlas;
-    s.mergedTriangles = spanOf(mergedTriangles);
-    s.instanceMaterials = spanOf(instanceMaterials);
-    s.materials = spanOf(materials);
-    s.textures = spanOf(textures);
-    s.texels8 = spanOf(texels8);
-    s.texelsF = spanOf(texelsF);
-    s.emitters = spanOf(emitters.emitters);
-    s.emitterAlias = spanOf(emitters.alias);
-    s.emitterTotalWeight = emitters.totalWeight;
-    s.punctualLights = spanOf(punctualLights);
-    s.environment = environment;
-    s.envPdf = spanOf(environmentDistribution.pdf);
-    s.envMarginalCdf = spanOf(environmentDistribution.marginalCdf);
-    s.envConditionalCdf = spanOf(environmentDistribution.conditionalCdf);
     s.transparentMaterials = transparentMaterials ? 1u : 0u;
+    s.emitterTotalWeight = emitters.totalWeight;
+    s.environment = environment;
     s.camera = camera;
     s.settings = settings;
     s.bruteForce = bruteForce ? 1u : 0u;

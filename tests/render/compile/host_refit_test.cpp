@@ -2,7 +2,7 @@
 // holds (every node contains its children's boxes and its primitives) and closest hits through
 // it equal brute force; a topology edit is refused. The CPU backend's use of it is in
 // tests/render/backend/sync_plan_test.cpp.
-#include "render/scene/host_refit.h"
+#include "render/compile/host_refit.h"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 
 #include "render/bvh/bvh_test_util.h"
 #include "render/bvh/traversal.h"
-#include "render/scene/compile_geometry.h"
+#include "render/compile/compile_geometry.h"
 
 namespace pt {
 namespace {

@@ -2,7 +2,7 @@
 // that switches its bit on (and the values just short of it that must not), materials no
 // traced instance uses, environment, thin lens, instances, spheres, morph targets, and the
 // names the CLI, the stats JSON and the editor print.
-#include "render/scene/scene_features.h"
+#include "render/compile/scene_features.h"
 
 #include <gtest/gtest.h>
 
@@ -10,8 +10,8 @@
 #include <set>
 #include <string>
 
+#include "render/compile/compile_scene.h"
 #include "render/integrator/camera.h"
-#include "render/scene/compile_scene.h"
 #include "support/scene_builder.h"
 
 namespace pt {

@@ -1,4 +1,4 @@
-#include "render/scene/host_refit.h"
+#include "render/compile/host_refit.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -6,7 +6,7 @@
 #include <cstring>
 
 #include "render/bvh/sah_cost.h"
-#include "render/scene/compile_geometry.h"
+#include "render/compile/compile_geometry.h"
 #include "render/util/check.h"
 
 namespace pt {

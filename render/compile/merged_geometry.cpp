@@ -1,11 +1,10 @@
-#include "render/scene/merged_geometry.h"
+#include "render/compile/merged_geometry.h"
 
 #include <cstring>
 #include <stdexcept>
 
 #include "render/bvh/aabb.h"
-#include "render/bvh/hit.h"
-#include "render/scene/compile_scene.h"
+#include "render/compile/compile_scene.h"
 
 namespace pt {
 namespace {
@@ -110,25 +109,18 @@ bool bakeMergedGeometry(const Scene& scene, CompiledScene& out) {
     if (!mergedPlanHolds(scene, out)) {
         throw std::invalid_argument("the instances changed since the merged geometry was planned; recompile");
     }
-    // Compiled instance indices: compileInstances keeps the traced instances in scene order.
-    std::vector<uint32_t> compiledIndex(scene.instances.size(), Hit::kNoHit);
-    uint32_t next = 0;
-    for (size_t i = 0; i < scene.instances.size(); ++i) {
-        if (isTracedInstance(scene, i)) compiledIndex[i] = next++;
-    }
     bool changed = false;
     out.mergedTriangles.reserve(out.blases[merged.blas].primitiveCount);
     for (const MergedPiece& piece : merged.pieces) {
         const Mesh& mesh = scene.meshes[piece.mesh];
         const Instance& instance = scene.instances[piece.sceneInstance];
-        const uint32_t compiled = compiledIndex[piece.sceneInstance];
+        const uint32_t compiled = out.renderInstanceOf[piece.sceneInstance];
         // A hidden instance keeps its place in the arrays (so the BLAS keeps its shape for a
         // refit) as zero-area triangles at one point, which the watertight test never hits.
         const Vec3 collapsed = instance.objectToWorld.translation();
         for (size_t v = 0; v < mesh.positions.size(); ++v) {
-            const Vec3 world = compiled != Hit::kNoHit
-                                   ? instance.objectToWorld.transformPoint(mesh.positions[v])
-                                   : collapsed;
+            const Vec3 world =
+                compiled != kNotTraced ? instance.objectToWorld.transformPoint(mesh.positions[v]) : collapsed;
             Vec3& stored = out.positions[piece.firstVertex + v];
             changed |= std::memcmp(&stored, &world, sizeof(Vec3)) != 0;
             stored = world;

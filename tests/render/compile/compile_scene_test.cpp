@@ -1,4 +1,4 @@
-#include "render/scene/compile_scene.h"
+#include "render/compile/compile_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -68,7 +68,7 @@ TEST(CompileScene, OneMeshInstancedManyTimesIsOneBlas) {
     EXPECT_EQ(compiled.triangles.size(), 200u);
 }
 
-// Merged small instances (render/scene/merged_geometry.h): 25 instances of a 200-triangle
+// Merged small instances (render/compile/merged_geometry.h): 25 instances of a 200-triangle
 // grid become 5000 world-space copies in one BLAS, which the TLAS holds as its one entry; each
 // copy maps back to its instance and triangle. A moved instance's copies follow it, a hidden
 // one's collapse to a point.
@@ -193,6 +193,10 @@ TEST(CompileScene, HiddenInstancesAndUnmappedSlotsAreHandled) {
     EXPECT_EQ(compiled.stats.instanceCount, 2u);
     EXPECT_EQ(compiled.instanceMaterials[compiled.instances[1].materialOffset],
               compiled.materials.size() - 1);
+    EXPECT_EQ(compiled.sceneInstanceOf, (std::vector<uint32_t>{0u, 2u})) << "the hidden one has no entry";
+    EXPECT_EQ(compiled.renderInstanceOf, (std::vector<uint32_t>{0u, kNotTraced, 1u}));
+    EXPECT_EQ(sceneInstanceOfHit(compiled, 1), 2);
+    EXPECT_EQ(sceneInstanceOfHit(compiled, 2), -1) << "past the traced instances";
 }
 
 // The light table skips meshes no instance shades with an emissive material (so a scene

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "render/scene/feature_set.h"
+#include "render/kernel/feature_set.h"
 
 namespace pt {
 

@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "render/compile/merged_geometry.h"
+#include "render/kernel/render_scene.h"
 #include "render/lights/emitter_table.h"
 #include "render/lights/environment_distribution.h"
-#include "render/scene/merged_geometry.h"
-#include "render/scene/render_scene.h"
 #include "render/scene/scene.h"
 #include "render/util/progress.h"
 
@@ -33,29 +33,24 @@ struct CompileStats {
     uint64_t blasNodes = 0;
 };
 
+// CompiledScene::renderInstanceOf for a scene instance that is not traced (hidden or empty).
+constexpr uint32_t kNotTraced = 0xffffffffu;
+
 struct CompiledScene {
-    std::vector<Vec3> positions, normals;
-    std::vector<Vec2> uvs;
-    std::vector<Vec4> tangents;  // parallel to positions, or empty when no mesh has any
-    std::vector<TriangleIndices> triangles;
-    std::vector<Vec4> spheres;
-    std::vector<uint32_t> triangleSlots, sphereSlots;
-    std::vector<BlasRef> blases;
-    std::vector<BvhNode> blasNodes;
-    std::vector<uint32_t> blasPrimIndices;
-    std::vector<RenderInstance> instances;
-    std::vector<BvhNode> tlasNodes;
-    std::vector<uint32_t> tlasInstanceIndices;
-    MergedGeometry merged;                        // which instances the merged BLAS holds
-    std::vector<MergedTriangle> mergedTriangles;  // its hit map, per merged triangle
-    std::vector<uint32_t> instanceMaterials;
-    std::vector<Material> materials;
-    std::vector<TextureView> textures;
-    std::vector<uint8_t> texels8;
-    std::vector<float> texelsF;
+    // The arrays RenderScene points at (render/kernel/scene_arrays.h), but for the light
+    // table's and the environment distribution's, which `emitters` and
+    // `environmentDistribution` hold.
+#define PT_SCENE_ARRAY(Type, name, label) std::vector<Type> name;
+#define PT_SCENE_LIGHT_ARRAY(Type, name, compiledMember, label)
+#include "render/kernel/scene_arrays.h"
+
+    MergedGeometry merged;  // which instances the merged BLAS holds
+    // Which scene instance each traced one is (compileInstances keeps the traced instances in
+    // scene order): sceneInstanceOf[r] is the Scene::instances index of instances[r], and
+    // renderInstanceOf[i] that of scene instance i in instances, or kNotTraced.
+    std::vector<uint32_t> sceneInstanceOf, renderInstanceOf;
     bool transparentMaterials = false;
     EmitterTable emitters;
-    std::vector<PunctualLight> punctualLights;
     EnvironmentDistribution environmentDistribution;
     RenderEnvironment environment{};
     RenderCamera camera{};
@@ -95,9 +90,10 @@ PunctualLight compilePunctualLight(const Light& light);
 // vertices). Throws std::invalid_argument for an instance naming a missing mesh or material,
 // and then leaves `out` as it was.
 bool compileInstances(const Scene& scene, CompiledScene& out);
-// Whether compileInstances gives scene instance `i` a RenderInstance (visible, not empty):
-// the traced instances are these, in scene order, so a Hit's instance maps back through it.
+// Whether compileInstances gives scene instance `i` a RenderInstance (visible, not empty).
 bool isTracedInstance(const Scene& scene, size_t i);
+// The Scene::instances index of render instance `r` (a Hit's instance), or -1 past the end.
+int32_t sceneInstanceOfHit(const CompiledScene& compiled, uint32_t r);
 // The TLAS (binned SAH over instance world boxes, from each BLAS's root box) for compiled
 // instances and BLASes: merged instances have no entry of their own, the merged BLAS one
 // (index instances.size()). O(instances log instances).

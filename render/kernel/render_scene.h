@@ -5,12 +5,13 @@
 #include <cstdint>
 
 #include "render/bvh/bvh_node.h"
+#include "render/kernel/feature_set.h"
+#include "render/kernel/scene_kinds.h"
 #include "render/materials/material.h"
 #include "render/math/affine.h"
 #include "render/math/span.h"
 #include "render/math/vec.h"
-#include "render/scene/feature_set.h"
-#include "render/scene/scene_kinds.h"
+#include "render/sampling/alias_table.h"
 
 namespace pt {
 
@@ -96,12 +97,6 @@ struct PunctualLight {
 };
 static_assert(sizeof(PunctualLight) == 48, "PunctualLight: 48 bytes");
 
-// Walker alias table entry: pick i uniformly, keep it with probability `keep`, else `alias`.
-struct AliasEntry {
-    float keep;
-    uint32_t alias;
-};
-
 struct RenderCamera {
     Vec3 origin;
     Vec3 forward;  // unit
@@ -141,53 +136,20 @@ struct IntegratorSettings {
 };
 
 struct RenderScene {
-    // Geometry, all meshes concatenated.
-    Span<const Vec3> positions;
-    Span<const Vec3> normals;   // parallel to positions where a mesh has them
-    Span<const Vec2> uvs;       // parallel to positions where a mesh has them
-    Span<const Vec4> tangents;  // parallel to positions, or empty when no mesh has any
-    Span<const TriangleIndices> triangles;
-    Span<const Vec4> spheres;            // xyz center, w radius (object space)
-    Span<const uint32_t> triangleSlots;  // parallel to triangles: the mesh slot of each
-    Span<const uint32_t> sphereSlots;    // parallel to spheres
+    // Every array (render/kernel/scene_arrays.h says what each holds).
+#define PT_SCENE_ARRAY(Type, name, label) Span<const Type> name;
+#include "render/kernel/scene_arrays.h"
 
-    // Two-level BVH.
-    Span<const BlasRef> blases;
-    Span<const BvhNode> blasNodes;
-    Span<const uint32_t> blasPrimIndices;
-    Span<const RenderInstance> instances;
-    Span<const BvhNode> tlasNodes;
-    // TLAS leaf entries are instance indices, and instances.count for the merged BLAS: small
-    // instances' triangles copied into world space (merged_geometry.h), traced with no
-    // instance transform; each of its hits maps back through mergedTriangles.
-    Span<const uint32_t> tlasInstanceIndices;
+    // The merged BLAS's index in blases (merged_geometry.h), or kNoMergedBlas.
     uint32_t mergedBlas = kNoMergedBlas;
-    Span<const MergedTriangle> mergedTriangles;
-
-    // Shading.
-    Span<const uint32_t> instanceMaterials;
-    Span<const Material> materials;
-    Span<const TextureView> textures;
-    Span<const uint8_t> texels8;
-    Span<const float> texelsF;
-
-    uint32_t transparentMaterials =
-        0;  // some material may let rays through (alpha mask/blend, culled back faces)
-
-    // Lights: one alias table over every light NEE samples.
-    Span<const Emitter> emitters;
-    Span<const AliasEntry> emitterAlias;
-    float emitterTotalWeight = 0.0f;
-    Span<const PunctualLight> punctualLights;
+    // Some material may let rays through (alpha mask/blend, culled back faces).
+    uint32_t transparentMaterials = 0;
+    float emitterTotalWeight = 0.0f;  // the sum of emitters' weights
     RenderEnvironment environment;
-    Span<const float> envPdf;             // distHeight x distWidth, density on the unit square
-    Span<const float> envMarginalCdf;     // distHeight + 1, over rows
-    Span<const float> envConditionalCdf;  // distHeight x (distWidth + 1), within each row
-
     RenderCamera camera;
     IntegratorSettings settings;
     uint32_t bruteForce = 0;  // validation: test every primitive, no BVH
-    FeatureSet features = 0;  // scene_features.h: what this scene uses (host decisions)
+    FeatureSet features = 0;  // feature_set.h: what this scene uses (host decisions)
 };
 
 }  // namespace pt

@@ -9,8 +9,8 @@
 #include <cstdio>
 #include <iostream>
 
-#include "cuda/cuda_test_support.h"
-#include "cuda/gpu_bvh_test_util.h"
+#include "render/backend/cuda/cuda_test_support.h"
+#include "render/backend/cuda/gpu_bvh_test_util.h"
 #include "render/bvh/bvh_walk.h"
 #include "render/bvh/sah_cost.h"
 

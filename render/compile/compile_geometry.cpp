@@ -1,4 +1,4 @@
-#include "render/scene/compile_geometry.h"
+#include "render/compile/compile_geometry.h"
 
 #include <tbb/parallel_for.h>
 

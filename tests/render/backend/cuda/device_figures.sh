@@ -4,7 +4,7 @@
 # against time) of the Cornell box and a shared asset against references rendered there on the
 # GPU (PFM: that build writes no EXR). Every output lands in $OUT (default ./device-out).
 #
-#   tests/cuda/make_device_bundle.sh      (here)
+#   tests/render/backend/cuda/make_device_bundle.sh      (here)
 #   build-dev-carry/device_figures.sh     (there; the bundle script copies this file in)
 # PARTS="tests stress converge" (the default) chooses what runs.
 #

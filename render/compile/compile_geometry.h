@@ -2,7 +2,7 @@
 // The geometry half of compileRenderScene: concatenating meshes into global arrays and
 // building one BLAS per mesh. BLAS i belongs to Scene::meshes[i].
 #include "render/bvh/aabb.h"
-#include "render/scene/compile_scene.h"
+#include "render/compile/compile_scene.h"
 
 namespace pt {
 

@@ -1,9 +1,9 @@
-#include "render/scene/scene_features.h"
+#include "render/compile/scene_features.h"
 
+#include "render/compile/compile_scene.h"
 #include "render/integrator/medium.h"
 #include "render/materials/alpha.h"
 #include "render/materials/ggx.h"
-#include "render/scene/compile_scene.h"
 
 namespace pt {
 

@@ -5,7 +5,7 @@
 # PT_OCIO=OFF) and takes along the four small shared libraries the binaries still need, plus
 # the shared assets the benchmark reads.
 #
-#   tests/cuda/make_device_bundle.sh
+#   tests/render/backend/cuda/make_device_bundle.sh
 #   then, on the device:  build-dev-carry/run.sh <command...>  (sets LD_LIBRARY_PATH, PT_SOURCE_DIR)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -13,7 +13,7 @@ cmake -S . -B build-dev -G Ninja -DCMAKE_BUILD_TYPE=Release -DPT_CUDA=ON -DPT_OI
 cmake --build build-dev --target pt_cuda_tests pt-render
 rm -rf build-dev-carry
 mkdir -p build-dev-carry/lib build-dev-carry/assets
-cp build-dev/tests/pt_cuda_tests build-dev/app/pt-render tests/cuda/device_figures.sh build-dev-carry/
+cp build-dev/tests/pt_cuda_tests build-dev/app/pt-render tests/render/backend/cuda/device_figures.sh build-dev-carry/
 # Every shared library outside the C/C++ runtime and the dynamic loader.
 ldd build-dev-carry/pt-render build-dev-carry/pt_cuda_tests | awk '/=> \// {print $3}' | sort -u |
   grep -v -E '/(libc|libm|libstdc\+\+|libgcc_s|libpthread|libdl|librt|ld-linux[^/]*)\.so' |

@@ -1,0 +1,55 @@
+#include "editor/ui/interop_frame.h"
+
+namespace pt::editor {
+
+InteropFrame::~InteropFrame() { release(); }
+
+void InteropFrame::release() {
+    link_.reset();  // unlinked before GL deletes the buffer
+    if (pbo_) glDeleteBuffers(1, &pbo_);
+    pbo_ = 0;
+    width_ = height_ = 0;
+}
+
+bool InteropFrame::update(RenderWorker& worker, GLuint texture, uint32_t width, uint32_t height) {
+    if (failed_) return false;
+    const size_t frameBytes = size_t(width) * height * 4 * sizeof(float);
+    if (width != width_ || height != height_) {
+        release();
+        glGenBuffers(1, &pbo_);
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, pbo_);
+        glBufferData(GL_PIXEL_UNPACK_BUFFER, GLsizeiptr(frameBytes), nullptr, GL_STREAM_DRAW);
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+        link_ = linkGlPixelBuffer(pbo_, why_);
+        if (!link_) {
+            release();
+            failed_ = true;  // the reason stays in why_
+            return false;
+        }
+        width_ = width;
+        height_ = height;
+    }
+    bool copied = false;
+    worker.withBackend([&](EditorSession& session) {
+        Backend& backend = session.backend();
+        if (!backend.capabilities().deviceFrames || backend.width() != width || backend.height() != height)
+            return;
+        size_t bytes = 0;
+        void* device = link_->map(&bytes);
+        if (device && bytes >= frameBytes)
+            copied = session.copyDisplayedToDevice(session.document().viewer.denoise, device);
+        link_->unmap();
+    });
+    if (!copied) {
+        why_ = "the backend cannot write device frames";
+        return false;
+    }
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, pbo_);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, GLsizei(width), GLsizei(height), GL_RGBA, GL_FLOAT, nullptr);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    why_.clear();
+    return true;
+}
+
+}  // namespace pt::editor

@@ -1,0 +1,62 @@
+// linkGlPixelBuffer through CUDA-GL interop (render/backend/gl_pixel_buffer_link.h), where
+// the GL headers cuda_gl_interop.h includes are present (render/CMakeLists.txt).
+#if PT_HAVE_CUDA_GL
+#include <cuda_gl_interop.h>
+#include <cuda_runtime.h>
+
+#include "render/backend/cuda/cuda_device.h"
+#include "render/backend/gl_pixel_buffer_link.h"
+
+namespace pt {
+namespace {
+
+class CudaGlLink final : public PixelBufferLink {
+public:
+    explicit CudaGlLink(cudaGraphicsResource* resource) : resource_(resource) {}
+    ~CudaGlLink() override {
+        unmap();
+        cudaGraphicsUnregisterResource(resource_);
+    }
+    CudaGlLink(const CudaGlLink&) = delete;
+    CudaGlLink& operator=(const CudaGlLink&) = delete;
+
+    void* map(size_t* bytes) override {
+        if (!mapped_ && cudaGraphicsMapResources(1, &resource_) != cudaSuccess) return failed();
+        mapped_ = true;
+        void* device = nullptr;
+        if (cudaGraphicsResourceGetMappedPointer(&device, bytes, resource_) != cudaSuccess) return failed();
+        return device;
+    }
+
+    void unmap() override {
+        if (mapped_) cudaGraphicsUnmapResources(1, &resource_);
+        mapped_ = false;
+    }
+
+private:
+    // Clears CUDA's sticky-until-read error, so the renderer's own calls do not see it.
+    void* failed() {
+        cudaGetLastError();
+        return nullptr;
+    }
+
+    cudaGraphicsResource* resource_;
+    bool mapped_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<PixelBufferLink> linkGlPixelBuffer(uint32_t glBuffer, std::string& why) {
+    if (!cuda::deviceAvailable(&why)) return nullptr;
+    cudaGraphicsResource* resource = nullptr;
+    if (cudaGraphicsGLRegisterBuffer(&resource, glBuffer, cudaGraphicsRegisterFlagsWriteDiscard) !=
+        cudaSuccess) {
+        cudaGetLastError();
+        why = "this OpenGL cannot share buffers with CUDA";
+        return nullptr;
+    }
+    return std::make_unique<CudaGlLink>(resource);
+}
+
+}  // namespace pt
+#endif

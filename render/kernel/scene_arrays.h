@@ -1,0 +1,66 @@
+// The arrays of a RenderScene, listed once (Cycles' kernel/data_arrays.h is the model). Each
+// place that holds or copies every array (RenderScene's spans, CompiledScene's vectors and its
+// view(), the CUDA backend's device buffers, their view and their memory table) defines the
+// entry macros, includes this file, and so cannot miss one; the file undefines them again.
+//
+//   PT_SCENE_ARRAY(Type, name, label)
+//       an array CompiledScene holds as std::vector<Type> name
+//   PT_SCENE_LIGHT_ARRAY(Type, name, compiledMember, label)
+//       an array of the light table or the environment's distribution, which CompiledScene
+//       holds as compiledMember; defaults to PT_SCENE_ARRAY(Type, name, label)
+//
+// `label` names the array in `pt-render bench`'s device memory table.
+// No include guard: it is meant to be included more than once.
+
+#ifndef PT_SCENE_ARRAY
+#error "define PT_SCENE_ARRAY(Type, name, label) before including scene_arrays.h"
+#endif
+#ifndef PT_SCENE_LIGHT_ARRAY
+#define PT_SCENE_LIGHT_ARRAY(Type, name, compiledMember, label) PT_SCENE_ARRAY(Type, name, label)
+#endif
+
+// Geometry, all meshes concatenated.
+PT_SCENE_ARRAY(Vec3, positions, "positions")
+PT_SCENE_ARRAY(Vec3, normals, "normals")    // parallel to positions where a mesh has them
+PT_SCENE_ARRAY(Vec2, uvs, "uvs")            // parallel to positions where a mesh has them
+PT_SCENE_ARRAY(Vec4, tangents, "tangents")  // parallel to positions, or empty when no mesh has any
+PT_SCENE_ARRAY(TriangleIndices, triangles, "triangles")
+PT_SCENE_ARRAY(Vec4, spheres, "spheres")  // xyz center, w radius (object space)
+// Parallel to triangles: each one's mesh slot.
+PT_SCENE_ARRAY(uint32_t, triangleSlots, "triangle material slots")
+PT_SCENE_ARRAY(uint32_t, sphereSlots, "sphere material slots")  // parallel to spheres
+
+// Two-level BVH.
+PT_SCENE_ARRAY(BlasRef, blases, "BLAS refs")
+PT_SCENE_ARRAY(BvhNode, blasNodes, "BLAS nodes")
+PT_SCENE_ARRAY(uint32_t, blasPrimIndices, "BLAS primitive indices")
+PT_SCENE_ARRAY(RenderInstance, instances, "instances")
+PT_SCENE_ARRAY(BvhNode, tlasNodes, "TLAS nodes")
+// TLAS leaf entries are instance indices, and instances.count for the merged BLAS: small
+// instances' triangles copied into world space (merged_geometry.h), traced with no instance
+// transform; each of its hits maps back through mergedTriangles.
+PT_SCENE_ARRAY(uint32_t, tlasInstanceIndices, "TLAS instance indices")
+PT_SCENE_ARRAY(MergedTriangle, mergedTriangles, "merged triangles (hit map)")
+
+// Shading.
+PT_SCENE_ARRAY(uint32_t, instanceMaterials, "instance materials")
+PT_SCENE_ARRAY(Material, materials, "materials")
+PT_SCENE_ARRAY(TextureView, textures, "texture views")
+PT_SCENE_ARRAY(uint8_t, texels8, "texels (8-bit)")
+PT_SCENE_ARRAY(float, texelsF, "texels (float)")
+
+// Lights: one alias table over every light NEE samples.
+PT_SCENE_LIGHT_ARRAY(Emitter, emitters, emitters.emitters, "emitters")
+PT_SCENE_LIGHT_ARRAY(AliasEntry, emitterAlias, emitters.alias, "emitter alias table")
+PT_SCENE_ARRAY(PunctualLight, punctualLights, "punctual lights")
+// The environment image's sampling distribution (render/lights/environment_sampling.h).
+// Density on the unit square, distHeight x distWidth:
+PT_SCENE_LIGHT_ARRAY(float, envPdf, environmentDistribution.pdf, "environment pdf")
+// distHeight + 1, over rows:
+PT_SCENE_LIGHT_ARRAY(float, envMarginalCdf, environmentDistribution.marginalCdf, "environment marginal cdf")
+// distHeight x (distWidth + 1), within each row:
+PT_SCENE_LIGHT_ARRAY(float, envConditionalCdf, environmentDistribution.conditionalCdf,
+                     "environment conditional cdf")
+
+#undef PT_SCENE_ARRAY
+#undef PT_SCENE_LIGHT_ARRAY
