@@ -7,7 +7,7 @@
 #include <string>
 
 #include "assets/gltf/gltf_context.h"
-#include "render/materials/material.h"
+#include "render/kernel/material.h"
 
 namespace pt {
 

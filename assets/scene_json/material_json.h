@@ -1,12 +1,12 @@
 #pragma once
 // Material parameters in scene JSON. One table of keys serves the reader and the writer, so
-// the two cannot drift apart; the defaults are Material{}'s (render/materials/material.h).
+// the two cannot drift apart; the defaults are Material{}'s (render/kernel/material.h).
 #include <cstdint>
 #include <functional>
 #include <string>
 
 #include "assets/scene_json/json_value.h"
-#include "render/materials/material.h"
+#include "render/kernel/material.h"
 
 namespace pt {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "render/bvh/aabb.h"
-#include "render/bvh/bvh_node.h"
+#include "render/kernel/bvh_node.h"
 
 namespace pt {
 

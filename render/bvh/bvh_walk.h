@@ -5,8 +5,8 @@
 #include <cassert>
 #include <cstdint>
 
-#include "render/bvh/bvh_node.h"
 #include "render/bvh/triangle_intersect.h"
+#include "render/kernel/bvh_node.h"
 
 namespace pt {
 

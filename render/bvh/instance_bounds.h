@@ -4,7 +4,7 @@
 // and a TLAS built on either side bounds the same geometry with the same boxes, bit for bit
 // (with -ffp-contract=off and nvcc's -fmad=false, both compilers round every step alike).
 #include "render/bvh/aabb.h"
-#include "render/bvh/bvh_node.h"
+#include "render/kernel/bvh_node.h"
 #include "render/math/affine.h"
 
 namespace pt {

@@ -4,10 +4,10 @@
 // Every struct here is plain data, so the CUDA backend copies the arrays and swaps pointers.
 #include <cstdint>
 
-#include "render/bvh/bvh_node.h"
+#include "render/kernel/bvh_node.h"
 #include "render/kernel/feature_set.h"
+#include "render/kernel/material.h"
 #include "render/kernel/scene_kinds.h"
-#include "render/materials/material.h"
 #include "render/math/affine.h"
 #include "render/math/span.h"
 #include "render/math/vec.h"

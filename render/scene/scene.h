@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "render/kernel/material.h"
 #include "render/kernel/scene_kinds.h"
-#include "render/materials/material.h"
 #include "render/math/affine.h"
 #include "render/math/vec.h"
 

@@ -8,7 +8,7 @@
 #include <cstdint>
 
 #include "render/bvh/aabb.h"
-#include "render/bvh/bvh_node.h"
+#include "render/kernel/bvh_node.h"
 
 namespace pt::cuda {
 

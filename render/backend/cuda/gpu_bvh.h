@@ -10,7 +10,7 @@
 
 #include "render/backend/cuda/device_buffer.h"
 #include "render/bvh/aabb.h"
-#include "render/bvh/bvh_node.h"
+#include "render/kernel/bvh_node.h"
 #include "render/kernel/render_scene.h"
 
 namespace pt::cuda {
