@@ -20,6 +20,10 @@ struct Placement {
     // Per variant of the file (ImportedFile::variants), the Scene material of each slot; empty
     // when no variant maps a material of this mesh.
     std::vector<std::vector<uint32_t>> variantMaterials;
+    // glTF: the node that placed it (-1: none, OBJ) and, for an EXT_mesh_gpu_instancing
+    // instance, its own transform under the node's; the rig poses instances through these.
+    int32_t node = -1;
+    Affine3 extra;
 };
 
 struct ImportedFile {
@@ -27,6 +31,9 @@ struct ImportedFile {
     std::optional<Camera> camera;       // the file's first camera, in file space
     std::vector<Light> lights;          // punctual lights (glTF KHR_lights_punctual), in file space
     std::vector<std::string> variants;  // material variants (glTF KHR_materials_variants), by name
+    // glTF skins and animations (render/animation/rig.h), without instances: the caller adds
+    // the instances it makes of the placements. nullopt where the file has neither.
+    std::optional<AnimationRig> rig;
 };
 
 // Throws InputError naming the file and the element for malformed or unsupported-fatal input;

@@ -5,11 +5,13 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <optional>
 
 #include "assets/file_state.h"
 #include "assets/input_error.h"
 #include "assets/message_text.h"
 #include "assets/scene_json/scene_json.h"
+#include "render/scene/scene_animation.h"
 
 namespace pt {
 namespace fs = std::filesystem;
@@ -135,8 +137,12 @@ void instantiateImportedFile(const ImportedFile& file, int32_t objectIndex, Scen
     };
     const Affine3 objectToWorld = object.transform.toAffine();
     const std::string objectName = objectDisplayName(object);
+    std::optional<AnimationRig> rig = file.rig;
     for (size_t i = 0; i < file.placements.size(); ++i) {
         const Placement& placement = file.placements[i];
+        if (rig && placement.node >= 0)
+            rig->instances.push_back(
+                {uint32_t(placement.node), uint32_t(scene.instances.size()), placement.extra});
         Instance instance;
         instance.name = placement.name.empty() ? objectName + "." + std::to_string(i) : placement.name;
         instance.mesh = placement.mesh;
@@ -147,6 +153,14 @@ void instantiateImportedFile(const ImportedFile& file, int32_t objectIndex, Scen
             instance.variantMaterials.push_back(placedMaterials(row));
         if (!instance.variantMaterials.empty()) instance.defaultMaterials = instance.materials;
         scene.instances.push_back(std::move(instance));
+    }
+    if (rig) {
+        // Skinned meshes show their rest pose, which need not be the bind pose their vertices
+        // are stored in.
+        rig->object = objectIndex;
+        scene.rigs.push_back(std::move(*rig));
+        if (!scene.rigs.back().skinnedMeshes.empty())
+            poseRig(scene, uint32_t(scene.rigs.size() - 1), -1, 0.0f);
     }
     for (const Light& fileLight : file.lights) {
         Light light = fileLight;

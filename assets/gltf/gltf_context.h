@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "assets/input_error.h"
+#include "render/animation/skin_vertex.h"
 #include "render/scene/scene.h"
 
 namespace pt {
@@ -32,6 +33,9 @@ struct ImportedMesh {
     uint32_t sceneMesh = 0;
     std::vector<int> slotMaterials;
     std::vector<std::vector<int>> slotVariantMaterials;  // [slot][variant]
+    // Parallel to the Scene mesh's positions, or empty: the skin influences the primitives
+    // give (zero weights for a primitive that gives none).
+    std::vector<JointInfluences> influences;
 };
 
 struct GltfContext {

@@ -3,8 +3,10 @@
 // gltf_mesh, materials and textures in gltf_materials / gltf_textures, the node hierarchy
 // and camera in gltf_nodes, punctual lights in gltf_lights.
 #include <cmath>
+#include <map>
 #include <set>
 
+#include "assets/gltf/gltf_animation.h"
 #include "assets/gltf/gltf_document.h"
 #include "assets/gltf/gltf_draco.h"
 #include "assets/gltf/gltf_instancing.h"
@@ -62,9 +64,6 @@ void warnAboutUnsupported(const GltfContext& ctx) {
     };
     for (const std::string& name : model.extensionsRequired) report(name, true);
     for (const std::string& name : model.extensionsUsed) report(name, false);
-    if (!model.skins.empty() || !model.animations.empty()) {
-        ctx.warn("", "skins and animations are not applied; meshes are shown in their bind pose");
-    }
 }
 
 // Per variant, the Scene material of each slot of `mesh` (`defaults` where the variant maps
@@ -100,6 +99,7 @@ std::optional<Placement> placeNode(GltfContext& ctx, const GltfNodeVisit& visit,
     }
     Placement placement;
     placement.name = node.name.empty() ? element : node.name;
+    placement.node = visit.node;
     placement.mesh = mesh.sceneMesh;
     placement.fileToNode = visit.world;  // a negative determinant flips winding downstream
     for (int material : mesh.slotMaterials) {
@@ -129,6 +129,7 @@ void placeNodeInstances(GltfContext& ctx, const GltfNodeVisit& visit, const Impo
         }
         if (auto placement = placeNode(ctx, instance, mesh)) {
             placement->name += " #" + std::to_string(i);
+            placement->extra = instances[i];
             placements.push_back(std::move(*placement));
         }
     }
@@ -137,6 +138,22 @@ void placeNodeInstances(GltfContext& ctx, const GltfNodeVisit& visit, const Impo
                  std::to_string(hidden) + " of " + std::to_string(instances.size()) +
                      " EXT_mesh_gpu_instancing instances have zero scale; not placed");
     }
+}
+
+// Skins `node`'s mesh: a skinned node deforms vertices of its own, so a glTF mesh other nodes
+// also place is copied for it (`placed` then names the copy).
+void skinNode(GltfContext& ctx, int node, size_t meshUses, AnimationRig& rig, ImportedMesh& placed) {
+    if (placed.influences.empty()) {
+        gltfSkinnedMesh(ctx, rig, node, placed, placed.sceneMesh);  // warns, and checks the skin index
+        return;
+    }
+    if (meshUses > 1) {
+        placed.sceneMesh = uint32_t(ctx.scene.meshes.size());
+        ctx.scene.meshes.push_back(
+            ctx.scene.meshes[ctx.meshes[ctx.model().nodes[size_t(node)].mesh]->sceneMesh]);
+    }
+    if (std::optional<SkinnedMesh> skinned = gltfSkinnedMesh(ctx, rig, node, placed, placed.sceneMesh))
+        rig.skinnedMeshes.push_back(std::move(*skinned));
 }
 
 }  // namespace
@@ -154,9 +171,15 @@ ImportedFile importGltf(const std::string& path, int32_t object, Scene& scene, c
     file.camera = gltfCamera(ctx, visits);
     file.lights = gltfLights(ctx, visits);
     file.variants = ctx.variants;
+    file.rig = readGltfRig(ctx);
     std::set<uint32_t> posedMeshes;  // Scene meshes whose first node has set their morph pose
+    std::map<int, size_t> meshUses;  // glTF mesh -> the nodes that place it
     size_t meshNodes = 0, done = 0;
-    for (const GltfNodeVisit& visit : visits) meshNodes += doc.model.nodes[size_t(visit.node)].mesh >= 0;
+    for (const GltfNodeVisit& visit : visits) {
+        const int mesh = doc.model.nodes[size_t(visit.node)].mesh;
+        meshNodes += mesh >= 0;
+        if (mesh >= 0) ++meshUses[mesh];
+    }
     for (const GltfNodeVisit& visit : visits) {
         const int mesh = doc.model.nodes[size_t(visit.node)].mesh;
         if (mesh < 0) continue;
@@ -165,8 +188,12 @@ ImportedFile importGltf(const std::string& path, int32_t object, Scene& scene, c
         reportProgress(progress, "load glTF", double(++done) / double(meshNodes));
         if (!imported) continue;
         poseGltfMeshForNode(ctx, visit.node, *imported, posedMeshes.insert(imported->sceneMesh).second);
-        placeNodeInstances(ctx, visit, *imported, file.placements);
+        ImportedMesh placed = *imported;
+        if (file.rig && doc.model.nodes[size_t(visit.node)].skin >= 0)
+            skinNode(ctx, visit.node, meshUses[mesh], *file.rig, placed);
+        placeNodeInstances(ctx, visit, placed, file.placements);
     }
+    if (file.rig) addGltfMorphedNodes(ctx, *file.rig);
     reportProgress(progress, "load glTF", 1.0);
     guard.commit();
     return file;

@@ -143,6 +143,10 @@ const std::optional<ImportedMesh>& importGltfMesh(GltfContext& ctx, int meshInde
             gltfElement(ctx, ctx.model().materials, material,
                         meshElement + ".primitives[" + std::to_string(p) + "]", "material");
         }
+        if (!g->influences.empty() || !imported.influences.empty()) {
+            imported.influences.resize(mesh.positions.size());  // earlier primitives: unweighted
+            imported.influences.insert(imported.influences.end(), g->influences.begin(), g->influences.end());
+        }
         appendPrimitive(ctx, *g, uint32_t(imported.slotMaterials.size()), mesh, slots, meshElement);
         imported.slotMaterials.push_back(material);
         imported.slotVariantMaterials.push_back(
@@ -154,6 +158,7 @@ const std::optional<ImportedMesh>& importGltfMesh(GltfContext& ctx, int meshInde
     }
     if (!mesh.uvs.empty()) mesh.uvs.resize(mesh.positions.size());
     if (!mesh.tangents.empty()) mesh.tangents.resize(mesh.positions.size());
+    if (!imported.influences.empty()) imported.influences.resize(mesh.positions.size());
     finishMorphTargets(ctx, source, meshElement, mesh);
     mesh.slotCount = uint32_t(imported.slotMaterials.size());
     if (mesh.slotCount > 1) mesh.primitiveSlots = std::move(slots);

@@ -117,6 +117,39 @@ std::vector<Vec4> readTangents(const GltfContext& ctx, int accessor, size_t vert
     return tangents;
 }
 
+// JOINTS_n / WEIGHTS_n pairs (glTF 2.0 section 3.7.3): up to two sets of four influences. A
+// set needs both attributes; joint indices are whole numbers below 65536.
+std::vector<JointInfluences> readInfluences(const GltfContext& ctx, const tinygltf::Primitive& primitive,
+                                            size_t vertexCount, const std::string& element) {
+    std::vector<JointInfluences> influences;
+    for (int set = 0; set < 2; ++set) {
+        const std::string joints = "JOINTS_" + std::to_string(set),
+                          weights = "WEIGHTS_" + std::to_string(set);
+        const int jointsAccessor = attribute(primitive, joints.c_str());
+        const int weightsAccessor = attribute(primitive, weights.c_str());
+        if (jointsAccessor < 0 && weightsAccessor < 0) break;
+        if (jointsAccessor < 0 || weightsAccessor < 0) {
+            ctx.fail(element, joints + " and " + weights + " must come together");
+        }
+        const std::vector<float> j =
+            readVertexAttribute(ctx, jointsAccessor, 4, vertexCount, element, joints);
+        const std::vector<float> w =
+            readVertexAttribute(ctx, weightsAccessor, 4, vertexCount, element, weights);
+        influences.resize(vertexCount);
+        for (size_t v = 0; v < vertexCount; ++v) {
+            for (int i = 0; i < 4; ++i) {
+                const float joint = j[4 * v + size_t(i)];
+                if (!(joint >= 0.0f && joint < 65536.0f) || joint != float(int(joint))) {
+                    ctx.fail(element, joints + " element " + std::to_string(v) + " is not a joint index");
+                }
+                influences[v].joints[4 * set + i] = uint16_t(joint);
+                influences[v].weights[4 * set + i] = w[4 * v + size_t(i)];
+            }
+        }
+    }
+    return influences;
+}
+
 // values[from[k]] for each k; an empty (absent) attribute stays empty.
 template <class T>
 std::vector<T> gather(const std::vector<T>& values, const std::vector<uint32_t>& from) {
@@ -133,6 +166,7 @@ void remapVertices(PrimitiveGeometry& g, const std::vector<uint32_t>& from) {
     g.normals = gather(g.normals, from);
     g.uvs = gather(g.uvs, from);
     g.tangents = gather(g.tangents, from);
+    g.influences = gather(g.influences, from);
     for (MorphTarget& target : g.targets) {
         target.positionDeltas = gather(target.positionDeltas, from);
         target.normalDeltas = gather(target.normalDeltas, from);
@@ -276,6 +310,7 @@ std::optional<PrimitiveGeometry> readGltfPrimitive(const GltfContext& ctx, size_
         const std::vector<float> t = readVertexAttribute(ctx, uv, 2, vertexCount, element, "TEXCOORD_0");
         for (size_t v = 0; v < vertexCount; ++v) g.uvs.push_back({t[2 * v], t[2 * v + 1]});
     }
+    g.influences = readInfluences(ctx, primitive, vertexCount, element);
     const int normal = attribute(primitive, "NORMAL");
     g.targets = readMorphTargets(ctx, primitive, vertexCount, normal >= 0, element);
     if (normal >= 0) {

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "assets/gltf/gltf_context.h"
+#include "render/animation/skin_vertex.h"
 
 namespace pt {
 
@@ -33,6 +34,10 @@ struct PrimitiveGeometry {
     // positionDeltas: one per position (zero where the target has no POSITION); normalDeltas:
     // one per position, or empty (no NORMAL in the target, or none in the primitive).
     std::vector<MorphTarget> targets;
+    // One per position, or empty: the skin's joints and weights (JOINTS_0/WEIGHTS_0, and
+    // JOINTS_1/WEIGHTS_1 for influences 5 to 8), as the file gives them (checked against the
+    // skin, and normalised, where a node skins the mesh: gltf_skins.h).
+    std::vector<JointInfluences> influences;
 };
 
 // nullopt when the primitive is skipped (a warning says why); InputError when malformed.

@@ -29,7 +29,14 @@ void normalizeQuaternion(float* q) {
 
 // Spherical linear interpolation along the shorter arc (Shoemake 1985), falling back to a
 // normalised lerp where the two are nearly parallel and sin(angle) loses its precision.
-void slerp(const float* a, const float* b, float s, float* out) {
+// The keys are normalised first: files round their quaternions, and the angle between two
+// keys is only right for unit ones.
+void slerp(const float* keyA, const float* keyB, float s, float* out) {
+    float a[4], b[4];
+    std::copy(keyA, keyA + 4, a);
+    std::copy(keyB, keyB + 4, b);
+    normalizeQuaternion(a);
+    normalizeQuaternion(b);
     float cosAngle = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
     const float sign = cosAngle < 0.0f ? -1.0f : 1.0f;
     cosAngle *= sign;
@@ -120,6 +127,7 @@ float Animation::duration() const {
 }
 
 Affine3 NodePose::matrix() const {
+    if (fixed) return fixedMatrix;
     return translationTransform(translation) * rotationTransform(rotation) * scaleTransform(scale);
 }
 

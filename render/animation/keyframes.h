@@ -56,7 +56,10 @@ struct NodePose {
     Vec4 rotation{0.0f, 0.0f, 0.0f, 1.0f};  // unit quaternion x y z w
     Vec3 scale{1.0f, 1.0f, 1.0f};
     std::vector<float> weights;  // morph weights of the node's mesh; empty where none
-    Affine3 matrix() const;      // T * R * S
+    // A node given as a matrix (glTF does not animate those): that matrix, TRS unused.
+    bool fixed = false;
+    Affine3 fixedMatrix;
+    Affine3 matrix() const;  // T * R * S, or the fixed matrix
 };
 
 // Poses `nodes` (indexed as the channels' nodes) at `time`: each channel overwrites its path

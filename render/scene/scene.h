@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "render/animation/rig.h"
 #include "render/kernel/material.h"
 #include "render/kernel/scene_kinds.h"
 #include "render/math/affine.h"
@@ -192,6 +193,9 @@ struct Scene {
     RenderSettings render;
     Environment environment;
     ColorSettings color;
+    // Skins and animations of the model files (render/animation/rig.h): what
+    // render/scene/scene_animation.h poses.
+    std::vector<AnimationRig> rigs;
     std::vector<std::string> warnings;  // non-fatal import messages, each naming file and element
     // Every glTF extension the scene's model files declare, and whether this build honours it
     // (pt-render info lists them). Import information, not rendered.

@@ -1,0 +1,85 @@
+#include "render/scene/scene_animation.h"
+
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+#include "render/scene/morph.h"
+
+namespace pt {
+namespace {
+
+// Skins `skinned` in its node's space; a mesh with morph targets is morphed first, as glTF
+// orders them, and skinned from its morphed vertices.
+void poseSkinnedMesh(const AnimationRig& rig, const SkinnedMesh& skinned, const std::vector<Affine3>& globals,
+                     Mesh& mesh) {
+    const std::vector<Affine3> joints =
+        jointMatrices(rig.skins[skinned.skin], globals, globals[skinned.node]);
+    if (mesh.morphTargets.empty()) {
+        skinVertices(joints,
+                     {skinned.bindPositions, skinned.bindNormals, skinned.bindTangents, skinned.influences},
+                     mesh.positions, mesh.normals, mesh.tangents);
+        return;
+    }
+    applyMorphWeights(mesh);
+    const std::vector<Vec3> positions = mesh.positions, normals = mesh.normals;
+    skinVertices(joints, {positions, normals, skinned.bindTangents, skinned.influences}, mesh.positions,
+                 mesh.normals, mesh.tangents);
+}
+
+}  // namespace
+
+SceneDelta poseRig(Scene& scene, uint32_t rigIndex, int32_t animation, float time) {
+    if (rigIndex >= scene.rigs.size())
+        throw std::invalid_argument("rig " + std::to_string(rigIndex) + " does not exist");
+    const AnimationRig& rig = scene.rigs[rigIndex];
+    if (animation >= int32_t(rig.animations.size())) {
+        throw std::invalid_argument("animation " + std::to_string(animation) + " does not exist (" +
+                                    std::to_string(rig.animations.size()) + " in the file)");
+    }
+    std::vector<NodePose> poses = rig.restPoses;
+    if (animation >= 0) applyAnimation(rig.animations[size_t(animation)], time, poses);
+    const std::vector<Affine3> globals = globalTransforms(rig.parents, poses);
+    const bool objectExists = rig.object >= 0 && size_t(rig.object) < scene.objects.size();
+    const Affine3 objectToWorld =
+        objectExists ? scene.objects[size_t(rig.object)].transform.toAffine() : Affine3{};
+
+    std::vector<uint32_t> movedInstances, movedMeshes;
+    for (const RigInstance& placed : rig.instances) {
+        if (placed.instance >= scene.instances.size() || placed.node >= globals.size()) continue;
+        Instance& instance = scene.instances[placed.instance];
+        if (instance.object != rig.object) continue;  // the instance list changed since import
+        const Affine3 transform = objectToWorld * globals[placed.node] * placed.extra;
+        if (std::memcmp(&transform, &instance.objectToWorld, sizeof(Affine3)) == 0) continue;
+        instance.objectToWorld = transform;
+        movedInstances.push_back(placed.instance);
+    }
+    std::vector<bool> skinnedMesh(scene.meshes.size(), false);
+    for (const SkinnedMesh& s : rig.skinnedMeshes) {
+        if (s.mesh < skinnedMesh.size()) skinnedMesh[s.mesh] = true;
+    }
+    for (const MorphedNode& morphed : rig.morphedNodes) {
+        if (morphed.mesh >= scene.meshes.size() || morphed.node >= poses.size()) continue;
+        Mesh& mesh = scene.meshes[morphed.mesh];
+        const std::vector<float>& weights = poses[morphed.node].weights;
+        if (weights.size() != mesh.morphTargets.size() || weights == mesh.morphWeights) continue;
+        mesh.morphWeights = weights;
+        if (!skinnedMesh[morphed.mesh]) applyMorphWeights(mesh);  // else morphed as it is skinned
+        movedMeshes.push_back(morphed.mesh);
+    }
+    for (const SkinnedMesh& skinned : rig.skinnedMeshes) {
+        if (skinned.mesh >= scene.meshes.size() || skinned.skin >= rig.skins.size() ||
+            skinned.node >= globals.size())
+            continue;
+        Mesh& mesh = scene.meshes[skinned.mesh];
+        if (mesh.positions.size() != skinned.influences.size()) continue;  // no longer this mesh
+        poseSkinnedMesh(rig, skinned, globals, mesh);
+        movedMeshes.push_back(skinned.mesh);
+    }
+    SceneDelta delta;
+    if (!movedInstances.empty()) delta |= instancesMoved(movedInstances);
+    if (!movedMeshes.empty()) delta |= meshesMoved(movedMeshes);
+    return delta;
+}
+
+}  // namespace pt
