@@ -14,6 +14,7 @@
 #include "assets/input_error.h"
 #include "cli/cli_options.h"
 #include "cli/display_options.h"
+#include "cli/frame_sequence.h"
 #include "cli/interrupt.h"
 #include "cli/progress_bar.h"
 #include "cli/render_setup.h"
@@ -23,6 +24,7 @@
 #include "render/backend/backend.h"
 #include "render/compile/scene_features.h"
 #include "render/display/display_transform.h"
+#include "render/scene/scene_animation.h"
 #include "render/util/stopwatch.h"
 
 namespace pt::cli {
@@ -41,6 +43,12 @@ struct RenderRequest {
     // denoised image; the denoiser's guides are accumulated for it.
     bool denoise = false;
     DisplayRequest display;  // --png: how linear becomes display pixels (display_options.h)
+    // --frames A:B[:STEP]: a sequence, frame f posed at f / fps seconds of --animation (a name
+    // or an index; the first where not given), each frame to the outputs with #### replaced.
+    std::optional<FrameRange> frames;
+    double fps = 24.0;
+    std::string animation;
+    bool skipExisting = false;  // --skip-existing: frames whose outputs all exist are left
 };
 
 void parseExrOptions(const Options& o, RenderRequest& r) {
@@ -55,13 +63,28 @@ void parseExrOptions(const Options& o, RenderRequest& r) {
     if (r.exrPath.empty() && (o.has("--aov") || r.half)) throw UsageError("--aov and --half need -o OUT.exr");
 }
 
+void parseSequenceOptions(const Options& o, RenderRequest& r) {
+    if (const std::optional<std::string> frames = o.value("--frames")) r.frames = parseFrameRange(*frames);
+    if (!r.frames && (o.has("--fps") || o.has("--animation") || o.has("--skip-existing")))
+        throw UsageError("--fps, --animation and --skip-existing apply to --frames A:B[:STEP]");
+    if (const std::optional<double> fps = o.positiveNumber("--fps")) r.fps = *fps;
+    r.animation = o.value("--animation").value_or("");
+    r.skipExisting = o.has("--skip-existing");
+    if (!r.frames) return;
+    for (const std::string& path : {r.exrPath, r.pngPath}) {
+        if (!path.empty()) framePath(path, 0);  // a sequence's outputs need their #### (UsageError)
+    }
+}
+
 RenderRequest parseRequest(const std::vector<std::string>& args) {
-    const Options o(
-        args,
-        joined(joined({"-o", "--png", "--spp", "--time", "--stats", "--aov"}, renderSetupValuedFlags()),
-               joined(toggleValuedFlags(), displayValuedFlags())),
-        joined(joined(joined({"--half", "--denoise"}, renderSetupSwitches()), toggleSwitches()),
-               displaySwitches()));
+    const Options o(args,
+                    joined(joined({"-o", "--png", "--spp", "--time", "--stats", "--aov", "--frames", "--fps",
+                                   "--animation"},
+                                  renderSetupValuedFlags()),
+                           joined(toggleValuedFlags(), displayValuedFlags())),
+                    joined(joined(joined({"--half", "--denoise", "--skip-existing"}, renderSetupSwitches()),
+                                  toggleSwitches()),
+                           displaySwitches()));
     if (o.positional().size() != 1) throw UsageError("expected one SCENE argument");
     RenderRequest r;
     r.scenePath = o.positional()[0];
@@ -80,14 +103,22 @@ RenderRequest parseRequest(const std::vector<std::string>& args) {
     if (r.display.anyGiven && r.pngPath.empty())
         throw UsageError("display flags apply to --png OUT.png; give one");
     r.denoise = o.has("--denoise");
+    parseSequenceOptions(o, r);
     return r;
 }
 
 // Renders until the sample or time budget is met, or Ctrl-C, in batches of about a quarter
 // second so the progress bar moves and an interrupt is answered within one; with --time no
 // batch is planned past the budget.
+// `progress` maps this render's fraction done onto the bar (a sequence's frame is a part of
+// the whole, so the ETA is the sequence's).
+struct BarSpan {
+    const char* stage = "render";
+    double offset = 0.0, scale = 1.0;
+};
+
 void accumulate(Backend& backend, const RenderRequest& r, uint32_t targetSpp, ProgressBar& bar,
-                const InterruptCatcher& interrupt) {
+                const InterruptCatcher& interrupt, const BarSpan& progress) {
     const auto start = Clock::now();
     double secondsPerPass = 0.0;  // unknown until the first batch
     for (;;) {
@@ -95,7 +126,8 @@ void accumulate(Backend& backend, const RenderRequest& r, uint32_t targetSpp, Pr
         const uint32_t done = backend.stats().samplesPerPixel;
         if (r.seconds ? elapsed >= *r.seconds : done >= targetSpp) break;
         if (interrupt.interrupted()) break;
-        bar.update("render", r.seconds ? elapsed / *r.seconds : double(done) / targetSpp);
+        const double fraction = r.seconds ? elapsed / *r.seconds : double(done) / targetSpp;
+        bar.update(progress.stage, progress.offset + progress.scale * fraction);
         uint32_t passes = 1;
         if (secondsPerPass > 0.0) {
             passes = uint32_t(std::clamp(0.25 / secondsPerPass, 1.0, 1024.0));
@@ -106,7 +138,6 @@ void accumulate(Backend& backend, const RenderRequest& r, uint32_t targetSpp, Pr
         backend.render(passes);
         secondsPerPass = std::max(secondsSince(batchStart) / passes, 1e-6);
     }
-    bar.finish();
 }
 
 void writeStats(const RenderRequest& r, const Backend& backend, double loadSeconds, const SyncReport& sync) {
@@ -165,6 +196,111 @@ void checkOutputFolders(const RenderRequest& r) {
     }
 }
 
+// What one render (a frame of a sequence, or the whole command) leaves behind: the images
+// and stats `fr` names, and the summary line.
+struct FrameContext {
+    Backend& backend;
+    const Scene& scene;
+    const std::optional<DisplayProcessor>& display;
+    double loadSeconds;
+};
+
+void writeOutputs(const RenderRequest& fr, const FrameContext& c, const SyncReport& sync) {
+    Backend& backend = c.backend;
+    std::vector<float> shown;  // what the PNG shows: the beauty, or with --denoise the denoised one
+    if (fr.denoise) {
+        backend.readDenoised(shown);
+    } else {
+        backend.readBeauty(shown);
+    }
+    const BackendStats stats = backend.stats();
+    const ImageMetadata metadata = renderMetadata(stats.samplesPerPixel, std::to_string(stats.renderSeconds),
+                                                  backend.name(), fr.scenePath, "pt-render 0.1");
+    if (!fr.exrPath.empty()) {
+        ImageMetadata exrMetadata = metadata;
+        if (c.display) {  // the OCIO config and view of the PNG beside it
+            const ImageMetadata view = displayMetadata(*c.display, fr.display.dither);
+            exrMetadata.insert(exrMetadata.end(), view.begin(), view.end());
+        }
+        writeRenderExr(fr, backend, c.scene.camera, exrMetadata, fr.denoise ? shown : std::vector<float>{});
+        std::printf("%s\n", fr.exrPath.c_str());
+    }
+    if (!fr.pngPath.empty()) {
+        ImageMetadata pngMetadata = metadata;
+        const ImageMetadata displayInfo = displayMetadata(*c.display, fr.display.dither);
+        pngMetadata.insert(pngMetadata.end(), displayInfo.begin(), displayInfo.end());
+        writeDisplayImage(fr.pngPath, backend.width(), backend.height(),
+                          c.display->encode8(shown, backend.width(), fr.display.dither), pngMetadata);
+        std::printf("%s\n", fr.pngPath.c_str());
+    }
+    if (!fr.statsPath.empty()) writeStats(fr, backend, c.loadSeconds, sync);
+    if (!fr.setup.quiet) {
+        std::fprintf(
+            stderr,
+            "%ux%u, %u spp in %.2f s (load %.2f s, BVH %.3f s), %.1f Mrays/s, %llu non-finite samples\n",
+            backend.width(), backend.height(), stats.samplesPerPixel, stats.renderSeconds, c.loadSeconds,
+            sync.bvhSeconds, stats.renderSeconds > 0 ? double(stats.rays) / stats.renderSeconds / 1e6 : 0.0,
+            static_cast<unsigned long long>(stats.nonfiniteSamples));
+    }
+}
+
+// Renders one frame into `fr`'s outputs; the exit code (interrupted, or 0).
+int renderFrame(const RenderRequest& fr, const FrameContext& c, const SyncReport& sync, uint32_t targetSpp,
+                ProgressBar& bar, const InterruptCatcher& interrupt, const BarSpan& span) {
+    accumulate(c.backend, fr, targetSpp, bar, interrupt, span);
+    const uint32_t samples = c.backend.stats().samplesPerPixel;
+    if (interrupt.interrupted() && samples == 0) {
+        bar.finish();
+        std::fprintf(stderr, "interrupted before the first sample: nothing written\n");
+        return kInterruptedExitCode;
+    }
+    if (!fr.frames) bar.finish();
+    writeOutputs(fr, c, sync);
+    if (interrupt.interrupted()) {
+        bar.finish();
+        std::fprintf(stderr, "interrupted: wrote the %u spp rendered so far\n", samples);
+        return kInterruptedExitCode;
+    }
+    return 0;
+}
+
+// The request for frame `frame` of a sequence: its outputs' #### replaced (stats too, where
+// that path has them; else each frame rewrites it).
+RenderRequest frameRequest(const RenderRequest& r, int64_t frame) {
+    RenderRequest fr = r;
+    for (std::string* path : {&fr.exrPath, &fr.pngPath, &fr.statsPath}) {
+        if (hasFrameNumber(*path)) *path = framePath(*path, frame);
+    }
+    return fr;
+}
+
+bool outputsExist(const RenderRequest& fr) {
+    for (const std::string& path : {fr.exrPath, fr.pngPath}) {
+        if (!path.empty() && !std::filesystem::exists(path)) return false;
+    }
+    return true;
+}
+
+int renderSequence(const RenderRequest& r, Scene& scene, const FrameContext& c, uint32_t targetSpp,
+                   ProgressBar& bar, const InterruptCatcher& interrupt) {
+    const std::vector<int64_t> frames = r.frames->frames();
+    const std::vector<int32_t> chosen = chooseAnimations(scene, r.animation);
+    for (size_t i = 0; i < frames.size(); ++i) {
+        const RenderRequest fr = frameRequest(r, frames[i]);
+        if (r.skipExisting && outputsExist(fr)) {
+            if (!r.setup.quiet)
+                std::fprintf(stderr, "frame %lld: done before, skipped\n", (long long)frames[i]);
+            continue;
+        }
+        const SyncReport sync =
+            c.backend.sync(scene, poseAnimations(scene, chosen, float(double(frames[i]) / r.fps)));
+        const BarSpan span{"frames", double(i) / double(frames.size()), 1.0 / double(frames.size())};
+        if (const int code = renderFrame(fr, c, sync, targetSpp, bar, interrupt, span)) return code;
+    }
+    bar.finish();
+    return 0;
+}
+
 }  // namespace
 
 int runRender(const std::vector<std::string>& args) {
@@ -187,53 +323,9 @@ int runRender(const std::vector<std::string>& args) {
                      (r.denoise ? kDenoiseGuideAovs : 0u));  // before the sync, whose reset allocates them
     const SyncReport sync = backend->sync(scene, SceneChanges::All, bar.callback());
     bar.finish();
-    accumulate(*backend, r, targetSpp, bar, interrupt);
-    if (interrupt.interrupted() && backend->stats().samplesPerPixel == 0) {
-        std::fprintf(stderr, "interrupted before the first sample: nothing written\n");
-        return kInterruptedExitCode;
-    }
-
-    std::vector<float> shown;  // what the PNG shows: the beauty, or with --denoise the denoised one
-    if (r.denoise) {
-        backend->readDenoised(shown);
-    } else {
-        backend->readBeauty(shown);
-    }
-    const BackendStats stats = backend->stats();
-    const ImageMetadata metadata = renderMetadata(stats.samplesPerPixel, std::to_string(stats.renderSeconds),
-                                                  backend->name(), r.scenePath, "pt-render 0.1");
-    if (!r.exrPath.empty()) {
-        ImageMetadata exrMetadata = metadata;
-        if (display) {  // the OCIO config and view of the PNG beside it
-            const ImageMetadata view = displayMetadata(*display, r.display.dither);
-            exrMetadata.insert(exrMetadata.end(), view.begin(), view.end());
-        }
-        writeRenderExr(r, *backend, scene.camera, exrMetadata, r.denoise ? shown : std::vector<float>{});
-        std::printf("%s\n", r.exrPath.c_str());
-    }
-    if (!r.pngPath.empty()) {
-        ImageMetadata pngMetadata = metadata;
-        const ImageMetadata displayInfo = displayMetadata(*display, r.display.dither);
-        pngMetadata.insert(pngMetadata.end(), displayInfo.begin(), displayInfo.end());
-        writeDisplayImage(r.pngPath, backend->width(), backend->height(),
-                          display->encode8(shown, backend->width(), r.display.dither), pngMetadata);
-        std::printf("%s\n", r.pngPath.c_str());
-    }
-    if (!r.statsPath.empty()) writeStats(r, *backend, input.loadSeconds, sync);
-    if (!r.setup.quiet) {
-        std::fprintf(
-            stderr,
-            "%ux%u, %u spp in %.2f s (load %.2f s, BVH %.3f s), %.1f Mrays/s, %llu non-finite samples\n",
-            backend->width(), backend->height(), stats.samplesPerPixel, stats.renderSeconds,
-            input.loadSeconds, sync.bvhSeconds,
-            stats.renderSeconds > 0 ? double(stats.rays) / stats.renderSeconds / 1e6 : 0.0,
-            static_cast<unsigned long long>(stats.nonfiniteSamples));
-    }
-    if (interrupt.interrupted()) {
-        std::fprintf(stderr, "interrupted: wrote the %u spp rendered so far\n", stats.samplesPerPixel);
-        return kInterruptedExitCode;
-    }
-    return 0;
+    const FrameContext context{*backend, scene, display, input.loadSeconds};
+    if (r.frames) return renderSequence(r, scene, context, targetSpp, bar, interrupt);
+    return renderFrame(r, context, sync, targetSpp, bar, interrupt, BarSpan{});
 }
 
 }  // namespace pt::cli

@@ -23,6 +23,11 @@ constexpr CommandUsage kCommands[] = {
       are accumulated); --half writes 16-bit channels (ids, sample_count, depth, position stay
       float). --denoise: the EXR gains denoised.R/G/B beside the raw beauty and the PNG shows
       the denoised image (an a-trous filter guided by albedo, normal, depth, alpha and variance).
+      Sequences: --frames A:B[:STEP] [--fps F] [--animation NAME|INDEX] [--skip-existing]
+      renders frames A to B of the scene's animation (the first unless named; 24 fps unless
+      given), frame f at f / F seconds, each to the outputs with their #### replaced by the
+      frame number (-o out_####.exr). Frames are independent: a farm splits a sequence by
+      ranges, and --skip-existing leaves frames whose outputs exist (a restarted job resumes).
 )",
      kToggles | kDisplay},
     {"bench", R"(  bench SCENE [--backend cpu|cuda] [--size WxH] [--seed N] [--threads N] [--max-depth N]

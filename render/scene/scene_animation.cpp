@@ -1,5 +1,6 @@
 #include "render/scene/scene_animation.h"
 
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -79,6 +80,38 @@ SceneDelta poseRig(Scene& scene, uint32_t rigIndex, int32_t animation, float tim
     SceneDelta delta;
     if (!movedInstances.empty()) delta |= instancesMoved(movedInstances);
     if (!movedMeshes.empty()) delta |= meshesMoved(movedMeshes);
+    return delta;
+}
+
+std::vector<int32_t> chooseAnimations(const Scene& scene, const std::string& which) {
+    std::vector<int32_t> chosen(scene.rigs.size(), -1);
+    std::string names;
+    bool found = false;
+    char* end = nullptr;
+    const long index = std::strtol(which.c_str(), &end, 10);
+    const bool byIndex = !which.empty() && *end == '\0';
+    for (size_t r = 0; r < scene.rigs.size(); ++r) {
+        const std::vector<Animation>& animations = scene.rigs[r].animations;
+        for (size_t a = 0; a < animations.size(); ++a) {
+            names += (names.empty() ? "" : ", ") + std::to_string(a) + " \"" + animations[a].name + "\"";
+            const bool match = which.empty() ? a == 0
+                               : byIndex     ? long(a) == index
+                                             : animations[a].name == which;
+            if (match && chosen[r] < 0) {
+                chosen[r] = int32_t(a);
+                found = true;
+            }
+        }
+    }
+    if (names.empty()) throw std::invalid_argument("the scene has no animation");
+    if (!found) throw std::invalid_argument("no animation \"" + which + "\" (the scene has " + names + ")");
+    return chosen;
+}
+
+SceneDelta poseAnimations(Scene& scene, const std::vector<int32_t>& chosen, float time) {
+    SceneDelta delta;
+    for (size_t r = 0; r < scene.rigs.size() && r < chosen.size(); ++r)
+        delta |= poseRig(scene, uint32_t(r), chosen[r], time);
     return delta;
 }
 

@@ -42,6 +42,8 @@ def skinned_quad(name, joints, weights, joint_count=2):
 
 
 if __name__ == "__main__":
+    # The quad slides one unit along x in the first second (pt-render render --frames).
+    animated_quad("anim_slide.gltf", [0, 1], [(0, 0, 0), (1, 0, 0)])
     # The third key time goes back: animations[0].samplers[0] is refused.
     animated_quad("anim_bad_times.gltf", [0, 1, 0.5], [(0, 0, 0), (1, 0, 0), (2, 0, 0)])
     # Vertex 2 is weighted on joint 3 of a two-joint skin.
