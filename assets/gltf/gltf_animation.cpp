@@ -104,8 +104,8 @@ KeyframeSampler readSampler(const GltfContext& ctx, const tinygltf::AnimationSam
     KeyframeSampler s;
     s.interpolation = interpolationOf(ctx, source.interpolation, element);
     s.times = readGltfFloats(ctx, source.input, 1, {element, std::string("input")});
-    const auto& accessor =
-        gltfElement(ctx, ctx.model().accessors, source.output, element + ".output", "accessor");
+    const std::string output = element + ".output";  // named: g++ 13 warns of a reference into a temporary
+    const auto& accessor = gltfElement(ctx, ctx.model().accessors, source.output, output, "accessor");
     const int typeComponents = gltfTypeComponents(accessor.type);
     s.values = readGltfFloats(ctx, source.output, typeComponents, {element, std::string("output")});
     // Weights samplers are SCALAR: a key's value is every target's weight in a row.
@@ -138,8 +138,8 @@ Animation readAnimation(const GltfContext& ctx, size_t a, const std::vector<Node
             ctx.warn(at, "has no target node; ignored");
             continue;
         }
-        const auto& node =
-            gltfElement(ctx, ctx.model().nodes, channel.target_node, at + ".target.node", "node");
+        const std::string target = at + ".target.node";
+        const auto& node = gltfElement(ctx, ctx.model().nodes, channel.target_node, target, "node");
         if (!node.matrix.empty()) {
             ctx.warn(at, "animates a node given as a matrix, which glTF does not allow; ignored");
             continue;
