@@ -19,6 +19,7 @@
 #include "assets/scene_loader.h"
 #include "render/scene/builtin_shapes.h"
 #include "render/scene/morph.h"
+#include "render/scene/scene_animation.h"
 
 namespace pt {
 namespace fs = std::filesystem;
@@ -242,21 +243,56 @@ private:
         const std::optional<JsonValue> overrides = reader.get("materialOverrides");
         const std::optional<JsonValue> morphWeights = reader.get("morphWeights");
         const std::optional<JsonValue> variant = reader.get("variant");
+        const std::optional<JsonValue> animation = reader.get("animation");
         if (file && material) material->fail("applies to shapes; a file object takes \"materialOverrides\"");
         if (shape && overrides) overrides->fail("applies to file objects; a shape takes \"material\"");
         if (shape && morphWeights)
             morphWeights->fail("applies to file objects; shapes have no morph targets");
         if (shape && variant) variant->fail("applies to file objects; shapes have no material variants");
+        if (shape && animation) animation->fail("applies to file objects; shapes have no animations");
         reader.finish();
         if (file) {
             if (overrides) object.materialOverrides = readOverrides(*overrides);
             if (morphWeights) object.morphWeights = readMorphWeights(*morphWeights);
             addFileObject(*file, morphWeights, std::move(object), index);
             if (variant) selectVariant(*variant, index);
+            if (animation) selectAnimation(*animation, index);
         } else {
             object.material = material ? material->asString() : kDefaultMaterialName;
             addShapeObject(*shape, material ? *material : value, std::move(object), index);
         }
+    }
+
+    // "animation": {"name": one of the file's animations, "time": seconds into it}; the
+    // object's rig is posed there.
+    void selectAnimation(const JsonValue& value, int32_t index) {
+        ObjectReader reader(value);
+        const JsonValue nameValue = reader.require("name");
+        const std::optional<JsonValue> timeValue = reader.get("time");
+        reader.finish();
+        const std::string name = nameValue.asString();
+        const float time = timeValue ? timeValue->asFloat() : 0.0f;
+        SceneObject& object = scene_.objects[size_t(index)];
+        const std::string file = fs::path(object.path).filename().string();
+        for (size_t r = 0; r < scene_.rigs.size(); ++r) {
+            const AnimationRig& rig = scene_.rigs[r];
+            if (rig.object != index) continue;
+            std::string known;
+            for (size_t a = 0; a < rig.animations.size(); ++a) {
+                if (rig.animations[a].name == name) {
+                    object.animation = name;
+                    object.animationTime = time;
+                    poseRig(scene_, uint32_t(r), int32_t(a), time);
+                    return;
+                }
+                known += (known.empty() ? "\"" : ", \"") + shortened(rig.animations[a].name) + "\"";
+            }
+            if (!known.empty()) {
+                nameValue.fail("\"" + shortened(name) + "\" is not an animation of " + file +
+                               " (its animations: " + shortened(known, 4 * kMaxQuotedChars) + ")");
+            }
+        }
+        value.fail(file + " has no animations");
     }
 
     // "variant": one of the file's material variants (KHR_materials_variants), by name.

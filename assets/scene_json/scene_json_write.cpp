@@ -150,6 +150,9 @@ Json objectToJson(const Scene& scene, size_t objectIndex, const fs::path& folder
     if (object.variant >= 0 && size_t(object.variant) < object.variants.size()) {
         out["variant"] = object.variants[size_t(object.variant)];
     }
+    if (object.kind == ObjectKind::File && !object.animation.empty()) {
+        out["animation"] = {{"name", object.animation}, {"time", floatToJson(object.animationTime)}};
+    }
     Json transform = transformToJson(object.transform);
     if (!transform.empty()) out["transform"] = std::move(transform);
     return out;

@@ -142,6 +142,10 @@ struct SceneObject {
     // the one its instances show (-1: none, the file's default materials).
     std::vector<std::string> variants;
     int32_t variant = -1;
+    // File: the animation its rig shows (render/scene/scene_animation.h), by name ("": the
+    // rest pose), and the time into it, seconds.
+    std::string animation;
+    float animationTime = 0.0f;
 };
 
 // Shows variant `variant` of objects[object] (-1: the file's default materials) on every
