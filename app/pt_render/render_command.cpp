@@ -292,8 +292,9 @@ int renderSequence(const RenderRequest& r, Scene& scene, const FrameContext& c, 
                 std::fprintf(stderr, "frame %lld: done before, skipped\n", (long long)frames[i]);
             continue;
         }
+        const float time = float(double(frames[i]) / r.fps);
         const SyncReport sync =
-            c.backend.sync(scene, poseAnimations(scene, chosen, float(double(frames[i]) / r.fps)));
+            c.backend.sync(scene, poseAnimations(scene, chosen, time, skinningSite(c.backend)));
         const BarSpan span{"frames", double(i) / double(frames.size()), 1.0 / double(frames.size())};
         if (const int code = renderFrame(fr, c, sync, targetSpp, bar, interrupt, span)) return code;
     }

@@ -30,6 +30,10 @@ struct SkinnedMesh {
     std::vector<Vec3> bindPositions, bindNormals;
     std::vector<Vec4> bindTangents;
     std::vector<JointInfluences> influences;  // parallel to the positions, normalised
+    // The joint matrices of a pose left to a backend that skins on its device
+    // (SkinningSite::Device, render/scene/scene_animation.h): the Scene mesh's vertices then
+    // show an earlier pose until skinPendingOnHost. Empty once the host vertices are current.
+    std::vector<Affine3> pendingJoints;
 };
 
 // A node whose mesh has morph targets: weight channels of the node drive that mesh.

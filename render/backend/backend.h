@@ -17,6 +17,7 @@
 #include "render/compile/scene_features.h"
 #include "render/math/ray.h"
 #include "render/scene/scene.h"
+#include "render/scene/scene_animation.h"
 #include "render/scene/scene_changes.h"
 #include "render/util/progress.h"
 
@@ -74,6 +75,10 @@ struct BackendCapabilities {
     bool gpuScheduling = false;
     // copyBeautyToDevice() can fill device memory: frames may reach the screen through interop.
     bool deviceFrames = false;
+    // It skins meshes on its device from the joint matrices a pose leaves pending
+    // (SkinningSite::Device, render/scene/scene_animation.h). A backend without it reads the
+    // Scene's vertices: pose with SkinningSite::Host, or skinPendingOnHost before its sync.
+    bool skinsOnDevice = false;
 };
 
 class Backend {
@@ -202,6 +207,11 @@ void requireDenoiseGuides(const Backend& backend);
 // "cpu", or "cuda" where built. Throws std::invalid_argument naming the backends available,
 // or, for "cuda" on a machine without a usable GPU, saying why.
 std::unique_ptr<Backend> createBackend(const std::string& name);
+// Where a front end poses skinned meshes for `backend`: on its device where it skins there.
+inline SkinningSite skinningSite(const Backend& backend) {
+    return backend.capabilities().skinsOnDevice ? SkinningSite::Device : SkinningSite::Host;
+}
+
 // The backend a front end opens when the user names none: "cuda" where this build has it and
 // a usable GPU is present, else "cpu".
 std::string defaultBackendName();

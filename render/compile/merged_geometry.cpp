@@ -23,14 +23,27 @@ bool nearOriginForItsSize(const Mesh& mesh, const Affine3& objectToWorld) {
     return position <= kMaxPositionToSize * size;
 }
 
+// Meshes a rig skins. Like morphed meshes, they move every frame of an animation: merged, each
+// frame would bake them again on the host, and a GPU skin (SkinningSite::Device) could not.
+std::vector<bool> skinnedMeshes(const Scene& scene) {
+    std::vector<bool> skinned(scene.meshes.size(), false);
+    for (const AnimationRig& rig : scene.rigs) {
+        for (const SkinnedMesh& s : rig.skinnedMeshes) {
+            if (s.mesh < skinned.size()) skinned[s.mesh] = true;
+        }
+    }
+    return skinned;
+}
+
 // `uses`: the traced instances of each mesh. A mesh copied once per use costs its triangles
 // times its uses; past kMaxCopiedTriangles a mesh stays instanced (a forest of one tree).
-bool mergeable(const Scene& scene, size_t i, const std::vector<uint32_t>& uses) {
+bool mergeable(const Scene& scene, size_t i, const std::vector<uint32_t>& uses,
+               const std::vector<bool>& skinned) {
     if (!isTracedInstance(scene, i)) return false;
     const Instance& instance = scene.instances[i];
     const Mesh& mesh = scene.meshes[instance.mesh];
     const uint64_t copies = uint64_t(mesh.primitiveCount()) * uses[instance.mesh];
-    return mesh.kind == GeometryKind::Triangles && mesh.morphTargets.empty() &&
+    return mesh.kind == GeometryKind::Triangles && mesh.morphTargets.empty() && !skinned[instance.mesh] &&
            mesh.primitiveCount() <= kMaxMergedMeshTriangles &&
            (uses[instance.mesh] == 1 || copies <= kMaxCopiedTriangles) &&
            nearOriginForItsSize(mesh, instance.objectToWorld);
@@ -53,9 +66,10 @@ void planMergedGeometry(const Scene& scene, CompiledScene& out) {
     for (size_t i = 0; i < scene.instances.size(); ++i) {
         if (isTracedInstance(scene, i)) ++uses[scene.instances[i].mesh];
     }
+    const std::vector<bool> skinned = skinnedMeshes(scene);
     uint32_t triangles = 0;
     for (size_t i = 0; i < scene.instances.size(); ++i) {
-        if (!mergeable(scene, i, uses)) continue;
+        if (!mergeable(scene, i, uses, skinned)) continue;
         const uint32_t count = scene.meshes[scene.instances[i].mesh].primitiveCount();
         if (triangles + count > kMaxMergedTriangles) break;
         const uint32_t vertices = uint32_t(scene.meshes[scene.instances[i].mesh].positions.size());

@@ -10,12 +10,10 @@
 namespace pt {
 namespace {
 
-// Skins `skinned` in its node's space; a mesh with morph targets is morphed first, as glTF
-// orders them, and skinned from its morphed vertices.
-void poseSkinnedMesh(const AnimationRig& rig, const SkinnedMesh& skinned, const std::vector<Affine3>& globals,
-                     Mesh& mesh) {
-    const std::vector<Affine3> joints =
-        jointMatrices(rig.skins[skinned.skin], globals, globals[skinned.node]);
+// Skins `skinned` in its node's space at joint matrices `joints`; a mesh with morph targets is
+// morphed first, as glTF orders them, and skinned from its morphed vertices.
+void skinOnHost(SkinnedMesh& skinned, const std::vector<Affine3>& joints, Mesh& mesh) {
+    skinned.pendingJoints.clear();
     if (mesh.morphTargets.empty()) {
         skinVertices(joints,
                      {skinned.bindPositions, skinned.bindNormals, skinned.bindTangents, skinned.influences},
@@ -28,12 +26,18 @@ void poseSkinnedMesh(const AnimationRig& rig, const SkinnedMesh& skinned, const 
                  mesh.normals, mesh.tangents);
 }
 
+// Whether `skinned` still deforms Scene mesh `mesh` as imported (an edit may have replaced it).
+bool stillSkins(const SkinnedMesh& skinned, const AnimationRig& rig, const Scene& scene) {
+    return skinned.mesh < scene.meshes.size() && skinned.skin < rig.skins.size() &&
+           scene.meshes[skinned.mesh].positions.size() == skinned.influences.size();
+}
+
 }  // namespace
 
-SceneDelta poseRig(Scene& scene, uint32_t rigIndex, int32_t animation, float time) {
+SceneDelta poseRig(Scene& scene, uint32_t rigIndex, int32_t animation, float time, SkinningSite site) {
     if (rigIndex >= scene.rigs.size())
         throw std::invalid_argument("rig " + std::to_string(rigIndex) + " does not exist");
-    const AnimationRig& rig = scene.rigs[rigIndex];
+    AnimationRig& rig = scene.rigs[rigIndex];
     if (animation >= int32_t(rig.animations.size())) {
         throw std::invalid_argument("animation " + std::to_string(animation) + " does not exist (" +
                                     std::to_string(rig.animations.size()) + " in the file)");
@@ -68,13 +72,15 @@ SceneDelta poseRig(Scene& scene, uint32_t rigIndex, int32_t animation, float tim
         if (!skinnedMesh[morphed.mesh]) applyMorphWeights(mesh);  // else morphed as it is skinned
         movedMeshes.push_back(morphed.mesh);
     }
-    for (const SkinnedMesh& skinned : rig.skinnedMeshes) {
-        if (skinned.mesh >= scene.meshes.size() || skinned.skin >= rig.skins.size() ||
-            skinned.node >= globals.size())
-            continue;
+    for (SkinnedMesh& skinned : rig.skinnedMeshes) {
+        if (!stillSkins(skinned, rig, scene) || skinned.node >= globals.size()) continue;
         Mesh& mesh = scene.meshes[skinned.mesh];
-        if (mesh.positions.size() != skinned.influences.size()) continue;  // no longer this mesh
-        poseSkinnedMesh(rig, skinned, globals, mesh);
+        std::vector<Affine3> joints = jointMatrices(rig.skins[skinned.skin], globals, globals[skinned.node]);
+        if (site == SkinningSite::Device && mesh.morphTargets.empty()) {
+            skinned.pendingJoints = std::move(joints);
+        } else {
+            skinOnHost(skinned, joints, mesh);
+        }
         movedMeshes.push_back(skinned.mesh);
     }
     SceneDelta delta;
@@ -108,11 +114,37 @@ std::vector<int32_t> chooseAnimations(const Scene& scene, const std::string& whi
     return chosen;
 }
 
-SceneDelta poseAnimations(Scene& scene, const std::vector<int32_t>& chosen, float time) {
+SceneDelta poseAnimations(Scene& scene, const std::vector<int32_t>& chosen, float time, SkinningSite site) {
     SceneDelta delta;
     for (size_t r = 0; r < scene.rigs.size() && r < chosen.size(); ++r)
-        delta |= poseRig(scene, uint32_t(r), chosen[r], time);
+        delta |= poseRig(scene, uint32_t(r), chosen[r], time, site);
     return delta;
+}
+
+const SkinnedMesh* pendingSkinOf(const Scene& scene, uint32_t mesh) {
+    for (const AnimationRig& rig : scene.rigs) {
+        for (const SkinnedMesh& skinned : rig.skinnedMeshes) {
+            if (skinned.mesh == mesh && !skinned.pendingJoints.empty() && stillSkins(skinned, rig, scene))
+                return &skinned;
+        }
+    }
+    return nullptr;
+}
+
+std::vector<uint32_t> skinPendingOnHost(Scene& scene) {
+    std::vector<uint32_t> skinnedMeshes;
+    for (AnimationRig& rig : scene.rigs) {
+        for (SkinnedMesh& skinned : rig.skinnedMeshes) {
+            if (skinned.pendingJoints.empty()) continue;
+            if (stillSkins(skinned, rig, scene)) {
+                const std::vector<Affine3> joints = std::move(skinned.pendingJoints);
+                skinOnHost(skinned, joints, scene.meshes[skinned.mesh]);
+                skinnedMeshes.push_back(skinned.mesh);
+            }
+            skinned.pendingJoints.clear();
+        }
+    }
+    return skinnedMeshes;
 }
 
 }  // namespace pt

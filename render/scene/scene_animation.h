@@ -13,11 +13,20 @@
 
 namespace pt {
 
+// Where a pose's skinned vertices are computed. Host: into the Scene's meshes, which every
+// backend reads. Device: by a backend that skins on its device (BackendCapabilities::
+// skinsOnDevice), from the joint matrices the pose keeps with each skinned mesh
+// (SkinnedMesh::pendingJoints), so a frame costs the host its joints, not its vertices; the
+// Scene's vertices of those meshes then lag until skinPendingOnHost. Meshes that are morphed
+// as well as skinned are always skinned on the host.
+enum class SkinningSite { Host, Device };
+
 // Poses scene.rigs[rig] at `time` (seconds) of animation `animation` (-1: the rest pose, no
 // animation). Instances or meshes the rig names that no longer fit it (an edit removed them)
 // are left alone. Throws std::invalid_argument for an animation index out of range or a rig
 // whose data contradicts itself (a channel naming a missing node, a cycle).
-SceneDelta poseRig(Scene& scene, uint32_t rig, int32_t animation, float time);
+SceneDelta poseRig(Scene& scene, uint32_t rig, int32_t animation, float time,
+                   SkinningSite site = SkinningSite::Host);
 
 // Which animation each rig plays, for a choice by name or by index (a whole number), or ""
 // for each rig's first: -1 (the rest pose) for a rig without it. Throws std::invalid_argument
@@ -25,6 +34,16 @@ SceneDelta poseRig(Scene& scene, uint32_t rig, int32_t animation, float time);
 std::vector<int32_t> chooseAnimations(const Scene& scene, const std::string& which);
 
 // Poses every rig at `time` of its chosen animation; what moved, merged.
-SceneDelta poseAnimations(Scene& scene, const std::vector<int32_t>& chosen, float time);
+SceneDelta poseAnimations(Scene& scene, const std::vector<int32_t>& chosen, float time,
+                          SkinningSite site = SkinningSite::Host);
+
+// The skinned mesh whose joints a device pose left pending for Scene mesh `mesh`, or null
+// (none, or its vertices on the host are current).
+const SkinnedMesh* pendingSkinOf(const Scene& scene, uint32_t mesh);
+
+// Skins on the host every mesh a device pose left pending, so the Scene's vertices show the
+// current pose (before a backend that reads them takes over, or a host reader); returns
+// those meshes. A backend that skinned them on its device already shows the same vertices.
+std::vector<uint32_t> skinPendingOnHost(Scene& scene);
 
 }  // namespace pt

@@ -1,11 +1,33 @@
 #pragma once
 // Builds small scenes in code for tests: named materials and built-in shapes with transforms.
+#include <random>
 #include <string>
 
 #include "render/scene/builtin_shapes.h"
 #include "render/scene/scene.h"
 
 namespace pt::test {
+
+// A bumpy grid of (n x n) quads over [-1, 1]^2 in the XZ plane, moved `x` along X, heights
+// within +-0.05 drawn from `seed`, as one mesh.
+inline Mesh bumpyGrid(uint32_t n, uint32_t seed, float x = 0.0f) {
+    Mesh mesh;
+    mesh.name = "grid " + std::to_string(seed);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> height(-0.05f, 0.05f);
+    for (uint32_t z = 0; z <= n; ++z) {
+        for (uint32_t i = 0; i <= n; ++i) {
+            mesh.positions.push_back({x + 2.0f * i / n - 1.0f, height(rng), 2.0f * z / n - 1.0f});
+        }
+    }
+    for (uint32_t z = 0; z < n; ++z) {
+        for (uint32_t i = 0; i < n; ++i) {
+            const uint32_t a = z * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+            mesh.indices.insert(mesh.indices.end(), {a, c, b, b, c, d});
+        }
+    }
+    return mesh;
+}
 
 inline uint32_t addMaterial(Scene& scene, const std::string& name, const Material& m) {
     scene.materials.push_back({name, m, -1});

@@ -12,6 +12,7 @@
 #include "render/backend/mean_image.h"
 #include "render/backend/toggle_states.h"
 #include "render/integrator/camera.h"
+#include "render/scene/scene_animation.h"
 #include "render/util/stopwatch.h"
 
 namespace pt::cuda {
@@ -186,22 +187,39 @@ void CudaBackend::fullBuild(const Scene& scene, const ProgressFn& progress, Sync
     timedStep(stream_, report, "upload", [&] { device_.uploadAll(*compiled_, stream_); });
     // Measured when a BLAS is first refitted, not here: most meshes never are.
     builtSah_.assign(device_.blasCount(), kSahUnknown);
+    skins_.clear();
+    skinnedOnDevice_.assign(scene.meshes.size(), false);
+    // The compile read the host's vertices of meshes whose pose the device is to skin (an
+    // earlier pose): they are skinned and refitted before the first frame.
+    std::vector<uint32_t> pending;
+    for (uint32_t i = 0; i < scene.meshes.size(); ++i) {
+        if (pendingSkinOf(scene, i)) pending.push_back(i);
+    }
+    bool needsFullBuild = false;
+    if (!pending.empty()) refitChangedMeshes(scene, TouchedIds::only(pending), report, needsFullBuild);
     buildTlasOnDevice(report);
-    hostTlasStale_ = false;  // the compile built the host's TLAS too
+    hostTlasStale_ = !pending.empty();  // else the compile built the host's TLAS too
 }
 
 bool CudaBackend::uploadChangedVertices(const Mesh& mesh, uint32_t meshIndex) {
     const uint32_t first = meshVertexOffset_[meshIndex], count = uint32_t(mesh.positions.size());
-    const auto positions =
-        copyChangedRange(compiled_->positions.data() + first, mesh.positions.data(), count);
+    // After a GPU skin, the device's vertices differ from compiled_'s wherever the pose moved
+    // them: the whole mesh goes up.
+    const bool whole = skinnedOnDevice_[meshIndex];
+    skinnedOnDevice_[meshIndex] = false;
+    auto copy = [&](auto* stored, const auto* incoming) {
+        if (!whole) return copyChangedRange(stored + first, incoming, count);
+        std::memcpy(stored + first, incoming, size_t(count) * sizeof(*incoming));
+        return std::pair<uint32_t, uint32_t>(0u, count);
+    };
+    const auto positions = copy(compiled_->positions.data(), mesh.positions.data());
     device_.uploadPositions(*compiled_, first + positions.first, positions.second, stream_);
     if (mesh.normals.size() == count) {
-        const auto normals = copyChangedRange(compiled_->normals.data() + first, mesh.normals.data(), count);
+        const auto normals = copy(compiled_->normals.data(), mesh.normals.data());
         device_.uploadNormals(*compiled_, first + normals.first, normals.second, stream_);
     }
     if (!compiled_->tangents.empty() && mesh.tangents.size() == count) {
-        const auto tangents =
-            copyChangedRange(compiled_->tangents.data() + first, mesh.tangents.data(), count);
+        const auto tangents = copy(compiled_->tangents.data(), mesh.tangents.data());
         device_.uploadTangents(*compiled_, first + tangents.first, tangents.second, stream_);
     }
     return positions.second > 0;
@@ -214,7 +232,7 @@ std::optional<SyncAction> CudaBackend::refitChangedMeshes(const Scene& scene, co
         needsFullBuild = true;
         return std::nullopt;
     }
-    std::vector<uint32_t> changed;
+    std::vector<uint32_t> changed, skinned;
     timedStep(stream_, report, "upload vertices", [&] {
         for (const uint32_t i : meshes.below(meshBlases)) {
             const Mesh& mesh = scene.meshes[i];
@@ -235,11 +253,25 @@ std::optional<SyncAction> CudaBackend::refitChangedMeshes(const Scene& scene, co
                 needsFullBuild = true;
                 return;
             }
+            if (pendingSkinOf(scene, i)) {
+                skinned.push_back(i);
+                continue;
+            }
             // Normals or tangents alone change shading, not bounds: uploaded, not refitted.
             if (uploadChangedVertices(mesh, i)) changed.push_back(i);
         }
     });
-    if (needsFullBuild || changed.empty()) return std::nullopt;
+    if (needsFullBuild) return std::nullopt;
+    if (!skinned.empty()) {
+        timedStep(stream_, report, "skin (GPU)", [&] {
+            for (const uint32_t i : skinned) {
+                skins_.skin(i, *pendingSkinOf(scene, i), device_.vertices(meshVertexOffset_[i]), stream_);
+                skinnedOnDevice_[i] = true;
+            }
+        });
+        changed.insert(changed.end(), skinned.begin(), skinned.end());
+    }
+    if (changed.empty()) return std::nullopt;
 
     bool rebuilt = false;
     bool mergedCopiesChanged = false;  // a merged instance's mesh moved: its copies follow
@@ -596,6 +628,7 @@ std::vector<std::pair<std::string, uint64_t>> CudaBackend::deviceMemoryByBuffer(
     rows.emplace_back("accumulation (beauty)", sum_.bytes());
     rows.emplace_back("accumulation (AOVs)", aovSums_.bytes());
     rows.emplace_back("denoiser", denoiser_.bytes() + denoised_.bytes());
+    rows.emplace_back("skins (bind poses, joints)", skins_.bytes());
     rows.emplace_back("BVH scratch (primitive boxes)", primBoxes_.bytes());
     rows.emplace_back("BVH scratch (refit visits)", refitVisits_.bytes());
     rows.emplace_back("BVH scratch (LBVH builder)", lbvh_.bytes());

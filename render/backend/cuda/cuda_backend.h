@@ -14,6 +14,7 @@
 
 #include "render/backend/backend.h"
 #include "render/backend/cuda/device_scene.h"
+#include "render/backend/cuda/device_skins.h"
 #include "render/backend/cuda/gpu_bvh.h"
 #include "render/backend/cuda/gpu_denoiser.h"
 #include "render/backend/cuda/path_scheduler.h"
@@ -30,7 +31,7 @@ public:
     ~CudaBackend() override;
 
     std::string name() const override { return "cuda"; }
-    BackendCapabilities capabilities() const override { return {true, true}; }
+    BackendCapabilities capabilities() const override { return {true, true, true}; }
     std::string deviceName() const override;
     SyncReport sync(const Scene& scene, const SceneDelta& changes, const ProgressFn& progress) override;
     void setToggles(const IntegratorToggles& toggles) override;
@@ -89,7 +90,8 @@ private:
     std::optional<SyncAction> refitChangedMeshes(const Scene& scene, const TouchedIds& meshes,
                                                  SyncReport& report, bool& needsFullBuild);
     // Copies the vertices of triangle mesh `meshIndex` that differ from the host copy into it
-    // and uploads them (the changed range of each array); returns whether its positions changed.
+    // and uploads them (the changed range of each array; all of them where the device's are
+    // ahead of the host copy, skinned there); returns whether its positions changed.
     bool uploadChangedVertices(const Mesh& mesh, uint32_t meshIndex);
     // Refits BLAS i to its uploaded primitives, rebuilding it on the GPU when its SAH cost has
     // drifted past toggles_.rebuildSahRatio; returns whether it was rebuilt.
@@ -128,6 +130,10 @@ private:
     DeviceBuffer<Hit> queryHits_;
     std::vector<float> builtSah_;             // per BLAS, after its last build; kSahUnknown until needed
     std::vector<uint32_t> meshVertexOffset_;  // per mesh: its first vertex in compiled_->positions
+    DeviceSkins skins_;
+    // Per mesh: its vertices on the device were skinned there (device_skins.h), so compiled_'s
+    // copy of them lags: the next host edit of the mesh uploads all of them.
+    std::vector<bool> skinnedOnDevice_;
     // compiled_->tlasNodes (the host's TLAS, which the light table takes the scene's bounds
     // from) lags moved instances or refitted BLASes; rebuilt only when the lights need it.
     bool hostTlasStale_ = false;

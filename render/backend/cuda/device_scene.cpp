@@ -116,6 +116,15 @@ void DeviceScene::uploadTangents(const CompiledScene& host, uint32_t first, uint
     if (tangents_.size() != 0) tangents_.uploadAt(first, host.tangents.data() + first, count, stream);
 }
 
+DeviceScene::VertexArrays DeviceScene::vertices(uint32_t first) const {
+    PT_CHECK(first <= positions_.size());
+    VertexArrays arrays;
+    arrays.positions = positions_.data() + first;
+    if (normals_.size() != 0) arrays.normals = normals_.data() + first;
+    if (tangents_.size() != 0) arrays.tangents = tangents_.data() + first;
+    return arrays;
+}
+
 void DeviceScene::uploadSpheres(const CompiledScene& host, uint32_t blas, cudaStream_t stream) {
     const BlasRef& b = hostBlases_[blas];
     spheres_.uploadAt(b.primitiveOffset, host.spheres.data() + b.primitiveOffset, b.primitiveCount, stream);

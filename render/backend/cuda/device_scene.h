@@ -43,6 +43,14 @@ public:
     void uploadPositions(const CompiledScene& host, uint32_t first, uint32_t count, cudaStream_t stream);
     void uploadNormals(const CompiledScene& host, uint32_t first, uint32_t count, cudaStream_t stream);
     void uploadTangents(const CompiledScene& host, uint32_t first, uint32_t count, cudaStream_t stream);
+    // Where vertices from `first` on live on the device, for kernels that write them (a GPU
+    // skin); normals and tangents null where the device holds none.
+    struct VertexArrays {
+        Vec3* positions = nullptr;
+        Vec3* normals = nullptr;
+        Vec4* tangents = nullptr;
+    };
+    VertexArrays vertices(uint32_t first) const;
     // The spheres of sphere BLAS `blas`.
     void uploadSpheres(const CompiledScene& host, uint32_t blas, cudaStream_t stream);
 

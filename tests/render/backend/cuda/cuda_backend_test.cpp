@@ -59,21 +59,8 @@ Scene bumpyGridScene(uint32_t n, uint32_t seed) {
     scene.camera.position = {0.0f, 2.5f, 2.5f};
     scene.camera.lookAt = {0, 0, 0};
     scene.environment.color = {1, 1, 1};
-    Mesh mesh;
+    Mesh mesh = test::bumpyGrid(n, seed);
     mesh.name = "grid";
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> height(-0.05f, 0.05f);
-    for (uint32_t z = 0; z <= n; ++z) {
-        for (uint32_t x = 0; x <= n; ++x) {
-            mesh.positions.push_back({2.0f * x / n - 1.0f, height(rng), 2.0f * z / n - 1.0f});
-        }
-    }
-    for (uint32_t z = 0; z < n; ++z) {
-        for (uint32_t x = 0; x < n; ++x) {
-            const uint32_t a = z * (n + 1) + x, b = a + 1, c = a + n + 1, d = c + 1;
-            mesh.indices.insert(mesh.indices.end(), {a, c, b, b, c, d});
-        }
-    }
     scene.meshes.push_back(mesh);
     const uint32_t material = addMaterial(scene, "grey", test::diffuse({0.5f, 0.5f, 0.5f}));
     for (int i = 0; i < 3; ++i) {

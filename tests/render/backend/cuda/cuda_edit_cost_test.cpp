@@ -19,26 +19,6 @@
 namespace pt {
 namespace {
 
-// A bumpy (n x n)-quad grid in the XZ plane centred at `x`, as one mesh.
-Mesh bumpyGrid(uint32_t n, float x, uint32_t seed) {
-    Mesh mesh;
-    mesh.name = "grid " + std::to_string(seed);
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> height(-0.05f, 0.05f);
-    for (uint32_t z = 0; z <= n; ++z) {
-        for (uint32_t i = 0; i <= n; ++i) {
-            mesh.positions.push_back({x + 2.0f * i / n - 1.0f, height(rng), 2.0f * z / n - 1.0f});
-        }
-    }
-    for (uint32_t z = 0; z < n; ++z) {
-        for (uint32_t i = 0; i < n; ++i) {
-            const uint32_t a = z * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
-            mesh.indices.insert(mesh.indices.end(), {a, c, b, b, c, d});
-        }
-    }
-    return mesh;
-}
-
 // Two grids side by side (meshes 0 and 1), one instance each, under a sky.
 Scene twoGridScene(uint32_t n) {
     Scene scene;
@@ -48,7 +28,7 @@ Scene twoGridScene(uint32_t n) {
     scene.environment.color = {1, 1, 1};
     const uint32_t grey = test::addMaterial(scene, "grey", test::diffuse({0.5f, 0.5f, 0.5f}));
     for (uint32_t m = 0; m < 2; ++m) {
-        scene.meshes.push_back(bumpyGrid(n, m == 0 ? -1.1f : 1.1f, m + 1));
+        scene.meshes.push_back(test::bumpyGrid(n, m + 1, m == 0 ? -1.1f : 1.1f));
         Instance inst;
         inst.name = "grid " + std::to_string(m);
         inst.mesh = m;
