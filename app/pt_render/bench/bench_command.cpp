@@ -9,6 +9,7 @@
 #include "cli/render_setup.h"
 #include "cli/scene_input.h"
 #include "cli/toggle_options.h"
+#include "pt_render/bench/bench_animation.h"
 #include "pt_render/bench/bench_bvh.h"
 #include "pt_render/bench/bench_edits.h"
 #include "pt_render/bench/bench_kernels.h"
@@ -119,6 +120,8 @@ int runBench(const std::vector<std::string>& args) {
     phase("edits");
     benchEdits(r.setup.backend, scene, r.settings, report);
     benchEditInFlight(r.setup.backend, scene, r.settings, report);
+    phase("animation");
+    benchAnimation(r.setup.backend, scene, r.settings, report);
     phase("denoise");
     benchDenoise(*backend, scene, r.settings, report);
     phase("image check");

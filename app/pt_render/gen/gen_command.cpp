@@ -1,6 +1,7 @@
 // pt-render gen: synthetic glTF scenes at sizes no shared asset reaches, for measuring BVH
-// build and trace rates: a displaced sphere of up to 10 million triangles, or a field of up
-// to a million instances of one mesh.
+// build and trace rates: a displaced sphere of up to 10 million triangles, the same skinned
+// into an animated column (per-frame skinning and refit), or a field of up to a million
+// instances of one mesh.
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include "pt_render/commands.h"
 #include "pt_render/gen/gen_field.h"
 #include "pt_render/gen/gen_gltf_writer.h"
+#include "pt_render/gen/gen_skinned.h"
 #include "pt_render/gen/gen_source_mesh.h"
 #include "pt_render/gen/gen_sphere.h"
 
@@ -43,7 +45,7 @@ GenOutput parseOutput(const Options& o) {
     return out;
 }
 
-// The kind (sphere or field) is the only positional argument.
+// The kind (sphere, skinned or field) is the only positional argument.
 void checkPositional(const Options& o) {
     if (o.positional().size() > 1) throw UsageError("unexpected argument \"" + o.positional()[1] + "\"");
 }
@@ -97,6 +99,30 @@ int runSphere(const std::vector<std::string>& args) {
     return 0;
 }
 
+int runSkinned(const std::vector<std::string>& args) {
+    const Options o(args, {"-o", "--triangles", "--displace", "--joints", "--seed"}, {"--quiet"});
+    checkPositional(o);
+    const GenOutput out = parseOutput(o);
+    const auto triangles = o.positiveInt("--triangles");
+    if (!triangles) throw UsageError("give the size: --triangles N");
+    if (*triangles > kMaxSphereTriangles) throw UsageError("--triangles: at most 10000000");
+    SkinnedSpec spec;
+    spec.targetTriangles = *triangles;
+    spec.amplitude = parseAmplitude(o);
+    spec.seed = out.seed;
+    spec.joints = o.positiveInt("--joints").value_or(spec.joints);
+    if (spec.joints < 2 || spec.joints > 256) throw UsageError("--joints: from 2 to 256");
+    checkOutputFolder(out.gltfPath);
+
+    ProgressBar bar(!out.quiet);
+    const GenScene scene = generateSkinnedColumn(spec, bar.callback());
+    writeAndList(scene, out, bar);
+    std::printf("%zu triangles, %zu vertices, %u joints, animation \"%s\" (%g s, looping)\n",
+                scene.mesh.indices.size() / 3, scene.mesh.positions.size(), spec.joints,
+                scene.skin->animation.c_str(), double(spec.periodSeconds));
+    return 0;
+}
+
 int runField(const std::vector<std::string>& args) {
     const Options o(args, {"-o", "--count", "--mesh", "--spacing", "--seed"}, {"--quiet"});
     checkPositional(o);
@@ -133,8 +159,10 @@ int runGen(const std::vector<std::string>& args) {
     const std::string kind = args.empty() ? "" : args[0];
     if (kind == "sphere") return runSphere(args);
     if (kind == "field") return runField(args);
-    throw UsageError(kind.empty() || kind[0] == '-' ? "expected a kind: sphere or field"
-                                                    : "unknown kind \"" + kind + "\" (sphere or field)");
+    if (kind == "skinned") return runSkinned(args);
+    throw UsageError(kind.empty() || kind[0] == '-'
+                         ? "expected a kind: sphere, skinned or field"
+                         : "unknown kind \"" + kind + "\" (sphere, skinned or field)");
 }
 
 }  // namespace pt::cli

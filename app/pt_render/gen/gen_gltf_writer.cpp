@@ -19,19 +19,72 @@ namespace {
 static_assert(sizeof(Vec3) == 12, "POSITION and NORMAL are written straight from Vec3 arrays");
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "glTF buffers are little-endian");
 
-constexpr int kFloat = 5126, kUnsignedInt = 5125;
+constexpr int kFloat = 5126, kUnsignedInt = 5125, kUnsignedShort = 5123;
 constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
 
-// The buffer: positions, normals, then indices, each tightly packed (all 4-byte aligned).
-struct BufferLayout {
-    uint64_t positions = 0, normals = 0, indices = 0, total = 0;
-
-    explicit BufferLayout(const Mesh& mesh) {
-        normals = positions + mesh.positions.size() * sizeof(Vec3);
-        indices = normals + mesh.normals.size() * sizeof(Vec3);
-        total = indices + mesh.indices.size() * sizeof(uint32_t);
-    }
+// One tightly packed array of the buffer (each a multiple of 4 bytes, so all stay 4-byte
+// aligned), with the accessor that reads it: positions, normals, indices, then a skin's joints,
+// weights and inverse bind matrices and its animation's key times and rotations.
+struct BinPart {
+    const void* data = nullptr;
+    uint64_t bytes = 0;
+    uint64_t offset = 0;              // in the buffer
+    nlohmann::ordered_json accessor;  // without its bufferView, the part's own
+    int target = 0;                   // the bufferView's target; 0: none (not vertex data)
 };
+
+template <class T>
+BinPart part(const std::vector<T>& array, const char* type, int componentType, int target = 0) {
+    BinPart p;
+    p.data = array.data();
+    p.bytes = array.size() * sizeof(T);
+    p.accessor = {{"componentType", componentType}, {"count", array.size()}, {"type", type}};
+    p.target = target;
+    return p;
+}
+
+void bounds(const std::vector<Vec3>& points, Vec3& lo, Vec3& hi) {
+    lo = hi = points.empty() ? Vec3(0.0f) : points[0];
+    for (const Vec3& p : points) {
+        lo = vmin(lo, p);
+        hi = vmax(hi, p);
+    }
+}
+
+// The buffer's parts in order, laid out end to end; accessor i reads part i.
+std::vector<BinPart> binParts(const GenScene& scene) {
+    static_assert(sizeof(std::array<uint16_t, 4>) == 8 && sizeof(std::array<float, 16>) == 64, "packed");
+    const Mesh& mesh = scene.mesh;
+    Vec3 lo, hi;
+    bounds(mesh.positions, lo, hi);
+    std::vector<BinPart> parts = {part(mesh.positions, "VEC3", kFloat, kArrayBuffer),
+                                  part(mesh.normals, "VEC3", kFloat, kArrayBuffer),
+                                  part(mesh.indices, "SCALAR", kUnsignedInt, kElementArrayBuffer)};
+    parts[0].accessor["min"] = {lo.x, lo.y, lo.z};
+    parts[0].accessor["max"] = {hi.x, hi.y, hi.z};
+    if (scene.skin) {
+        const GenSkin& skin = *scene.skin;
+        parts.push_back(part(skin.vertexJoints, "VEC4", kUnsignedShort, kArrayBuffer));
+        parts.push_back(part(skin.vertexWeights, "VEC4", kFloat, kArrayBuffer));
+        parts.push_back(part(skin.inverseBindMatrices, "MAT4", kFloat));
+        parts.push_back(part(skin.keyTimes, "SCALAR", kFloat));
+        parts.back().accessor["min"] = {skin.keyTimes.front()};
+        parts.back().accessor["max"] = {skin.keyTimes.back()};
+        for (const std::vector<Vec4>& rotations : skin.keyRotations)
+            parts.push_back(part(rotations, "VEC4", kFloat));
+    }
+    uint64_t offset = 0;
+    for (BinPart& p : parts) {
+        p.offset = offset;
+        offset += p.bytes;
+    }
+    return parts;
+}
+
+uint64_t binBytes(const std::vector<BinPart>& parts) { return parts.back().offset + parts.back().bytes; }
+
+// Accessor indices of binParts' parts.
+enum : int { kPositions, kNormals, kIndices, kJoints, kWeights, kInverseBinds, kKeyTimes, kFirstRotations };
 
 // A URI reference for a file name: every byte outside RFC 3986's unreserved set escaped
 // ("+" too, which tinygltf reads as a space).
@@ -65,48 +118,50 @@ void closeChecked(File f, const std::string& path) {
     if (std::fclose(f.release()) != 0 || failed) throw std::runtime_error(path + ": write failed");
 }
 
-void writeBin(const Mesh& mesh, const std::string& path, const ProgressFn& progress) {
-    const BufferLayout layout(mesh);
-    const struct {
-        const void* data;
-        uint64_t bytes;
-    } parts[] = {{mesh.positions.data(), layout.normals - layout.positions},
-                 {mesh.normals.data(), layout.indices - layout.normals},
-                 {mesh.indices.data(), layout.total - layout.indices}};
+void writeBin(const GenScene& scene, const std::string& path, const ProgressFn& progress) {
+    const std::vector<BinPart> parts = binParts(scene);
+    const uint64_t total = binBytes(parts);
     writeFileAtomically(path, [&](const std::string& temp) {
         File f = openForWrite(temp, path);
         constexpr uint64_t kChunk = 8u << 20;  // progress every 8 MiB
         uint64_t written = 0;
-        for (const auto& part : parts) {
+        for (const BinPart& part : parts) {
             const char* bytes = static_cast<const char*>(part.data);
             for (uint64_t at = 0; at < part.bytes; at += kChunk) {
                 const size_t n = size_t(std::min(kChunk, part.bytes - at));
                 if (std::fwrite(bytes + at, 1, n, f.get()) != n)
                     throw std::runtime_error(path + ": write failed");
                 written += n;
-                reportProgress(progress, "write bin",
-                               double(written) / double(std::max<uint64_t>(layout.total, 1)));
+                reportProgress(progress, "write bin", double(written) / double(std::max<uint64_t>(total, 1)));
             }
         }
         closeChecked(std::move(f), path);
     });
 }
 
-void bounds(const std::vector<Vec3>& points, Vec3& lo, Vec3& hi) {
-    lo = hi = points.empty() ? Vec3(0.0f) : points[0];
-    for (const Vec3& p : points) {
-        lo = vmin(lo, p);
-        hi = vmax(hi, p);
+size_t firstJointNode(const GenScene& scene) { return 1 + scene.lights.size() + scene.instances.size(); }
+
+// The skin over the joint nodes and its animation: a LINEAR rotation channel per joint from 1 on.
+void addSkin(nlohmann::ordered_json& j, const GenScene& scene) {
+    using nlohmann::ordered_json;
+    const GenSkin& skin = *scene.skin;
+    ordered_json joints = ordered_json::array();
+    for (size_t k = 0; k < skin.joints.size(); ++k) joints.push_back(firstJointNode(scene) + k);
+    j["skins"] = {{{"joints", joints}, {"inverseBindMatrices", int(kInverseBinds)}}};
+    ordered_json samplers = ordered_json::array(), channels = ordered_json::array();
+    for (size_t k = 0; k < skin.keyRotations.size(); ++k) {
+        samplers.push_back(
+            {{"input", int(kKeyTimes)}, {"output", kFirstRotations + k}, {"interpolation", "LINEAR"}});
+        channels.push_back(
+            {{"sampler", k}, {"target", {{"node", firstJointNode(scene) + 1 + k}, {"path", "rotation"}}}});
     }
+    j["animations"] = {{{"name", skin.animation}, {"samplers", samplers}, {"channels", channels}}};
 }
 
 // Everything but the nodes and the scene that lists them, which stream after it.
 nlohmann::ordered_json documentHead(const GenScene& scene, const std::string& binUri) {
     using nlohmann::ordered_json;
-    const Mesh& mesh = scene.mesh;
-    const BufferLayout layout(mesh);
-    Vec3 lo, hi;
-    bounds(mesh.positions, lo, hi);
+    const std::vector<BinPart> parts = binParts(scene);
     ordered_json j;
     j["asset"] = {{"version", "2.0"}, {"generator", "pt-render gen"}};
     j["extensionsUsed"] = {"KHR_lights_punctual"};
@@ -119,41 +174,34 @@ nlohmann::ordered_json documentHead(const GenScene& scene, const std::string& bi
     }
     j["extensions"] = {{"KHR_lights_punctual", {{"lights", lights}}}};
     j["scene"] = 0;
-    j["buffers"] = {{{"uri", binUri}, {"byteLength", layout.total}}};
-    j["bufferViews"] = {{{"buffer", 0},
-                         {"byteOffset", layout.positions},
-                         {"byteLength", layout.normals - layout.positions},
-                         {"target", kArrayBuffer}},
-                        {{"buffer", 0},
-                         {"byteOffset", layout.normals},
-                         {"byteLength", layout.indices - layout.normals},
-                         {"target", kArrayBuffer}},
-                        {{"buffer", 0},
-                         {"byteOffset", layout.indices},
-                         {"byteLength", layout.total - layout.indices},
-                         {"target", kElementArrayBuffer}}};
-    j["accessors"] = {
-        {{"bufferView", 0},
-         {"componentType", kFloat},
-         {"count", mesh.positions.size()},
-         {"type", "VEC3"},
-         {"min", {lo.x, lo.y, lo.z}},
-         {"max", {hi.x, hi.y, hi.z}}},
-        {{"bufferView", 1}, {"componentType", kFloat}, {"count", mesh.normals.size()}, {"type", "VEC3"}},
-        {{"bufferView", 2},
-         {"componentType", kUnsignedInt},
-         {"count", mesh.indices.size()},
-         {"type", "SCALAR"}}};
+    j["buffers"] = {{{"uri", binUri}, {"byteLength", binBytes(parts)}}};
+    ordered_json views = ordered_json::array(), accessors = ordered_json::array();
+    for (size_t i = 0; i < parts.size(); ++i) {
+        ordered_json view = {{"buffer", 0}, {"byteOffset", parts[i].offset}, {"byteLength", parts[i].bytes}};
+        if (parts[i].target) view["target"] = parts[i].target;
+        views.push_back(view);
+        ordered_json accessor = {{"bufferView", i}};
+        accessor.update(parts[i].accessor);
+        accessors.push_back(accessor);
+    }
+    j["bufferViews"] = views;
+    j["accessors"] = accessors;
     j["materials"] = {
         {{"name", "default"},
          {"pbrMetallicRoughness",
           {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}}}};
-    j["meshes"] = {{{"name", mesh.name},
-                    {"primitives",
-                     {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}}, {"indices", 2}, {"material", 0}}}}}};
+    ordered_json attributes = {{"POSITION", int(kPositions)}, {"NORMAL", int(kNormals)}};
+    if (scene.skin) {
+        attributes["JOINTS_0"] = int(kJoints);
+        attributes["WEIGHTS_0"] = int(kWeights);
+    }
+    j["meshes"] = {
+        {{"name", scene.mesh.name},
+         {"primitives", {{{"attributes", attributes}, {"indices", int(kIndices)}, {"material", 0}}}}}};
     j["cameras"] = {{{"name", "camera"},
                      {"type", "perspective"},
                      {"perspective", {{"yfov", scene.camera.yfovRadians}, {"znear", scene.camera.znear}}}}};
+    if (scene.skin) addSkin(j, scene);
     return j;
 }
 
@@ -184,16 +232,25 @@ void writeNodes(std::FILE* f, const GenScene& scene, const ProgressFn& progress)
                   nameField(scene.lights[i].name) +
                       "\"extensions\": {\"KHR_lights_punctual\": {\"light\": " + std::to_string(i) + "}}");
     }
-    const std::string meshField = "\"mesh\": 0";
+    const std::string meshField = scene.skin ? "\"mesh\": 0, \"skin\": 0" : "\"mesh\": 0";
     for (size_t i = 0; i < scene.instances.size(); ++i) {
         std::fputs(",\n", f);
         writeNode(f, scene.instances[i], meshField);
         if (i % 65536 == 0)
             reportProgress(progress, "write glTF", double(i) / double(scene.instances.size()));
     }
+    // A skin's joints: a chain, each the parent of the next; the first is a root.
+    const size_t jointCount = scene.skin ? scene.skin->joints.size() : 0;
+    for (size_t k = 0; k < jointCount; ++k) {
+        std::fputs(",\n", f);
+        const std::string children =
+            k + 1 < jointCount ? ", \"children\": [" + std::to_string(firstJointNode(scene) + k + 1) + "]"
+                               : "";
+        writeNode(f, scene.skin->joints[k], "\"name\": \"joint " + std::to_string(k) + "\"" + children);
+    }
     std::fputs("\n  ],\n  \"scenes\": [{\"nodes\": [", f);
-    const size_t nodeCount = 1 + scene.lights.size() + scene.instances.size();
-    for (size_t i = 0; i < nodeCount; ++i) std::fprintf(f, i == 0 ? "%zu" : ", %zu", i);
+    const size_t rootCount = firstJointNode(scene) + (jointCount > 0 ? 1 : 0);
+    for (size_t i = 0; i < rootCount; ++i) std::fprintf(f, i == 0 ? "%zu" : ", %zu", i);
     std::fputs("]}]\n}\n", f);
     reportProgress(progress, "write glTF", 1.0);
 }
@@ -220,7 +277,7 @@ std::string binPathFor(const std::string& gltfPath) {
 void writeGenGltf(const GenScene& scene, const std::string& gltfPath, const ProgressFn& progress) {
     const std::string binPath = binPathFor(gltfPath);
     // The .bin first: a reader that sees the new .gltf finds the new buffer beside it.
-    writeBin(scene.mesh, binPath, progress);
+    writeBin(scene, binPath, progress);
     writeJson(scene, gltfPath, encodeUri(std::filesystem::path(binPath).filename().string()), progress);
 }
 

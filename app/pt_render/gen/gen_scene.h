@@ -1,6 +1,9 @@
 #pragma once
 // What `pt-render gen` writes: one mesh, the nodes that instance it, and a camera and lights
 // around them, so the file renders lit and framed when opened on its own.
+#include <array>
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,11 +32,25 @@ struct GenCamera {
     double znear = 0.01;
 };
 
+// A skin over a chain of joints (joint j's parent is joint j - 1; joint 0 is a root) and one
+// looping animation that turns joints 1 and up (glTF 2.0 skins and animations).
+struct GenSkin {
+    std::vector<GenNode> joints;  // rest poses, local to the parent joint
+    // Per vertex of the mesh: four joints (JOINTS_0) and their weights (WEIGHTS_0, summing to 1).
+    std::vector<std::array<uint16_t, 4>> vertexJoints;
+    std::vector<Vec4> vertexWeights;
+    std::vector<std::array<float, 16>> inverseBindMatrices;  // per joint, column-major
+    std::string animation;
+    std::vector<float> keyTimes;                  // seconds, increasing
+    std::vector<std::vector<Vec4>> keyRotations;  // per joint from 1 on: a rotation per key time
+};
+
 struct GenScene {
     Mesh mesh;                       // positions, unit normals, indices; one default material
     std::vector<GenNode> instances;  // every instance references `mesh`
     GenCamera camera;
     std::vector<GenLight> lights;
+    std::optional<GenSkin> skin;  // deforms `mesh` (then placed by one instance)
 };
 
 // The rotation that turns -Z to `forward` with +Y as near `upHint` as it can be.

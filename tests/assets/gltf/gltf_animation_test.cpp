@@ -11,6 +11,7 @@
 #include "render/scene/scene_animation.h"
 #include "support/load_scene.h"
 #include "support/test_paths.h"
+#include "support/vertex_distance.h"
 
 namespace pt {
 namespace {
@@ -92,10 +93,8 @@ TEST(GltfAnimation, TheFoxRestsInItsBindPose) {
     ASSERT_EQ(rest.size(), skinned.bindPositions.size());
     // The Fox's joints rest where its inverse bind matrices were taken: every joint matrix is
     // the identity, so the rest pose is the bind pose.
-    float largest = 0.0f;
-    for (size_t v = 0; v < rest.size(); ++v)
-        largest = std::fmax(largest, length(rest[v] - skinned.bindPositions[v]));
-    EXPECT_LT(largest, 1e-3f) << "largest distance from the bind pose (the Fox is about 150 units long)";
+    EXPECT_LT(test::largestDistance(rest, skinned.bindPositions), 1e-3f)
+        << "largest distance from the bind pose (the Fox is about 150 units long)";
     // Each animation moves it, and keeps it finite and near where it stands.
     for (int32_t a = 0; a < 3; ++a) {
         poseRig(scene, 0, a, 0.5f);

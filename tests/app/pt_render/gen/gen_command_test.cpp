@@ -15,8 +15,10 @@
 
 #include "app/cli_runner.h"
 #include "assets/image/image_write.h"
+#include "render/scene/scene_animation.h"
 #include "support/load_scene.h"
 #include "support/test_paths.h"
+#include "support/vertex_distance.h"
 
 namespace pt {
 namespace {
@@ -125,6 +127,44 @@ TEST(GenCommand, SphereIsClosedDisplacedWithinAmplitudeAndNormalsPointOut) {
     EXPECT_EQ(facingIn, 0u);
     EXPECT_NEAR(volume, 4.0 / 3.0 * 3.14159265, 0.6);
     EXPECT_GT(agreement / double(triangles), 0.999);  // 0.99994 here; 0.985 with the slope's sign flipped
+}
+
+// The skinned column loads as a rig whose rest pose is its bind pose, sways under its
+// animation with its foot (weighted wholly to the unanimated root joint) in place, and loops.
+TEST(GenCommand, SkinnedColumnLoadsAsARigThatSwaysAndLoops) {
+    const std::string out = folder("skinned") + "/column.gltf";
+    const auto r = runCli("gen skinned -o " + out + " --triangles 5000 --joints 6 --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("6 joints, animation \"sway\""), std::string::npos) << r.out;
+    Scene scene = test::loadSceneOrFail(out);
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    ASSERT_EQ(scene.rigs.size(), 1u);
+    const AnimationRig& rig = scene.rigs[0];
+    ASSERT_EQ(rig.skins.size(), 1u);
+    EXPECT_EQ(rig.skins[0].joints.size(), 6u);
+    ASSERT_EQ(rig.animations.size(), 1u);
+    EXPECT_EQ(rig.animations[0].name, "sway");
+    EXPECT_FLOAT_EQ(rig.animations[0].duration(), 2.0f);
+    ASSERT_EQ(rig.skinnedMeshes.size(), 1u);
+    const SkinnedMesh& skinned = rig.skinnedMeshes[0];
+    const std::vector<Vec3>& p = scene.meshes[skinned.mesh].positions;
+    ASSERT_EQ(p.size(), skinned.bindPositions.size());
+    EXPECT_LT(test::largestDistance(p, skinned.bindPositions), 1e-5f) << "the rest pose is the bind pose";
+
+    const auto pose = [&](float time) {
+        poseAnimations(scene, {0}, time);
+        return scene.meshes[skinned.mesh].positions;
+    };
+    const std::vector<Vec3> start = pose(0.0f), quarter = pose(0.5f), end = pose(2.0f);
+    float footMoved = 0.0f, topMoved = 0.0f;
+    for (size_t v = 0; v < p.size(); ++v) {
+        const float y = skinned.bindPositions[v].y, moved = length(quarter[v] - start[v]);
+        if (y < -3.0f) footMoved = std::max(footMoved, moved);
+        if (y > 3.0f) topMoved = std::max(topMoved, moved);
+    }
+    EXPECT_EQ(footMoved, 0.0f);
+    EXPECT_GT(topMoved, 0.5f);
+    EXPECT_LT(test::largestDistance(end, start), 1e-4f) << "the animation loops";
 }
 
 TEST(GenCommand, BufferMatchesTheAccessorsAndPositionBounds) {
@@ -292,7 +332,9 @@ TEST(GenCommand, BadUsageExits2AndBadInputExits1WithOneLine) {
         {"gen field" + out + " --count 5 --spacing -1", 2, "--spacing"},
         {"gen field" + out + " --count 5 --triangles 9", 2, "--triangles"},
         {"gen cube" + out, 2, "cube"},
-        {"gen", 2, "sphere or field"},
+        {"gen", 2, "sphere, skinned or field"},
+        {"gen skinned" + out + " --triangles 100 --joints 1", 2, "--joints"},
+        {"gen skinned" + out, 2, "--triangles"},
         {"gen field" + out + " --count 5 --mesh /nonexistent/m.gltf", 1, "/nonexistent/m.gltf"},
         {"gen field" + out + " --count 5 --mesh '" + test::testDataPath("gltf/bad_json.gltf") + "'", 1,
          "bad_json.gltf"},
