@@ -36,6 +36,9 @@ struct Document {
     Scene scene;
     IntegratorToggles toggles;
     ViewerSettings viewer;
+    // Where animation edits skin (render/scene/scene_animation.h): on the device where the
+    // session's backend skins there (EditorSession keeps it so), else on the host.
+    SkinningSite skinning = SkinningSite::Host;
 };
 
 }  // namespace pt::editor

@@ -14,6 +14,7 @@ namespace pt::editor {
 EditorSession::EditorSession(std::unique_ptr<Backend> backend) : backend_(std::move(backend)) {
     if (!backend_) throw std::invalid_argument("EditorSession needs a backend");
     setPassInterrupts(true);
+    doc_.skinning = skinningSite(*backend_);
 }
 
 void EditorSession::setPassInterrupts(bool on) {
@@ -242,6 +243,9 @@ void EditorSession::setBackend(std::unique_ptr<Backend> backend) {
     if (!backend) throw std::invalid_argument("setBackend: no backend");
     backend_ = std::move(backend);
     setPassInterrupts(passInterrupts_);
+    doc_.skinning = skinningSite(*backend_);
+    // A backend that reads the host's vertices must not see those a GPU skin left behind.
+    if (doc_.skinning == SkinningSite::Host) skinPendingOnHost(doc_.scene);
     pending_ = SceneChanges::All;
 }
 

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "assets/input_error.h"
+#include "editor/animation_edits.h"
 #include "editor/object_edits.h"
 #include "editor/ui/recent_files.h"
 
@@ -153,6 +154,28 @@ void EditorUi::loadReference(const std::string& path) {
     } catch (const std::exception& e) {
         showError(e.what());
     }
+}
+
+bool EditorUi::tickAnimation(double elapsed) {
+    if (!playback.playing()) return false;
+    // The next pose waits until the last one has been seen (its first sample done): a backend
+    // slower than the UI skips animation time, rather than restarting its pass every UI frame
+    // and never showing one.
+    sinceShownPose_ += elapsed;
+    if (!session.lastEdit().complete) return true;
+    elapsed = sinceShownPose_;
+    sinceShownPose_ = 0.0;
+    const float duration = shownDuration(doc().scene);
+    float time = 0.0f;
+    for (const AnimatedObject& a : animatedObjects(doc().scene)) {
+        if (!doc().scene.objects[a.object].animation.empty())
+            time = doc().scene.objects[a.object].animationTime;
+    }
+    const float next = playback.advance(time, duration, elapsed);
+    if (next != time) apply(setAnimationTime(doc(), next));
+    // Playback is one undo step, closed when it stops.
+    if (!playback.playing()) endDrag();
+    return playback.playing();
 }
 
 void EditorUi::switchBackend(const std::string& name) {

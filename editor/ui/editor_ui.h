@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "editor/animation_playback.h"
 #include "editor/render_worker.h"
 #include "editor/scene_load_job.h"
 #include "editor/ui/display_view.h"
@@ -78,12 +79,16 @@ public:
     void saveScene(const std::string& path, bool confirmedOverwrite);
     void exportRender(const std::string& exrPath, const std::string& pngPath);
     void switchBackend(const std::string& name);
+    // Once a frame, `elapsed` wall seconds after the last: while the timeline plays, the
+    // animated objects move to the playback's next time (an edit); true while it plays.
+    bool tickAnimation(double elapsed);
     void showError(const std::string& message) { errors.push_back(message); }
     // A line in the status bar that needs no answer: what was saved or exported where, a
     // loaded scene's warnings.
     void notify(const std::string& message) { notice = message; }
 
     Selection selection;
+    AnimationPlayback playback;  // the Animation panel's timeline
     std::vector<CameraBookmark> bookmarks;
     std::vector<std::string> recentFiles;
     std::vector<std::string> errors;      // shown one at a time in a modal dialog
@@ -115,7 +120,8 @@ public:
 
 private:
     std::deque<std::function<void(EditorSession&)>> queued_;
-    std::string colorRequest_;  // what colorView was resolved for
+    std::string colorRequest_;     // what colorView was resolved for
+    double sinceShownPose_ = 0.0;  // wall seconds of playback since the last pose was applied
 };
 
 // The panels and menus (one file each).
@@ -126,6 +132,7 @@ void drawCameraPanel(EditorUi& ui);
 void drawRenderPanel(EditorUi& ui);
 void drawEnvironmentPanel(EditorUi& ui);
 void drawDisplayPanel(EditorUi& ui, const DisplayView& view);
+void drawAnimationPanel(EditorUi& ui);
 void drawStatsPanel(EditorUi& ui);
 // The main figures over the viewport's top right corner (PanelLayout::statsOverlay).
 void drawStatsOverlay(EditorUi& ui, const ImageRect& image);

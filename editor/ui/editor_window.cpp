@@ -70,6 +70,7 @@ void drawPanel(EditorUi& ui, const DisplayView& view, int index) {
         case 3: drawRenderPanel(ui); break;
         case 4: drawEnvironmentPanel(ui); break;
         case 5: drawDisplayPanel(ui, view); break;
+        case 6: drawAnimationPanel(ui); break;
         default: drawStatsPanel(ui); break;
     }
 }
@@ -315,6 +316,8 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
                          ui.errors.empty() ? "load failed" : ui.errors.front().c_str());
             return 1;  // automation: a scene that does not load is a failure, not a dialog
         }
+        // A playing timeline draws every frame: each is a new pose.
+        activity.happened |= ui.tickAnimation(dt);
         ui.flushEdits();
         if (std::string now = ui.session.windowTitle(); now != title) {
             title = std::move(now);

@@ -9,8 +9,8 @@
 namespace pt::editor {
 
 // The panels, in the column's order (their headers' names).
-constexpr const char* kPanelNames[] = {"Outliner",    "Inspector", "Camera", "Render settings",
-                                       "Environment", "Display",   "Stats"};
+constexpr const char* kPanelNames[] = {"Outliner",    "Inspector", "Camera",    "Render settings",
+                                       "Environment", "Display",   "Animation", "Stats"};
 constexpr int kPanelCount = int(sizeof(kPanelNames) / sizeof(kPanelNames[0]));
 
 struct PanelLayout {

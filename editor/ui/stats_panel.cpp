@@ -137,6 +137,10 @@ void drawStatsPanel(EditorUi& ui) {
         ImGui::Text("Triggered: %s (sync %.2f ms)", edit.action.empty() ? "..." : edit.action.c_str(),
                     edit.syncSeconds * 1e3);
         if (edit.complete) ImGui::Text("Edit to first frame: %.2f ms", edit.toFrameSeconds * 1e3);
+        // Each step of that sync (an animation frame: skin, BLAS refit or rebuild, TLAS).
+        for (const SyncStep& step : ui.session.lastSync().steps) {
+            if (step.seconds > 0.0) ImGui::BulletText("%s: %.3f ms", step.name.c_str(), step.seconds * 1e3);
+        }
     }
     if (!status.pathsAlivePerBounce.empty()) {
         std::vector<float> alive(status.pathsAlivePerBounce.begin(), status.pathsAlivePerBounce.end());

@@ -26,9 +26,9 @@ def animated_quad(name, times, translations, interpolation="LINEAR"):
     doc.save_gltf(name)
 
 
-def skinned_quad(name, joints, weights, joint_count=2):
+def skinned_quad(name, joints, weights, joint_count=2, lift=None):
     """A quad (node 0) skinned by `joint_count` joints (nodes 1..), with JOINTS_0/WEIGHTS_0 per
-    vertex as given."""
+    vertex as given; `lift` (times, translations) adds an animation "lift" moving joint 1."""
     doc = Doc()
     primitive = doc.quad_primitive()
     primitive["attributes"]["JOINTS_0"] = doc.accessor(joints, U8, "VEC4")
@@ -37,6 +37,12 @@ def skinned_quad(name, joints, weights, joint_count=2):
     joint_nodes = [doc.node(translation=[0, i, 0]) for i in range(joint_count)]
     doc.add("skins", {"joints": joint_nodes,
                       "inverseBindMatrices": doc.accessor([IDENTITY] * joint_count, FLOAT, "MAT4")})
+    if lift:
+        times, translations = lift
+        sampler = {"input": doc.accessor(times, FLOAT, "SCALAR", min=[min(times)], max=[max(times)]),
+                   "output": doc.accessor(translations, FLOAT, "VEC3"), "interpolation": "LINEAR"}
+        doc.add("animations", {"name": "lift", "samplers": [sampler],
+                               "channels": [{"sampler": 0, "target": {"node": joint_nodes[1], "path": "translation"}}]})
     doc.scene([doc.node(mesh=0, skin=0)] + joint_nodes)
     doc.save_gltf(name)
 
@@ -54,3 +60,7 @@ if __name__ == "__main__":
     # skin lifts a vertex by its weight on joint 1.
     skinned_quad("skin_weights.gltf", [(0, 1, 0, 0)] * 4,
                  [(0.5, 0.5, 0, 0)] * 3 + [(0.25, 0.25, 0, 0)])
+    # Every vertex half on each joint; "lift" raises joint 1 from one unit up to two in a
+    # second, so the quad rises from half a unit to one (the editor's timeline tests).
+    skinned_quad("skin_lift.gltf", [(0, 1, 0, 0)] * 4, [(0.5, 0.5, 0, 0)] * 4,
+                 lift=([0, 1], [(0, 1, 0), (0, 2, 0)]))
