@@ -115,5 +115,21 @@ TEST(CudaSkinning, AFullBuildOfAPendingPoseSkinsIt) {
     expectSameSurface(trace(late), trace(host), "full build with a pending pose");
 }
 
+// A GPU-skinned frame refits the BLAS built at rest, or rebuilds it on the GPU where the refit's
+// SAH cost drifted past the ratio, as a host refit of the same tree predicts.
+TEST(CudaSkinning, RefitOrRebuildFollowsTheSahRatio) {
+    PT_REQUIRE_CUDA_DEVICE();
+    test::expectRefitDecisionsFollowTheSahRatio(60, "rebuild", [](float threshold, float bend) {
+        Scene scene = test::skinnedGridScene(60);
+        cuda::CudaBackend backend;
+        IntegratorToggles toggles;
+        toggles.rebuildSahRatio = threshold;
+        backend.setToggles(toggles);
+        backend.sync(scene, SceneChanges::All, {});
+        test::bendSkinnedGrid(scene, bend);
+        return backend.sync(scene, poseRig(scene, 0, -1, 0.0f, SkinningSite::Device), {}).action;
+    });
+}
+
 }  // namespace
 }  // namespace pt
