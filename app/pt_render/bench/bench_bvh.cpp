@@ -33,18 +33,6 @@ BvhBuildInput buildInput(const CompiledScene& scene) {
     return in;
 }
 
-template <class Fn>
-std::vector<double> timeRuns(uint32_t runs, Fn&& fn) {
-    fn();  // warm-up
-    std::vector<double> seconds;
-    for (uint32_t r = 0; r < runs; ++r) {
-        const auto start = Clock::now();
-        fn();
-        seconds.push_back(secondsSince(start));
-    }
-    return seconds;
-}
-
 void addBuildRows(BenchReport& report, const char* builder, double seconds, uint32_t tris, double sahRatio) {
     report.add({"BVH", std::string("BLAS build (") + builder + ")", std::to_string(tris) + " triangles",
                 seconds * 1e3, "ms", ""});

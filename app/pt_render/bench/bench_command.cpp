@@ -12,6 +12,7 @@
 #include "pt_render/bench/bench_animation.h"
 #include "pt_render/bench/bench_bvh.h"
 #include "pt_render/bench/bench_edits.h"
+#include "pt_render/bench/bench_embree.h"
 #include "pt_render/bench/bench_kernels.h"
 #include "pt_render/bench/bench_rays.h"
 #include "pt_render/bench/bench_render.h"
@@ -44,18 +45,13 @@ BenchRequest parseBench(const std::vector<std::string>& args) {
     return r;
 }
 
-void benchRays(Backend& backend, const Scene& scene, const CompiledScene& compiled,
-               const BenchSettings& settings, BenchReport& report) {
-    const BenchRays rays =
-        makeBenchRays(compiled, scene.render.width, scene.render.height, scene.render.seed);
-    struct Set {
-        const char* name;
-        const std::vector<Ray>* rays;
-        bool anyHit;
-    };
-    const Set sets[] = {{"primary", &rays.primary, false},
-                        {"diffuse bounce", &rays.diffuse, false},
-                        {"shadow (any hit)", &rays.shadow, true}};
+// Our traversal rates, BVH on and off; the sets as traced with the BVH on (for the baseline).
+std::vector<TracedRaySet> benchRays(Backend& backend, const Scene& scene, const BenchRays& rays,
+                                    const BenchSettings& settings, BenchReport& report) {
+    std::vector<TracedRaySet> sets(3);
+    sets[0].name = "primary", sets[0].rays = &rays.primary;
+    sets[1].name = "diffuse bounce", sets[1].rays = &rays.diffuse;
+    sets[2].name = "shadow (any hit)", sets[2].rays = &rays.shadow, sets[2].anyHit = true;
     for (const bool bvh : {true, false}) {
         IntegratorToggles toggles = settings.toggles;
         toggles.bruteForce = !bvh;
@@ -66,18 +62,21 @@ void benchRays(Backend& backend, const Scene& scene, const CompiledScene& compil
             report.add({"rays", "all", "BVH off", 0.0, "Mrays/s", e.what()});
             continue;
         }
-        for (const Set& set : sets) {
+        for (TracedRaySet& set : sets) {
             if (set.rays->empty()) continue;
+            std::vector<Hit> hits;
             const std::vector<double> seconds =
-                backend.traceRays(*set.rays, set.anyHit, settings.runs + 1, nullptr);
+                backend.traceRays(*set.rays, set.anyHit, settings.runs + 1, &hits);
             const std::vector<double> timed(seconds.begin() + 1, seconds.end());  // the first run warms up
-            report.add({"rays", set.name, bvh ? "BVH on" : "BVH off",
-                        double(set.rays->size()) / median(timed) / 1e6, "Mrays/s",
+            const double rate = double(set.rays->size()) / median(timed) / 1e6;
+            report.add({"rays", set.name, bvh ? "BVH on" : "BVH off", rate, "Mrays/s",
                         std::to_string(set.rays->size()) + " rays"});
+            if (bvh) set.mraysPerSecond = rate, set.hits = std::move(hits);
         }
     }
     backend.setToggles(settings.toggles);
     backend.sync(scene, SceneChanges::Settings, {});
+    return sets;
 }
 
 }  // namespace
@@ -112,11 +111,17 @@ int runBench(const std::vector<std::string>& args) {
     // The host's own compile of the scene: ray sets are made and BVH builds timed from it.
     const CompiledScene compiled = compileRenderScene(scene);
     phase("rays");
-    benchRays(*backend, scene, compiled, r.settings, report);
+    const BenchRays rays =
+        makeBenchRays(compiled, scene.render.width, scene.render.height, scene.render.seed);
+    const std::vector<TracedRaySet> traced = benchRays(*backend, scene, rays, r.settings, report);
     phase("path tracing");
     benchPathTracing(*backend, scene, r.settings, report);
     phase("BVH builds");
     benchBvhBuilds(compiled, *backend, r.settings.runs, report);
+    if (!backend->capabilities().gpuScheduling) {
+        phase("Embree baseline");  // the CPU's traversal and build against Embree's, same rays and triangles
+        benchEmbree(compiled, traced, r.settings.runs, report);
+    }
     phase("edits");
     benchEdits(r.setup.backend, scene, r.settings, report);
     benchEditInFlight(r.setup.backend, scene, r.settings, report);

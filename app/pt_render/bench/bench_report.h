@@ -2,9 +2,12 @@
 // BenchReport: the figures `pt-render bench` measures, as rows of (section, figure, variant,
 // value, unit), printed as a table and written as JSON. Timings are medians of several runs
 // after a warm-up run that is not counted.
+#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
+
+#include "render/util/stopwatch.h"
 
 namespace pt::cli {
 
@@ -30,5 +33,18 @@ private:
 
 // Median of `values` (the mean of the middle two for an even count); 0 for none.
 double median(std::vector<double> values);
+
+// Runs `fn` once to warm up, then `runs` times; each timed run's seconds.
+template <class Fn>
+std::vector<double> timeRuns(uint32_t runs, Fn&& fn) {
+    fn();
+    std::vector<double> seconds;
+    for (uint32_t r = 0; r < runs; ++r) {
+        const auto start = Clock::now();
+        fn();
+        seconds.push_back(secondsSince(start));
+    }
+    return seconds;
+}
 
 }  // namespace pt::cli

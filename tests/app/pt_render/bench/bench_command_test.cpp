@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -28,11 +29,14 @@ TEST(PtRenderBench, MeasuresEverySectionAndWritesJson) {
     EXPECT_EQ(j["backend"], "cpu");
     EXPECT_EQ(j["width"], 24);
     std::set<std::string> sections;
-    std::map<std::string, double> value;  // "section/figure/variant"
+    std::map<std::string, double> value;      // "section/figure/variant"
+    std::map<std::string, std::string> note;  // the same keys
     for (const auto& row : j["rows"]) {
         sections.insert(row["section"].get<std::string>());
-        value[row["section"].get<std::string>() + "/" + row["figure"].get<std::string>() + "/" +
-              row["variant"].get<std::string>()] = row["value"].get<double>();
+        const std::string key = row["section"].get<std::string>() + "/" + row["figure"].get<std::string>() +
+                                "/" + row["variant"].get<std::string>();
+        value[key] = row["value"].get<double>();
+        note[key] = row.value("note", std::string());
     }
     for (const char* s : {"scene", "rays", "path tracing", "BVH", "edit to first frame"}) {
         EXPECT_TRUE(sections.count(s)) << "missing section " << s;
@@ -48,6 +52,40 @@ TEST(PtRenderBench, MeasuresEverySectionAndWritesJson) {
               value["edit to first frame/material (roughness slider)/samples done"]);
     EXPECT_GT(value["edit to first frame/transform (object)/samples done"], 0.0);
     EXPECT_EQ(value["BVH/SAH cost vs CPU binned (CPU binned SAH)/"], 1.0);
+    // The Embree baseline traces the same rays over the same triangles: every hit agrees.
+    if (note.count("embree/baseline/")) {
+        std::cout << "[ note     ] no Embree baseline: " << note["embree/baseline/"] << "\n";
+    } else {
+        for (const char* set : {"primary", "diffuse bounce", "shadow (any hit)"}) {
+            const std::string key = std::string("embree/") + set + "/Embree, single rays";
+            EXPECT_GT(value[key], 0.0) << key;
+            EXPECT_EQ(note[key], "hits agree with ours on 100.000% of rays") << key;
+            EXPECT_GT(value[std::string("embree/") + set + "/ours / Embree's best"], 0.0) << set;
+        }
+        EXPECT_GT(value["embree/BLAS build rate, ours / Embree/"], 0.0);
+    }
+}
+
+// A scene with animations gets per-frame update figures: pose and sync, with each step.
+TEST(PtRenderBench, TimesAnimatedFrames) {
+    const std::string scene = "'" + test::testDataPath("gltf/skin_lift.gltf") + "'";
+    const std::string json = test::tempDir() + "/bench_animation.json";
+    const auto r = runCli("bench " + scene + " --size 16x16 --runs 1 --spp 1 --quiet --json " + json);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::ifstream in(json);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    std::map<std::string, nlohmann::json> rows;
+    for (const auto& row : j["rows"]) {
+        if (row["section"] == "animation")
+            rows[row["figure"].get<std::string>() + "/" + row["variant"].get<std::string>()] = row;
+    }
+    ASSERT_TRUE(rows.count("frame update (pose + sync)/skin on host")) << r.out;
+    const nlohmann::json& update = rows["frame update (pose + sync)/skin on host"];
+    EXPECT_GT(update["value"].get<double>(), 0.0);
+    EXPECT_NE(update.value("note", std::string()).find("12 frames at 30 fps, 4 skinned vertices; 12 refit"),
+              std::string::npos)
+        << update["note"];
+    EXPECT_TRUE(rows.count("refit BLAS/skin on host")) << "each sync step has its row";
 }
 
 TEST(PtRenderBench, RejectsContradictoryToggles) {
