@@ -16,6 +16,9 @@ struct IntegratorToggles {
     bool bruteForce = false;  // BVH off: validation only, refused above a triangle budget
     // Small instances' triangles in one world-space BLAS (render/compile/merged_geometry.h).
     bool mergeInstances = true;
+    // The CPU walks 4-wide BLASes collapsed from the binary ones (render/bvh/wide_bvh.h); the
+    // GPU walks the binary ones either way.
+    bool wideBvh = true;
     float clampRadiance = 0.0f;  // firefly clamp on indirect luminance per sample; 0 = off
     // Jitter primary rays inside the pixel (antialiasing). Off: every sample of a pixel starts
     // with the same ray through its centre, which lets the first hit be cached.
@@ -50,6 +53,7 @@ enum class ToggleId {
     RussianRoulette,
     Bvh,
     MergeInstances,
+    WideBvh,
     PixelJitter,
     AutoSchedule,
     Megakernel,

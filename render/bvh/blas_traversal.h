@@ -6,6 +6,9 @@
 #include "render/bvh/sphere_intersect.h"
 #include "render/bvh/triangle_intersect.h"
 #include "render/kernel/render_scene.h"
+#if !defined(__CUDACC__)
+#include "render/bvh/wide_walk.h"
+#endif
 
 namespace pt {
 
@@ -69,6 +72,14 @@ PT_HD bool traverseBlas(const RenderScene& scene, const BlasRef& blas, const Tra
     if (blas.primitiveCount == 0 || blas.nodeCount == 0) return false;
     BlasLeaf<kF, Count> leaf{scene, blas,  scene.blasPrimIndices.data + blas.primIndexOffset, ray, hit,
                              count, anyHit};
+#if !defined(__CUDACC__)
+    // The CPU walks the 4-wide form where the scene has one (IntegratorToggles::wideBvh).
+    if (!scene.blasWideRoots.empty()) {
+        const uint32_t index = uint32_t(&blas - scene.blases.data);
+        return walkWideBvh(scene.blasWideNodes.data, scene.blasWideRoots[index], ray, tMax, leaf, count,
+                           anyHit);
+    }
+#endif
     return walkBvh(scene.blasNodes.data + blas.nodeOffset, ray, tMax, leaf, count, anyHit);
 }
 

@@ -8,6 +8,7 @@
 #include "render/bvh/instance_bounds.h"
 #include "render/compile/compile_geometry.h"
 #include "render/compile/scene_features.h"
+#include "render/compile/wide_blases.h"
 #include "render/integrator/camera.h"
 #include "render/materials/alpha.h"
 #include "render/util/stopwatch.h"
@@ -222,6 +223,7 @@ CompiledScene compileRenderScene(const Scene& scene, const CompileOptions& optio
 
     start = Clock::now();
     buildBlases(out, progress);
+    if (options.wideBvh && !options.bruteForce) buildWideBlases(out);
     out.stats.blasSeconds = secondsSince(start);
 
     start = Clock::now();

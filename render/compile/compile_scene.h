@@ -18,6 +18,7 @@ namespace pt {
 struct CompileOptions {
     bool bruteForce = false;             // no BVH: validation only
     bool mergeSmallInstances = true;     // merged_geometry.h (never with bruteForce)
+    bool wideBvh = false;                // the CPU's 4-wide BLASes too (wide_blases.h)
     uint64_t bruteForceBudget = 100000;  // triangles x instances above which bruteForce is refused
 };
 
@@ -45,6 +46,9 @@ struct CompiledScene {
 #include "render/kernel/scene_arrays.h"
 
     MergedGeometry merged;  // which instances the merged BLAS holds
+    // Per slot of blasWideNodes: the binary node it was collapsed from (wide_bvh.h), so a
+    // refit refreshes the wide boxes.
+    std::vector<uint32_t> wideSourceNodes;
     // Which scene instance each traced one is (compileInstances keeps the traced instances in
     // scene order): sceneInstanceOf[r] is the Scene::instances index of instances[r], and
     // renderInstanceOf[i] that of scene instance i in instances, or kNotTraced.

@@ -34,6 +34,11 @@ PT_SCENE_ARRAY(uint32_t, sphereSlots, "sphere material slots")  // parallel to s
 PT_SCENE_ARRAY(BlasRef, blases, "BLAS refs")
 PT_SCENE_ARRAY(BvhNode, blasNodes, "BLAS nodes")
 PT_SCENE_ARRAY(uint32_t, blasPrimIndices, "BLAS primitive indices")
+// The CPU's 4-wide form of the BLASes (render/bvh/wide_bvh.h; IntegratorToggles::wideBvh): each
+// BLAS's root node in blasWideNodes, or none (empty) where the binary nodes are walked, as
+// on the GPU, which never allocates them.
+PT_SCENE_ARRAY(WideBvhNode, blasWideNodes, "BLAS wide nodes (CPU)")
+PT_SCENE_ARRAY(uint32_t, blasWideRoots, "BLAS wide roots (CPU)")
 PT_SCENE_ARRAY(RenderInstance, instances, "instances")
 PT_SCENE_ARRAY(BvhNode, tlasNodes, "TLAS nodes")
 // TLAS leaf entries are instance indices, and instances.count for the merged BLAS: small

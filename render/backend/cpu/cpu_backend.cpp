@@ -13,6 +13,7 @@
 #include "render/backend/toggle_states.h"
 #include "render/compile/host_refit.h"
 #include "render/compile/scene_features.h"
+#include "render/compile/wide_blases.h"
 #include "render/integrator/camera.h"
 #include "render/integrator/path_tracer.h"
 #include "render/util/stopwatch.h"
@@ -85,6 +86,7 @@ void CpuBackend::fullBuild(const Scene& scene, const ProgressFn& progress, SyncR
     CompileOptions options;
     options.bruteForce = toggles_.bruteForce;
     options.mergeSmallInstances = toggles_.mergeInstances;
+    options.wideBvh = toggles_.wideBvh;
     compiled_ = std::make_unique<CompiledScene>(compileRenderScene(scene, options, progress));
     builtSah_.assign(compiled_->blases.size(), kSahUnknown);  // measured at a first refit
     report.bvhSeconds = compiled_->stats.blasSeconds + compiled_->stats.tlasSeconds;
@@ -109,13 +111,17 @@ bool CpuBackend::refitMovedMeshes(const Scene& scene, const TouchedIds& meshes, 
 
 bool CpuBackend::refitOnHost(uint32_t blas, SyncReport& report) {
     if (builtSah_[blas] == kSahUnknown) builtSah_[blas] = blasSahCost(*compiled_, blas);  // still as built
-    report.bvhSeconds += timedHostStep(report, "refit BLAS", [&] { refitBlasOnHost(*compiled_, blas); });
+    report.bvhSeconds += timedHostStep(report, "refit BLAS", [&] {
+        refitBlasOnHost(*compiled_, blas);
+        refreshWideBlas(*compiled_, blas);
+    });
     return !(blasSahCost(*compiled_, blas) > toggles_.rebuildSahRatio * builtSah_[blas]);
 }
 
 void CpuBackend::setToggles(const IntegratorToggles& toggles) {
-    const bool bvhChanged =
-        toggles.bruteForce != toggles_.bruteForce || toggles.mergeInstances != toggles_.mergeInstances;
+    const bool bvhChanged = toggles.bruteForce != toggles_.bruteForce ||
+                            toggles.mergeInstances != toggles_.mergeInstances ||
+                            toggles.wideBvh != toggles_.wideBvh;
     toggles_ = toggles;
     if (bvhChanged) compiled_.reset();  // the next sync recompiles (and checks the budget)
     if (compiled_) {

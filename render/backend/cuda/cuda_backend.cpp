@@ -597,6 +597,9 @@ std::vector<ToggleState> CudaBackend::toggleStates() const {
         } else if (s.id == ToggleId::PathRegeneration && !runsMegakernel()) {
             s.active = false;
             s.note = "megakernel only; the wavefront is on";
+        } else if (s.id == ToggleId::WideBvh) {
+            s.active = false;
+            s.note = "CPU only: the GPU walks the binary BVH";
         } else if (s.id == ToggleId::PathRegeneration && (aovsRequested_ & kPathAovs) != 0) {
             s.active = false;
             s.note = "path AOVs run one path a thread";

@@ -125,6 +125,20 @@ inline Mesh makeIcosphere(int levels) {
     return mesh;
 }
 
+// The BVH layouts traversal must agree on: the binary tree every backend builds, and the CPU's
+// 4-wide form of it (render/bvh/wide_bvh.h, IntegratorToggles::wideBvh).
+enum class Layout { Binary, Wide };
+constexpr Layout kLayouts[] = {Layout::Binary, Layout::Wide};
+inline const char* layoutName(Layout layout) { return layout == Layout::Wide ? "Wide" : "Binary"; }
+inline CompileOptions layoutOptions(Layout layout, CompileOptions options = {}) {
+    options.wideBvh = layout == Layout::Wide;
+    return options;
+}
+// For suites of TEST_P over the layouts: the parameter's name in the test's.
+inline std::string layoutTestName(const ::testing::TestParamInfo<Layout>& info) {
+    return layoutName(info.param);
+}
+
 // A scene with the given meshes and (mesh, transform) instances, compiled with BVHs.
 struct InstanceSpec {
     uint32_t mesh;
@@ -142,10 +156,10 @@ inline CompiledScene compileTestScene(std::vector<Mesh> meshes, const std::vecto
     }
     return compileRenderScene(scene, options);
 }
-inline CompiledScene compileSingleMesh(Mesh mesh) {
+inline CompiledScene compileSingleMesh(Mesh mesh, Layout layout = Layout::Binary) {
     std::vector<Mesh> meshes;
     meshes.push_back(std::move(mesh));
-    return compileTestScene(std::move(meshes), {{0, Affine3{}}});
+    return compileTestScene(std::move(meshes), {{0, Affine3{}}}, layoutOptions(layout));
 }
 
 // A ray from a random point of the box through another: every direction, many misses.

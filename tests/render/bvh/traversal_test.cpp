@@ -1,5 +1,6 @@
 // Closest- and any-hit traversal (render/bvh/traversal.h) against brute force over one mesh:
-// random soups of every kind, axis-aligned rays, finite tMax, empty scenes, stats.
+// random soups of every kind, axis-aligned rays, finite tMax, empty scenes, stats; each for the
+// binary BVH and for the CPU's 4-wide form of it.
 #include "render/bvh/traversal.h"
 
 #include <gtest/gtest.h>
@@ -16,12 +17,15 @@ constexpr SoupKind kKinds[] = {SoupKind::Uniform, SoupKind::Clustered, SoupKind:
                                SoupKind::CoincidentCentroids};
 
 // rays x triangles per kind: many rays through small soups, fewer through large ones.
-void compareSoups(uint32_t triangles, uint32_t rays, uint32_t seed) {
+class Traversal : public ::testing::TestWithParam<test::Layout> {};
+INSTANTIATE_TEST_SUITE_P(Layouts, Traversal, ::testing::ValuesIn(test::kLayouts), test::layoutTestName);
+
+void compareSoups(uint32_t triangles, uint32_t rays, uint32_t seed, test::Layout layout) {
     Rng rng(seed);
     for (SoupKind kind : kKinds) {
         SCOPED_TRACE(test::soupName(kind));
         const Mesh mesh = test::makeSoup(kind, triangles, rng);
-        const CompiledScene compiled = test::compileSingleMesh(mesh);
+        const CompiledScene compiled = test::compileSingleMesh(mesh, layout);
         const RenderScene scene = compiled.view();
         int failures = 0;
         uint32_t hits = 0;
@@ -35,13 +39,13 @@ void compareSoups(uint32_t triangles, uint32_t rays, uint32_t seed) {
     }
 }
 
-TEST(Traversal, SmallSoupsMatchBruteForce) { compareSoups(128, 250000, 1); }  // 1M rays
-TEST(Traversal, LargeSoupsMatchBruteForce) { compareSoups(20000, 2500, 2); }
+TEST_P(Traversal, SmallSoupsMatchBruteForce) { compareSoups(128, 250000, 1, GetParam()); }  // 1M rays
+TEST_P(Traversal, LargeSoupsMatchBruteForce) { compareSoups(20000, 2500, 2, GetParam()); }
 
-TEST(Traversal, FiniteTMaxMatchesBruteForce) {
+TEST_P(Traversal, FiniteTMaxMatchesBruteForce) {
     Rng rng(3);
     const Mesh mesh = test::makeSoup(SoupKind::Uniform, 2000, rng);
-    const CompiledScene compiled = test::compileSingleMesh(mesh);
+    const CompiledScene compiled = test::compileSingleMesh(mesh, GetParam());
     const RenderScene scene = compiled.view();
     int failures = 0;
     for (int i = 0; i < 25000; ++i) {
@@ -54,7 +58,7 @@ TEST(Traversal, FiniteTMaxMatchesBruteForce) {
 
 // Direction components of exactly zero: 1/0 must not turn into 0 * inf = NaN in the slab test,
 // including for origins exactly on box faces (vertices on a grid of 1/8).
-TEST(Traversal, AxisAlignedRaysMatchBruteForce) {
+TEST_P(Traversal, AxisAlignedRaysMatchBruteForce) {
     Rng rng(4);
     Mesh mesh;
     for (int i = 0; i < 3000; ++i) {
@@ -66,7 +70,7 @@ TEST(Traversal, AxisAlignedRaysMatchBruteForce) {
             mesh.positions.push_back(v);
         }
     }
-    const CompiledScene compiled = test::compileSingleMesh(mesh);
+    const CompiledScene compiled = test::compileSingleMesh(mesh, GetParam());
     const RenderScene scene = compiled.view();
     int failures = 0;
     uint32_t hits = 0;
@@ -80,9 +84,9 @@ TEST(Traversal, AxisAlignedRaysMatchBruteForce) {
     EXPECT_GT(hits, 1000u);
 }
 
-TEST(Traversal, EmptySceneMisses) {
+TEST_P(Traversal, EmptySceneMisses) {
     Scene empty;
-    const CompiledScene compiled = compileRenderScene(empty);
+    const CompiledScene compiled = compileRenderScene(empty, test::layoutOptions(GetParam()));
     const RenderScene scene = compiled.view();
     Hit hit;
     EXPECT_FALSE(intersectClosest(scene, Ray{{0, 0, 0}, {0, 0, 1}, kInf}, hit));
@@ -92,9 +96,10 @@ TEST(Traversal, EmptySceneMisses) {
     EXPECT_FALSE(intersectClosest(none, Ray{{0, 0, 0}, {0, 0, 1}, kInf}, hit));
 }
 
-TEST(Traversal, StatsCountWorkAndTheBvhPrunes) {
+TEST_P(Traversal, StatsCountWorkAndTheBvhPrunes) {
     Rng rng(6);
-    const CompiledScene compiled = test::compileSingleMesh(test::makeSoup(SoupKind::Uniform, 20000, rng));
+    const CompiledScene compiled =
+        test::compileSingleMesh(test::makeSoup(SoupKind::Uniform, 20000, rng), GetParam());
     const RenderScene scene = compiled.view();
     RenderScene bf = scene;
     bf.bruteForce = 1;

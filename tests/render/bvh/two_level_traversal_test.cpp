@@ -21,7 +21,8 @@ Vec4 randomRotation(Rng& rng) {
 
 // Meshes: a soup, an icosphere, a sphere BLAS of many spheres, one unit sphere.
 // Instances: each mesh several times, randomly rotated, scaled (some negative) and placed.
-CompiledScene makeScene(Rng& rng, std::vector<test::InstanceSpec>& specs, bool merge = false) {
+CompiledScene makeScene(Rng& rng, std::vector<test::InstanceSpec>& specs, bool merge = false,
+                        test::Layout layout = test::Layout::Binary) {
     std::vector<Mesh> meshes;
     meshes.push_back(test::makeSoup(SoupKind::Clustered, 1000, rng));
     meshes.push_back(test::makeIcosphere(2));
@@ -40,15 +41,18 @@ CompiledScene makeScene(Rng& rng, std::vector<test::InstanceSpec>& specs, bool m
                                 rotationTransform(randomRotation(rng)) * scaleTransform(scale);
         specs.push_back({i % 4, toWorld});
     }
-    CompileOptions options;
+    CompileOptions options = test::layoutOptions(layout);
     options.mergeSmallInstances = merge;  // the two-level walk on its own; merging is tested below
     return test::compileTestScene(std::move(meshes), specs, options);
 }
 
-TEST(TwoLevelTraversal, MatchesBruteForceOverInstances) {
+class TwoLevelLayouts : public ::testing::TestWithParam<test::Layout> {};
+INSTANTIATE_TEST_SUITE_P(Layouts, TwoLevelLayouts, ::testing::ValuesIn(test::kLayouts), test::layoutTestName);
+
+TEST_P(TwoLevelLayouts, MatchesBruteForceOverInstances) {
     Rng rng(41);
     std::vector<test::InstanceSpec> specs;
-    const CompiledScene compiled = makeScene(rng, specs);
+    const CompiledScene compiled = makeScene(rng, specs, false, GetParam());
     const RenderScene scene = compiled.view();
     ASSERT_EQ(scene.instances.size(), 24u);
     int failures = 0;

@@ -103,14 +103,18 @@ uint64_t shootFromInside(const RenderScene& scene, const Mesh& mesh, Rng& rng, f
     return slipped;
 }
 
-TEST(Watertight, RaysFromInsideAClosedIcosphereAlwaysHit) {
+class WatertightLayouts : public ::testing::TestWithParam<test::Layout> {};
+INSTANTIATE_TEST_SUITE_P(Layouts, WatertightLayouts, ::testing::ValuesIn(test::kLayouts),
+                         test::layoutTestName);
+
+TEST_P(WatertightLayouts, RaysFromInsideAClosedIcosphereAlwaysHit) {
     Rng rng(23);
     const Mesh sphere = test::makeIcosphere(4);  // 5120 triangles
-    const CompiledScene compiled = test::compileSingleMesh(sphere);
+    const CompiledScene compiled = test::compileSingleMesh(sphere, GetParam());
     EXPECT_EQ(shootFromInside(compiled.view(), sphere, rng, 0.9f, Vec3(0.0f), 400000), 0u);
 }
 
-TEST(Watertight, RaysFromInsideAnInstancedBoxAlwaysHit) {
+TEST_P(WatertightLayouts, RaysFromInsideAnInstancedBoxAlwaysHit) {
     Rng rng(29);
     const Mesh box = makeUnitBox();
     // Object space is where the triangle test runs: shoot there through a transformed instance.
@@ -119,7 +123,8 @@ TEST(Watertight, RaysFromInsideAnInstancedBoxAlwaysHit) {
                             scaleTransform({2.0f, 0.5f, -1.5f});
     uint64_t slipped = 0;
     for (const Affine3& transform : {Affine3{}, toWorld}) {
-        const CompiledScene compiled = test::compileTestScene({box}, {{0, transform}});
+        const CompiledScene compiled =
+            test::compileTestScene({box}, {{0, transform}}, test::layoutOptions(GetParam()));
         const RenderScene scene = compiled.view();
         for (int r = 0; r < 100000; ++r) {
             const uint32_t t = rng.index(12);

@@ -1,0 +1,117 @@
+#include "render/bvh/wide_bvh.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "render/util/check.h"
+
+namespace pt {
+
+namespace {
+
+float surfaceArea(const BvhNode& n) {
+    const Vec3 d = n.hi - n.lo;
+    return d.x * d.y + d.y * d.z + d.z * d.x;
+}
+
+void setSlot(WideBvhNode& wide, uint32_t slot, const BvhNode& box) {
+    wide.loX[slot] = box.lo.x, wide.loY[slot] = box.lo.y, wide.loZ[slot] = box.lo.z;
+    wide.hiX[slot] = box.hi.x, wide.hiY[slot] = box.hi.y, wide.hiZ[slot] = box.hi.z;
+}
+
+WideBvhNode emptyNode() {
+    WideBvhNode n{};
+    const float inf = std::numeric_limits<float>::infinity();
+    for (uint32_t s = 0; s < WideBvhNode::kWidth; ++s) {
+        n.loX[s] = n.loY[s] = n.loZ[s] = inf;
+        n.hiX[s] = n.hiY[s] = n.hiZ[s] = -inf;
+        n.child[s] = 0;
+        n.count[s] = WideBvhNode::kEmpty;
+    }
+    return n;
+}
+
+class Collapser {
+public:
+    Collapser(const BvhNode* nodes, uint32_t count) : nodes_(nodes), count_(count) {}
+
+    WideBvh run() {
+        if (count_ == 0 || nodes_[0].isLeaf() || nodes_[0].leftOrFirst + 1 >= count_) {
+            // A lone leaf (or the empty root) under a root of one slot.
+            out_.nodes.push_back(emptyNode());
+            out_.sourceNodes.assign(WideBvhNode::kWidth, WideBvhNode::kEmpty);
+            if (count_ > 0 && nodes_[0].isLeaf()) fill(0, {0});
+            return std::move(out_);
+        }
+        out_.nodes.push_back(emptyNode());
+        out_.sourceNodes.assign(WideBvhNode::kWidth, WideBvhNode::kEmpty);
+        collapse(0, 0);
+        return std::move(out_);
+    }
+
+private:
+    // The up to four binary nodes under binary interior node `binary` that wide node `wide`
+    // holds: its children, the largest interior one opened while there is room.
+    std::vector<uint32_t> childrenOf(uint32_t binary) const {
+        std::vector<uint32_t> kids = {nodes_[binary].leftOrFirst, nodes_[binary].leftOrFirst + 1};
+        while (kids.size() < WideBvhNode::kWidth) {
+            int open = -1;
+            for (size_t k = 0; k < kids.size(); ++k) {
+                if (nodes_[kids[k]].isLeaf()) continue;
+                if (open < 0 || surfaceArea(nodes_[kids[k]]) > surfaceArea(nodes_[kids[size_t(open)]]))
+                    open = int(k);
+            }
+            if (open < 0) break;
+            const uint32_t opened = kids[size_t(open)];
+            kids.erase(kids.begin() + open);
+            kids.push_back(nodes_[opened].leftOrFirst);
+            kids.push_back(nodes_[opened].leftOrFirst + 1);
+        }
+        return kids;
+    }
+
+    // Sets wide node `wide`'s slots to binary nodes `kids`; returns the interior ones' slots.
+    std::vector<uint32_t> fill(uint32_t wide, const std::vector<uint32_t>& kids) {
+        std::vector<uint32_t> interior;
+        for (uint32_t s = 0; s < kids.size(); ++s) {
+            const BvhNode& kid = nodes_[kids[s]];
+            setSlot(out_.nodes[wide], s, kid);
+            out_.sourceNodes[size_t(wide) * WideBvhNode::kWidth + s] = kids[s];
+            out_.nodes[wide].count[s] = kid.count;
+            out_.nodes[wide].child[s] = kid.isLeaf() ? kid.leftOrFirst : 0;
+            if (!kid.isLeaf()) interior.push_back(s);
+        }
+        return interior;
+    }
+
+    void collapse(uint32_t wide, uint32_t binary) {
+        const std::vector<uint32_t> kids = childrenOf(binary);
+        for (const uint32_t slot : fill(wide, kids)) {
+            const uint32_t next = uint32_t(out_.nodes.size());
+            out_.nodes.push_back(emptyNode());
+            out_.sourceNodes.resize(out_.sourceNodes.size() + WideBvhNode::kWidth, WideBvhNode::kEmpty);
+            out_.nodes[wide].child[slot] = next;
+            collapse(next, kids[slot]);
+        }
+    }
+
+    const BvhNode* nodes_;
+    uint32_t count_;
+    WideBvh out_;
+};
+
+}  // namespace
+
+WideBvh collapseToWide(const BvhNode* nodes, uint32_t count) { return Collapser(nodes, count).run(); }
+
+void refreshWideBoxes(const BvhNode* binary, const uint32_t* sourceNodes, WideBvhNode* wide,
+                      uint32_t wideCount) {
+    for (uint32_t n = 0; n < wideCount; ++n) {
+        for (uint32_t s = 0; s < WideBvhNode::kWidth; ++s) {
+            const uint32_t source = sourceNodes[size_t(n) * WideBvhNode::kWidth + s];
+            if (source != WideBvhNode::kEmpty) setSlot(wide[n], s, binary[source]);
+        }
+    }
+}
+
+}  // namespace pt

@@ -1,0 +1,31 @@
+#pragma once
+// Collapsing a binary BVH into a 4-wide one (issue 21) for the CPU traversal: each wide node
+// takes a binary node's children and keeps opening the largest interior one (by surface area,
+// the child a ray is likeliest to enter) until it holds four, as Embree's BVH4 and Wald et al.
+// 2008 ("Getting Rid of Packets", the multi-branching BVH) collapse a binary SAH tree. Leaves
+// and their primitive ranges stay as they are, so the wide walk tests exactly the primitives
+// the binary walk would. Each wide slot remembers its binary node, so a refit of the binary
+// tree refreshes the wide boxes in one pass (refreshWideBoxes) instead of collapsing again.
+#include <cstdint>
+#include <vector>
+
+#include "render/kernel/bvh_node.h"
+#include "render/kernel/wide_bvh_node.h"
+
+namespace pt {
+
+struct WideBvh {
+    std::vector<WideBvhNode> nodes;     // nodes[0] is the root
+    std::vector<uint32_t> sourceNodes;  // per slot (node * 4 + slot): its binary node, or kEmpty
+};
+
+// The wide form of the binary tree `nodes` (canonical layout, root at 0, `count` nodes); child
+// node indices count from the result's first node. An empty tree (a root without primitives)
+// gives one node with no used slot.
+WideBvh collapseToWide(const BvhNode* nodes, uint32_t count);
+
+// Copies the boxes of the binary nodes the slots came from (after a refit of `binary`).
+void refreshWideBoxes(const BvhNode* binary, const uint32_t* sourceNodes, WideBvhNode* wide,
+                      uint32_t wideCount);
+
+}  // namespace pt
