@@ -103,6 +103,13 @@ float shownDuration(const Scene& scene) {
     return longest;
 }
 
+float shownTime(const Scene& scene) {
+    for (const AnimatedObject& a : animatedObjects(scene)) {
+        if (!scene.objects[a.object].animation.empty()) return scene.objects[a.object].animationTime;
+    }
+    return 0.0f;
+}
+
 std::unique_ptr<EditCommand> setAnimationTime(const Document& doc, float time) {
     std::vector<ObjectPose> before;
     for (const ObjectPose& pose : posesOf(doc.scene, animatedObjects(doc.scene))) {

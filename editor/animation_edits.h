@@ -21,6 +21,8 @@ struct AnimatedObject {
 std::vector<AnimatedObject> animatedObjects(const Scene& scene);
 // The longest animation any animated object shows now (0: none shows one): the timeline's length.
 float shownDuration(const Scene& scene);
+// The time the animated objects show (they share one), or 0 where none shows an animation.
+float shownTime(const Scene& scene);
 
 // Every animated object that shows an animation, at `time` seconds into it (objects at the
 // rest pose stay there). Consecutive time commands fold into one undo step.

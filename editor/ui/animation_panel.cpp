@@ -17,14 +17,6 @@ namespace {
 
 constexpr float kFramesPerSecond = 30.0f;  // for the frame readout and the step buttons
 
-// The time the animated objects show (they share one), or 0 where none shows an animation.
-float shownTime(const Scene& scene, const std::vector<AnimatedObject>& animated) {
-    for (const AnimatedObject& a : animated) {
-        if (!scene.objects[a.object].animation.empty()) return scene.objects[a.object].animationTime;
-    }
-    return 0.0f;
-}
-
 // Per object: which of its animations it shows.
 void animationChoices(EditorUi& ui, const std::vector<AnimatedObject>& animated, float time) {
     for (const AnimatedObject& a : animated) {
@@ -94,7 +86,7 @@ void drawAnimationPanel(EditorUi& ui) {
         ImGui::TextDisabled("The scene has no animations (glTF skins, node or morph keyframes).");
         return;
     }
-    float time = shownTime(ui.doc().scene, animated);
+    float time = shownTime(ui.doc().scene);
     const float duration = shownDuration(ui.doc().scene);
     animationChoices(ui, animated, time);
     transport(ui, animated, time, duration);

@@ -165,13 +165,8 @@ bool EditorUi::tickAnimation(double elapsed) {
     if (!session.lastEdit().complete) return true;
     elapsed = sinceShownPose_;
     sinceShownPose_ = 0.0;
-    const float duration = shownDuration(doc().scene);
-    float time = 0.0f;
-    for (const AnimatedObject& a : animatedObjects(doc().scene)) {
-        if (!doc().scene.objects[a.object].animation.empty())
-            time = doc().scene.objects[a.object].animationTime;
-    }
-    const float next = playback.advance(time, duration, elapsed);
+    const float time = shownTime(doc().scene);
+    const float next = playback.advance(time, shownDuration(doc().scene), elapsed);
     if (next != time) apply(setAnimationTime(doc(), next));
     // Playback is one undo step, closed when it stops.
     if (!playback.playing()) endDrag();
