@@ -70,11 +70,12 @@ constexpr CommandUsage kCommands[] = {
       Triangles, meshes, instances, materials, textures, lights, bounds, load and BVH times.
 )",
      kNone},
-    {"gen", R"(  gen sphere -o OUT.gltf --triangles N [--displace A] [--seed S] [--quiet]
+    {"gen", R"(  gen sphere -o OUT.gltf --triangles N [--displace A] [--morph] [--seed S] [--quiet]
   gen skinned -o OUT.gltf --triangles N [--joints J] [--displace A] [--seed S] [--quiet]
   gen field -o OUT.gltf --count N [--mesh IN.gltf|.glb|.obj] [--spacing D] [--seed S] [--quiet]
       Write a synthetic glTF (OUT.gltf + OUT.bin) for scale tests: a displaced sphere of about
-      N triangles (up to 10,000,000); the same stretched into a column skinned to J joints
+      N triangles (up to 10,000,000), with --morph a morph target "bulge" (weight 0; at 1 the
+      equator swells 15%); the same stretched into a column skinned to J joints
       (default 8) with a looping 2 s animation "sway"; or N instances (up to 1,000,000) of
       one mesh on a grid.
 )",

@@ -1,7 +1,7 @@
 // pt-render gen: synthetic glTF scenes at sizes no shared asset reaches, for measuring BVH
-// build and trace rates: a displaced sphere of up to 10 million triangles, the same skinned
-// into an animated column (per-frame skinning and refit), or a field of up to a million
-// instances of one mesh.
+// build and trace rates: a displaced sphere of up to 10 million triangles (with --morph, a
+// morph target for timing weight edits), the same skinned into an animated column (per-frame
+// skinning and refit), or a field of up to a million instances of one mesh.
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -78,7 +78,7 @@ void writeAndList(const GenScene& scene, const GenOutput& out, ProgressBar& bar)
 }
 
 int runSphere(const std::vector<std::string>& args) {
-    const Options o(args, {"-o", "--triangles", "--displace", "--seed"}, {"--quiet"});
+    const Options o(args, {"-o", "--triangles", "--displace", "--seed"}, {"--quiet", "--morph"});
     checkPositional(o);
     const GenOutput out = parseOutput(o);
     const auto triangles = o.positiveInt("--triangles");
@@ -90,12 +90,16 @@ int runSphere(const std::vector<std::string>& args) {
     ProgressBar bar(!out.quiet);
     GenScene scene;
     scene.mesh = generateDisplacedSphere({*triangles, amplitude, out.seed}, bar.callback());
+    const bool morph = o.has("--morph");
+    if (morph) addBulgeTarget(scene.mesh);
     scene.instances.push_back(GenNode{});
-    scene.camera = frameSphere(Vec3(0.0f), float(1.0 + amplitude), Vec3(0.35f, 0.45f, 1.0f));
+    // Framed whole at every weight from 0 to 1 of the bulge.
+    const float reach = float(1.0 + amplitude) * (morph ? 1.0f + kBulgeAmplitude : 1.0f);
+    scene.camera = frameSphere(Vec3(0.0f), reach, Vec3(0.35f, 0.45f, 1.0f));
     scene.lights = defaultLights();
     writeAndList(scene, out, bar);
-    std::printf("%zu triangles, %zu vertices, 1 instance\n", scene.mesh.indices.size() / 3,
-                scene.mesh.positions.size());
+    std::printf("%zu triangles, %zu vertices, 1 instance%s\n", scene.mesh.indices.size() / 3,
+                scene.mesh.positions.size(), morph ? ", morph target \"bulge\" (weight 0)" : "");
     return 0;
 }
 

@@ -24,7 +24,8 @@ constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
 
 // One tightly packed array of the buffer (each a multiple of 4 bytes, so all stay 4-byte
 // aligned), with the accessor that reads it: positions, normals, indices, then a skin's joints,
-// weights and inverse bind matrices and its animation's key times and rotations.
+// weights and inverse bind matrices and its animation's key times and rotations, then each morph
+// target's position deltas.
 struct BinPart {
     const void* data = nullptr;
     uint64_t bytes = 0;
@@ -43,25 +44,27 @@ BinPart part(const std::vector<T>& array, const char* type, int componentType, i
     return p;
 }
 
-void bounds(const std::vector<Vec3>& points, Vec3& lo, Vec3& hi) {
-    lo = hi = points.empty() ? Vec3(0.0f) : points[0];
+// Vertex positions or their morph deltas, with the exact per-axis "min" and "max" that glTF
+// requires of every POSITION accessor, morph targets' included.
+BinPart positionPart(const std::vector<Vec3>& points) {
+    Vec3 lo = points.empty() ? Vec3(0.0f) : points[0], hi = lo;
     for (const Vec3& p : points) {
         lo = vmin(lo, p);
         hi = vmax(hi, p);
     }
+    BinPart p = part(points, "VEC3", kFloat, kArrayBuffer);
+    p.accessor["min"] = {lo.x, lo.y, lo.z};
+    p.accessor["max"] = {hi.x, hi.y, hi.z};
+    return p;
 }
 
 // The buffer's parts in order, laid out end to end; accessor i reads part i.
 std::vector<BinPart> binParts(const GenScene& scene) {
     static_assert(sizeof(std::array<uint16_t, 4>) == 8 && sizeof(std::array<float, 16>) == 64, "packed");
     const Mesh& mesh = scene.mesh;
-    Vec3 lo, hi;
-    bounds(mesh.positions, lo, hi);
-    std::vector<BinPart> parts = {part(mesh.positions, "VEC3", kFloat, kArrayBuffer),
+    std::vector<BinPart> parts = {positionPart(mesh.positions),
                                   part(mesh.normals, "VEC3", kFloat, kArrayBuffer),
                                   part(mesh.indices, "SCALAR", kUnsignedInt, kElementArrayBuffer)};
-    parts[0].accessor["min"] = {lo.x, lo.y, lo.z};
-    parts[0].accessor["max"] = {hi.x, hi.y, hi.z};
     if (scene.skin) {
         const GenSkin& skin = *scene.skin;
         parts.push_back(part(skin.vertexJoints, "VEC4", kUnsignedShort, kArrayBuffer));
@@ -73,6 +76,7 @@ std::vector<BinPart> binParts(const GenScene& scene) {
         for (const std::vector<Vec4>& rotations : skin.keyRotations)
             parts.push_back(part(rotations, "VEC4", kFloat));
     }
+    for (const MorphTarget& target : mesh.morphTargets) parts.push_back(positionPart(target.positionDeltas));
     uint64_t offset = 0;
     for (BinPart& p : parts) {
         p.offset = offset;
@@ -85,6 +89,11 @@ uint64_t binBytes(const std::vector<BinPart>& parts) { return parts.back().offse
 
 // Accessor indices of binParts' parts.
 enum : int { kPositions, kNormals, kIndices, kJoints, kWeights, kInverseBinds, kKeyTimes, kFirstRotations };
+
+// The accessor of the first morph target's position deltas: after the skin's, if any.
+size_t firstMorphAccessor(const GenScene& scene) {
+    return scene.skin ? kFirstRotations + scene.skin->keyRotations.size() : size_t(kIndices) + 1;
+}
 
 // A URI reference for a file name: every byte outside RFC 3986's unreserved set escaped
 // ("+" too, which tinygltf reads as a space).
@@ -158,6 +167,31 @@ void addSkin(nlohmann::ordered_json& j, const GenScene& scene) {
     j["animations"] = {{{"name", skin.animation}, {"samplers", samplers}, {"channels", channels}}};
 }
 
+// The one mesh of one primitive. Morph targets carry POSITION deltas only; their names go in
+// extras.targetNames, the convention Blender and three.js follow (glTF itself names none).
+nlohmann::ordered_json meshJson(const GenScene& scene) {
+    using nlohmann::ordered_json;
+    const Mesh& mesh = scene.mesh;
+    ordered_json attributes = {{"POSITION", int(kPositions)}, {"NORMAL", int(kNormals)}};
+    if (scene.skin) {
+        attributes["JOINTS_0"] = int(kJoints);
+        attributes["WEIGHTS_0"] = int(kWeights);
+    }
+    ordered_json primitive = {{"attributes", attributes}, {"indices", int(kIndices)}, {"material", 0}};
+    ordered_json targets = ordered_json::array(), names = ordered_json::array();
+    for (size_t t = 0; t < mesh.morphTargets.size(); ++t) {
+        targets.push_back({{"POSITION", firstMorphAccessor(scene) + t}});
+        names.push_back(mesh.morphTargets[t].name);
+    }
+    if (!targets.empty()) primitive["targets"] = targets;
+    ordered_json out = {{"name", mesh.name}, {"primitives", ordered_json::array({primitive})}};
+    if (!targets.empty()) {
+        out["weights"] = mesh.morphWeights;
+        out["extras"] = {{"targetNames", names}};
+    }
+    return out;
+}
+
 // Everything but the nodes and the scene that lists them, which stream after it.
 nlohmann::ordered_json documentHead(const GenScene& scene, const std::string& binUri) {
     using nlohmann::ordered_json;
@@ -190,14 +224,7 @@ nlohmann::ordered_json documentHead(const GenScene& scene, const std::string& bi
         {{"name", "default"},
          {"pbrMetallicRoughness",
           {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}}}};
-    ordered_json attributes = {{"POSITION", int(kPositions)}, {"NORMAL", int(kNormals)}};
-    if (scene.skin) {
-        attributes["JOINTS_0"] = int(kJoints);
-        attributes["WEIGHTS_0"] = int(kWeights);
-    }
-    j["meshes"] = {
-        {{"name", scene.mesh.name},
-         {"primitives", {{{"attributes", attributes}, {"indices", int(kIndices)}, {"material", 0}}}}}};
+    j["meshes"] = ordered_json::array({meshJson(scene)});
     j["cameras"] = {{{"name", "camera"},
                      {"type", "perspective"},
                      {"perspective", {{"yfov", scene.camera.yfovRadians}, {"znear", scene.camera.znear}}}}};

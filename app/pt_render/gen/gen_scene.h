@@ -46,7 +46,10 @@ struct GenSkin {
 };
 
 struct GenScene {
-    Mesh mesh;                       // positions, unit normals, indices; one default material
+    // Positions, unit normals, indices; one default material. Its morph targets, if any, are
+    // written with their POSITION deltas, names and weights; positions and normals then hold the
+    // undeformed vertices (the weights are zero), as glTF's base attributes do.
+    Mesh mesh;
     std::vector<GenNode> instances;  // every instance references `mesh`
     GenCamera camera;
     std::vector<GenLight> lights;

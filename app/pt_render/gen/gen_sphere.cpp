@@ -91,6 +91,9 @@ void displace(const WaveNoise& noise, double amplitude, const double d[3], Vec3&
     normal = {float(n[0] * inv), float(n[1] * inv), float(n[2] * inv)};
 }
 
+// The bulge target's offset of vertex p (+Y is up, so x^2 + z^2 over |p|^2 is cos^2(latitude)).
+Vec3 bulgeOffset(Vec3 p) { return p * (kBulgeAmplitude * (p.x * p.x + p.z * p.z) / dot(p, p)); }
+
 }  // namespace
 
 uint32_t cubeSphereResolution(uint32_t targetTriangles) {
@@ -156,6 +159,18 @@ Mesh generateDisplacedSphere(const SphereSpec& spec, const ProgressFn& progress)
     });
     reportProgress(progress, "generate", 1.0);
     return mesh;
+}
+
+void addBulgeTarget(Mesh& sphere) {
+    MorphTarget bulge;
+    bulge.name = "bulge";
+    bulge.positionDeltas.resize(sphere.positions.size());
+    std::transform(sphere.positions.begin(), sphere.positions.end(), bulge.positionDeltas.begin(),
+                   bulgeOffset);
+    sphere.morphTargets = {std::move(bulge)};
+    sphere.morphWeights = sphere.defaultMorphWeights = {0.0f};
+    sphere.basePositions = sphere.positions;
+    sphere.baseNormals = sphere.normals;
 }
 
 }  // namespace pt::cli

@@ -25,4 +25,13 @@ inline uint64_t cubeSphereVertices(uint32_t r) { return 6ull * r * r + 2; }
 // reports the "generate" stage from the calling thread.
 Mesh generateDisplacedSphere(const SphereSpec& spec, const ProgressFn& progress = {});
 
+// The bulge target's largest offset, as a fraction of a vertex's distance from the centre.
+constexpr float kBulgeAmplitude = 0.15f;
+
+// Gives the sphere (centred on the origin) one morph target, "bulge", at weight 0 (`gen sphere
+// --morph`): at weight w vertex p moves outward by w * kBulgeAmplitude * cos^2(latitude) * p, so
+// the equator swells by 15% and the poles stay put. POSITION deltas only (the normals keep their
+// base values). The base arrays are filled, so applyMorphWeights accepts the mesh.
+void addBulgeTarget(Mesh& sphere);
+
 }  // namespace pt::cli

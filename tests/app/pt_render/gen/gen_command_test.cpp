@@ -15,6 +15,7 @@
 
 #include "app/cli_runner.h"
 #include "assets/image/image_write.h"
+#include "render/scene/morph.h"
 #include "render/scene/scene_animation.h"
 #include "support/load_scene.h"
 #include "support/test_paths.h"
@@ -167,30 +168,89 @@ TEST(GenCommand, SkinnedColumnLoadsAsARigThatSwaysAndLoops) {
     EXPECT_LT(test::largestDistance(end, start), 1e-4f) << "the animation loops";
 }
 
+// The POSITION accessor, and the morph target's (which the spec holds to the same bounds).
 TEST(GenCommand, BufferMatchesTheAccessorsAndPositionBounds) {
     const std::string out = folder("accessors") + "/s.gltf";
-    ASSERT_EQ(runCli("gen sphere -o " + out + " --triangles 3000 --seed 5 --quiet").exitCode, 0);
+    ASSERT_EQ(runCli("gen sphere -o " + out + " --triangles 3000 --seed 5 --morph --quiet").exitCode, 0);
     const nlohmann::json doc = nlohmann::json::parse(slurp(out));
     const std::string bin = slurp(fs::path(out).replace_extension(".bin").string());
     ASSERT_EQ(doc["buffers"].size(), 1u);
     EXPECT_EQ(doc["buffers"][0]["uri"], "s.bin");
     EXPECT_EQ(doc["buffers"][0]["byteLength"].get<size_t>(), bin.size());
-    const nlohmann::json& position =
-        doc["accessors"][doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"].get<size_t>()];
-    const nlohmann::json& view = doc["bufferViews"][position["bufferView"].get<size_t>()];
-    const size_t count = position["count"], offset = view.value("byteOffset", 0u);
-    ASSERT_LE(offset + count * 12, bin.size());
-    std::vector<float> xyz(count * 3);
-    std::memcpy(xyz.data(), bin.data() + offset, count * 12);  // the file is little-endian, as is this host
-    for (int axis = 0; axis < 3; ++axis) {
-        float lo = xyz[size_t(axis)], hi = lo;
-        for (size_t v = 0; v < count; ++v) {
-            lo = std::min(lo, xyz[3 * v + size_t(axis)]);
-            hi = std::max(hi, xyz[3 * v + size_t(axis)]);
+    const nlohmann::json& primitive = doc["meshes"][0]["primitives"][0];
+    const auto expectExactBounds = [&](const nlohmann::json& position, const std::string& what) {
+        const nlohmann::json& view = doc["bufferViews"][position["bufferView"].get<size_t>()];
+        const size_t count = position["count"], offset = view.value("byteOffset", 0u);
+        ASSERT_LE(offset + count * 12, bin.size()) << what;
+        std::vector<float> xyz(count * 3);
+        std::memcpy(xyz.data(), bin.data() + offset,
+                    count * 12);  // the file is little-endian, as is this host
+        for (int axis = 0; axis < 3; ++axis) {
+            float lo = xyz[size_t(axis)], hi = lo;
+            for (size_t v = 0; v < count; ++v) {
+                lo = std::min(lo, xyz[3 * v + size_t(axis)]);
+                hi = std::max(hi, xyz[3 * v + size_t(axis)]);
+            }
+            // Exact, as the spec asks.
+            EXPECT_EQ(position["min"][axis].get<float>(), lo) << what << " axis " << axis;
+            EXPECT_EQ(position["max"][axis].get<float>(), hi) << what << " axis " << axis;
         }
-        EXPECT_EQ(position["min"][axis].get<float>(), lo) << "axis " << axis;  // exact, as the spec asks
-        EXPECT_EQ(position["max"][axis].get<float>(), hi) << "axis " << axis;
+    };
+    expectExactBounds(doc["accessors"][primitive["attributes"]["POSITION"].get<size_t>()], "POSITION");
+    ASSERT_EQ(primitive["targets"].size(), 1u);
+    expectExactBounds(doc["accessors"][primitive["targets"][0]["POSITION"].get<size_t>()], "target POSITION");
+}
+
+// --morph: one target "bulge" at weight 0 that, at weight 1, pushes every vertex outward along
+// its radius by up to 15% (the usage's figure) of its distance from the centre: all of that at
+// the equator, none at the poles. Without --morph the mesh has no targets.
+TEST(GenCommand, MorphGivesTheSphereOneBulgeTarget) {
+    const std::string dir = folder("morph");
+    // 12 x 12^2 triangles: the cube-sphere's r = 12 is even, so vertices lie on the equator
+    // and at the poles.
+    const auto r = runCli("gen sphere -o " + dir + "/m.gltf --triangles 1728 --seed 4 --morph --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("morph target \"bulge\""), std::string::npos) << r.out;
+    Scene scene = test::loadSceneOrFail(dir + "/m.gltf");
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    Mesh& mesh = scene.meshes[0];
+    EXPECT_TRUE(hasMorphTargets(mesh));
+    ASSERT_EQ(mesh.morphTargets.size(), 1u);
+    EXPECT_EQ(mesh.morphTargets[0].name, "bulge");
+    ASSERT_EQ(mesh.morphWeights, std::vector<float>{0.0f});
+    EXPECT_EQ(mesh.defaultMorphWeights, std::vector<float>{0.0f});
+    ASSERT_EQ(mesh.basePositions.size(), mesh.positions.size());
+    EXPECT_EQ(test::largestDistance(mesh.positions, mesh.basePositions), 0.0f) << "weight 0: undeformed";
+
+    mesh.morphWeights[0] = 1.0f;
+    applyMorphWeights(mesh);
+    constexpr float kBulge = 0.15f;
+    float largest = 0.0f, nearestPoleMoved = -1.0f, nearestPoleUp = -1.0f;
+    size_t tooFar = 0, notOutward = 0;
+    for (size_t v = 0; v < mesh.positions.size(); ++v) {
+        const Vec3 base = mesh.basePositions[v], moved = mesh.positions[v] - base;
+        const Vec3 radial = normalize(base);
+        const float fraction = length(moved) / length(base);
+        largest = std::max(largest, fraction);
+        tooFar += fraction > kBulge * (1.0f + 1e-5f);
+        notOutward += dot(moved, radial) < 0.0f || length(cross(moved, radial)) > 1e-5f;
+        if (radial.y > nearestPoleUp) {
+            nearestPoleUp = radial.y;
+            nearestPoleMoved = length(moved);
+        }
     }
+    EXPECT_EQ(tooFar, 0u) << "largest offset " << largest << " of the radius";
+    EXPECT_EQ(notOutward, 0u);
+    EXPECT_NEAR(largest, kBulge, 1e-5f) << "the equator swells by the whole bulge";
+    EXPECT_GT(nearestPoleUp, 0.99999f);
+    EXPECT_EQ(nearestPoleMoved, 0.0f) << "the pole stays";
+
+    ASSERT_EQ(runCli("gen sphere -o " + dir + "/plain.gltf --triangles 1728 --quiet").exitCode, 0);
+    const Scene plain = test::loadSceneOrFail(dir + "/plain.gltf");
+    ASSERT_EQ(plain.meshes.size(), 1u);
+    EXPECT_FALSE(hasMorphTargets(plain.meshes[0]));
+    EXPECT_TRUE(plain.meshes[0].morphWeights.empty());
 }
 
 TEST(GenCommand, SameSeedGivesIdenticalFilesAndAnotherSeedDifferentOnes) {
