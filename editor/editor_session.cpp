@@ -48,6 +48,7 @@ void EditorSession::noteEdit(const std::string& label, const SceneDelta& changes
     pending_ |= changes;
     if ((changes.mask & ~SceneChangeMask(SceneChanges::Display)) == 0) return;  // nothing to render again
     interrupt_ = true;  // the samples in flight are of the scene before the edit
+    ++editSerial_;
     std::lock_guard<std::mutex> lock(statusMutex_);
     lastEdit_ = {};
     lastEdit_.label = label;
@@ -147,7 +148,7 @@ SyncReport EditorSession::sync(const ProgressFn& progress) {
     SceneDelta changes = pending_.without(SceneChanges::Display);
     pending_ = SceneChanges::None;
     interrupt_ = false;  // the edits that raised it are applied now
-    const uint64_t document = documentSerial_;
+    const uint64_t document = documentSerial_, edit = editSerial_;  // edits wait for the sync
     // Only the AOV on screen and the export layers are accumulated (the others are not even
     // allocated).
     const int32_t aov = doc_.viewer.aov;
@@ -167,6 +168,7 @@ SyncReport EditorSession::sync(const ProgressFn& progress) {
     }
     if (changes.mask == SceneChanges::None) {
         syncedDocument_ = document;
+        syncedEdit_ = edit;
         return {"nothing", 0.0, 0.0, {}};
     }
     if (changes.has(SceneChanges::Settings)) backend_->setToggles(doc_.toggles);
@@ -178,6 +180,7 @@ SyncReport EditorSession::sync(const ProgressFn& progress) {
         throw;
     }
     syncedDocument_ = document;
+    syncedEdit_ = edit;
     std::lock_guard<std::mutex> lock(statusMutex_);
     lastSync_ = report;
     lastEdit_.action = report.action;

@@ -46,6 +46,12 @@ public:
     uint64_t documentSerial() const { return documentSerial_; }
     // The render thread: the document the backend holds, as of the last sync that succeeded.
     uint64_t syncedDocument() const { return syncedDocument_; }
+    // Grows with every edit that changes what is rendered (execute, undo, redo, a cancelled
+    // drag; not display-only edits): frames carry the one their samples include (syncedEdit,
+    // RenderWorker), so the window knows when an edit reaches the screen (ScreenLatency).
+    uint64_t editSerial() const { return editSerial_; }
+    // The render thread: editSerial() as of the last sync that succeeded.
+    uint64_t syncedEdit() const { return syncedEdit_; }
     const CommandStack& history() const { return history_; }
     SceneDelta execute(std::unique_ptr<EditCommand> command);
     bool undo();
@@ -131,7 +137,7 @@ private:
     std::unique_ptr<Backend> backend_;
     SceneDelta pending_ = SceneChanges::All;
     std::atomic<bool> interrupt_{false};  // the backend's interrupt flag (render())
-    std::atomic<uint64_t> documentSerial_{0}, syncedDocument_{0};
+    std::atomic<uint64_t> documentSerial_{0}, syncedDocument_{0}, editSerial_{0}, syncedEdit_{0};
     bool passInterrupts_ = true;
     std::vector<Material> materialsAtLoad_;
     RenderSettings fileRender_, overriddenRender_;

@@ -85,6 +85,7 @@ void RenderWorker::publishFrame(int32_t aov, bool denoise) {
     next.height = backend.height();
     next.aov = aov;
     next.document = session_.syncedDocument();
+    next.edit = session_.syncedEdit();
     next.stats = backend.stats();
     if (hostFrames_ || aov >= 0) session_.readDisplayed(aov, denoise, next.rgba);
     {

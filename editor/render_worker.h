@@ -29,6 +29,7 @@ struct DisplayFrame {
     int32_t aov = -1;       // -1: the beauty
     uint64_t serial = 0;    // grows with every published frame
     uint64_t document = 0;  // the EditorSession::documentSerial() it shows
+    uint64_t edit = 0;      // the EditorSession::syncedEdit() its samples include
     BackendStats stats;
 };
 

@@ -14,7 +14,7 @@ namespace {
 constexpr const char* kUsage =
     "usage: pathtracer [SCENE] [--backend cpu|cuda] [--size WxH] [--spp N] [--frames N] [--screenshot "
     "OUT.png]\n"
-    "                  [--reference REF.exr] [--ocio CONFIG.ocio]\n"
+    "                  [--reference REF.exr] [--ocio CONFIG.ocio] [--latency-log OUT.jsonl]\n"
     "  --backend     renderer (default: cuda where a usable GPU is, else cpu)\n"
     "  --size        render resolution, overriding the scene's\n"
     "  --spp         stop accumulating at N samples per pixel\n"
@@ -22,12 +22,14 @@ constexpr const char* kUsage =
     "  --screenshot  write the window as PNG after --frames, and on every F12 (numbered)\n"
     "  --reference   an image (e.g. from pt-render reference) to plot the error against, live\n"
     "  --ocio        OpenColorIO config for the viewport (default: the scene's, else $OCIO, else the shipped "
-    "one)\n";
+    "one)\n"
+    "  --latency-log each edit's time from input to the swapped frame that shows it, as JSON lines\n";
 
 pt::editor::EditorOptions parse(const std::vector<std::string>& args) {
-    const pt::cli::Options o(
-        args, {"--backend", "--size", "--spp", "--frames", "--screenshot", "--reference", "--ocio"},
-        {"--help", "-h"});
+    const pt::cli::Options o(args,
+                             {"--backend", "--size", "--spp", "--frames", "--screenshot", "--reference",
+                              "--ocio", "--latency-log"},
+                             {"--help", "-h"});
     if (o.has("--help") || o.has("-h")) {
         std::fputs(kUsage, stdout);
         std::exit(0);
@@ -42,6 +44,7 @@ pt::editor::EditorOptions parse(const std::vector<std::string>& args) {
     options.screenshotPath = o.value("--screenshot").value_or("");
     options.referencePath = o.value("--reference").value_or("");
     options.ocioPath = o.value("--ocio").value_or("");
+    options.latencyLogPath = o.value("--latency-log").value_or("");
     return options;
 }
 

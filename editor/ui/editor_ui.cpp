@@ -7,6 +7,7 @@
 #include "assets/input_error.h"
 #include "editor/animation_edits.h"
 #include "editor/object_edits.h"
+#include "editor/ui/input_events.h"
 #include "editor/ui/recent_files.h"
 
 namespace pt::editor {
@@ -16,9 +17,27 @@ namespace fs = std::filesystem;
 EditorUi::EditorUi(EditorSession& s, RenderWorker& w, const EditorOptions& o)
     : session(s), worker(w), options(o), recentFiles(loadRecentFiles()) {}
 
+void EditorUi::queue(std::function<void(EditorSession&)> change) {
+    const auto now = ScreenLatency::Clock::now();
+    queued_.push_back({std::move(change), inputEvents().firstEventTime().value_or(now)});
+    flushEdits();
+}
+
 void EditorUi::flushEdits() {
     while (!queued_.empty()) {
-        if (!worker.tryEdit(queued_.front())) return;  // the render thread is syncing: next frame
+        QueuedEdit& next = queued_.front();
+        uint64_t edit = 0;
+        std::string label;
+        const bool applied = worker.tryEdit([&](EditorSession& s) {
+            const uint64_t before = s.editSerial();
+            next.change(s);
+            if (s.editSerial() == before) return;  // nothing to render again (a display change)
+            edit = s.editSerial();
+            label = s.lastEdit().label;
+        });
+        if (!applied) return;  // the render thread is syncing: next frame
+        if (edit > 0)
+            screenLatency.editApplied(edit, std::move(label), next.input, ScreenLatency::Clock::now());
         queued_.pop_front();
     }
 }
@@ -26,18 +45,15 @@ void EditorUi::flushEdits() {
 void EditorUi::apply(std::unique_ptr<EditCommand> command) {
     // std::function needs a copyable callable; the command itself runs once.
     auto held = std::make_shared<std::unique_ptr<EditCommand>>(std::move(command));
-    queued_.push_back([held](EditorSession& s) { s.execute(std::move(*held)); });
-    flushEdits();
+    queue([held](EditorSession& s) { s.execute(std::move(*held)); });
 }
 
 void EditorUi::endDrag() {
-    queued_.push_back([](EditorSession& s) { s.endDrag(); });
-    flushEdits();
+    queue([](EditorSession& s) { s.endDrag(); });
 }
 
 void EditorUi::cancelDrag() {
-    queued_.push_back([](EditorSession& s) { s.cancelDrag(); });
-    flushEdits();
+    queue([](EditorSession& s) { s.cancelDrag(); });
 }
 
 void EditorUi::duplicateBeside(uint32_t object) {
@@ -47,13 +63,11 @@ void EditorUi::duplicateBeside(uint32_t object) {
 }
 
 void EditorUi::undo() {
-    queued_.push_back([](EditorSession& s) { s.undo(); });
-    flushEdits();
+    queue([](EditorSession& s) { s.undo(); });
 }
 
 void EditorUi::redo() {
-    queued_.push_back([](EditorSession& s) { s.redo(); });
-    flushEdits();
+    queue([](EditorSession& s) { s.redo(); });
 }
 
 void EditorUi::openScene(const std::string& path) {
@@ -90,6 +104,7 @@ bool EditorUi::pollLoad() {
     notify(warnings.empty() ? "Opened " + path : warnings);
     fileCamera = scene.camera;
     queued_.clear();
+    screenLatency.forget();
     worker.edit([&](EditorSession& s) {
         s.adopt(std::move(scene));
         if (options.width > 0 && options.height > 0) s.overrideResolution(options.width, options.height);

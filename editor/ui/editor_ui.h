@@ -13,6 +13,7 @@
 #include "editor/animation_playback.h"
 #include "editor/render_worker.h"
 #include "editor/scene_load_job.h"
+#include "editor/screen_latency.h"
 #include "editor/ui/display_view.h"
 #include "editor/ui/panel_layout.h"
 
@@ -40,6 +41,7 @@ struct EditorOptions {
     std::string screenshotPath;      // --screenshot: written after --frames, and on F12
     std::string referencePath;       // --reference: an image to measure the error against
     std::string ocioPath;            // --ocio: an OpenColorIO config, over the scene's and $OCIO
+    std::string latencyLogPath;      // --latency-log: edit-to-screen records as JSON lines
     uint32_t spp = 0;                // --spp: stop accumulating there
 };
 
@@ -113,13 +115,21 @@ public:
     // Numbers the Stats panel shows.
     std::vector<float> frameMillis;  // UI frame times, most recent last
     DisplayFrame lastFrame;
-    std::string framePath;  // how frames reach the screen, and why not by interop
+    std::string framePath;        // how frames reach the screen, and why not by interop
+    std::string glRenderer;       // GL_RENDERER, GL_VERSION: where the window draws
+    ScreenLatency screenLatency;  // input to swapped frame, per edit (flushEdits, the frame loop)
     // Texture slots the user switched off, (material, slot) -> texture, so switching back on
     // restores them; cleared when another scene is opened.
     std::map<std::pair<uint32_t, int>, int32_t> switchedOffTextures;
 
 private:
-    std::deque<std::function<void(EditorSession&)>> queued_;
+    // An edit for the session, with when the input behind it reached the window.
+    struct QueuedEdit {
+        std::function<void(EditorSession&)> change;
+        ScreenLatency::Clock::time_point input;
+    };
+    void queue(std::function<void(EditorSession&)> change);
+    std::deque<QueuedEdit> queued_;
     std::string colorRequest_;     // what colorView was resolved for
     double sinceShownPose_ = 0.0;  // wall seconds of playback since the last pose was applied
 };

@@ -16,6 +16,7 @@
 #include "editor/ui/gl.h"
 #include "editor/ui/input_events.h"
 #include "editor/ui/interop_frame.h"
+#include "editor/ui/latency_log.h"
 #include "editor/ui/panel_layout.h"
 #include "editor/ui/redraw_policy.h"
 #include "editor/ui/screenshot.h"
@@ -47,6 +48,11 @@ void onCloseRequest(GLFWwindow* window) {
 
 void onDrop(GLFWwindow*, int count, const char** paths) {
     for (int i = 0; i < count; ++i) droppedFiles().push_back(paths[i]);
+}
+
+std::string glString(GLenum name) {
+    const GLubyte* text = glGetString(name);
+    return text ? reinterpret_cast<const char*>(text) : "(unknown)";
 }
 
 std::string chooseBackend(const std::string& requested) {
@@ -278,7 +284,27 @@ void showFrame(EditorUi& ui, DisplayView& view, InteropFrame& interop) {
                             : "host upload";
 }
 
-int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
+double medianOf(std::vector<float> values) {
+    if (values.empty()) return 0.0;
+    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+    return values[values.size() / 2];
+}
+
+// The frame just swapped shows edits that were waiting for the screen: it is finished first
+// (the swap only queued it), so the time read is when a user sees it.
+void noteSwap(EditorUi& ui, LatencyLog& log) {
+    const DisplayFrame& frame = ui.lastFrame;
+    const uint32_t spp = frame.stats.samplesPerPixel;
+    if (!ui.screenLatency.resolves(frame.edit, spp) && !log.waitsForFirstFrame(frame.document, spp)) return;
+    glFinish();
+    const auto swapped = ScreenLatency::Clock::now();
+    log.frameSwapped(frame.document, spp, ui.framePath, swapped);
+    const std::string action = ui.session.lastSync().action;
+    for (const ScreenLatencyRecord& r : ui.screenLatency.frameSwapped(frame.edit, spp, swapped))
+        log.edit(r, action, ui.framePath, medianOf(ui.frameMillis));
+}
+
+int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options, LatencyLog& latencyLog) {
     DisplayView view;
     InteropFrame interop;
     ViewportInput input;
@@ -327,11 +353,13 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
         // Frames of the document before an open are dropped, and so is the image on screen:
         // the viewport says what is under way until the new scene's first frame.
         const uint64_t document = ui.session.documentSerial();
+        bool newFrame = false;
         if (ui.worker.takeFrame(taken)) {
             activity.happened = true;
             if (taken.document == document) {
                 ui.lastFrame = std::move(taken);
                 showFrame(ui, view, interop);
+                newFrame = true;
                 if (ui.lastFrame.stats.samplesPerPixel > 0) ++renderedFrames;
             }
         }
@@ -393,6 +421,7 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options) {
             }
         }
         glfwSwapBuffers(window.handle);
+        if (newFrame) noteSwap(ui, latencyLog);
         inputEvents().endFrame();
         if (framesDone) break;
         activity.moving = input.moving() || ImGui::IsAnyMouseDown();
@@ -438,7 +467,16 @@ int runEditor(const EditorOptions& options) {
             return 1;
         }
     }
-    const int status = frameLoop(*window, ui, options);
+    ui.glRenderer = glString(GL_RENDERER) + ", OpenGL " + glString(GL_VERSION);
+    std::optional<LatencyLog> latencyLog;
+    try {
+        latencyLog.emplace(options.latencyLogPath);
+    } catch (const std::runtime_error& e) {
+        std::fprintf(stderr, "pathtracer: %s\n", e.what());
+        return 1;
+    }
+    latencyLog->glContext(backendName, glString(GL_RENDERER), glString(GL_VERSION));
+    const int status = frameLoop(*window, ui, options, *latencyLog);
     savePanelLayout(ui.layout);
     return status;
 }

@@ -9,8 +9,13 @@ namespace pt::editor {
 
 static_assert(kModShift == GLFW_MOD_SHIFT && kModCtrl == GLFW_MOD_CONTROL && kModAlt == GLFW_MOD_ALT);
 
-void InputEvents::key(int key, int action, int mods) {
+void InputEvents::counted() {
     ++count_;
+    if (!firstEvent_) firstEvent_ = std::chrono::steady_clock::now();
+}
+
+void InputEvents::key(int key, int action, int mods) {
+    counted();
     if (action == GLFW_PRESS) presses_.push_back({key, mods});
     const auto held = std::find(heldPlain_.begin(), heldPlain_.end(), key);
     if (action == GLFW_RELEASE && held != heldPlain_.end()) heldPlain_.erase(held);
@@ -23,7 +28,7 @@ bool InputEvents::heldPlain(int key) const {
 }
 
 void InputEvents::mouseButton(int button, int action, ScreenPoint at, double seconds) {
-    ++count_;
+    counted();
     if (action != GLFW_PRESS) return;
     const Click click{button, at, seconds};
     clicks_.push_back(click);
@@ -65,6 +70,7 @@ std::optional<ScreenPoint> InputEvents::doubleClick(int button) const {
 std::optional<ScreenPoint> InputEvents::pressed(int button) const { return firstOf(clicks_, button); }
 
 void InputEvents::endFrame() {
+    firstEvent_.reset();
     presses_.clear();
     doubleClicks_.clear();
     clicks_.clear();

@@ -9,6 +9,7 @@
 // GLFW callbacks installed before ImGui's (which chain to them) record every press here; the
 // frame reads them and endFrame() forgets them. Every event also counts, so that the frame loop
 // knows whether anything happened (redraw_policy.h).
+#include <chrono>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -32,11 +33,11 @@ public:
 
     void key(int key, int action, int mods);
     void mouseButton(int button, int action, ScreenPoint at, double seconds);
-    void other() { ++count_; }  // a scroll, character, focus or resize: counted only
+    void other() { counted(); }  // a scroll, character, focus or resize: counted only
     // The pointer moved to `at`: a press takes the position of the last move before it (events
     // come in order), not where the pointer is when its callback runs, a frame later or more.
     void cursorMoved(ScreenPoint at) {
-        ++count_;
+        counted();
         cursor_ = at;
     }
     const std::optional<ScreenPoint>& cursor() const { return cursor_; }
@@ -57,6 +58,9 @@ public:
     std::optional<ScreenPoint> pressed(int button) const;
     // Events of any kind so far; a change means the frame has something to show.
     uint64_t count() const { return count_; }
+    // When the first event since endFrame() reached the window (its callback ran): where an
+    // edit's wait for the screen starts (ScreenLatency).
+    const std::optional<std::chrono::steady_clock::time_point>& firstEventTime() const { return firstEvent_; }
     void endFrame();
 
     struct Click {
@@ -73,7 +77,9 @@ private:
     std::vector<int> heldPlain_;  // keys down since a press without Ctrl or Alt
     std::vector<Click> doubleClicks_, clicks_;
     Click lastClick_;  // the last press of any button, which a double-click pairs with
+    void counted();    // every event: the count, and the time of the frame's first
     uint64_t count_ = 0;
+    std::optional<std::chrono::steady_clock::time_point> firstEvent_;
     std::optional<ScreenPoint> cursor_;  // none before the first move
 };
 

@@ -111,6 +111,7 @@ void drawStatsPanel(EditorUi& ui) {
     const BackendStats& s = ui.lastFrame.stats;
     ImGui::Text("Backend: %s   %ux%u", ui.backendName.c_str(), ui.lastFrame.width, ui.lastFrame.height);
     if (!ui.framePath.empty()) ImGui::TextWrapped("Frames: %s", ui.framePath.c_str());
+    if (!ui.glRenderer.empty()) ImGui::TextWrapped("GL: %s", ui.glRenderer.c_str());
     ImGui::Text("Samples: %u spp%s", s.samplesPerPixel, status.converged ? " (target reached)" : "");
     if (!ui.frameMillis.empty()) {
         const float mean = meanFrameMillis(ui);
@@ -137,6 +138,12 @@ void drawStatsPanel(EditorUi& ui) {
         ImGui::Text("Triggered: %s (sync %.2f ms)", edit.action.empty() ? "..." : edit.action.c_str(),
                     edit.syncSeconds * 1e3);
         if (edit.complete) ImGui::Text("Edit to first frame: %.2f ms", edit.toFrameSeconds * 1e3);
+        // The user's wait: from the input event to the swapped window frame that shows the edit.
+        const std::deque<ScreenLatencyRecord>& shown = ui.screenLatency.recent();
+        if (!shown.empty()) {
+            ImGui::Text("Input to screen: %.1f ms (median of %zu: %.1f ms)", shown.back().inputToSwapMillis(),
+                        shown.size(), ui.screenLatency.recentMedianMillis());
+        }
         // Each step of that sync (an animation frame: skin, BLAS refit or rebuild, TLAS).
         for (const SyncStep& step : ui.session.lastSync().steps) {
             if (step.seconds > 0.0) ImGui::BulletText("%s: %.3f ms", step.name.c_str(), step.seconds * 1e3);
