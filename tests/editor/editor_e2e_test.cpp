@@ -3,9 +3,8 @@
 // Select the glass sphere by clicking it, drag its Roughness slider, undo, redo, move it with the
 // transform gizmo (one undo step; a drag cancelled with Escape leaves nothing), save, quit.
 //
-// Sections: layout (where the editor draws what: derived from its code and ImGui's default
-// style, not from pixels of one run) - images - the driver (process, input, screenshots,
-// convergence) - the test.
+// Sections: images - the driver (process, input, screenshots, convergence) - the test. Where
+// the editor draws what is editor_layout.h's.
 //
 // Renders are deterministic at a fixed sample count (--spp 8 stops accumulation), so two
 // screenshots of the same converged scene state have identical viewports: measured mean
@@ -22,6 +21,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -31,6 +31,7 @@
 
 #include "assets/image/image_write.h"
 #include "assets/scene_loader.h"
+#include "editor/editor_layout.h"
 #include "editor/scene_equality.h"
 #include "editor/x11_session.h"
 #include "render/integrator/camera.h"
@@ -50,87 +51,6 @@ constexpr const char* kEditorApp = nullptr;
 
 double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 void sleepSeconds(double s) { std::this_thread::sleep_for(std::chrono::duration<double>(s)); }
-
-// ---- Layout -------------------------------------------------------------------------------
-// ImGui 1.86's default style and font (the editor changes neither): ProggyClean 13 px,
-// FramePadding (4, 3), ItemSpacing (8, 4), WindowPadding (8, 8), GrabMinSize 10, and a
-// slider's grab inset of 2 px; the default item width is 65% of the window's width.
-constexpr float kFontSize = 13.0f;
-constexpr float kFrameHeight = kFontSize + 2 * 3.0f;  // menu bar, headers, one-line widgets: 19
-constexpr float kItemSpacingY = 4.0f;
-constexpr float kRow = kFrameHeight + kItemSpacingY;   // one widget row: 23
-constexpr float kTextRow = kFontSize + kItemSpacingY;  // one line of text: 17
-constexpr float kWindowPadding = 8.0f;
-constexpr float kGrabMinSize = 10.0f, kGrabPadding = 2.0f;
-// The editor's own (editor_window.cpp kPanelWidth, outliner_panel.cpp BeginChild height,
-// editor_ui.h kStatusBarHeight).
-constexpr float kPanelWidth = 400.0f;
-constexpr float kStatusBarHeight = 19.0f;
-constexpr float kOutlinerHeight = 180.0f;
-
-struct Point {
-    float x = 0, y = 0;
-};
-
-struct PixelRect {
-    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // [x0, x1) x [y0, y1), window pixels
-};
-
-struct Layout {
-    float width = 0, height = 0;  // the window, in pixels (no window manager: no frame)
-    uint32_t renderWidth = 0, renderHeight = 0;
-    float imageX = 0, imageY = 0, imageSize = 0;  // the render, scaled to fit the viewport
-
-    Layout(float w, float h, uint32_t rw, uint32_t rh)
-        : width(w), height(h), renderWidth(rw), renderHeight(rh) {
-        // DisplayView::draw: the viewport is left of the panel, below the menu bar and above
-        // the status bar; the image keeps its aspect (square here) and is centred.
-        const float vw = width - kPanelWidth, vh = height - kFrameHeight - kStatusBarHeight;
-        imageSize = std::min(vw, vh);
-        imageX = 0.5f * (vw - imageSize);
-        imageY = kFrameHeight + 0.5f * (vh - imageSize);
-    }
-    float scale() const { return imageSize / float(renderWidth); }
-    // Whole pixels of the window that show the render.
-    PixelRect viewport() const {
-        return {int(std::ceil(imageX)), int(std::ceil(imageY)), int(std::floor(imageX + imageSize)),
-                int(std::floor(imageY + imageSize))};
-    }
-    Point fromRender(Point p) const { return {imageX + p.x * scale(), imageY + p.y * scale()}; }
-
-    float panelX() const { return width - kPanelWidth; }
-    // Top of the Inspector's first widget: the panel's padding, the Outliner (header, list,
-    // hint line) and the Inspector header.
-    float inspectorTop() const {
-        return kFrameHeight + kWindowPadding + kRow + (kOutlinerHeight + kItemSpacingY) + kTextRow + kRow;
-    }
-    // The rows of an object with a TRS transform and one material (inspector_panel.cpp):
-    // Name, Hidden, Translate, Rotate, Scale; the "Instance:" line; the material's header;
-    // Base color, Metallic, Roughness, ...
-    float materialTop() const { return inspectorTop() + 5 * kRow + kTextRow + kRow; }
-    float roughnessCentreY() const { return materialTop() + 2 * kRow + 0.5f * kFrameHeight; }
-    // A slider's frame starts at the panel's padding and is 65% of the panel wide; the grab's
-    // centre runs over [usableMin, usableMin + usableSize] as the value runs over its range.
-    float sliderLeft() const { return panelX() + kWindowPadding; }
-    float sliderWidth() const { return std::floor(0.65f * kPanelWidth); }
-    float usableMin() const { return sliderLeft() + kGrabPadding + 0.5f * kGrabMinSize; }
-    float usableSize() const { return sliderWidth() - 2 * kGrabPadding - kGrabMinSize; }
-    float sliderX(float t) const { return usableMin() + t * usableSize(); }
-    // The Inspector rows the selection fills (Name .. Scale): panels that do not change from
-    // frame to frame before it (the hint, the Camera, Render settings and Display headers).
-    PixelRect inspectorRows() const {
-        return {int(panelX()), int(inspectorTop()), int(width), int(materialTop() - kRow)};
-    }
-    // Where the pointer rests between actions: a viewport corner hovers over nothing (the
-    // status bar below would show its notice's tooltip).
-    Point restingPoint() const { return {imageX + 4, height - kStatusBarHeight - 4}; }
-};
-
-// Where a world point lands in the render (pixels, y down), the inverse of generateCameraRay.
-Point projectToRender(const Camera& camera, Vec3 p, uint32_t width, uint32_t height) {
-    const Vec2 at = projectToImage(makeRenderCamera(camera, width, height), p, width, height, nullptr);
-    return {at.x, at.y};
-}
 
 // ---- Images -------------------------------------------------------------------------------
 
@@ -308,13 +228,17 @@ protected:
     void startEditor(const fs::path& scene, uint32_t renderSize) {
         window.clear();
         const std::string size = std::to_string(renderSize) + "x" + std::to_string(renderSize);
+        // PT_EDITOR_TEST_BACKEND=cuda runs it on the GPU (render/backend/cuda/editor_on_gpu.sh,
+        // where the GL is the GPU's too); the CPU backend draws with llvmpipe.
+        const char* chosen = std::getenv("PT_EDITOR_TEST_BACKEND");
+        const std::string backend = chosen && *chosen ? chosen : "cpu";
+        // Recent files are kept out of the user's configuration.
+        std::vector<std::string> env{x->displayEnv(), "XDG_CONFIG_HOME=" + (dir / "config").string()};
+        if (backend == "cpu") env.push_back("LIBGL_ALWAYS_SOFTWARE=1");
         editor = std::make_unique<ChildProcess>(
-            std::vector<std::string>{kEditorApp, scene.string(), "--backend", "cpu", "--size", size, "--spp",
-                                     "8", "--screenshot", (dir / "shot.png").string()},
-            // llvmpipe; and recent files kept out of the user's configuration.
-            std::vector<std::string>{x->displayEnv(), "LIBGL_ALWAYS_SOFTWARE=1",
-                                     "XDG_CONFIG_HOME=" + (dir / "config").string()},
-            (dir / "editor.log").string());
+            std::vector<std::string>{kEditorApp, scene.string(), "--backend", backend, "--size", size,
+                                     "--spp", "8", "--screenshot", (dir / "shot.png").string()},
+            env, (dir / "editor.log").string());
         // The window once mapped; keys go to the focused window (there is no window manager).
         const auto start = Clock::now();
         while (window.empty() && secondsSince(start) < 30.0 && editor->running()) {
@@ -355,7 +279,7 @@ protected:
             return at == std::string::npos ? 0.0f : std::stof(geometry.substr(at + name.size() + 1));
         };
         const Layout layout(field("WIDTH"), field("HEIGHT"), renderSize, renderSize);
-        if (layout.imageSize <= 0.0f) ADD_FAILURE() << "no room for the viewport in " << geometry;
+        if (layout.imageWidth <= 0.0f) ADD_FAILURE() << "no room for the viewport in " << geometry;
         windowWidth = uint32_t(layout.width);
         windowHeight = uint32_t(layout.height);
         moveTo(layout.restingPoint());

@@ -174,7 +174,7 @@ CommandResult runCommand(const std::vector<std::string>& argv, const std::vector
 }
 
 std::unique_ptr<X11Session> X11Session::start(const std::string& logPath, double timeoutSeconds,
-                                              std::string& error) {
+                                              std::string& error, const std::string& screen) {
     // Xvfb picks a free display number itself and writes it to descriptor 3 once it accepts
     // connections (-displayfd), so neither a guessed number nor a polling loop is needed.
     int ready[2];
@@ -187,10 +187,9 @@ std::unique_ptr<X11Session> X11Session::start(const std::string& logPath, double
     ::close(ready[1]);
     std::unique_ptr<ChildProcess> server;
     try {
-        server =
-            std::make_unique<ChildProcess>(std::vector<std::string>{"Xvfb", "-displayfd", "3", "-screen", "0",
-                                                                    "1280x1024x24", "-nolisten", "tcp"},
-                                           std::vector<std::string>{}, logPath, writeEnd);
+        server = std::make_unique<ChildProcess>(
+            std::vector<std::string>{"Xvfb", "-displayfd", "3", "-screen", "0", screen, "-nolisten", "tcp"},
+            std::vector<std::string>{}, logPath, writeEnd);
     } catch (const std::exception& e) {
         error = e.what();
     }

@@ -47,12 +47,12 @@ struct CommandResult {
 CommandResult runCommand(const std::vector<std::string>& argv, const std::vector<std::string>& env,
                          double timeoutSeconds);
 
-// A private X server (Xvfb, one 1280x1024x24 screen). start() returns it once it accepts
-// connections, or nullptr with `error` set; the destructor ends the server.
+// A private X server (Xvfb, one screen of `screen`, WxHxDEPTH). start() returns it once it
+// accepts connections, or nullptr with `error` set; the destructor ends the server.
 class X11Session {
 public:
     static std::unique_ptr<X11Session> start(const std::string& logPath, double timeoutSeconds,
-                                             std::string& error);
+                                             std::string& error, const std::string& screen = "1280x1024x24");
 
     const std::string& display() const { return display_; }  // ":N"
     std::string displayEnv() const { return "DISPLAY=" + display_; }
