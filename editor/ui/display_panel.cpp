@@ -65,6 +65,7 @@ bool comboOfNames(const char* label, std::string& value, const std::vector<std::
     return changed;
 }
 
+#ifdef PT_HAVE_OCIO
 // The scene's OpenColorIO choice (saved with it): the config and its display, view and look.
 void drawColorView(EditorUi& ui, const ColorView& color) {
     ColorSettings c = ui.doc().scene.color;
@@ -89,6 +90,11 @@ void drawColorView(EditorUi& ui, const ColorView& color) {
     }
     if (!ui.options.ocioPath.empty()) ImGui::TextDisabled("--ocio overrides the scene's config");
 }
+#else
+// Without OpenColorIO (PT_OCIO=OFF) a ColorView never has a config (color_view.cpp), and
+// ColorConfig is not built: nothing to draw.
+void drawColorView(EditorUi&, const ColorView&) {}
+#endif
 
 }  // namespace
 

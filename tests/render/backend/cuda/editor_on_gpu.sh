@@ -38,7 +38,7 @@ if ! cmake -S . -B $B -G Ninja -DCMAKE_BUILD_TYPE=Release -DPT_CUDA=ON -DPT_OIIO
 fi
 if ! cmake --build $B -j16 --target pathtracer pt_editor_tests pt_editor_ui_tests pt_editor_latency pt-render \
     >/tmp/build.txt 2>&1; then
-    grep -m10 -A6 -E "error" /tmp/build.txt
+    grep -m20 -E "error:|undefined reference|FAILED" /tmp/build.txt
     exit 1
 fi
 log "build: $(elapsed)"
