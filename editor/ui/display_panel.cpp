@@ -48,6 +48,7 @@ void drawReference(EditorUi& ui) {
     if (ui.doc().viewer.aov >= 0) ImGui::TextDisabled("The comparison shows with the beauty, not an AOV.");
 }
 
+#ifdef PT_HAVE_OCIO
 // One combo over `names` ("" shows as `none`, when given); true when the choice changed.
 bool comboOfNames(const char* label, std::string& value, const std::vector<std::string>& names,
                   const char* none = nullptr) {
@@ -65,7 +66,6 @@ bool comboOfNames(const char* label, std::string& value, const std::vector<std::
     return changed;
 }
 
-#ifdef PT_HAVE_OCIO
 // The scene's OpenColorIO choice (saved with it): the config and its display, view and look.
 void drawColorView(EditorUi& ui, const ColorView& color) {
     ColorSettings c = ui.doc().scene.color;
