@@ -64,6 +64,13 @@ bool RenderWorker::takeFrame(DisplayFrame& out) {
     return true;
 }
 
+bool RenderWorker::waitForFrame(uint64_t edit, double seconds) {
+    std::unique_lock<std::mutex> lock(frameMutex_);
+    return framePublished_.wait_for(lock, std::chrono::duration<double>(seconds), [&] {
+        return frame_.serial != taken_ && frame_.edit >= edit && frame_.stats.samplesPerPixel > 0;
+    });
+}
+
 WorkerStatus RenderWorker::status() const {
     std::lock_guard<std::mutex> lock(statusMutex_);
     return status_;
@@ -95,6 +102,7 @@ void RenderWorker::publishFrame(int32_t aov, bool denoise) {
         publishedAov_ = aov;
         publishedDenoise_ = denoise;
     }
+    framePublished_.notify_all();
     if (onUpdate_) onUpdate_();
 }
 

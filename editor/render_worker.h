@@ -70,6 +70,10 @@ public:
 
     // A frame newer than the one last taken, if any.
     bool takeFrame(DisplayFrame& out);
+    // Waits at most `seconds` for a frame, not taken yet, whose samples include `edit` (an
+    // EditorSession::editSerial()); true once there is one to take. The window waits a few
+    // milliseconds for an edit made in the frame it is drawing, so that the swap shows it.
+    bool waitForFrame(uint64_t edit, double seconds);
     // Whether frames of the beauty carry their pixels (false while the window takes them from
     // the GPU directly through CUDA-GL interop; AOV frames always do).
     void setHostFrames(bool on) { hostFrames_ = on; }
@@ -100,6 +104,7 @@ private:
     double secondsPerPass_ = 0.0;  // render thread only: of the last step, for automatic passes
 
     mutable std::mutex frameMutex_;
+    std::condition_variable framePublished_;
     DisplayFrame frame_;
     uint64_t taken_ = 0;
     int32_t publishedAov_ = -2;

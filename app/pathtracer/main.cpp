@@ -14,7 +14,8 @@ namespace {
 constexpr const char* kUsage =
     "usage: pathtracer [SCENE] [--backend cpu|cuda] [--size WxH] [--spp N] [--frames N] [--screenshot "
     "OUT.png]\n"
-    "                  [--reference REF.exr] [--ocio CONFIG.ocio] [--latency-log OUT.jsonl]\n"
+    "                  [--reference REF.exr] [--ocio CONFIG.ocio] [--latency-log OUT.jsonl] "
+    "[--no-frame-wait]\n"
     "  --backend     renderer (default: cuda where a usable GPU is, else cpu)\n"
     "  --size        render resolution, overriding the scene's\n"
     "  --spp         stop accumulating at N samples per pixel\n"
@@ -23,13 +24,15 @@ constexpr const char* kUsage =
     "  --reference   an image (e.g. from pt-render reference) to plot the error against, live\n"
     "  --ocio        OpenColorIO config for the viewport (default: the scene's, else $OCIO, else the shipped "
     "one)\n"
-    "  --latency-log each edit's time from input to the swapped frame that shows it, as JSON lines\n";
+    "  --latency-log each edit's time from input to the swapped frame that shows it, as JSON lines\n"
+    "  --no-frame-wait  swap without waiting a few ms for the samples of an edit made in that frame\n"
+    "                (they then show a refresh later; for latency comparisons)\n";
 
 pt::editor::EditorOptions parse(const std::vector<std::string>& args) {
     const pt::cli::Options o(args,
                              {"--backend", "--size", "--spp", "--frames", "--screenshot", "--reference",
                               "--ocio", "--latency-log"},
-                             {"--help", "-h"});
+                             {"--help", "-h", "--no-frame-wait"});
     if (o.has("--help") || o.has("-h")) {
         std::fputs(kUsage, stdout);
         std::exit(0);
@@ -45,6 +48,7 @@ pt::editor::EditorOptions parse(const std::vector<std::string>& args) {
     options.referencePath = o.value("--reference").value_or("");
     options.ocioPath = o.value("--ocio").value_or("");
     options.latencyLogPath = o.value("--latency-log").value_or("");
+    options.frameWait = !o.has("--no-frame-wait");
     return options;
 }
 

@@ -42,6 +42,7 @@ struct EditorOptions {
     std::string referencePath;       // --reference: an image to measure the error against
     std::string ocioPath;            // --ocio: an OpenColorIO config, over the scene's and $OCIO
     std::string latencyLogPath;      // --latency-log: edit-to-screen records as JSON lines
+    bool frameWait = true;           // --no-frame-wait: swap without waiting for this frame's edits
     uint32_t spp = 0;                // --spp: stop accumulating there
 };
 

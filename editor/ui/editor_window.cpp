@@ -304,6 +304,27 @@ void noteSwap(EditorUi& ui, LatencyLog& log) {
         log.edit(r, action, ui.framePath, medianOf(ui.frameMillis));
 }
 
+// How long the window waits for the first samples of an edit made in the frame it is drawing. A
+// GPU backend has them within a few milliseconds (sync, one pass, publish), and waiting puts
+// them in this frame's swap instead of the next one's, a whole refresh later. A backend slower
+// than this (the CPU's) is not waited for: every frame of a drag would be that much longer.
+constexpr double kEditFrameWait = 0.008;
+
+// The edits of this frame (the serial went past `editsBefore`) reach this frame's swap where the
+// backend is quick enough; true when a new frame was shown.
+bool showThisFramesEdits(EditorUi& ui, DisplayView& view, InteropFrame& interop, uint64_t editsBefore) {
+    const uint64_t edit = ui.session.editSerial();
+    if (edit <= editsBefore || ui.lastFrame.edit >= edit) return false;
+    const double secondsPerPass = ui.worker.status().secondsPerPass;
+    if (!(secondsPerPass > 0.0) || secondsPerPass > kEditFrameWait) return false;
+    DisplayFrame frame;
+    if (!ui.worker.waitForFrame(edit, kEditFrameWait) || !ui.worker.takeFrame(frame)) return false;
+    if (frame.document != ui.session.documentSerial()) return false;
+    ui.lastFrame = std::move(frame);
+    showFrame(ui, view, interop);
+    return true;
+}
+
 int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options, LatencyLog& latencyLog) {
     DisplayView view;
     InteropFrame interop;
@@ -342,6 +363,7 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options, Latenc
                          ui.errors.empty() ? "load failed" : ui.errors.front().c_str());
             return 1;  // automation: a scene that does not load is a failure, not a dialog
         }
+        const uint64_t editsBefore = ui.session.editSerial();
         // A playing timeline draws every frame: each is a new pose.
         activity.happened |= ui.tickAnimation(dt);
         ui.flushEdits();
@@ -390,6 +412,10 @@ int frameLoop(Window& window, EditorUi& ui, const EditorOptions& options, Latenc
         }
         drawDialogs(ui);
         ImGui::Render();
+        if (options.frameWait && showThisFramesEdits(ui, view, interop, editsBefore)) {
+            newFrame = true;
+            ++renderedFrames;
+        }
         glViewport(0, 0, fbw, fbh);
         glClearColor(0.12f, 0.12f, 0.13f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);

@@ -92,3 +92,57 @@ TEST(RenderWorker, FramesSayWhichDocumentTheyShow) {
 
 }  // namespace
 }  // namespace pt::editor
+
+namespace pt::editor {
+namespace {
+
+// A camera edit through the worker, as the window makes it; returns its edit serial.
+uint64_t nudgeCamera(RenderWorker& worker) {
+    uint64_t edit = 0;
+    worker.edit([&](EditorSession& s) {
+        Camera camera = s.document().scene.camera;
+        camera.position.y += 0.1f;
+        s.execute(setCamera(s.document(), camera));
+        edit = s.editSerial();
+    });
+    return edit;
+}
+
+// Frames say up to which edit their samples go (the window's input-to-screen measure needs it).
+TEST(RenderWorker, FramesSayWhichEditsTheirSamplesInclude) {
+    EditorSession session(createBackend("cpu"));
+    session.adopt(test::ballUnderLampScene(16));
+    RenderWorker worker(session);
+    const uint64_t edit = nudgeCamera(worker);
+    DisplayFrame frame;
+    const auto deadline = steady_clock::now() + seconds(60);
+    bool seen = false;
+    while (!seen && steady_clock::now() < deadline) {
+        if (worker.takeFrame(frame)) {
+            EXPECT_LE(frame.edit, edit);
+            seen = frame.edit == edit && frame.stats.samplesPerPixel > 0;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    EXPECT_TRUE(seen) << "no frame with samples of the camera edit within 60 s";
+}
+
+// The window waits a few milliseconds for an edit made in the frame it draws (issue 22): the
+// wait ends with a frame of that edit to take, and times out for an edit no frame holds.
+TEST(RenderWorker, WaitForFrameEndsWithAFrameOfTheEdit) {
+    EditorSession session(createBackend("cpu"));
+    session.adopt(test::ballUnderLampScene(16));
+    RenderWorker worker(session);
+    const uint64_t edit = nudgeCamera(worker);
+    ASSERT_TRUE(worker.waitForFrame(edit, 60.0)) << "no frame of the edit within 60 s";
+    DisplayFrame frame;
+    ASSERT_TRUE(worker.takeFrame(frame));
+    EXPECT_GE(frame.edit, edit);
+    EXPECT_GT(frame.stats.samplesPerPixel, 0u);
+    const auto start = steady_clock::now();
+    EXPECT_FALSE(worker.waitForFrame(edit + 1, 0.05)) << "a frame of an edit never made";
+    EXPECT_GE(steady_clock::now() - start, std::chrono::milliseconds(45));
+}
+
+}  // namespace
+}  // namespace pt::editor

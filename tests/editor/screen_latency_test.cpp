@@ -1,16 +1,14 @@
 // ScreenLatency (issue 22): an edit is measured from the input behind it to the first swapped
 // frame whose samples include it; frames of older edits, and frames without samples (a reset
-// accumulation), end no wait. EditorSession numbers the edits that change what is rendered, and
-// RenderWorker's frames say up to which edit their samples go.
+// accumulation), end no wait. EditorSession numbers the edits that change what is rendered
+// (RenderWorker's frames say up to which edit their samples go: render_worker_test.cpp).
 #include "editor/screen_latency.h"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <thread>
 
 #include "editor/editor_session.h"
-#include "editor/render_worker.h"
 #include "editor/scene_edits.h"
 #include "render/backend/backend.h"
 #include "support/scene_builder.h"
@@ -119,30 +117,6 @@ TEST(ScreenLatency, TheSessionNumbersRenderEditsAndSyncsTakeTheNumber) {
     EXPECT_EQ(session.editSerial(), start + 2);
     session.sync();
     EXPECT_EQ(session.syncedEdit(), start + 2);
-}
-
-TEST(ScreenLatency, WorkerFramesSayWhichEditsTheirSamplesInclude) {
-    EditorSession session(createBackend("cpu"));
-    session.adopt(test::ballUnderLampScene(16));
-    RenderWorker worker(session);
-    uint64_t edit = 0;
-    worker.edit([&](EditorSession& s) {
-        Camera camera = s.document().scene.camera;
-        camera.position.x += 0.1f;
-        s.execute(setCamera(s.document(), camera));
-        edit = s.editSerial();
-    });
-    DisplayFrame frame;
-    const auto deadline = Clock::now() + std::chrono::seconds(60);
-    bool seen = false;
-    while (!seen && Clock::now() < deadline) {
-        if (worker.takeFrame(frame)) {
-            EXPECT_LE(frame.edit, edit);
-            seen = frame.edit == edit && frame.stats.samplesPerPixel > 0;
-        }
-        std::this_thread::sleep_for(milliseconds(1));
-    }
-    EXPECT_TRUE(seen) << "no frame with samples of the camera edit within 60 s";
 }
 
 }  // namespace

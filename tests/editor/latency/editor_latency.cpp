@@ -55,12 +55,14 @@ constexpr const char* kUsage =
     "  --size     the render's size (default 960x540); the window is that plus the panels\n"
     "  --runs     steps measured per edit kind (default 12)\n"
     "  --object   the object to edit, by name (default: the first object)\n"
-    "  --out      folder for the editor's log, its output and the screenshots (default: a temporary one)\n";
+    "  --out      folder for the editor's log, its output and the screenshots (default: a temporary one)\n"
+    "  --no-frame-wait  passed to the editor: its swaps do not wait for the samples of that frame's edits\n";
 
 struct Options {
     std::string scene, backend = "cpu", object, out;
     uint32_t width = 960, height = 540;
     int runs = 12;
+    bool frameWait = true;
 };
 
 int64_t nowNs() {
@@ -125,8 +127,9 @@ public:
         if (!loaded.ok()) return fail(loaded.error);
         scene_ = std::move(*loaded.scene);
         if (!startEditor()) return 1;
-        std::printf("scene %s, backend %s, render %ux%u, window %.0fx%.0f\n", o_.scene.c_str(),
-                    o_.backend.c_str(), o_.width, o_.height, layout_->width, layout_->height);
+        std::printf("scene %s, backend %s, render %ux%u, window %.0fx%.0f, frame wait %s\n", o_.scene.c_str(),
+                    o_.backend.c_str(), o_.width, o_.height, layout_->width, layout_->height,
+                    o_.frameWait ? "on" : "off (--no-frame-wait)");
         if (!waitForFirstFrame()) return 1;
         sleepSeconds(2.0);
         screenshot("first");
@@ -185,11 +188,13 @@ private:
                                      "XDG_CONFIG_HOME=" + (fs::path(o_.out) / "config").string()};
         if (o_.backend == "cpu") env.push_back("LIBGL_ALWAYS_SOFTWARE=1");
         const std::string size = std::to_string(o_.width) + "x" + std::to_string(o_.height);
-        editor_ = std::make_unique<ChildProcess>(
-            std::vector<std::string>{kEditorApp, o_.scene, "--backend", o_.backend, "--size", size,
-                                     "--screenshot", (fs::path(o_.out) / "shot.png").string(),
-                                     "--latency-log", (fs::path(o_.out) / "latency.jsonl").string()},
-            env, (fs::path(o_.out) / "editor.log").string());
+        std::vector<std::string> args{kEditorApp,      o_.scene,
+                                      "--backend",     o_.backend,
+                                      "--size",        size,
+                                      "--screenshot",  (fs::path(o_.out) / "shot.png").string(),
+                                      "--latency-log", (fs::path(o_.out) / "latency.jsonl").string()};
+        if (!o_.frameWait) args.push_back("--no-frame-wait");
+        editor_ = std::make_unique<ChildProcess>(args, env, (fs::path(o_.out) / "editor.log").string());
         const auto start = Clock::now();
         while (window_.empty() && Clock::now() - start < std::chrono::seconds(60) && editor_->running()) {
             const CommandResult r = x_->xdotool({"search", "--onlyvisible", "--name", " - pathtracer$"});
@@ -434,6 +439,8 @@ std::optional<Options> parse(int argc, char** argv) {
             o.object = value();
         else if (a == "--out")
             o.out = value();
+        else if (a == "--no-frame-wait")
+            o.frameWait = false;
         else if (a == "--help" || a == "-h")
             return std::nullopt;
         else if (!a.empty() && a[0] == '-')

@@ -15,7 +15,8 @@
 #   2. runs the editor's unit and window tests (PT_EDITOR_TEST_BACKEND=cuda for the end-to-end
 #      test: the same clicks, drags, undo and save as in CI, on the GPU);
 #   3. runs pt_editor_latency (input event to swapped frame, per edit kind) on the Cornell box, the
-#      Balloon asset and a generated 1M-triangle sphere with a morph target, screenshots of each.
+#      Balloon asset and a generated 1M-triangle sphere with a morph target, screenshots of each,
+#      and again with --no-frame-wait as the baseline.
 # The window's GL must be NVIDIA's: the editor logs GL_RENDERER, and the summary prints it.
 set -uo pipefail
 out="${OUT:-$(pwd)/device-out}"
@@ -71,12 +72,19 @@ latency() {  # NAME SCENE [driver options]
         --out "/tmp/latency-$name" "$@" >"/tmp/latency-$name.txt" 2>&1
     log "== $name: exit $? $(elapsed)"
     grep -v "^  editor" "/tmp/latency-$name.txt" | tee -a "$S"
-    cp "/tmp/latency-$name/shot.png" "$out/$name.png" 2>/dev/null
-    cp "/tmp/latency-$name/shot-1.png" "$out/${name}_end.png" 2>/dev/null
+    if [[ $name != *_nowait ]]; then
+        cp "/tmp/latency-$name/shot.png" "$out/$name.png" 2>/dev/null
+        cp "/tmp/latency-$name/shot-1.png" "$out/${name}_end.png" 2>/dev/null
+    fi
     cat "/tmp/latency-$name/latency.jsonl" >>"$out/latency_logs.jsonl" 2>/dev/null
 }
+# Each scene twice in the same run: as the editor swaps now, and with --no-frame-wait (its swap
+# not waiting for the samples of that frame's edits: the baseline).
 latency cornell scenes/cornell.json --object "glass sphere"
+latency cornell_nowait scenes/cornell.json --object "glass sphere" --no-frame-wait
 latency balloon "$assets/Balloon/scene.gltf"
+latency balloon_nowait "$assets/Balloon/scene.gltf" --no-frame-wait
 latency sphere1m /tmp/sphere1m.gltf
+latency sphere1m_nowait /tmp/sphere1m.gltf --no-frame-wait
 rm -f "$out/sphere1m_end.png" "$out/balloon_end.png"  # at most 8 files come back
 log "done: $(elapsed)"
