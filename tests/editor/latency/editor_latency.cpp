@@ -56,13 +56,15 @@ constexpr const char* kUsage =
     "  --runs     steps measured per edit kind (default 12)\n"
     "  --object   the object to edit, by name (default: the first object)\n"
     "  --out      folder for the editor's log, its output and the screenshots (default: a temporary one)\n"
-    "  --no-frame-wait  passed to the editor: its swaps do not wait for the samples of that frame's edits\n";
+    "  --no-frame-wait  passed to the editor: its swaps do not wait for the samples of that frame's edits\n"
+    "  --follow-viewport  no --size for the editor: the render follows the viewport, as by default\n";
 
 struct Options {
     std::string scene, backend = "cpu", object, out;
     uint32_t width = 960, height = 540;
     int runs = 12;
     bool frameWait = true;
+    bool followViewport = false;
 };
 
 int64_t nowNs() {
@@ -142,6 +144,12 @@ public:
         }
         sleepSeconds(1.0);
         screenshot("end");
+        // A smaller window: the viewport and its frames follow (interop buffers re-registered at
+        // the new size where the render follows the viewport); the screenshot shows the result.
+        xdo({"windowsize", window_, std::to_string(int(layout_->width) - 240),
+             std::to_string(int(layout_->height) - 120)});
+        sleepSeconds(2.0);
+        screenshot("after a resize");
         std::printf("GL: %s\n", glRenderer_.c_str());
         return 0;
     }
@@ -190,9 +198,9 @@ private:
         const std::string size = std::to_string(o_.width) + "x" + std::to_string(o_.height);
         std::vector<std::string> args{kEditorApp,      o_.scene,
                                       "--backend",     o_.backend,
-                                      "--size",        size,
                                       "--screenshot",  (fs::path(o_.out) / "shot.png").string(),
                                       "--latency-log", (fs::path(o_.out) / "latency.jsonl").string()};
+        if (!o_.followViewport) args.insert(args.end(), {"--size", size});
         if (!o_.frameWait) args.push_back("--no-frame-wait");
         editor_ = std::make_unique<ChildProcess>(args, env, (fs::path(o_.out) / "editor.log").string());
         const auto start = Clock::now();
@@ -210,7 +218,12 @@ private:
             const size_t at = geometry.find(name + "=");
             return at == std::string::npos ? 0.0f : std::stof(geometry.substr(at + name.size() + 1));
         };
-        layout_.emplace(field("WIDTH"), field("HEIGHT"), o_.width, o_.height);
+        const float width = field("WIDTH"), height = field("HEIGHT");
+        if (o_.followViewport) {  // the render fills the viewport (its size in pixels)
+            o_.width = uint32_t(std::max(1.0f, width - kPanelWidth));
+            o_.height = uint32_t(std::max(1.0f, height - kFrameHeight - kStatusBarHeight));
+        }
+        layout_.emplace(width, height, o_.width, o_.height);
         return moveTo(layout_->restingPoint());
     }
 
@@ -441,6 +454,8 @@ std::optional<Options> parse(int argc, char** argv) {
             o.out = value();
         else if (a == "--no-frame-wait")
             o.frameWait = false;
+        else if (a == "--follow-viewport")
+            o.followViewport = true;
         else if (a == "--help" || a == "-h")
             return std::nullopt;
         else if (!a.empty() && a[0] == '-')

@@ -72,12 +72,9 @@ latency() {  # NAME SCENE [driver options]
         --out "/tmp/latency-$name" "$@" >"/tmp/latency-$name.txt" 2>&1
     log "== $name: exit $? $(elapsed)"
     grep -v "^  editor" "/tmp/latency-$name.txt" | tee -a "$S"
-    if [[ $name != *_nowait ]]; then
-        cp "/tmp/latency-$name/shot.png" "$out/$name.png" 2>/dev/null
-        cp "/tmp/latency-$name/shot-1.png" "$out/${name}_end.png" 2>/dev/null
-    fi
     cat "/tmp/latency-$name/latency.jsonl" >>"$out/latency_logs.jsonl" 2>/dev/null
 }
+shot() { cp "/tmp/latency-$1/$2" "$out/$3" 2>/dev/null; }  # at most 8 files come back
 # Each scene twice in the same run: as the editor swaps now, and with --no-frame-wait (its swap
 # not waiting for the samples of that frame's edits: the baseline).
 latency cornell scenes/cornell.json --object "glass sphere"
@@ -86,5 +83,12 @@ latency balloon "$assets/Balloon/scene.gltf"
 latency balloon_nowait "$assets/Balloon/scene.gltf" --no-frame-wait
 latency sphere1m /tmp/sphere1m.gltf
 latency sphere1m_nowait /tmp/sphere1m.gltf --no-frame-wait
-rm -f "$out/sphere1m_end.png" "$out/balloon_end.png"  # at most 8 files come back
+# The editor's default: the render follows the viewport (a lower resolution while the camera
+# moves), and the driver's last step resizes the window (interop buffers follow).
+latency balloon_follow "$assets/Balloon/scene.gltf" --follow-viewport
+shot cornell shot.png cornell.png
+shot cornell shot-1.png cornell_end.png
+shot balloon shot.png balloon.png
+shot sphere1m shot-1.png sphere1m_end.png
+shot balloon_follow shot-2.png balloon_resized.png
 log "done: $(elapsed)"
