@@ -64,6 +64,30 @@ bool RenderWorker::takeFrame(DisplayFrame& out) {
     return true;
 }
 
+// Called with the backend lock held, as the frame is published; `wanted` while the window takes
+// the beauty through interop (else the last copy is withdrawn).
+void RenderWorker::copyFrameToDevice(bool wanted, bool denoise) {
+    const Backend& backend = session_.backend();
+    std::lock_guard<std::mutex> lock(deviceFrameMutex_);
+    deviceFrameValid_ = false;
+    if (!wanted || !backend.capabilities().deviceFrames) return;
+    if (!deviceFrame_ || deviceFrameWidth_ != backend.width() || deviceFrameHeight_ != backend.height()) {
+        deviceFrame_.reset();
+        deviceFrame_ = backend.allocateDeviceFrame();
+        deviceFrameWidth_ = backend.width();
+        deviceFrameHeight_ = backend.height();
+    }
+    deviceFrameValid_ = deviceFrame_ && session_.copyDisplayedToDevice(denoise, deviceFrame_.get());
+}
+
+bool RenderWorker::withDeviceFrame(
+    const std::function<void(const void* rgba, uint32_t width, uint32_t height)>& use) {
+    std::lock_guard<std::mutex> lock(deviceFrameMutex_);
+    if (!deviceFrameValid_) return false;
+    use(deviceFrame_.get(), deviceFrameWidth_, deviceFrameHeight_);
+    return true;
+}
+
 bool RenderWorker::waitForFrame(uint64_t edit, double seconds) {
     std::unique_lock<std::mutex> lock(frameMutex_);
     return framePublished_.wait_for(lock, std::chrono::duration<double>(seconds), [&] {
@@ -95,6 +119,7 @@ void RenderWorker::publishFrame(int32_t aov, bool denoise) {
     next.edit = session_.syncedEdit();
     next.stats = backend.stats();
     if (hostFrames_ || aov >= 0) session_.readDisplayed(aov, denoise, next.rgba);
+    copyFrameToDevice(!hostFrames_ && aov < 0, denoise);
     {
         std::lock_guard<std::mutex> lock(frameMutex_);
         next.serial = frame_.serial + 1;

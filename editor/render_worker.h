@@ -70,6 +70,12 @@ public:
 
     // A frame newer than the one last taken, if any.
     bool takeFrame(DisplayFrame& out);
+    // UI thread, while frames reach GL through interop (setHostFrames(false)): runs `use` with
+    // the device copy the render thread made of the last published beauty (RGBA float), while
+    // it is not being written; false where there is none (a host backend, an AOV on screen,
+    // no frame published since). The copy is made as the frame is published, so the window
+    // never waits for the batch of passes that follows it (which the backend lock would).
+    bool withDeviceFrame(const std::function<void(const void* rgba, uint32_t width, uint32_t height)>& use);
     // Waits at most `seconds` for a frame, not taken yet, whose samples include `edit` (an
     // EditorSession::editSerial()); true once there is one to take. The window waits a few
     // milliseconds for an edit made in the frame it is drawing, so that the swap shows it.
@@ -102,6 +108,13 @@ private:
     std::atomic<bool> hostFrames_{true};
     bool syncRefused_ = false;     // render thread only: wait for the next edit before retrying
     double secondsPerPass_ = 0.0;  // render thread only: of the last step, for automatic passes
+
+    // The render thread's device copy of the last published beauty (withDeviceFrame).
+    std::mutex deviceFrameMutex_;
+    std::shared_ptr<void> deviceFrame_;
+    uint32_t deviceFrameWidth_ = 0, deviceFrameHeight_ = 0;
+    bool deviceFrameValid_ = false;
+    void copyFrameToDevice(bool wanted, bool denoise);
 
     mutable std::mutex frameMutex_;
     std::condition_variable framePublished_;

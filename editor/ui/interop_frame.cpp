@@ -11,6 +11,21 @@ void InteropFrame::release() {
     width_ = height_ = 0;
 }
 
+bool InteropFrame::copyFromBackend(RenderWorker& worker, uint32_t width, uint32_t height, size_t frameBytes) {
+    bool copied = false;
+    worker.withBackend([&](EditorSession& session) {
+        Backend& backend = session.backend();
+        if (!backend.capabilities().deviceFrames || backend.width() != width || backend.height() != height)
+            return;
+        size_t bytes = 0;
+        void* device = link_->map(&bytes);
+        if (device && bytes >= frameBytes)
+            copied = session.copyDisplayedToDevice(session.document().viewer.denoise, device);
+        link_->unmap();
+    });
+    return copied;
+}
+
 bool InteropFrame::update(RenderWorker& worker, GLuint texture, uint32_t width, uint32_t height) {
     if (failed_) return false;
     const size_t frameBytes = size_t(width) * height * 4 * sizeof(float);
@@ -29,17 +44,14 @@ bool InteropFrame::update(RenderWorker& worker, GLuint texture, uint32_t width, 
         width_ = width;
         height_ = height;
     }
+    // The render thread's copy of the frame, made as it was published; before there is one
+    // (the first frame, or a frame of another size), the backend's own beauty, which waits for
+    // the batch of passes in flight.
     bool copied = false;
-    worker.withBackend([&](EditorSession& session) {
-        Backend& backend = session.backend();
-        if (!backend.capabilities().deviceFrames || backend.width() != width || backend.height() != height)
-            return;
-        size_t bytes = 0;
-        void* device = link_->map(&bytes);
-        if (device && bytes >= frameBytes)
-            copied = session.copyDisplayedToDevice(session.document().viewer.denoise, device);
-        link_->unmap();
+    worker.withDeviceFrame([&](const void* rgba, uint32_t w, uint32_t h) {
+        copied = w == width && h == height && link_->fill(rgba, frameBytes);
     });
+    if (!copied) copied = copyFromBackend(worker, width, height, frameBytes);
     if (!copied) {
         why_ = "the backend cannot write device frames";
         return false;

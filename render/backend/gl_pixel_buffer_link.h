@@ -20,6 +20,10 @@ public:
     // mapping fails. Between map() and unmap() GL must not touch the buffer.
     virtual void* map(size_t* bytes) = 0;
     virtual void unmap() = 0;
+    // Copies `bytes` of device memory at `deviceSource` into the buffer (map, copy, unmap) on a
+    // stream of its own, so that it never waits for the renderer's kernels in flight; false
+    // where mapping fails or the buffer is smaller.
+    virtual bool fill(const void* deviceSource, size_t bytes) = 0;
 };
 
 // Links GL buffer object `glBuffer` (current context; written by the device, its old contents

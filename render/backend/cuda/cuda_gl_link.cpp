@@ -12,16 +12,20 @@ namespace {
 
 class CudaGlLink final : public PixelBufferLink {
 public:
-    explicit CudaGlLink(cudaGraphicsResource* resource) : resource_(resource) {}
+    explicit CudaGlLink(cudaGraphicsResource* resource) : resource_(resource) {
+        // Non-blocking: neither waits for nor holds up the renderer's stream (fill()).
+        if (cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking) != cudaSuccess) failed();
+    }
     ~CudaGlLink() override {
         unmap();
         cudaGraphicsUnregisterResource(resource_);
+        if (stream_) cudaStreamDestroy(stream_);
     }
     CudaGlLink(const CudaGlLink&) = delete;
     CudaGlLink& operator=(const CudaGlLink&) = delete;
 
     void* map(size_t* bytes) override {
-        if (!mapped_ && cudaGraphicsMapResources(1, &resource_) != cudaSuccess) return failed();
+        if (!mapped_ && cudaGraphicsMapResources(1, &resource_, stream_) != cudaSuccess) return failed();
         mapped_ = true;
         void* device = nullptr;
         if (cudaGraphicsResourceGetMappedPointer(&device, bytes, resource_) != cudaSuccess) return failed();
@@ -29,8 +33,20 @@ public:
     }
 
     void unmap() override {
-        if (mapped_) cudaGraphicsUnmapResources(1, &resource_);
+        if (mapped_) cudaGraphicsUnmapResources(1, &resource_, stream_);
         mapped_ = false;
+    }
+
+    bool fill(const void* deviceSource, size_t bytes) override {
+        size_t size = 0;
+        void* device = map(&size);
+        const bool copied =
+            device && size >= bytes &&
+            cudaMemcpyAsync(device, deviceSource, bytes, cudaMemcpyDeviceToDevice, stream_) == cudaSuccess &&
+            cudaStreamSynchronize(stream_) == cudaSuccess;
+        if (!copied) failed();
+        unmap();
+        return copied;
     }
 
 private:
@@ -41,6 +57,7 @@ private:
     }
 
     cudaGraphicsResource* resource_;
+    cudaStream_t stream_ = nullptr;  // null (the legacy stream) where it could not be made
     bool mapped_ = false;
 };
 
