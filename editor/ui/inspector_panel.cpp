@@ -183,7 +183,11 @@ void objectInspector(EditorUi& ui) {
     const int32_t instance = ui.selection.instance;
     if (instance < 0 || size_t(instance) >= scene.instances.size()) return;
     const Instance& inst = scene.instances[size_t(instance)];
-    ImGui::Text("Instance: %s (%u triangles)", inst.name.c_str(), scene.meshes[inst.mesh].primitiveCount());
+    const Mesh& mesh = scene.meshes[inst.mesh];
+    const uint32_t primitives = mesh.primitiveCount();
+    const char* what = mesh.kind == GeometryKind::Spheres ? (primitives == 1 ? "sphere" : "spheres")
+                                                          : (primitives == 1 ? "triangle" : "triangles");
+    ImGui::Text("Instance: %s (%u %s)", inst.name.c_str(), primitives, what);
     morphEditor(ui, inst.mesh);
     for (size_t slot = 0; slot < inst.materials.size(); ++slot) {
         const uint32_t material = inst.materials[slot];
