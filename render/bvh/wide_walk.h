@@ -56,54 +56,65 @@ inline int intersectWideBoxes(const WideSlabRay& r, const WideBvhNode& n, float 
     return _mm_movemask_ps(_mm_andnot_ps(_mm_castsi128_ps(unused), _mm_cmple_ps(tNear, limit)));
 }
 
-// walkBvh over the wide tree `nodes` from node `root`: `leaf(first, count, tMax)` as there.
+// An entry of the wide walk: a node (count 0) or a leaf, with where the ray enters it.
+struct WideWalkEntry {
+    uint32_t child, count;
+    float entry;
+};
+
+// walkBvh over the wide tree `nodes` from node `root`: `leaf(first, count, tMax)` as there. The
+// nearest child hit is taken next without a trip through the stack (a node whose ray hits one
+// child only pushes nothing); the order of visits is the binary walk's nearest-first order.
 template <class LeafFn, class Count>
 bool walkWideBvh(const WideBvhNode* nodes, uint32_t root, const TraversalRay& ray, float& tMax, LeafFn& leaf,
                  Count count, bool anyHit) {
     const WideSlabRay slab = wideSlabRay(ray);
-    uint32_t stackChild[kWideStackSize], stackCount[kWideStackSize];
-    float stackEntry[kWideStackSize];
+    WideWalkEntry stack[kWideStackSize];
     uint32_t size = 0;
-    stackChild[size] = root, stackCount[size] = 0, stackEntry[size++] = 0.0f;
+    WideWalkEntry current{root, 0, 0.0f};
     bool found = false;
-    while (size > 0) {
-        --size;
-        if (stackEntry[size] > tMax * kSlabExitScale) continue;
-        const uint32_t child = stackChild[size], primitives = stackCount[size];
+    for (;;) {
         count.node();
-        if (primitives > 0) {
-            if (leaf(child, primitives, tMax)) {
+        if (current.count > 0) {
+            if (leaf(current.child, current.count, tMax)) {
                 found = true;
                 if (anyHit) return true;
             }
-            continue;
-        }
-        const WideBvhNode& node = nodes[child];
-        __m128 entries;
-        int hits = intersectWideBoxes(slab, node, tMax, entries);
-        if (hits == 0) continue;
-        alignas(16) float entry[WideBvhNode::kWidth];
-        _mm_store_ps(entry, entries);
-        // Push the hit children farthest first, so the nearest is popped next (an insertion
-        // sort of at most four).
-        uint32_t order[WideBvhNode::kWidth], n = 0;
-        for (; hits != 0; hits &= hits - 1) {
-            const uint32_t slot = uint32_t(__builtin_ctz(unsigned(hits)));
-            uint32_t at = n++;
-            while (at > 0 && entry[order[at - 1]] < entry[slot]) {
-                order[at] = order[at - 1];
-                --at;
+        } else {
+            const WideBvhNode& node = nodes[current.child];
+            __m128 entries;
+            int hits = intersectWideBoxes(slab, node, tMax, entries);
+            if (hits != 0) {
+                alignas(16) float entry[WideBvhNode::kWidth];
+                _mm_store_ps(entry, entries);
+                // The hit children farthest first (an insertion sort of at most four): all but
+                // the nearest go on the stack, so the nearest of them is popped next.
+                uint32_t order[WideBvhNode::kWidth], n = 0;
+                for (; hits != 0; hits &= hits - 1) {
+                    const uint32_t slot = uint32_t(__builtin_ctz(unsigned(hits)));
+                    uint32_t at = n++;
+                    while (at > 0 && entry[order[at - 1]] < entry[slot]) {
+                        order[at] = order[at - 1];
+                        --at;
+                    }
+                    order[at] = slot;
+                }
+                assert(size + n - 1 <= kWideStackSize && "BVH deeper than the wide traversal stack");
+                for (uint32_t i = 0; i + 1 < n; ++i) {
+                    const uint32_t slot = order[i];
+                    stack[size++] = {node.child[slot], node.count[slot], entry[slot]};
+                }
+                const uint32_t nearest = order[n - 1];
+                current = {node.child[nearest], node.count[nearest], entry[nearest]};
+                continue;
             }
-            order[at] = slot;
         }
-        assert(size + n <= kWideStackSize && "BVH deeper than the wide traversal stack");
-        for (uint32_t i = 0; i < n; ++i) {
-            const uint32_t slot = order[i];
-            stackChild[size] = node.child[slot], stackCount[size] = node.count[slot],
-            stackEntry[size++] = entry[slot];
-        }
+        // Next: the nearest entry left that the ray can still reach before tMax.
+        do {
+            if (size == 0) return found;
+            current = stack[--size];
+        } while (current.entry > tMax * kSlabExitScale);
     }
-    return found;
 }
 
 }  // namespace pt
