@@ -47,13 +47,17 @@ std::vector<ScreenLatencyRecord> ScreenLatency::frameSwapped(uint64_t frameEdit,
     return shown;
 }
 
+double medianOf(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    const size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
 double ScreenLatency::recentMedianMillis() const {
-    if (recent_.empty()) return 0.0;
     std::vector<double> millis;
     for (const ScreenLatencyRecord& r : recent_) millis.push_back(r.inputToSwapMillis());
-    std::sort(millis.begin(), millis.end());
-    const size_t n = millis.size();
-    return n % 2 ? millis[n / 2] : 0.5 * (millis[n / 2 - 1] + millis[n / 2]);
+    return medianOf(std::move(millis));
 }
 
 int64_t steadyNanoseconds(std::chrono::steady_clock::time_point t) {

@@ -58,6 +58,8 @@ private:
 // with the sync action, how the frame reached the screen and the median UI frame time then.
 std::string latencyLogLine(const ScreenLatencyRecord& record, const std::string& syncAction,
                            const std::string& framePath, double uiFrameMillis);
+// The median of `values` (the mean of the middle two for an even count); 0 with none.
+double medianOf(std::vector<double> values);
 // Nanoseconds of a steady-clock time since the clock's epoch.
 int64_t steadyNanoseconds(std::chrono::steady_clock::time_point t);
 

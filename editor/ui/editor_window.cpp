@@ -284,12 +284,6 @@ void showFrame(EditorUi& ui, DisplayView& view, InteropFrame& interop) {
                             : "host upload";
 }
 
-double medianOf(std::vector<float> values) {
-    if (values.empty()) return 0.0;
-    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-    return values[values.size() / 2];
-}
-
 // The frame just swapped shows edits that were waiting for the screen: it is finished first
 // (the swap only queued it), so the time read is when a user sees it.
 void noteSwap(EditorUi& ui, LatencyLog& log) {
@@ -299,9 +293,12 @@ void noteSwap(EditorUi& ui, LatencyLog& log) {
     glFinish();
     const auto swapped = ScreenLatency::Clock::now();
     log.frameSwapped(frame.document, spp, ui.framePath, swapped);
+    const std::vector<ScreenLatencyRecord> shown = ui.screenLatency.frameSwapped(frame.edit, spp, swapped);
+    if (shown.empty() || !log.on()) return;
+    // What the log adds to each record, once for the frame.
     const std::string action = ui.session.lastSync().action;
-    for (const ScreenLatencyRecord& r : ui.screenLatency.frameSwapped(frame.edit, spp, swapped))
-        log.edit(r, action, ui.framePath, medianOf(ui.frameMillis));
+    const double uiFrameMillis = medianOf({ui.frameMillis.begin(), ui.frameMillis.end()});
+    for (const ScreenLatencyRecord& r : shown) log.edit(r, action, ui.framePath, uiFrameMillis);
 }
 
 // How long the window waits for the first samples of an edit made in the frame it is drawing. A
@@ -493,7 +490,8 @@ int runEditor(const EditorOptions& options) {
             return 1;
         }
     }
-    ui.glRenderer = glString(GL_RENDERER) + ", OpenGL " + glString(GL_VERSION);
+    const std::string renderer = glString(GL_RENDERER), version = glString(GL_VERSION);
+    ui.glRenderer = renderer + ", OpenGL " + version;
     std::optional<LatencyLog> latencyLog;
     try {
         latencyLog.emplace(options.latencyLogPath);
@@ -501,7 +499,7 @@ int runEditor(const EditorOptions& options) {
         std::fprintf(stderr, "pathtracer: %s\n", e.what());
         return 1;
     }
-    latencyLog->glContext(backendName, glString(GL_RENDERER), glString(GL_VERSION));
+    latencyLog->glContext(backendName, renderer, version);
     const int status = frameLoop(*window, ui, options, *latencyLog);
     savePanelLayout(ui.layout);
     return status;
