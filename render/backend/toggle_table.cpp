@@ -31,6 +31,8 @@ const std::vector<ToggleRow>& toggleTable() {
          &T::streamCompaction, false, S::GpuScheduling},
         {ToggleId::MaterialSort, "material_sort", "Material sort", "material sort", "--sort-materials",
          "--no-sort-materials", &T::materialSort, false, S::GpuScheduling},
+        {ToggleId::GpuWideBvh, "gpu_wide_bvh", "Compressed 8-wide BVH (GPU traversal)",
+         "compressed 8-wide BVH", "--gpu-wide-bvh", "", &T::gpuWideBvh, false, S::GpuScheduling},
         {ToggleId::FirstHitCache, "first_hit_cache", "First-hit cache", "first-hit cache", "",
          "--no-first-hit-cache", &T::firstHitCache, false, S::GpuScheduling},
     };

@@ -2,6 +2,7 @@
 // Bottom level: one mesh's BVH in object space. The primitive test is shared with brute force
 // so that both paths compute bit-identical hits for the same prepared ray.
 #include "render/bvh/bvh_walk.h"
+#include "render/bvh/compressed_wide_walk.h"
 #include "render/bvh/hit.h"
 #include "render/bvh/sphere_intersect.h"
 #include "render/bvh/triangle_intersect.h"
@@ -70,12 +71,20 @@ template <FeatureSet kF = kAllFeatures, class Count>
 PT_HD bool traverseBlas(const RenderScene& scene, const BlasRef& blas, const TraversalRay& ray, float& tMax,
                         Hit& hit, Count count, bool anyHit) {
     if (blas.primitiveCount == 0 || blas.nodeCount == 0) return false;
+    const uint32_t index = uint32_t(&blas - scene.blases.data);
+    // The compressed 8-wide form where the BLAS has one (IntegratorToggles::wideBvh on the GPU;
+    // the CPU's tests walk it too). Its leaf entries are mesh-local primitives, as the binary
+    // list's are, so the same leaf functor tests them.
+    if (!scene.blasCompressedRoots.empty() && scene.blasCompressedRoots[index] != kNoCompressedRoot) {
+        BlasLeaf<kF, Count> leaf{scene, blas, scene.blasCompressedPrims.data, ray, hit, count, anyHit};
+        return walkCompressedWideBvh(scene.blasCompressedNodes.data, scene.blasCompressedRoots[index], ray,
+                                     tMax, leaf, count, anyHit);
+    }
     BlasLeaf<kF, Count> leaf{scene, blas,  scene.blasPrimIndices.data + blas.primIndexOffset, ray, hit,
                              count, anyHit};
 #if !defined(__CUDACC__)
     // The CPU walks the 4-wide form where the scene has one (IntegratorToggles::wideBvh).
     if (!scene.blasWideRoots.empty()) {
-        const uint32_t index = uint32_t(&blas - scene.blases.data);
         return walkWideBvh(scene.blasWideNodes.data, scene.blasWideRoots[index], ray, tMax, leaf, count,
                            anyHit);
     }

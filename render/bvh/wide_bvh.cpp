@@ -9,11 +9,6 @@ namespace pt {
 
 namespace {
 
-float surfaceArea(const BvhNode& n) {
-    const Vec3 d = n.hi - n.lo;
-    return d.x * d.y + d.y * d.z + d.z * d.x;
-}
-
 void setSlot(WideBvhNode& wide, uint32_t slot, const BvhNode& box) {
     wide.loX[slot] = box.lo.x, wide.loY[slot] = box.lo.y, wide.loZ[slot] = box.lo.z;
     wide.hiX[slot] = box.hi.x, wide.hiY[slot] = box.hi.y, wide.hiZ[slot] = box.hi.z;
@@ -50,26 +45,6 @@ public:
     }
 
 private:
-    // The up to four binary nodes under binary interior node `binary` that wide node `wide`
-    // holds: its children, the largest interior one opened while there is room.
-    std::vector<uint32_t> childrenOf(uint32_t binary) const {
-        std::vector<uint32_t> kids = {nodes_[binary].leftOrFirst, nodes_[binary].leftOrFirst + 1};
-        while (kids.size() < WideBvhNode::kWidth) {
-            int open = -1;
-            for (size_t k = 0; k < kids.size(); ++k) {
-                if (nodes_[kids[k]].isLeaf()) continue;
-                if (open < 0 || surfaceArea(nodes_[kids[k]]) > surfaceArea(nodes_[kids[size_t(open)]]))
-                    open = int(k);
-            }
-            if (open < 0) break;
-            const uint32_t opened = kids[size_t(open)];
-            kids.erase(kids.begin() + open);
-            kids.push_back(nodes_[opened].leftOrFirst);
-            kids.push_back(nodes_[opened].leftOrFirst + 1);
-        }
-        return kids;
-    }
-
     // Sets wide node `wide`'s slots to binary nodes `kids`; returns the interior ones' slots.
     std::vector<uint32_t> fill(uint32_t wide, const std::vector<uint32_t>& kids) {
         std::vector<uint32_t> interior;
@@ -85,7 +60,7 @@ private:
     }
 
     void collapse(uint32_t wide, uint32_t binary) {
-        const std::vector<uint32_t> kids = childrenOf(binary);
+        const std::vector<uint32_t> kids = openLargestChildren(nodes_, binary, WideBvhNode::kWidth);
         for (const uint32_t slot : fill(wide, kids)) {
             const uint32_t next = uint32_t(out_.nodes.size());
             out_.nodes.push_back(emptyNode());
@@ -101,6 +76,27 @@ private:
 };
 
 }  // namespace
+
+std::vector<uint32_t> openLargestChildren(const BvhNode* nodes, uint32_t binary, uint32_t width) {
+    const auto area = [nodes](uint32_t n) {
+        const Vec3 d = nodes[n].hi - nodes[n].lo;
+        return d.x * d.y + d.y * d.z + d.z * d.x;
+    };
+    std::vector<uint32_t> kids = {nodes[binary].leftOrFirst, nodes[binary].leftOrFirst + 1};
+    while (kids.size() < width) {
+        int open = -1;
+        for (size_t k = 0; k < kids.size(); ++k) {
+            if (nodes[kids[k]].isLeaf()) continue;
+            if (open < 0 || area(kids[k]) > area(kids[size_t(open)])) open = int(k);
+        }
+        if (open < 0) break;
+        const uint32_t opened = kids[size_t(open)];
+        kids.erase(kids.begin() + open);
+        kids.push_back(nodes[opened].leftOrFirst);
+        kids.push_back(nodes[opened].leftOrFirst + 1);
+    }
+    return kids;
+}
 
 WideBvh collapseToWide(const BvhNode* nodes, uint32_t count) { return Collapser(nodes, count).run(); }
 

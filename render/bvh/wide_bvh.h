@@ -19,6 +19,11 @@ struct WideBvh {
     std::vector<uint32_t> sourceNodes;  // per slot (node * 4 + slot): its binary node, or kEmpty
 };
 
+// The up to `width` binary nodes under binary interior node `binary` that one wide node holds:
+// its two children, the largest interior one (by surface area) opened while there is room.
+// Shared by the 4-wide collapse and the compressed 8-wide one (compressed_wide_bvh.h).
+std::vector<uint32_t> openLargestChildren(const BvhNode* nodes, uint32_t binary, uint32_t width);
+
 // The wide form of the binary tree `nodes` (canonical layout, root at 0, `count` nodes); child
 // node indices count from the result's first node. An empty tree (a root without primitives)
 // gives one node with no used slot.

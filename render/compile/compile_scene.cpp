@@ -224,6 +224,7 @@ CompiledScene compileRenderScene(const Scene& scene, const CompileOptions& optio
     start = Clock::now();
     buildBlases(out, progress);
     if (options.wideBvh && !options.bruteForce) buildWideBlases(out);
+    if (options.compressedWideBvh && !options.bruteForce) buildCompressedBlases(out);
     out.stats.blasSeconds = secondsSince(start);
 
     start = Clock::now();

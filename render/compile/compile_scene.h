@@ -19,6 +19,7 @@ struct CompileOptions {
     bool bruteForce = false;             // no BVH: validation only
     bool mergeSmallInstances = true;     // merged_geometry.h (never with bruteForce)
     bool wideBvh = false;                // the CPU's 4-wide BLASes too (wide_blases.h)
+    bool compressedWideBvh = false;      // the GPU's compressed 8-wide BLASes too (wide_blases.h)
     uint64_t bruteForceBudget = 100000;  // triangles x instances above which bruteForce is refused
 };
 
@@ -49,6 +50,9 @@ struct CompiledScene {
     // Per slot of blasWideNodes: the binary node it was collapsed from (wide_bvh.h), so a
     // refit refreshes the wide boxes.
     std::vector<uint32_t> wideSourceNodes;
+    // The same per slot of blasCompressedNodes (compressed_wide_bvh.h), relative to each BLAS's
+    // first binary node.
+    std::vector<uint32_t> compressedSourceNodes;
     // Which scene instance each traced one is (compileInstances keeps the traced instances in
     // scene order): sceneInstanceOf[r] is the Scene::instances index of instances[r], and
     // renderInstanceOf[i] that of scene instance i in instances, or kNotTraced.

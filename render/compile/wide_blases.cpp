@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "render/bvh/compressed_wide_bvh.h"
 #include "render/bvh/wide_bvh.h"
 #include "render/util/check.h"
 
@@ -33,14 +34,57 @@ void buildWideBlases(CompiledScene& compiled) {
     }
 }
 
+void buildCompressedBlases(CompiledScene& compiled) {
+    const size_t count = compiled.blases.size();
+    std::vector<CompressedWideBvh> wide(count);
+    tbb::parallel_for(size_t(0), count, [&](size_t i) {
+        const BlasRef& blas = compiled.blases[i];
+        wide[i] = compressToWide(compiled.blasNodes.data() + blas.nodeOffset, blas.nodeCount,
+                                 compiled.blasPrimIndices.data() + blas.primIndexOffset);
+    });
+    compiled.blasCompressedNodes.clear();
+    compiled.blasCompressedPrims.clear();
+    compiled.compressedSourceNodes.clear();
+    compiled.blasCompressedRoots.assign(count, 0);
+    for (size_t i = 0; i < count; ++i) {
+        const uint32_t firstNode = uint32_t(compiled.blasCompressedNodes.size());
+        const uint32_t firstPrim = uint32_t(compiled.blasCompressedPrims.size());
+        compiled.blasCompressedRoots[i] = firstNode;
+        for (CompressedWideNode& node : wide[i].nodes) {
+            node.childBase += firstNode;
+            node.primBase += firstPrim;
+        }
+        compiled.blasCompressedNodes.insert(compiled.blasCompressedNodes.end(), wide[i].nodes.begin(),
+                                            wide[i].nodes.end());
+        compiled.blasCompressedPrims.insert(compiled.blasCompressedPrims.end(), wide[i].primIndices.begin(),
+                                            wide[i].primIndices.end());
+        compiled.compressedSourceNodes.insert(compiled.compressedSourceNodes.end(),
+                                              wide[i].sourceNodes.begin(), wide[i].sourceNodes.end());
+    }
+}
+
+std::pair<uint32_t, uint32_t> compressedNodeRange(const CompiledScene& compiled, uint32_t blas) {
+    const std::vector<uint32_t>& roots = compiled.blasCompressedRoots;
+    PT_CHECK(blas < roots.size());
+    const uint32_t end =
+        blas + 1 < roots.size() ? roots[blas + 1] : uint32_t(compiled.blasCompressedNodes.size());
+    return {roots[blas], end};
+}
+
 void refreshWideBlas(CompiledScene& compiled, uint32_t blas) {
+    const BvhNode* binary = compiled.blasNodes.data() + compiled.blases[blas].nodeOffset;
+    if (!compiled.blasCompressedRoots.empty()) {
+        const auto [first, end] = compressedNodeRange(compiled, blas);
+        requantizeWideBoxes(
+            binary, compiled.compressedSourceNodes.data() + size_t(first) * CompressedWideNode::kWidth,
+            compiled.blasCompressedNodes.data() + first, end - first);
+    }
     if (compiled.blasWideRoots.empty()) return;
     PT_CHECK(blas < compiled.blasWideRoots.size());
     const uint32_t first = compiled.blasWideRoots[blas];
     const uint32_t end = blas + 1 < compiled.blasWideRoots.size() ? compiled.blasWideRoots[blas + 1]
                                                                   : uint32_t(compiled.blasWideNodes.size());
-    refreshWideBoxes(compiled.blasNodes.data() + compiled.blases[blas].nodeOffset,
-                     compiled.wideSourceNodes.data() + size_t(first) * WideBvhNode::kWidth,
+    refreshWideBoxes(binary, compiled.wideSourceNodes.data() + size_t(first) * WideBvhNode::kWidth,
                      compiled.blasWideNodes.data() + first, end - first);
 }
 

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "render/kernel/bvh_node.h"
+#include "render/kernel/compressed_wide_node.h"
 #include "render/kernel/feature_set.h"
 #include "render/kernel/material.h"
 #include "render/kernel/scene_kinds.h"

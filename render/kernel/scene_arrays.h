@@ -39,6 +39,13 @@ PT_SCENE_ARRAY(uint32_t, blasPrimIndices, "BLAS primitive indices")
 // on the GPU, which never allocates them.
 PT_SCENE_ARRAY(WideBvhNode, blasWideNodes, "BLAS wide nodes (CPU)")
 PT_SCENE_ARRAY(uint32_t, blasWideRoots, "BLAS wide roots (CPU)")
+// The CUDA traversal's compressed 8-wide form of the BLASes (render/bvh/compressed_wide_bvh.h;
+// IntegratorToggles::wideBvh): each BLAS's root node in blasCompressedNodes, or
+// kNoCompressedRoot where its binary nodes are walked (a BLAS rebuilt on the GPU); empty where
+// no BLAS has one. Leaves index blasCompressedPrims, whose entries are mesh-local primitives.
+PT_SCENE_ARRAY(CompressedWideNode, blasCompressedNodes, "BLAS compressed 8-wide nodes")
+PT_SCENE_ARRAY(uint32_t, blasCompressedPrims, "BLAS compressed primitive indices")
+PT_SCENE_ARRAY(uint32_t, blasCompressedRoots, "BLAS compressed roots")
 PT_SCENE_ARRAY(RenderInstance, instances, "instances")
 PT_SCENE_ARRAY(BvhNode, tlasNodes, "TLAS nodes")
 // TLAS leaf entries are instance indices, and instances.count for the merged BLAS: small

@@ -45,21 +45,34 @@ BenchRequest parseBench(const std::vector<std::string>& args) {
     return r;
 }
 
-// Our traversal rates, BVH on and off; the sets as traced with the BVH on (for the baseline).
+// Our traversal rates with the BVH as the toggles have it, with its binary form alone (the wide
+// forms off, where they are on: the yardstick of issue 21's wide BVHs, measured in the same
+// run) and with no BVH; the sets as traced with the first (for the baseline).
 std::vector<TracedRaySet> benchRays(Backend& backend, const Scene& scene, const BenchRays& rays,
                                     const BenchSettings& settings, BenchReport& report) {
     std::vector<TracedRaySet> sets(3);
     sets[0].name = "primary", sets[0].rays = &rays.primary;
     sets[1].name = "diffuse bounce", sets[1].rays = &rays.diffuse;
     sets[2].name = "shadow (any hit)", sets[2].rays = &rays.shadow, sets[2].anyHit = true;
-    for (const bool bvh : {true, false}) {
+    // The wide form this backend walks: the CPU's 4-wide one or the GPU's compressed 8-wide one.
+    const bool wide = backend.name() == "cpu" ? settings.toggles.wideBvh : settings.toggles.gpuWideBvh;
+    struct Layout {
+        const char* name;
+        bool bruteForce, wide;
+    };
+    std::vector<Layout> layouts = {{"BVH on", false, wide}};
+    if (wide) layouts.push_back({"binary BVH", false, false});
+    layouts.push_back({"BVH off", true, wide});
+    for (const Layout& layout : layouts) {
+        const bool bvh = &layout == &layouts.front();
         IntegratorToggles toggles = settings.toggles;
-        toggles.bruteForce = !bvh;
+        toggles.bruteForce = layout.bruteForce;
+        if (!layout.wide) toggles.wideBvh = toggles.gpuWideBvh = false;
         backend.setToggles(toggles);
         try {
             backend.sync(scene, SceneChanges::Settings, {});
         } catch (const std::invalid_argument& e) {
-            report.add({"rays", "all", "BVH off", 0.0, "Mrays/s", e.what()});
+            report.add({"rays", "all", layout.name, 0.0, "Mrays/s", e.what()});
             continue;
         }
         for (TracedRaySet& set : sets) {
@@ -69,9 +82,17 @@ std::vector<TracedRaySet> benchRays(Backend& backend, const Scene& scene, const 
                 backend.traceRays(*set.rays, set.anyHit, settings.runs + 1, &hits);
             const std::vector<double> timed(seconds.begin() + 1, seconds.end());  // the first run warms up
             const double rate = double(set.rays->size()) / median(timed) / 1e6;
-            report.add({"rays", set.name, bvh ? "BVH on" : "BVH off", rate, "Mrays/s",
-                        std::to_string(set.rays->size()) + " rays"});
+            report.add(
+                {"rays", set.name, layout.name, rate, "Mrays/s", std::to_string(set.rays->size()) + " rays"});
             if (bvh) set.mraysPerSecond = rate, set.hits = std::move(hits);
+            if (!layout.bruteForce && !layout.wide && wide && set.mraysPerSecond > 0) {
+                size_t differ = 0;
+                for (size_t i = 0; i < hits.size() && i < set.hits.size(); ++i) {
+                    differ += hits[i].valid() != set.hits[i].valid() || hits[i].t != set.hits[i].t;
+                }
+                report.add({"rays", set.name, "wide / binary BVH", set.mraysPerSecond / rate, "x",
+                            "same run; " + std::to_string(differ) + " hits differ"});
+            }
         }
     }
     backend.setToggles(settings.toggles);

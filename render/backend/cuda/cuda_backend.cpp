@@ -168,6 +168,7 @@ void CudaBackend::fullBuild(const Scene& scene, const ProgressFn& progress, Sync
     CompileOptions options;
     options.bruteForce = toggles_.bruteForce;
     options.mergeSmallInstances = toggles_.mergeInstances;
+    options.compressedWideBvh = toggles_.gpuWideBvh;
     auto compiled = std::make_unique<CompiledScene>(compileRenderScene(scene, options, progress));
     report.steps.push_back(
         {"compile scene (host)", compiled->stats.flattenSeconds + compiled->stats.lightSeconds});
@@ -307,9 +308,13 @@ bool CudaBackend::refitBlas(uint32_t i, SyncReport& report) {
                         stream_);
             device_.setBlasNodeCount(i, nodes, stream_);
             computeParents(device_.blasNodes(i), nodes, device_.blasParents(i), stream_);
+            device_.dropCompressed(i, stream_);  // the kernels walk the new tree's binary nodes
         });
         builtSah_[i] = blasSahCost(i);
         rebuilt = true;
+    } else if (device_.hasCompressedForm(i)) {
+        timedStep(stream_, report, "requantise BLAS (8-wide)",
+                  [&] { device_.requantizeCompressed(i, stream_); });
     }
     // The host keeps each BLAS's root box current (32 bytes): the host TLAS, and so the
     // scene bounds the light table uses, are built from it. Refit and rebuild give the
@@ -363,8 +368,9 @@ void CudaBackend::updateView() {
 }
 
 void CudaBackend::setToggles(const IntegratorToggles& toggles) {
-    const bool bvhChanged =
-        toggles.bruteForce != toggles_.bruteForce || toggles.mergeInstances != toggles_.mergeInstances;
+    const bool bvhChanged = toggles.bruteForce != toggles_.bruteForce ||
+                            toggles.mergeInstances != toggles_.mergeInstances ||
+                            toggles.gpuWideBvh != toggles_.gpuWideBvh;
     toggles_ = toggles;
     if (bvhChanged) {  // the next sync recompiles (and checks the budget)
         pinnedVertices_.clear();
@@ -599,7 +605,7 @@ std::vector<ToggleState> CudaBackend::toggleStates() const {
             s.note = "megakernel only; the wavefront is on";
         } else if (s.id == ToggleId::WideBvh) {
             s.active = false;
-            s.note = "CPU only: the GPU walks the binary BVH";
+            s.note = "CPU only: the GPU's wide BVH is gpu_wide_bvh";
         } else if (s.id == ToggleId::PathRegeneration && (aovsRequested_ & kPathAovs) != 0) {
             s.active = false;
             s.note = "path AOVs run one path a thread";

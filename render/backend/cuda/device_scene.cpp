@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "render/compile/wide_blases.h"
+
 namespace pt::cuda {
 
 namespace {
@@ -72,9 +74,36 @@ void DeviceScene::uploadAll(const CompiledScene& host, cudaStream_t stream) {
     uploadFitted(blasPrimIndices_, host.blasPrimIndices, stream);
     uploadFitted(blases_, hostBlases_, stream);
 
+    uploadCompressed(host, stream);
     uploadMaterials(host, stream);
     uploadInstances(host, stream);
     uploadLights(host, stream);
+}
+
+void DeviceScene::uploadCompressed(const CompiledScene& host, cudaStream_t stream) {
+    uploadFitted(blasCompressedNodes_, host.blasCompressedNodes, stream);
+    uploadFitted(blasCompressedPrims_, host.blasCompressedPrims, stream);
+    uploadFitted(blasCompressedRoots_, host.blasCompressedRoots, stream);
+    uploadFitted(compressedSources_, host.compressedSourceNodes, stream);
+    compressedRoots_ = host.blasCompressedRoots;
+    compressedCounts_.assign(compressedRoots_.size(), 0);
+    for (uint32_t i = 0; i < compressedRoots_.size(); ++i) {
+        const auto [first, end] = compressedNodeRange(host, i);
+        compressedCounts_[i] = end - first;
+    }
+}
+
+void DeviceScene::requantizeCompressed(uint32_t i, cudaStream_t stream) {
+    if (!hasCompressedForm(i)) return;
+    const uint32_t first = compressedRoots_[i];
+    requantizeCompressedNodes(blasCompressedNodes_.data() + first, compressedCounts_[i], blasNodes(i),
+                              compressedSources_.data() + size_t(first) * CompressedWideNode::kWidth, stream);
+}
+
+void DeviceScene::dropCompressed(uint32_t i, cudaStream_t stream) {
+    if (!hasCompressedForm(i)) return;
+    compressedRoots_[i] = kNoCompressedRoot;
+    blasCompressedRoots_.uploadAt(i, &compressedRoots_[i], 1, stream);
 }
 
 void DeviceScene::uploadMaterials(const CompiledScene& host, cudaStream_t stream) {
@@ -210,6 +239,7 @@ std::vector<BufferBytes> DeviceScene::buffers() const {
 #define PT_SCENE_ARRAY(Type, name, label) add(out, label, name##_);
 #include "render/kernel/scene_arrays.h"
     add(out, "BLAS parents (refit)", blasParents_);
+    add(out, "BLAS compressed sources (refit)", compressedSources_);
     return out;
 }
 

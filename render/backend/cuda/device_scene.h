@@ -76,6 +76,15 @@ public:
     // After a GPU rebuild wrote `nodeCount` nodes into BLAS i's region.
     void setBlasNodeCount(uint32_t i, uint32_t nodeCount, cudaStream_t stream);
 
+    // BLAS i's compressed 8-wide nodes (where the scene has them): requantised after a refit
+    // of its binary nodes, or dropped after a GPU rebuild (its new topology has no compressed
+    // form yet: the kernels walk its binary nodes).
+    bool hasCompressedForm(uint32_t i) const {
+        return i < compressedRoots_.size() && compressedRoots_[i] != kNoCompressedRoot;
+    }
+    void requantizeCompressed(uint32_t i, cudaStream_t stream);
+    void dropCompressed(uint32_t i, cudaStream_t stream);
+
     // The TLAS over the instances (GPU LBVH over their world boxes, `boxes` its scratch), or
     // only tlasInstanceIndices = {0} for one instance where skipsTlasForOneInstance().
     void buildTlas(LbvhBuilder& lbvh, DeviceBuffer<Aabb>& boxes, cudaStream_t stream);
@@ -88,11 +97,16 @@ public:
     uint64_t bytes() const;
 
 private:
+    void uploadCompressed(const CompiledScene& host, cudaStream_t stream);
+
     // One buffer per scene array (render/kernel/scene_arrays.h), named as the array with a
     // trailing underscore.
 #define PT_SCENE_ARRAY(Type, name, label) DeviceBuffer<Type> name##_;
 #include "render/kernel/scene_arrays.h"
     DeviceBuffer<uint32_t> blasParents_;  // per BLAS region, as blasNodes_: for refits
+    // Per slot of blasCompressedNodes_: its binary node (CompiledScene::compressedSourceNodes).
+    DeviceBuffer<uint32_t> compressedSources_;
+    std::vector<uint32_t> compressedRoots_, compressedCounts_;  // per BLAS, as on the device
 
     std::vector<BlasRef> hostBlases_;     // as on the device: offsets into the node regions
     std::vector<uint32_t> nodeCapacity_;  // nodes each BLAS's region holds

@@ -70,6 +70,11 @@ void computeParents(const BvhNode* nodes, uint32_t nodeCount, uint32_t* parents,
 void refitBvh(BvhNode* nodes, uint32_t nodeCount, const uint32_t* parents, const uint32_t* primIndices,
               const Aabb* primBoxes, uint32_t* visits, cudaStream_t stream);
 
+// After refitBvh of a BLAS: its `count` compressed 8-wide nodes requantised from the binary
+// nodes `binary` their slots came from (`sourceNodes`, 8 per node, relative to `binary`).
+void requantizeCompressedNodes(CompressedWideNode* nodes, uint32_t count, const BvhNode* binary,
+                               const uint32_t* sourceNodes, cudaStream_t stream);
+
 // SAH cost as sah_cost.h defines it (traversal and intersection cost 1), equal to the host's
 // sahCost() of the same nodes to float rounding. Synchronises `stream`.
 float sahCostOnDevice(const BvhNode* nodes, uint32_t nodeCount, cudaStream_t stream);

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <map>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "render/bvh/aabb.h"
@@ -125,13 +126,17 @@ inline Mesh makeIcosphere(int levels) {
     return mesh;
 }
 
-// The BVH layouts traversal must agree on: the binary tree every backend builds, and the CPU's
-// 4-wide form of it (render/bvh/wide_bvh.h, IntegratorToggles::wideBvh).
-enum class Layout { Binary, Wide };
-constexpr Layout kLayouts[] = {Layout::Binary, Layout::Wide};
-inline const char* layoutName(Layout layout) { return layout == Layout::Wide ? "Wide" : "Binary"; }
+// The BVH layouts traversal must agree on: the binary tree every backend builds, the CPU's
+// 4-wide form of it (render/bvh/wide_bvh.h, IntegratorToggles::wideBvh) and the GPU's
+// compressed 8-wide form (render/bvh/compressed_wide_bvh.h), walked here by the same shared code.
+enum class Layout { Binary, Wide, Compressed };
+constexpr Layout kLayouts[] = {Layout::Binary, Layout::Wide, Layout::Compressed};
+inline const char* layoutName(Layout layout) {
+    return layout == Layout::Wide ? "Wide" : layout == Layout::Compressed ? "Compressed" : "Binary";
+}
 inline CompileOptions layoutOptions(Layout layout, CompileOptions options = {}) {
     options.wideBvh = layout == Layout::Wide;
+    options.compressedWideBvh = layout == Layout::Compressed;
     return options;
 }
 // For suites of TEST_P over the layouts: the parameter's name in the test's.
@@ -211,6 +216,25 @@ inline bool expectBvhMatchesBruteForce(const RenderScene& bvhScene, const Ray& r
                       << bfHit.instance << ", any " << any;
     }
     return a;
+}
+
+// The work of 2000 closest-hit rays at a 20000-triangle soup, walked as the binary tree
+// (first) and as `layout` (second), whose hits must have the same t.
+inline std::pair<TraversalStats, TraversalStats> walkWorkAgainstBinary(Layout layout) {
+    Rng rng(8);
+    const Mesh mesh = makeSoup(SoupKind::Uniform, 20000, rng);
+    const CompiledScene binary = compileSingleMesh(mesh, Layout::Binary);
+    const CompiledScene other = compileSingleMesh(mesh, layout);
+    EXPECT_TRUE(!other.blasWideNodes.empty() || !other.blasCompressedNodes.empty()) << "no wide form";
+    TraversalStats binaryStats, otherStats;
+    for (int i = 0; i < 2000; ++i) {
+        const Ray ray = rayAtTriangle(rng, mesh, Vec3(-1.2f), Vec3(1.2f));
+        Hit a, b;
+        intersectClosest(binary.view(), ray, a, &binaryStats);
+        intersectClosest(other.view(), ray, b, &otherStats);
+        EXPECT_EQ(a.t, b.t);
+    }
+    return {binaryStats, otherStats};
 }
 
 }  // namespace pt::test

@@ -76,19 +76,7 @@ TEST(WideBvh, AnEmptyTreeHasARootWithNoSlot) {
 
 // The same closest hits through fewer, wider nodes: the walk the CPU runs is the wide one.
 TEST(WideBvh, TheWideWalkVisitsFewerNodesForTheSameHits) {
-    Rng rng(8);
-    const Mesh mesh = test::makeSoup(test::SoupKind::Uniform, 20000, rng);
-    const CompiledScene binary = test::compileSingleMesh(mesh, test::Layout::Binary);
-    const CompiledScene wide = test::compileSingleMesh(mesh, test::Layout::Wide);
-    ASSERT_FALSE(wide.blasWideNodes.empty());
-    TraversalStats binaryStats, wideStats;
-    for (int i = 0; i < 2000; ++i) {
-        const Ray ray = test::rayAtTriangle(rng, mesh, Vec3(-1.2f), Vec3(1.2f));
-        Hit a, b;
-        intersectClosest(binary.view(), ray, a, &binaryStats);
-        intersectClosest(wide.view(), ray, b, &wideStats);
-        EXPECT_EQ(a.t, b.t);
-    }
+    const auto [binaryStats, wideStats] = test::walkWorkAgainstBinary(test::Layout::Wide);
     // Nodes popped (leaves included): four children a node halve them, nearly (measured: 1.86x).
     EXPECT_LT(wideStats.nodesVisited * 3, binaryStats.nodesVisited * 2);
     // The same leaves; only the order they are met in, and so what a closer hit culls, differs.

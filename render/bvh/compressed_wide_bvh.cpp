@@ -1,0 +1,126 @@
+#include "render/bvh/compressed_wide_bvh.h"
+
+#include <array>
+#include <deque>
+#include <utility>
+
+#include "render/bvh/compressed_wide_quantize.h"
+#include "render/bvh/wide_bvh.h"
+#include "render/util/check.h"
+
+namespace pt {
+
+namespace {
+
+using Slots = std::array<uint32_t, CompressedWideNode::kWidth>;
+
+// Slot s points along -axis a where bit a of s is set: the slot of the child lying farthest
+// that way, so a ray whose direction has the opposite signs meets it first.
+float towardsSlot(Vec3 offset, uint32_t slot) {
+    float sum = 0.0f;
+    for (int a = 0; a < 3; ++a) sum += (slot >> a & 1u) ? -offset[a] : offset[a];
+    return sum;
+}
+
+// Binary nodes `kids` placed into slots: the (child, slot) pair whose child lies farthest
+// towards the slot's direction first, then the best of the rest.
+Slots assignSlots(const BvhNode* nodes, uint32_t parent, const std::vector<uint32_t>& kids) {
+    Slots slots;
+    slots.fill(kNoSourceNode);
+    const Vec3 centre = (nodes[parent].lo + nodes[parent].hi) * 0.5f;
+    std::vector<bool> placed(kids.size(), false);
+    for (size_t round = 0; round < kids.size(); ++round) {
+        bool any = false;
+        float best = 0.0f;
+        size_t bestKid = 0;
+        uint32_t bestSlot = 0;
+        for (size_t k = 0; k < kids.size(); ++k) {
+            if (placed[k]) continue;
+            const Vec3 offset = (nodes[kids[k]].lo + nodes[kids[k]].hi) * 0.5f - centre;
+            for (uint32_t s = 0; s < CompressedWideNode::kWidth; ++s) {
+                if (slots[s] != kNoSourceNode) continue;
+                const float score = towardsSlot(offset, s);
+                if (!any || score > best) any = true, best = score, bestKid = k, bestSlot = s;
+            }
+        }
+        placed[bestKid] = true;
+        slots[bestSlot] = kids[bestKid];
+    }
+    return slots;
+}
+
+class Compressor {
+public:
+    Compressor(const BvhNode* nodes, uint32_t count, const uint32_t* primIndices)
+        : nodes_(nodes), count_(count), primIndices_(primIndices) {}
+
+    CompressedWideBvh run() {
+        out_.nodes.push_back(CompressedWideNode{});
+        out_.sourceNodes.assign(CompressedWideNode::kWidth, kNoSourceNode);
+        if (count_ == 0 || nodes_[0].isLeaf() || nodes_[0].leftOrFirst + 1 >= count_) {
+            // A lone leaf (or the empty root) in slot 0 of the root.
+            Slots slots;
+            slots.fill(kNoSourceNode);
+            if (count_ > 0 && nodes_[0].isLeaf()) slots[0] = 0;
+            fill(0, slots);
+            return std::move(out_);
+        }
+        pending_.push_back({0, 0});
+        while (!pending_.empty()) {
+            const auto [wide, binary] = pending_.front();
+            pending_.pop_front();
+            fill(wide, assignSlots(nodes_, binary,
+                                   openLargestChildren(nodes_, binary, CompressedWideNode::kWidth)));
+        }
+        return std::move(out_);
+    }
+
+private:
+    // Wide node `wide` over the binary nodes in `slots`: its interior children are appended
+    // as new nodes (to be filled in turn), its leaves' primitives to the primitive list.
+    void fill(uint32_t wide, const Slots& slots) {
+        CompressedWideNode node{};
+        node.childBase = uint32_t(out_.nodes.size());
+        node.primBase = uint32_t(out_.primIndices.size());
+        for (uint32_t s = 0; s < CompressedWideNode::kWidth; ++s) {
+            out_.sourceNodes[size_t(wide) * CompressedWideNode::kWidth + s] = slots[s];
+            if (slots[s] == kNoSourceNode) continue;
+            const BvhNode& kid = nodes_[slots[s]];
+            if (!kid.isLeaf()) {
+                node.interiorMask |= uint8_t(1u << s);
+                pending_.push_back({uint32_t(out_.nodes.size()), slots[s]});
+                out_.nodes.push_back(CompressedWideNode{});
+                out_.sourceNodes.resize(out_.sourceNodes.size() + CompressedWideNode::kWidth, kNoSourceNode);
+                continue;
+            }
+            PT_CHECK(kid.count <= CompressedWideNode::kMaxLeafSize);
+            const uint32_t offset = uint32_t(out_.primIndices.size()) - node.primBase;
+            node.leafMeta[s] = uint8_t(kid.count << 5 | offset);
+            out_.primIndices.insert(out_.primIndices.end(), primIndices_ + kid.leftOrFirst,
+                                    primIndices_ + kid.leftOrFirst + kid.count);
+        }
+        quantizeWideBoxes(node, nodes_, slots.data());
+        out_.nodes[wide] = node;
+    }
+
+    const BvhNode* nodes_;
+    uint32_t count_;
+    const uint32_t* primIndices_;
+    std::deque<std::pair<uint32_t, uint32_t>> pending_;  // (wide node, binary node) to fill
+    CompressedWideBvh out_;
+};
+
+}  // namespace
+
+CompressedWideBvh compressToWide(const BvhNode* nodes, uint32_t count, const uint32_t* primIndices) {
+    return Compressor(nodes, count, primIndices).run();
+}
+
+void requantizeWideBoxes(const BvhNode* binary, const uint32_t* sourceNodes, CompressedWideNode* wide,
+                         uint32_t wideCount) {
+    for (uint32_t n = 0; n < wideCount; ++n) {
+        quantizeWideBoxes(wide[n], binary, sourceNodes + size_t(n) * CompressedWideNode::kWidth);
+    }
+}
+
+}  // namespace pt

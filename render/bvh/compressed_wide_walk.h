@@ -1,0 +1,169 @@
+#pragma once
+// The walk of a compressed 8-wide BVH (render/kernel/compressed_wide_node.h; issue 21), after
+// Ylitie, Karras and Laine 2017, algorithm 1: a node's eight quantised child boxes are tested
+// together; the interior children hit form a "node group" (the children's base index with a
+// bit per child hit), the primitives of the leaves hit a "primitive group" (base index with a
+// bit per primitive), so a node costs one stack entry however many children it hits, and no
+// sorting: the bits are numbered in the slot order the collapse chose for the ray's octant,
+// which visits near children first. Leaves go to the same leaf functor the binary walk
+// (bvh_walk.h) calls, one primitive at a time, and the boxes are conservative
+// (compressed_wide_quantize.h), so the hits are the binary walk's.
+// Shared by both backends: the CUDA traversal walks it, and the CPU's tests check it.
+#include <cstdint>
+
+#include "render/bvh/bvh_walk.h"
+#include "render/bvh/compressed_wide_quantize.h"
+#include "render/kernel/compressed_wide_node.h"
+
+namespace pt {
+
+PT_HD uint32_t lowestBit(uint32_t bits) {  // bits != 0
+#if defined(__CUDA_ARCH__)
+    return uint32_t(__ffs(int(bits)) - 1);
+#else
+    return uint32_t(__builtin_ctz(bits));
+#endif
+}
+
+PT_HD uint32_t bitCount(uint32_t bits) {
+#if defined(__CUDA_ARCH__)
+    return uint32_t(__popc(bits));
+#else
+    return uint32_t(__builtin_popcount(bits));
+#endif
+}
+
+// The node at `index`, read in five 16-byte loads through the read-only path on the GPU.
+PT_HD CompressedWideNode loadCompressedNode(const CompressedWideNode* nodes, uint32_t index) {
+#if defined(__CUDA_ARCH__)
+    CompressedWideNode node;
+    const uint4* from = reinterpret_cast<const uint4*>(nodes + index);
+    uint4* to = reinterpret_cast<uint4*>(&node);
+    for (int i = 0; i < 5; ++i) to[i] = __ldg(from + i);
+    return node;
+#else
+    return nodes[index];
+#endif
+}
+
+// What the walk precomputes once per ray: for each axis, the origin its near and far planes
+// are measured from (TraversalRay's zero-axis padded origins: lower planes from slabOriginLo,
+// upper from slabOriginHi) and which of a box's planes is near (the lower one where the
+// direction is positive).
+struct CompressedWalkRay {
+    Vec3 nearOrigin, farOrigin, invDirection;
+    uint32_t negative;   // bit a: the direction is negative along axis a (the ray's octant)
+    uint32_t firstSlot;  // the slot visited first: the one towards the octant the ray comes from
+};
+
+PT_HD CompressedWalkRay compressedWalkRay(const TraversalRay& ray) {
+    CompressedWalkRay r;
+    r.invDirection = ray.invDirection;
+    r.negative = 0;
+    for (int a = 0; a < 3; ++a) {
+        const bool negative = ray.invDirection[a] < 0.0f;
+        r.negative |= uint32_t(negative) << a;
+        r.nearOrigin[a] = negative ? ray.slabOriginHi[a] : ray.slabOriginLo[a];
+        r.farOrigin[a] = negative ? ray.slabOriginLo[a] : ray.slabOriginHi[a];
+    }
+    r.firstSlot = r.negative ^ 7u;
+    return r;
+}
+
+// The children of `node` the ray enters before tMax: the interior ones as bits numbered
+// slot ^ firstSlot (the visiting order), the leaves' primitives as bits numbered from primBase.
+struct ChildHits {
+    uint32_t interior;
+    uint32_t primitives;
+};
+
+PT_HD ChildHits intersectCompressedChildren(const CompressedWalkRay& r, const CompressedWideNode& node,
+                                            float tMax) {
+    const float maxScale = 3.4028235e38f;
+    // A plane q steps from the origin lies at t = q * scale + offset: scale = 2^e / d is exact
+    // (clamped where it would overflow), offset = (origin - o) / d.
+    Vec3 scale, nearOffset, farOffset;
+    for (int a = 0; a < 3; ++a) {
+        scale[a] = clampf(exponentStep(node.exponent[a]) * r.invDirection[a], -maxScale, maxScale);
+        nearOffset[a] = (node.origin[a] - r.nearOrigin[a]) * r.invDirection[a];
+        farOffset[a] = (node.origin[a] - r.farOrigin[a]) * r.invDirection[a];
+    }
+    const bool nx = r.negative & 1u, ny = r.negative & 2u, nz = r.negative & 4u;
+    const float limit = tMax * kSlabExitScale;
+    ChildHits hits{0u, 0u};
+    for (uint32_t s = 0; s < CompressedWideNode::kWidth; ++s) {
+        const float x0 = fmaf(float(nx ? node.hiX[s] : node.loX[s]), scale.x, nearOffset.x);
+        const float x1 = fmaf(float(nx ? node.loX[s] : node.hiX[s]), scale.x, farOffset.x);
+        const float y0 = fmaf(float(ny ? node.hiY[s] : node.loY[s]), scale.y, nearOffset.y);
+        const float y1 = fmaf(float(ny ? node.loY[s] : node.hiY[s]), scale.y, farOffset.y);
+        const float z0 = fmaf(float(nz ? node.hiZ[s] : node.loZ[s]), scale.z, nearOffset.z);
+        const float z1 = fmaf(float(nz ? node.loZ[s] : node.hiZ[s]), scale.z, farOffset.z);
+        const float tNear = maxFast(maxFast(x0, y0), maxFast(z0, 0.0f));
+        const float tFar = minFast(x1, minFast(y1, z1)) * kSlabExitScale;
+        if (!(tNear <= minFast(tFar, limit))) continue;
+        if ((node.interiorMask >> s) & 1u) {
+            hits.interior |= 1u << (s ^ r.firstSlot);
+        } else {
+            // Unused slots have count 0 and add nothing, whatever their (zero) box gives.
+            hits.primitives |= ((1u << node.leafCount(s)) - 1u) << node.leafOffset(s);
+        }
+    }
+    return hits;
+}
+
+// walkBvh over the compressed tree `nodes` from node `root`: `leaf(index, 1, tMax)` tests the
+// primitive at `index` of the compressed primitive list, as the binary walk's leaf functor
+// tests a range. A node group on the stack holds its children's base, its interior mask and
+// the bits of the children hit but not yet visited; popped groups are not culled by distance
+// (they keep none), the children's boxes are tested against the current tMax when visited.
+template <class LeafFn, class Count>
+PT_HD bool walkCompressedWideBvh(const CompressedWideNode* nodes, uint32_t root, const TraversalRay& ray,
+                                 float& tMax, LeafFn& leaf, Count count, bool anyHit) {
+    const CompressedWalkRay r = compressedWalkRay(ray);
+    // Stack entries: a node group's base, and its interior mask << 8 | the bits left to visit.
+    // One entry is pushed per level descended, and no leaf lies deeper than kBvhStackSize.
+    uint32_t stackBase[kBvhStackSize], stackBits[kBvhStackSize];
+    uint32_t size = 0;
+    // The root as the one interior child (slot 0) of a group based at it.
+    uint32_t groupBase = root, groupInterior = 1u, groupBits = 1u << r.firstSlot;
+    uint32_t primBase = 0, primBits = 0;
+    bool found = false;
+    for (;;) {
+        if (groupBits != 0) {
+            const uint32_t bit = lowestBit(groupBits);
+            groupBits &= groupBits - 1;
+            const uint32_t slot = bit ^ r.firstSlot;
+            const uint32_t child = groupBase + bitCount(groupInterior & ((1u << slot) - 1u));
+            if (groupBits != 0) {
+                assert(size < kBvhStackSize && "BVH deeper than the traversal stack");
+                stackBase[size] = groupBase;
+                stackBits[size++] = groupInterior << 8 | groupBits;
+            }
+            count.node();
+            const CompressedWideNode node = loadCompressedNode(nodes, child);
+            const ChildHits hits = intersectCompressedChildren(r, node, tMax);
+            groupBase = node.childBase;
+            groupInterior = node.interiorMask;
+            groupBits = hits.interior;
+            primBase = node.primBase;
+            primBits = hits.primitives;
+        }
+        while (primBits != 0) {
+            const uint32_t bit = lowestBit(primBits);
+            primBits &= primBits - 1;
+            if (leaf(primBase + bit, 1u, tMax)) {
+                found = true;
+                if (anyHit) return true;
+            }
+        }
+        if (groupBits == 0) {
+            if (size == 0) return found;
+            --size;
+            groupBase = stackBase[size];
+            groupInterior = stackBits[size] >> 8;
+            groupBits = stackBits[size] & 0xffu;
+        }
+    }
+}
+
+}  // namespace pt
