@@ -50,13 +50,24 @@ struct BlasLeaf {
     Count counter;
     bool anyHit;
 
+    bool hitHere = false;  // this walk has found a hit: tMax is that hit's t
+
+    // Ties in t go to the lower primitive index within a BLAS, as brute force's in-order test
+    // keeps it, so that the hit does not depend on the order a walk meets its leaves in: the
+    // binary, 4-wide and compressed 8-wide walks then agree on coincident faces (a box standing
+    // on a floor), where they would otherwise shade different surfaces.
     PT_HD bool operator()(uint32_t first, uint32_t count, float& tMax) {
         bool found = false;
         for (uint32_t i = first; i < first + count; ++i) {
             counter.primitive();
-            if (intersectBlasPrimitive<kF>(scene, blas, primIndices[i], ray, tMax, hit)) {
-                tMax = hit.t;
-                found = true;
+            const uint32_t primitive = primIndices[i];
+            const float limit = hitHere ? intAsFloat(floatAsInt(tMax) + 1) : tMax;  // t == tMax too
+            Hit candidate;
+            if (intersectBlasPrimitive<kF>(scene, blas, primitive, ray, limit, candidate) &&
+                (candidate.t < tMax || primitive < hit.primitive)) {
+                hit.t = candidate.t, hit.u = candidate.u, hit.v = candidate.v, hit.primitive = primitive;
+                tMax = candidate.t;
+                found = hitHere = true;
                 if (anyHit) return true;
             }
         }

@@ -9,6 +9,7 @@
 // (bvh_walk.h) calls, one primitive at a time, and the boxes are conservative
 // (compressed_wide_quantize.h), so the hits are the binary walk's.
 // Shared by both backends: the CUDA traversal walks it, and the CPU's tests check it.
+#include <cstddef>
 #include <cstdint>
 
 #include "render/bvh/bvh_walk.h"
@@ -33,16 +34,41 @@ PT_HD uint32_t bitCount(uint32_t bits) {
 #endif
 }
 
-// The node at `index`, read in five 16-byte loads through the read-only path on the GPU.
-PT_HD CompressedWideNode loadCompressedNode(const CompressedWideNode* nodes, uint32_t index) {
+// A compressed node as the walk reads it: twenty 32-bit words, loaded in five 16-byte loads
+// through the read-only path on the GPU. Word 3 holds the exponents (bytes 0-2) and the
+// interior mask (byte 3); words 6-7 the leaf metas; then two words (slots 0-3, 4-7) of each of
+// loX, loY, loZ, hiX, hiY, hiZ, one byte per slot.
+struct CompressedNodeWords {
+    uint32_t w[20];
+};
+static_assert(sizeof(CompressedNodeWords) == sizeof(CompressedWideNode),
+              "CompressedNodeWords: the node's bytes");
+static_assert(offsetof(CompressedWideNode, childBase) == 16 && offsetof(CompressedWideNode, leafMeta) == 24 &&
+                  offsetof(CompressedWideNode, loX) == 32 && offsetof(CompressedWideNode, hiX) == 56,
+              "CompressedNodeWords: word indices follow CompressedWideNode's layout");
+
+PT_HD CompressedNodeWords loadCompressedNode(const CompressedWideNode* nodes, uint32_t index) {
+    CompressedNodeWords node;
 #if defined(__CUDA_ARCH__)
-    CompressedWideNode node;
     const uint4* from = reinterpret_cast<const uint4*>(nodes + index);
-    uint4* to = reinterpret_cast<uint4*>(&node);
-    for (int i = 0; i < 5; ++i) to[i] = __ldg(from + i);
-    return node;
+    for (int i = 0; i < 5; ++i) {
+        const uint4 v = __ldg(from + i);
+        node.w[4 * i] = v.x, node.w[4 * i + 1] = v.y, node.w[4 * i + 2] = v.z, node.w[4 * i + 3] = v.w;
+    }
 #else
-    return nodes[index];
+    __builtin_memcpy(&node, nodes + index, sizeof(node));
+#endif
+    return node;
+}
+
+// Byte k of `word` as a float, exactly. On the GPU one byte permute puts it under the exponent
+// of 2^23 and one subtraction takes 2^23 away: conversions (I2F) issue at a quarter of the
+// rate of additions, and a node tests 48 such bytes (Ylitie et al. 2017, section 4).
+PT_HD float byteAsFloat(uint32_t word, uint32_t k) {
+#if defined(__CUDA_ARCH__)
+    return __uint_as_float(__byte_perm(word, 0x4b000000u, k | 0x7540u)) - 8388608.0f;
+#else
+    return float((word >> (8 * k)) & 0xffu);
 #endif
 }
 
@@ -77,35 +103,51 @@ struct ChildHits {
     uint32_t primitives;
 };
 
-PT_HD ChildHits intersectCompressedChildren(const CompressedWalkRay& r, const CompressedWideNode& node,
+PT_HD ChildHits intersectCompressedChildren(const CompressedWalkRay& r, const CompressedNodeWords& node,
                                             float tMax) {
     const float maxScale = 3.4028235e38f;
     // A plane q steps from the origin lies at t = q * scale + offset: scale = 2^e / d is exact
     // (clamped where it would overflow), offset = (origin - o) / d.
     Vec3 scale, nearOffset, farOffset;
     for (int a = 0; a < 3; ++a) {
-        scale[a] = clampf(exponentStep(node.exponent[a]) * r.invDirection[a], -maxScale, maxScale);
-        nearOffset[a] = (node.origin[a] - r.nearOrigin[a]) * r.invDirection[a];
-        farOffset[a] = (node.origin[a] - r.farOrigin[a]) * r.invDirection[a];
+        const uint32_t exponent = (node.w[3] >> (8 * a)) & 0xffu;
+        scale[a] = clampf(exponentStep(exponent) * r.invDirection[a], -maxScale, maxScale);
+        const float origin = intAsFloat(int32_t(node.w[a]));
+        nearOffset[a] = (origin - r.nearOrigin[a]) * r.invDirection[a];
+        farOffset[a] = (origin - r.farOrigin[a]) * r.invDirection[a];
     }
+    const uint32_t interiorMask = node.w[3] >> 24;
     const bool nx = r.negative & 1u, ny = r.negative & 2u, nz = r.negative & 4u;
     const float limit = tMax * kSlabExitScale;
     ChildHits hits{0u, 0u};
-    for (uint32_t s = 0; s < CompressedWideNode::kWidth; ++s) {
-        const float x0 = fmaf(float(nx ? node.hiX[s] : node.loX[s]), scale.x, nearOffset.x);
-        const float x1 = fmaf(float(nx ? node.loX[s] : node.hiX[s]), scale.x, farOffset.x);
-        const float y0 = fmaf(float(ny ? node.hiY[s] : node.loY[s]), scale.y, nearOffset.y);
-        const float y1 = fmaf(float(ny ? node.loY[s] : node.hiY[s]), scale.y, farOffset.y);
-        const float z0 = fmaf(float(nz ? node.hiZ[s] : node.loZ[s]), scale.z, nearOffset.z);
-        const float z1 = fmaf(float(nz ? node.loZ[s] : node.hiZ[s]), scale.z, farOffset.z);
-        const float tNear = maxFast(maxFast(x0, y0), maxFast(z0, 0.0f));
-        const float tFar = minFast(x1, minFast(y1, z1)) * kSlabExitScale;
-        if (!(tNear <= minFast(tFar, limit))) continue;
-        if ((node.interiorMask >> s) & 1u) {
-            hits.interior |= 1u << (s ^ r.firstSlot);
-        } else {
-            // Unused slots have count 0 and add nothing, whatever their (zero) box gives.
-            hits.primitives |= ((1u << node.leafCount(s)) - 1u) << node.leafOffset(s);
+    for (uint32_t half = 0; half < 2; ++half) {
+        // The near planes' bytes: the lower ones where the direction is positive. Chosen per
+        // word, once for four slots.
+        const uint32_t loX = node.w[8 + half], loY = node.w[10 + half], loZ = node.w[12 + half];
+        const uint32_t hiX = node.w[14 + half], hiY = node.w[16 + half], hiZ = node.w[18 + half];
+        const uint32_t nearX = nx ? hiX : loX, farX = nx ? loX : hiX;
+        const uint32_t nearY = ny ? hiY : loY, farY = ny ? loY : hiY;
+        const uint32_t nearZ = nz ? hiZ : loZ, farZ = nz ? loZ : hiZ;
+        const uint32_t meta = node.w[6 + half];
+        for (uint32_t k = 0; k < 4; ++k) {
+            const float x0 = fmaf(byteAsFloat(nearX, k), scale.x, nearOffset.x);
+            const float x1 = fmaf(byteAsFloat(farX, k), scale.x, farOffset.x);
+            const float y0 = fmaf(byteAsFloat(nearY, k), scale.y, nearOffset.y);
+            const float y1 = fmaf(byteAsFloat(farY, k), scale.y, farOffset.y);
+            const float z0 = fmaf(byteAsFloat(nearZ, k), scale.z, nearOffset.z);
+            const float z1 = fmaf(byteAsFloat(farZ, k), scale.z, farOffset.z);
+            const float tNear = maxFast(maxFast(x0, y0), maxFast(z0, 0.0f));
+            const float tFar = minFast(x1, minFast(y1, z1)) * kSlabExitScale;
+            if (!(tNear <= minFast(tFar, limit))) continue;
+            const uint32_t slot = 4 * half + k;
+            if ((interiorMask >> slot) & 1u) {
+                hits.interior |= 1u << (slot ^ r.firstSlot);
+            } else {
+                // A leaf's (count << 5) | offset; unused slots have count 0 and add nothing,
+                // whatever their (zero) box gives.
+                const uint32_t leaf = (meta >> (8 * k)) & 0xffu;
+                hits.primitives |= ((1u << (leaf >> 5)) - 1u) << (leaf & 31u);
+            }
         }
     }
     return hits;
@@ -140,12 +182,12 @@ PT_HD bool walkCompressedWideBvh(const CompressedWideNode* nodes, uint32_t root,
                 stackBits[size++] = groupInterior << 8 | groupBits;
             }
             count.node();
-            const CompressedWideNode node = loadCompressedNode(nodes, child);
+            const CompressedNodeWords node = loadCompressedNode(nodes, child);
             const ChildHits hits = intersectCompressedChildren(r, node, tMax);
-            groupBase = node.childBase;
-            groupInterior = node.interiorMask;
+            groupBase = node.w[4];
+            groupInterior = node.w[3] >> 24;
             groupBits = hits.interior;
-            primBase = node.primBase;
+            primBase = node.w[5];
             primBits = hits.primitives;
         }
         while (primBits != 0) {

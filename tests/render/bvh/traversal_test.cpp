@@ -84,6 +84,28 @@ TEST_P(Traversal, AxisAlignedRaysMatchBruteForce) {
     EXPECT_GT(hits, 1000u);
 }
 
+// Every triangle twice (the copy's index n higher): each hit is an exact tie, which brute force
+// gives to the lower index, and so must every walk, whatever order it meets the leaves in.
+TEST_P(Traversal, TiesGoToTheLowerPrimitive) {
+    Rng rng(15);
+    Mesh mesh = test::makeSoup(SoupKind::Uniform, 3000, rng);
+    const size_t indices = mesh.indices.size();
+    for (size_t i = 0; i < indices; ++i) mesh.indices.push_back(mesh.indices[i]);
+    const CompiledScene compiled = test::compileSingleMesh(mesh, GetParam());
+    RenderScene bvh = compiled.view(), brute = compiled.view();
+    brute.bruteForce = 1;
+    uint32_t hits = 0, differ = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Ray ray = test::rayAtTriangle(rng, mesh, Vec3(-1.5f), Vec3(1.5f));
+        Hit a, b;
+        hits += intersectClosest(bvh, ray, a);
+        intersectClosest(brute, ray, b);
+        differ += a.t != b.t || a.primitive != b.primitive;
+    }
+    EXPECT_EQ(differ, 0u);
+    EXPECT_GT(hits, 15000u);
+}
+
 TEST_P(Traversal, EmptySceneMisses) {
     Scene empty;
     const CompiledScene compiled = compileRenderScene(empty, test::layoutOptions(GetParam()));
