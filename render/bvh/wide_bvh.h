@@ -22,7 +22,16 @@ struct WideBvh {
 // The up to `width` binary nodes under binary interior node `binary` that one wide node holds:
 // its two children, the largest interior one (by surface area) opened while there is room.
 // Shared by the 4-wide collapse and the compressed 8-wide one (compressed_wide_bvh.h).
-std::vector<uint32_t> openLargestChildren(const BvhNode* nodes, uint32_t binary, uint32_t width);
+// Held in place: collapses run it once per wide node, hundreds of thousands of times.
+struct WideChildren {
+    static constexpr uint32_t kMaxWidth = 8;
+    uint32_t node[kMaxWidth];
+    uint32_t count = 0;
+
+    uint32_t size() const { return count; }
+    uint32_t operator[](uint32_t i) const { return node[i]; }
+};
+WideChildren openLargestChildren(const BvhNode* nodes, uint32_t binary, uint32_t width);
 
 // The wide form of the binary tree `nodes` (canonical layout, root at 0, `count` nodes); child
 // node indices count from the result's first node. An empty tree (a root without primitives)
