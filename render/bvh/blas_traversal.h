@@ -83,10 +83,12 @@ PT_HD bool traverseBlas(const RenderScene& scene, const BlasRef& blas, const Tra
                         Hit& hit, Count count, bool anyHit) {
     if (blas.primitiveCount == 0 || blas.nodeCount == 0) return false;
     const uint32_t index = uint32_t(&blas - scene.blases.data);
-    // The compressed 8-wide form where the BLAS has one (IntegratorToggles::wideBvh on the GPU;
-    // the CPU's tests walk it too). Its leaf entries are mesh-local primitives, as the binary
-    // list's are, so the same leaf functor tests them.
-    if (!scene.blasCompressedRoots.empty() && scene.blasCompressedRoots[index] != kNoCompressedRoot) {
+    // The compressed 8-wide form where the BLAS has one (IntegratorToggles::gpuWideBvh; the CPU's
+    // tests walk it too) and the ray's direction allows it (compressedWalkTakes). Its leaf
+    // entries are mesh-local primitives, as the binary list's are, so the same leaf functor
+    // tests them.
+    if (!scene.blasCompressedRoots.empty() && scene.blasCompressedRoots[index] != kNoCompressedRoot &&
+        compressedWalkTakes(ray)) {
         BlasLeaf<kF, Count> leaf{scene, blas, scene.blasCompressedPrims.data, ray, hit, count, anyHit};
         return walkCompressedWideBvh(scene.blasCompressedNodes.data, scene.blasCompressedRoots[index], ray,
                                      tMax, leaf, count, anyHit);

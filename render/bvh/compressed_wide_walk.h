@@ -76,6 +76,19 @@ PT_HD float byteAsFloat(uint32_t word, uint32_t k) {
 #endif
 }
 
+// Whether the compressed walk can take `ray`. A direction component below 1e-20 (an exact zero
+// is common: an axis-aligned camera's centre pixel) has an inverse up to 1e30, and the walk's
+// plane offsets (origin - o) / d would then overflow for nodes 3.4e8 away: fma(q, scale, -inf)
+// is -inf even where the plane lies on the other side, and a subtree would be culled. The
+// binary slab test subtracts before it multiplies and keeps the right sign, so such rays walk
+// the binary nodes. Below 1e20 nothing overflows short of coordinates beyond 1e18.
+constexpr float kMaxCompressedInverse = 1e20f;
+PT_HD bool compressedWalkTakes(const TraversalRay& ray) {
+    return fabsf(ray.invDirection.x) <= kMaxCompressedInverse &&
+           fabsf(ray.invDirection.y) <= kMaxCompressedInverse &&
+           fabsf(ray.invDirection.z) <= kMaxCompressedInverse;
+}
+
 // What the walk precomputes once per ray: for each axis, the origin its near and far planes
 // are measured from (TraversalRay's zero-axis padded origins: lower planes from slabOriginLo,
 // upper from slabOriginHi) and which of a box's planes is near (the lower one where the

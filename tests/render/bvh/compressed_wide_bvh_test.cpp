@@ -15,6 +15,7 @@
 #include "render/bvh/binned_sah_builder.h"
 #include "render/bvh/bvh_test_util.h"
 #include "render/bvh/compressed_wide_quantize.h"
+#include "render/bvh/compressed_wide_walk.h"
 #include "render/compile/host_refit.h"
 #include "render/compile/wide_blases.h"
 
@@ -181,6 +182,43 @@ TEST(CompressedWideBvh, TheWalkVisitsFewerNodesForTheSameHits) {
     // Quantised boxes are a little larger and the octant order is not the exact distance order
     // (measured: 14% more primitive tests).
     EXPECT_LT(wideStats.primitivesTested, binaryStats.primitivesTested * 1.3);
+}
+
+// Axis-aligned rays (exact zeros in the direction) walk the binary nodes: their inverse of 1e30
+// would overflow the compressed walk's plane offsets on nodes 3.4e8 away. A floor two billion
+// units wide under a few small triangles: every straight-down ray must still hit.
+TEST(CompressedWideBvh, AxisAlignedRaysHitAFloorFarWiderThanTheirInverseAllows) {
+    Rng rng(4);
+    Mesh mesh = test::makeSoup(test::SoupKind::Uniform, 200, rng);
+    const uint32_t base = uint32_t(mesh.positions.size());
+    mesh.positions.push_back({-1.0e9f, -2.0f, -1.0e9f});
+    mesh.positions.push_back({1.0e9f, -2.0f, -1.0e9f});
+    mesh.positions.push_back({0.0f, -2.0f, 1.0e9f});
+    mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2});
+    const CompiledScene compiled = test::compileSingleMesh(mesh, test::Layout::Compressed);
+    EXPECT_FALSE(compressedWalkTakes(makeTraversalRay(Vec3(0.0f), Vec3(0.0f, -1.0f, 0.0f))));
+    EXPECT_TRUE(compressedWalkTakes(makeTraversalRay(Vec3(0.0f), Vec3(1e-3f, -1.0f, 0.2f))));
+    int failures = 0, hits = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Vec3 o(rng.uniform(-3.0f, 3.0f), 10.0f, rng.uniform(-3.0f, 3.0f));
+        hits += test::expectBvhMatchesBruteForce(compiled.view(), Ray{o, Vec3(0.0f, -1.0f, 0.0f), kInf},
+                                                 failures);
+        test::expectBvhMatchesBruteForce(compiled.view(), Ray{o, Vec3(1e-3f, -1.0f, 0.0f), kInf}, failures);
+    }
+    EXPECT_EQ(failures, 0);
+    EXPECT_EQ(hits, 2000) << "the floor lies under every ray";
+    // Straight-down rays did the binary walk's work, node for node and test for test.
+    const CompiledScene binary = test::compileSingleMesh(mesh, test::Layout::Binary);
+    TraversalStats viaCompressed, viaBinary;
+    for (int i = 0; i < 200; ++i) {
+        const Ray ray{Vec3(rng.uniform(-3.0f, 3.0f), 10.0f, rng.uniform(-3.0f, 3.0f)),
+                      Vec3(0.0f, -1.0f, 0.0f), kInf};
+        Hit a, b;
+        intersectClosest(compiled.view(), ray, a, &viaCompressed);
+        intersectClosest(binary.view(), ray, b, &viaBinary);
+    }
+    EXPECT_EQ(viaCompressed.nodesVisited, viaBinary.nodesVisited);
+    EXPECT_EQ(viaCompressed.primitivesTested, viaBinary.primitivesTested);
 }
 
 // Moved vertices refit the binary BLAS on the host; the quantised boxes must follow, or rays
