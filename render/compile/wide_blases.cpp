@@ -8,6 +8,17 @@
 
 namespace pt {
 
+namespace {
+
+// Nodes [first, end) of BLAS `blas` in a wide form whose BLASes start at `roots` (in order) and
+// which holds `total` nodes.
+std::pair<uint32_t, uint32_t> nodeRange(const std::vector<uint32_t>& roots, size_t total, uint32_t blas) {
+    PT_CHECK(blas < roots.size());
+    return {roots[blas], blas + 1 < roots.size() ? roots[blas + 1] : uint32_t(total)};
+}
+
+}  // namespace
+
 void buildWideBlases(CompiledScene& compiled) {
     const size_t count = compiled.blases.size();
     std::vector<WideBvh> wide(count);
@@ -64,11 +75,7 @@ void buildCompressedBlases(CompiledScene& compiled) {
 }
 
 std::pair<uint32_t, uint32_t> compressedNodeRange(const CompiledScene& compiled, uint32_t blas) {
-    const std::vector<uint32_t>& roots = compiled.blasCompressedRoots;
-    PT_CHECK(blas < roots.size());
-    const uint32_t end =
-        blas + 1 < roots.size() ? roots[blas + 1] : uint32_t(compiled.blasCompressedNodes.size());
-    return {roots[blas], end};
+    return nodeRange(compiled.blasCompressedRoots, compiled.blasCompressedNodes.size(), blas);
 }
 
 void refreshWideBlas(CompiledScene& compiled, uint32_t blas) {
@@ -80,10 +87,7 @@ void refreshWideBlas(CompiledScene& compiled, uint32_t blas) {
             compiled.blasCompressedNodes.data() + first, end - first);
     }
     if (compiled.blasWideRoots.empty()) return;
-    PT_CHECK(blas < compiled.blasWideRoots.size());
-    const uint32_t first = compiled.blasWideRoots[blas];
-    const uint32_t end = blas + 1 < compiled.blasWideRoots.size() ? compiled.blasWideRoots[blas + 1]
-                                                                  : uint32_t(compiled.blasWideNodes.size());
+    const auto [first, end] = nodeRange(compiled.blasWideRoots, compiled.blasWideNodes.size(), blas);
     refreshWideBoxes(binary, compiled.wideSourceNodes.data() + size_t(first) * WideBvhNode::kWidth,
                      compiled.blasWideNodes.data() + first, end - first);
 }
