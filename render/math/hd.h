@@ -26,10 +26,15 @@
 // small arrays indexed by its counter stay in registers and its per-iteration constants fold
 // (the denoiser's 5x5 taps: on the GPU, a loop not unrolled kept its table of depth scales in
 // local memory).
+// PT_NO_UNROLL keeps a loop rolled on the GPU, where unrolling would keep every iteration's
+// values live at once (the compressed walk's two halves of a node).
 #if defined(__CUDA_ARCH__)
 #define PT_UNROLL _Pragma("unroll")
+#define PT_NO_UNROLL _Pragma("unroll 1")
 #elif defined(__CUDACC__)
 #define PT_UNROLL  // the host side of a .cu file: nvcc's front end knows neither pragma there
+#define PT_NO_UNROLL
 #else
 #define PT_UNROLL _Pragma("GCC unroll 8")
+#define PT_NO_UNROLL
 #endif

@@ -9,7 +9,19 @@ namespace {
 
 constexpr uint32_t kBlock = 128;
 
-template <bool kAnyHit>
+// The traversal code a scene needs (feature_set.h), as the path kernels' variants choose theirs
+// (kernel_variants.h): a scene of one instance walks its BLAS without a TLAS, and only the
+// "BVH off" toggle needs the brute-force loop. A kernel's registers are those of its heaviest
+// path, and the TLAS walk keeps its own state live under every BLAS walk: the generic kernel
+// took 117 registers (closest hit) where the one-instance kernel takes 72 (ptxas, sm_90), so
+// timing a one-instance scene with it measured the TLAS, not the walk.
+namespace traversal_features {
+using namespace feature;
+constexpr FeatureSet kSingleInstance = kAllFeatures & ~(kMultipleInstances | kBruteForce);
+constexpr FeatureSet kInstanced = kAllFeatures & ~kBruteForce;
+}  // namespace traversal_features
+
+template <FeatureSet kF, bool kAnyHit>
 __global__ void traceRaysKernel(RenderScene scene, const Ray* rays, uint32_t count, Hit* hits) {
     const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i >= count) return;
@@ -17,11 +29,23 @@ __global__ void traceRaysKernel(RenderScene scene, const Ray* rays, uint32_t cou
     Hit hit;
     if (kAnyHit) {
         hit = Hit{};
-        hit.instance = intersectAny(scene, ray) ? 0u : Hit::kNoHit;
+        hit.instance = intersectAny<kF>(scene, ray) ? 0u : Hit::kNoHit;
     } else {
-        intersectClosest(scene, ray, hit);
+        intersectClosest<kF>(scene, ray, hit);
     }
     hits[i] = hit;
+}
+
+template <FeatureSet kF>
+void launchWith(const RenderScene& scene, const Ray* rays, uint32_t count, bool anyHit, Hit* hits,
+                cudaStream_t stream) {
+    const uint32_t blocks = (count + kBlock - 1) / kBlock;
+    if (anyHit) {
+        traceRaysKernel<kF, true><<<blocks, kBlock, 0, stream>>>(scene, rays, count, hits);
+    } else {
+        traceRaysKernel<kF, false><<<blocks, kBlock, 0, stream>>>(scene, rays, count, hits);
+    }
+    PT_CUDA_CHECK_LAUNCH("traceRaysKernel");
 }
 
 }  // namespace
@@ -29,13 +53,13 @@ __global__ void traceRaysKernel(RenderScene scene, const Ray* rays, uint32_t cou
 void launchTraceRays(const RenderScene& scene, const Ray* rays, uint32_t count, bool anyHit, Hit* hits,
                      cudaStream_t stream) {
     if (count == 0) return;
-    const uint32_t blocks = (count + kBlock - 1) / kBlock;
-    if (anyHit) {
-        traceRaysKernel<true><<<blocks, kBlock, 0, stream>>>(scene, rays, count, hits);
+    if (scene.bruteForce) {
+        launchWith<kAllFeatures>(scene, rays, count, anyHit, hits, stream);
+    } else if (scene.instances.count > 1) {
+        launchWith<traversal_features::kInstanced>(scene, rays, count, anyHit, hits, stream);
     } else {
-        traceRaysKernel<false><<<blocks, kBlock, 0, stream>>>(scene, rays, count, hits);
+        launchWith<traversal_features::kSingleInstance>(scene, rays, count, anyHit, hits, stream);
     }
-    PT_CUDA_CHECK_LAUNCH("traceRaysKernel");
 }
 
 }  // namespace pt::cuda
