@@ -44,8 +44,8 @@ struct IntegratorToggles {
     bool firstHitCache = true;     // reuse camera-ray hits across passes where the camera allows
     // The GPU walks compressed 8-wide BLASes (render/bvh/compressed_wide_bvh.h; Ylitie et al.
     // 2017). Off by default: on an H200 at 1080p it traces a 1M-triangle sphere's shadow rays
-    // 6.2x as fast as the binary walk but its camera and diffuse rays at 0.85x and 0.88x, and
-    // the megakernel's path tracing there at 0.79x (issue 21).
+    // 1.15x as fast as the binary walk but its camera and diffuse rays at 0.69x and 0.72x, and
+    // the megakernel's path tracing there at 0.82x (480.8 against 589.6 spp/s; issue 21).
     bool gpuWideBvh = false;
     // A refitted BLAS is rebuilt once its SAH cost exceeds this times its cost when last built.
     float rebuildSahRatio = 1.25f;

@@ -138,22 +138,25 @@ void buildBlases(CompiledScene& out, const ProgressFn& progress) {
                           });
         bvhs[i] = buildBinnedSahBvh(bounds.data(), blas.primitiveCount, options);
     });
-    size_t nodes = 0, primIndices = 0;
-    for (const Bvh& bvh : bvhs) nodes += bvh.nodes.size(), primIndices += bvh.primIndices.size();
+    // A lone BVH becomes the lists, moved (a 10M-triangle mesh's nodes are 320 MiB, which a copy
+    // writes into fresh pages); several are copied into lists reserved once.
+    const bool lone = meshCount == 1;
+    if (!lone) {
+        size_t nodes = 0, primIndices = 0;
+        for (const Bvh& bvh : bvhs) nodes += bvh.nodes.size(), primIndices += bvh.primIndices.size();
+        out.blasNodes.reserve(nodes);
+        out.blasPrimIndices.reserve(primIndices);
+    }
     for (size_t i = 0; i < meshCount; ++i) {
         BlasRef& blas = out.blases[i];
         blas.nodeOffset = uint32_t(out.blasNodes.size());
         blas.nodeCount = uint32_t(bvhs[i].nodes.size());
         blas.primIndexOffset = uint32_t(out.blasPrimIndices.size());
-        // One BVH is the whole list, moved; several are copied into a list reserved once. (A
-        // 10M-triangle mesh's nodes are 320 MiB, which a copy writes into fresh pages.)
-        if (out.blasNodes.empty() && bvhs[i].nodes.size() == nodes) {
+        if (lone) {
             out.blasNodes = std::move(bvhs[i].nodes);
             out.blasPrimIndices = std::move(bvhs[i].primIndices);
             continue;
         }
-        out.blasNodes.reserve(nodes);
-        out.blasPrimIndices.reserve(primIndices);
         out.blasNodes.insert(out.blasNodes.end(), bvhs[i].nodes.begin(), bvhs[i].nodes.end());
         out.blasPrimIndices.insert(out.blasPrimIndices.end(), bvhs[i].primIndices.begin(),
                                    bvhs[i].primIndices.end());
