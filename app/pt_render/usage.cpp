@@ -89,6 +89,9 @@ constexpr const char* kToggleText =
   --megakernel | --wavefront, --regeneration (megakernel: a thread whose path ends starts the
   next at once), --no-compaction, --sort-materials | --no-sort-materials,
   --no-first-hit-cache, --rebuild-ratio R (refit until SAH cost exceeds R x the built one)
+  --gpu-wide-bvh (the GPU walks compressed 8-wide BLASes), --no-gpu-first-build (the GPU's
+  first frame waits for the host's SAH trees of large meshes, instead of walking LBVHs built
+  on the GPU while those build behind it)
 )";
 
 constexpr const char* kDisplayText =

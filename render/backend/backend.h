@@ -94,6 +94,11 @@ public:
                             const ProgressFn& progress = {}) = 0;
     virtual void setToggles(const IntegratorToggles& toggles) = 0;  // takes effect at next sync
     virtual void render(uint32_t passes) = 0;                       // adds `passes` samples per pixel
+    // Waits for work the last sync left running behind the first frame (the CUDA backend's host
+    // SAH builds of large meshes, IntegratorToggles::gpuFirstBuild) and puts it to use; returns
+    // the seconds that took, or nothing where no work was left. Nothing needs it: render() takes
+    // up finished work by itself.
+    virtual std::optional<double> finishBackgroundWork() { return std::nullopt; }
     // A flag another thread raises to stop a render() under way (the editor: an edit that
     // restarts the accumulation has arrived, so the samples in flight are wasted). While it is
     // up, render() stops before its next sample (CPU) or wave (GPU), resets the accumulation (a

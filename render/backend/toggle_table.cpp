@@ -33,6 +33,8 @@ const std::vector<ToggleRow>& toggleTable() {
          "--no-sort-materials", &T::materialSort, false, S::GpuScheduling},
         {ToggleId::GpuWideBvh, "gpu_wide_bvh", "Compressed 8-wide BVH (GPU traversal)",
          "compressed 8-wide BVH", "--gpu-wide-bvh", "", &T::gpuWideBvh, false, S::GpuScheduling},
+        {ToggleId::GpuFirstBuild, "gpu_first_build", "First frame from a GPU-built BVH (SAH behind it)",
+         "GPU first build", "", "--no-gpu-first-build", &T::gpuFirstBuild, false, S::GpuScheduling},
         {ToggleId::FirstHitCache, "first_hit_cache", "First-hit cache", "first-hit cache", "",
          "--no-first-hit-cache", &T::firstHitCache, false, S::GpuScheduling},
     };

@@ -47,6 +47,11 @@ struct IntegratorToggles {
     // 1.15x as fast as the binary walk but its camera and diffuse rays at 0.69x and 0.72x, and
     // the megakernel's path tracing there at 0.82x (480.8 against 589.6 spp/s; issue 21).
     bool gpuWideBvh = false;
+    // The GPU backend's first frame after a full build walks LBVHs built on the GPU for meshes
+    // of kGpuFirstBuildMinPrimitives or more, while the host builds their binned SAH trees on a
+    // thread behind it and swaps each in when done (the same hits, so the accumulation goes
+    // on). Not with gpuWideBvh, whose compressed nodes come from the host's SAH tree.
+    bool gpuFirstBuild = true;
     // A refitted BLAS is rebuilt once its SAH cost exceeds this times its cost when last built.
     float rebuildSahRatio = 1.25f;
 };
@@ -67,6 +72,7 @@ enum class ToggleId {
     MaterialSort,
     FirstHitCache,
     GpuWideBvh,
+    GpuFirstBuild,
 };
 
 // Who can apply a toggle: every backend, or a GPU backend's scheduler only (the CPU runs one

@@ -2,10 +2,12 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <atomic>
 #include <mutex>
+#include <numeric>
 #include <stdexcept>
 
 #include "render/bvh/binned_sah_builder.h"
@@ -74,6 +76,31 @@ void appendTriangles(const Mesh& mesh, size_t index, CompiledScene& out) {
     appendSlots(mesh, index, out.triangleSlots);
 }
 
+// What a deferred BLAS holds until its caller builds it (DeferredBlas): one leaf over all
+// `count` primitives, whose box is their union, and the identity index list.
+Bvh singleLeafStandIn(const std::vector<Aabb>& primBounds) {
+    using Range = tbb::blocked_range<size_t>;
+    const Aabb box = tbb::parallel_reduce(
+        Range(0, primBounds.size(), 1u << 14), Aabb{},
+        [&](const Range& r, Aabb acc) {
+            for (size_t p = r.begin(); p != r.end(); ++p) acc.grow(primBounds[p]);
+            return acc;
+        },
+        [](Aabb a, const Aabb& b) {
+            a.grow(b);
+            return a;
+        });
+    Bvh bvh;
+    bvh.nodes.resize(1);
+    bvh.nodes[0].lo = box.lo;
+    bvh.nodes[0].hi = box.hi;
+    bvh.nodes[0].leftOrFirst = 0;
+    bvh.nodes[0].count = uint32_t(primBounds.size());
+    bvh.primIndices.resize(primBounds.size());
+    std::iota(bvh.primIndices.begin(), bvh.primIndices.end(), 0u);
+    return bvh;
+}
+
 }  // namespace
 
 Aabb primitiveBounds(const CompiledScene& out, const BlasRef& blas, uint32_t p) {
@@ -109,7 +136,7 @@ void flattenGeometry(const Scene& scene, CompiledScene& out) {
     out.stats.blasCount = uint32_t(out.blases.size());
 }
 
-void buildBlases(CompiledScene& out, const ProgressFn& progress) {
+void buildBlases(CompiledScene& out, const ProgressFn& progress, uint32_t deferFrom) {
     const size_t meshCount = out.blases.size();  // the meshes', then the merged BLAS
     std::vector<Bvh> bvhs(meshCount);
     // Leaves are made on every builder thread; reports go out at most every 1% of the
@@ -126,6 +153,10 @@ void buildBlases(CompiledScene& out, const ProgressFn& progress) {
         if (lock) progress("build BVH", double(before + count) / double(total));
     };
     reportProgress(progress, "build BVH", 0.0);
+    // The merged BLAS (always last where there is one) is never deferred: it is rewritten by
+    // every compileInstances, on the host.
+    const size_t deferrable = out.merged.active() ? meshCount - 1 : meshCount;
+    std::vector<std::vector<Aabb>> deferredBounds(meshCount);
     // Large meshes parallelise inside the builder; many small meshes parallelise here.
     tbb::parallel_for(size_t(0), meshCount, [&](size_t i) {
         const BlasRef& blas = out.blases[i];
@@ -136,8 +167,18 @@ void buildBlases(CompiledScene& out, const ProgressFn& progress) {
                               for (uint32_t p = r.begin(); p != r.end(); ++p)
                                   bounds[p] = primitiveBounds(out, blas, p);
                           });
+        if (deferFrom > 0 && i < deferrable && blas.primitiveCount >= deferFrom) {
+            bvhs[i] = singleLeafStandIn(bounds);
+            deferredBounds[i] = std::move(bounds);
+            return;
+        }
         bvhs[i] = buildBinnedSahBvh(bounds.data(), blas.primitiveCount, options);
     });
+    out.deferredBlases.clear();
+    for (size_t i = 0; i < meshCount; ++i) {
+        if (!deferredBounds[i].empty())
+            out.deferredBlases.push_back({uint32_t(i), std::move(deferredBounds[i])});
+    }
     // A lone BVH becomes the lists, moved (a 10M-triangle mesh's nodes are 320 MiB, which a copy
     // writes into fresh pages); several are copied into lists reserved once.
     const bool lone = meshCount == 1;

@@ -11,8 +11,9 @@ namespace pt {
 void flattenGeometry(const Scene& scene, CompiledScene& out);
 
 // Builds the BLASes (binned SAH, meshes in parallel) and fills the BlasRef BVH fields: one
-// per mesh, and the merged BLAS (merged_geometry.h) where there is one.
-void buildBlases(CompiledScene& out, const ProgressFn& progress);
+// per mesh, and the merged BLAS (merged_geometry.h) where there is one. Meshes of at least
+// `deferFrom` primitives (0: none) get a stand-in and a CompiledScene::deferredBlases entry.
+void buildBlases(CompiledScene& out, const ProgressFn& progress, uint32_t deferFrom = 0);
 
 // The box of primitive p of `blas` as `out` holds it now (what builds and refits start from).
 Aabb primitiveBounds(const CompiledScene& out, const BlasRef& blas, uint32_t p);

@@ -222,7 +222,7 @@ CompiledScene compileRenderScene(const Scene& scene, const CompileOptions& optio
     out.bruteForce = options.bruteForce;
 
     start = Clock::now();
-    buildBlases(out, progress);
+    buildBlases(out, progress, options.bruteForce ? 0u : options.deferBlasesFrom);
     if (options.wideBvh && !options.bruteForce) buildWideBlases(out);
     if (options.compressedWideBvh && !options.bruteForce) buildCompressedBlases(out);
     out.stats.blasSeconds = secondsSince(start);

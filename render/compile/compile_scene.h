@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "render/bvh/aabb.h"
 #include "render/compile/merged_geometry.h"
 #include "render/kernel/render_scene.h"
 #include "render/lights/emitter_table.h"
@@ -21,6 +22,19 @@ struct CompileOptions {
     bool wideBvh = false;                // the CPU's 4-wide BLASes too (wide_blases.h)
     bool compressedWideBvh = false;      // the GPU's compressed 8-wide BLASes too (wide_blases.h)
     uint64_t bruteForceBudget = 100000;  // triangles x instances above which bruteForce is refused
+    // Meshes of at least this many primitives get a stand-in BLAS (one leaf over them all) and
+    // their primitives' boxes in CompiledScene::deferredBlases, for the caller to build the
+    // tree elsewhere (the CUDA backend: an LBVH on the GPU now, the SAH tree on a thread
+    // behind it). 0: every BLAS is built here.
+    uint32_t deferBlasesFrom = 0;
+};
+
+// A mesh BLAS whose tree compileRenderScene left to its caller (CompileOptions::deferBlasesFrom):
+// its nodes are one leaf over all its primitives (exact, as brute force is), whose box is the
+// tree's root box, and its primitive index list is 0 .. n - 1.
+struct DeferredBlas {
+    uint32_t blas;
+    std::vector<Aabb> primBounds;  // primitive p's box, as a build takes them
 };
 
 struct CompileStats {
@@ -64,7 +78,8 @@ struct CompiledScene {
     RenderCamera camera{};
     IntegratorSettings settings{};
     bool bruteForce = false;
-    FeatureSet features = 0;  // sceneFeatures() as of the last compile or edit
+    std::vector<DeferredBlas> deferredBlases;  // empty unless CompileOptions::deferBlasesFrom
+    FeatureSet features = 0;                   // sceneFeatures() as of the last compile or edit
     CompileStats stats;
 
     // The view stays valid while this object lives and its vectors are not resized.

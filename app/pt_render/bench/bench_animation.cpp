@@ -4,6 +4,7 @@
 #include <map>
 #include <memory>
 
+#include "pt_render/bench/bench_sync.h"
 #include "render/util/stopwatch.h"
 
 namespace pt::cli {
@@ -84,7 +85,7 @@ void benchAnimation(const std::string& backendName, Scene scene, const BenchSett
     std::map<SkinningSite, double> updateMedian;
     for (const SkinningSite site : sites) {
         skinPendingOnHost(scene);
-        backend->sync(scene, SceneChanges::All, {});
+        syncSettled(*backend, scene, SceneChanges::All);
         const FrameFigures figures = timeFrames(*backend, scene, chosen, site, frames);
         updateMedian[site] = median(figures.update);
         report.add({"animation", "frame update (pose + sync)", siteName(site), 1e3 * updateMedian[site], "ms",

@@ -96,6 +96,7 @@ void benchEdits(const std::string& backendName, Scene scene, const BenchSettings
     session.adopt(std::move(scene));
     session.execute(editor::setToggles(session.document(), settings.toggles));
     session.sync();
+    session.backend().finishBackgroundWork();  // edits on the trees the editor settles on
     session.render(1);
     std::vector<float> frame;
     // Device memory standing in for the editor's OpenGL pixel buffer (mapped through CUDA-GL

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 
+#include "pt_render/bench/bench_sync.h"
 #include "render/backend/toggle_states.h"
 #include "render/bvh/hit.h"
 #include "render/integrator/path_state.h"
@@ -83,7 +84,7 @@ void benchPathTracing(Backend& backend, const Scene& scene, const BenchSettings&
     for (const Variant& v : variantsOf(backend, settings.toggles)) {
         backend.setToggles(v.toggles);
         try {
-            backend.sync(scene, SceneChanges::Settings, {});
+            syncSettled(backend, scene, SceneChanges::Settings);
         } catch (const std::invalid_argument& e) {
             report.add({"path tracing", "samples per pixel per second", v.name, 0.0, "spp/s", e.what()});
             continue;
@@ -120,7 +121,7 @@ void benchPathTracing(Backend& backend, const Scene& scene, const BenchSettings&
         report.add({"path tracing", "rays", v.name, median(rayRates), "Mrays/s", ""});
     }
     backend.setToggles(settings.toggles);
-    backend.sync(scene, SceneChanges::Settings, {});
+    syncSettled(backend, scene, SceneChanges::Settings);
 }
 
 void benchWavefrontOverhead(Backend& backend, Scene scene, const BenchSettings& settings,
@@ -138,7 +139,7 @@ void benchWavefrontOverhead(Backend& backend, Scene scene, const BenchSettings& 
     toggles.autoSchedule = false;
     toggles.megakernel = false;
     backend.setToggles(toggles);
-    backend.sync(scene, SceneChanges::All, {});
+    syncSettled(backend, scene, SceneChanges::All);
     backend.render(1);  // warm-up
     std::vector<double> perBounce;
     for (uint32_t r = 0; r < 4 * settings.runs; ++r) {
@@ -156,7 +157,7 @@ void benchWavefrontOverhead(Backend& backend, Scene scene, const BenchSettings& 
 void benchDenoise(Backend& backend, const Scene& scene, const BenchSettings& settings, BenchReport& report) {
     backend.setToggles(settings.toggles);
     backend.setAovs(kDenoiseGuideAovs);  // from the reset this sync makes
-    backend.sync(scene, SceneChanges::Settings, {});
+    syncSettled(backend, scene, SceneChanges::Settings);
     backend.render(settings.spp);
     std::vector<float> denoised;
     backend.readDenoised(denoised);  // warm-up: working memory allocated
@@ -168,7 +169,7 @@ void benchDenoise(Backend& backend, const Scene& scene, const BenchSettings& set
         {"denoise", "a-trous filter (SVGF spatial), 5 passes", size, median(seconds) * 1e3, "ms",
          backend.capabilities().gpuScheduling ? "GPU kernels, without the copy to the host" : "CPU threads"});
     backend.setAovs(0);
-    backend.sync(scene, SceneChanges::Settings, {});
+    syncSettled(backend, scene, SceneChanges::Settings);
 }
 
 void benchImageCheck(Backend& backend, Scene scene, const BenchSettings& settings, BenchReport& report) {
@@ -180,7 +181,7 @@ void benchImageCheck(Backend& backend, Scene scene, const BenchSettings& setting
     constexpr uint32_t kSpp = 16;
     std::vector<float> gpu, cpu;
     backend.setToggles(settings.toggles);
-    backend.sync(scene, SceneChanges::All, {});
+    syncSettled(backend, scene, SceneChanges::All);
     backend.render(kSpp);
     backend.readBeauty(gpu);
     std::unique_ptr<Backend> reference = createBackend("cpu");

@@ -58,6 +58,11 @@ std::pair<uint32_t, uint32_t> copyChangedRange(T* stored, const T* incoming, uin
     return {first, end - first};
 }
 
+// Meshes of at least this many primitives get their first frame's tree from the GPU
+// (IntegratorToggles::gpuFirstBuild). Below it the host's build is quick anyway: 262,144
+// triangles are about 40 ms of binned SAH on the H200 host's 16 cores (6.6 Mtris/s at 10M).
+constexpr uint32_t kGpuFirstBuildMinPrimitives = 1u << 18;
+
 }  // namespace
 
 CudaBackend::CudaBackend() {
@@ -169,10 +174,20 @@ void CudaBackend::fullBuild(const Scene& scene, const ProgressFn& progress, Sync
     options.bruteForce = toggles_.bruteForce;
     options.mergeSmallInstances = toggles_.mergeInstances;
     options.compressedWideBvh = toggles_.gpuWideBvh;
+    options.deferBlasesFrom = firstBuildOnGpu() ? kGpuFirstBuildMinPrimitives : 0u;
     auto compiled = std::make_unique<CompiledScene>(compileRenderScene(scene, options, progress));
     report.steps.push_back(
         {"compile scene (host)", compiled->stats.flattenSeconds + compiled->stats.lightSeconds});
-    report.steps.push_back({"build BLAS (host, binned SAH)", compiled->stats.blasSeconds});
+    report.steps.push_back({compiled->deferredBlases.empty()
+                                ? "build BLAS (host, binned SAH)"
+                                : "build BLAS (host, binned SAH; large meshes deferred)",
+                            compiled->stats.blasSeconds});
+    retireSahTrees();
+    // The deferred meshes' SAH trees start building now, beside the upload and the GPU builds.
+    for (DeferredBlas& deferred : compiled->deferredBlases) {
+        pendingSahTrees_.push_back(
+            {deferred.blas, std::make_unique<BackgroundBvhBuild>(std::move(deferred.primBounds))});
+    }
     pinnedVertices_.clear();
     compiled_ = std::move(compiled);
     pinnedVertices_.emplace_back(compiled_->positions.data(), compiled_->positions.size() * sizeof(Vec3));
@@ -188,6 +203,7 @@ void CudaBackend::fullBuild(const Scene& scene, const ProgressFn& progress, Sync
     timedStep(stream_, report, "upload", [&] { device_.uploadAll(*compiled_, stream_); });
     // Measured when a BLAS is first refitted, not here: most meshes never are.
     builtSah_.assign(device_.blasCount(), kSahUnknown);
+    buildDeferredBlasesOnDevice(report);
     skins_.clear();
     skinnedOnDevice_.assign(scene.meshes.size(), false);
     // The compile read the host's vertices of meshes whose pose the device is to skin (an
@@ -298,18 +314,11 @@ bool CudaBackend::refitBlas(uint32_t i, SyncReport& report) {
         refitBvh(device_.blasNodes(i), device_.blas(i).nodeCount, device_.blasParents(i),
                  device_.blasPrimIndices(i), primBoxes_.data(), refitVisits_.data(), stream_);
     });
+    retireSahTree(i);  // a tree of the old positions would need this refit again
     bool rebuilt = false;
     const float cost = blasSahCost(i);
     if (cost > toggles_.rebuildSahRatio * builtSah_[i]) {
-        timedStep(stream_, report, "rebuild BLAS (GPU LBVH)", [&] {
-            device_.reserveLbvhNodes(i, stream_);  // room for 2n - 1 nodes, on a first rebuild
-            const uint32_t nodes = lbvhNodeCount(primitives);
-            lbvh_.build(primBoxes_.data(), primitives, device_.blasNodes(i), device_.blasPrimIndices(i),
-                        stream_);
-            device_.setBlasNodeCount(i, nodes, stream_);
-            computeParents(device_.blasNodes(i), nodes, device_.blasParents(i), stream_);
-            device_.dropCompressed(i, stream_);  // the kernels walk the new tree's binary nodes
-        });
+        timedStep(stream_, report, "rebuild BLAS (GPU LBVH)", [&] { rebuildBlasOnDevice(i); });
         builtSah_[i] = blasSahCost(i);
         rebuilt = true;
     } else if (device_.hasCompressedForm(i)) {
@@ -322,6 +331,84 @@ bool CudaBackend::refitBlas(uint32_t i, SyncReport& report) {
     PT_CUDA_CHECK(cudaMemcpyAsync(compiled_->blasNodes.data() + compiled_->blases[i].nodeOffset,
                                   device_.blasNodes(i), sizeof(BvhNode), cudaMemcpyDeviceToHost, stream_));
     return rebuilt;
+}
+
+void CudaBackend::rebuildBlasOnDevice(uint32_t i) {
+    device_.reserveLbvhNodes(i, stream_);  // room for 2n - 1 nodes, on a first rebuild
+    const uint32_t primitives = device_.blas(i).primitiveCount;
+    lbvh_.build(primBoxes_.data(), primitives, device_.blasNodes(i), device_.blasPrimIndices(i), stream_);
+    device_.setBlasNodeCount(i, lbvhNodeCount(primitives), stream_);
+    device_.dropCompressed(i, stream_);  // the kernels walk the new tree's binary nodes
+}
+
+bool CudaBackend::firstBuildOnGpu(std::string* why) const {
+    const char* reason = !toggles_.gpuFirstBuild ? "off"
+                         : toggles_.bruteForce   ? "the BVH is off"
+                         : toggles_.gpuWideBvh
+                             ? "not with gpu_wide_bvh: its nodes come from the host's SAH tree"
+                             : nullptr;
+    if (reason && why) *why = reason;
+    return reason == nullptr;
+}
+
+void CudaBackend::buildDeferredBlasesOnDevice(SyncReport& report) {
+    if (compiled_->deferredBlases.empty()) return;
+    timedStep(stream_, report, "build BLAS (GPU LBVH; SAH on the host behind it)", [&] {
+        for (const DeferredBlas& deferred : compiled_->deferredBlases) {
+            primBoxes_.resize(device_.blas(deferred.blas).primitiveCount);
+            computePrimitiveBoxes(device_.view(*compiled_), device_.blas(deferred.blas), primBoxes_.data(),
+                                  stream_);
+            rebuildBlasOnDevice(deferred.blas);
+        }
+    });
+    compiled_->deferredBlases.clear();  // their boxes went to the SAH builds
+}
+
+void CudaBackend::landSahTrees(bool wait) {
+    staleSahTrees_.erase(
+        std::remove_if(staleSahTrees_.begin(), staleSahTrees_.end(),
+                       [&](const std::unique_ptr<BackgroundBvhBuild>& b) { return wait || b->ready(); }),
+        staleSahTrees_.end());
+    bool landed = false, landedAll = false;
+    for (auto it = pendingSahTrees_.begin(); it != pendingSahTrees_.end();) {
+        if (!wait && !it->build->ready()) {
+            ++it;
+            continue;
+        }
+        const Bvh tree = it->build->take();
+        device_.uploadBlasTree(it->blas, tree.nodes, tree.primIndices, stream_);
+        builtSah_[it->blas] = kSahUnknown;  // measured again at its first refit
+        landed = true;
+        it = pendingSahTrees_.erase(it);
+        if (pendingSahTrees_.empty()) landedAll = true;
+    }
+    PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
+    if (landed) updateView();  // fitting a region to its tree moved the BLAS nodes
+    if (landedAll) {           // the first frame's build memory back (a later GPU rebuild allocates it again)
+        lbvh_.release();
+        primBoxes_ = {};
+    }
+}
+
+std::optional<double> CudaBackend::finishBackgroundWork() {
+    if (pendingSahTrees_.empty() && staleSahTrees_.empty()) return std::nullopt;
+    const auto start = Clock::now();
+    landSahTrees(true);
+    return secondsSince(start);
+}
+
+void CudaBackend::retireSahTree(uint32_t blas) {
+    for (auto it = pendingSahTrees_.begin(); it != pendingSahTrees_.end(); ++it) {
+        if (it->blas != blas) continue;
+        staleSahTrees_.push_back(std::move(it->build));
+        pendingSahTrees_.erase(it);
+        return;
+    }
+}
+
+void CudaBackend::retireSahTrees() {
+    for (PendingSahTree& pending : pendingSahTrees_) staleSahTrees_.push_back(std::move(pending.build));
+    pendingSahTrees_.clear();
 }
 
 SyncAction CudaBackend::refitMergedBlas(SyncReport& report) {
@@ -373,6 +460,7 @@ void CudaBackend::setToggles(const IntegratorToggles& toggles) {
                             toggles.gpuWideBvh != toggles_.gpuWideBvh;
     toggles_ = toggles;
     if (bvhChanged) {  // the next sync recompiles (and checks the budget)
+        retireSahTrees();
         pinnedVertices_.clear();
         compiled_.reset();
     }
@@ -460,6 +548,7 @@ uint64_t CudaBackend::scheduleKey(uint32_t samplesPerWave) const {
 // waits for one wave, not the call's; and the auto schedule's trial times each wave it runs.
 void CudaBackend::render(uint32_t passes) {
     if (!compiled_ || passes == 0) return;
+    if (!pendingSahTrees_.empty() || !staleSahTrees_.empty()) landSahTrees(false);
     const auto start = Clock::now();
     const AovBuffers aovs = aovBuffersIn(aovSums_.data(), aovs_, size_t(width_) * height_);
     const uint32_t wave = scheduler_.samplesPerWave(width_ * height_, passes);
@@ -603,6 +692,8 @@ std::vector<ToggleState> CudaBackend::toggleStates() const {
         } else if (s.id == ToggleId::PathRegeneration && !runsMegakernel()) {
             s.active = false;
             s.note = "megakernel only; the wavefront is on";
+        } else if (s.id == ToggleId::GpuFirstBuild) {
+            s.active = firstBuildOnGpu(&s.note);
         } else if (s.id == ToggleId::WideBvh) {
             s.active = false;
             s.note = "CPU only: the GPU's wide BVH is gpu_wide_bvh";

@@ -21,6 +21,7 @@
 #include "render/backend/cuda/pinned_range.h"
 #include "render/backend/schedule_chooser.h"
 #include "render/backend/sync_steps.h"
+#include "render/bvh/background_bvh_build.h"
 #include "render/compile/compile_scene.h"
 
 namespace pt::cuda {
@@ -36,6 +37,8 @@ public:
     SyncReport sync(const Scene& scene, const SceneDelta& changes, const ProgressFn& progress) override;
     void setToggles(const IntegratorToggles& toggles) override;
     void render(uint32_t passes) override;
+    // Waits for the SAH trees building behind the first frame and swaps them in.
+    std::optional<double> finishBackgroundWork() override;
     void resetAccumulation() override;
     uint32_t width() const override { return width_; }
     uint32_t height() const override { return height_; }
@@ -100,6 +103,19 @@ private:
     // refits it; returns Refit or Rebuild.
     SyncAction refitMergedBlas(SyncReport& report);
     void buildTlasOnDevice(SyncReport& report);
+    // An LBVH of BLAS i over primBoxes_ (its primitives' boxes), in place of its tree.
+    void rebuildBlasOnDevice(uint32_t i);
+    // The first frame's trees of the meshes the compile deferred (IntegratorToggles::
+    // gpuFirstBuild): an LBVH each, built on the GPU, while their SAH trees build on the host.
+    void buildDeferredBlasesOnDevice(SyncReport& report);
+    bool firstBuildOnGpu(std::string* why = nullptr) const;
+    // Swaps in the SAH trees that are built (all of them, waiting for them, where `wait`); a
+    // swap keeps the accumulation, as every BVH of the same primitives gives the same hits.
+    void landSahTrees(bool wait);
+    // BLAS `blas` changed (a refit), or every BLAS did (a new compile): what is building for it
+    // would be stale, and is dropped once done (never waited for).
+    void retireSahTree(uint32_t blas);
+    void retireSahTrees();
     void updateView();
     ScheduleOptions scheduleOptions() const;
     // The schedule of the next pass: the toggle's, or under the auto schedule the chooser's.
@@ -130,6 +146,13 @@ private:
     DeviceBuffer<Hit> queryHits_;
     std::vector<float> builtSah_;             // per BLAS, after its last build; kSahUnknown until needed
     std::vector<uint32_t> meshVertexOffset_;  // per mesh: its first vertex in compiled_->positions
+    // The binned SAH trees building on the host behind the first frame, by BLAS.
+    struct PendingSahTree {
+        uint32_t blas;
+        std::unique_ptr<BackgroundBvhBuild> build;
+    };
+    std::vector<PendingSahTree> pendingSahTrees_;
+    std::vector<std::unique_ptr<BackgroundBvhBuild>> staleSahTrees_;
     DeviceSkins skins_;
     // Per mesh: its vertices on the device were skinned there (device_skins.h), so compiled_'s
     // copy of them lags: the next host edit of the mesh uploads all of them.

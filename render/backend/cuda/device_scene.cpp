@@ -1,6 +1,8 @@
 #include "render/backend/cuda/device_scene.h"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include "render/compile/wide_blases.h"
 
@@ -172,15 +174,19 @@ void DeviceScene::prepareRefit(uint32_t i, cudaStream_t stream) {
 
 void DeviceScene::reserveLbvhNodes(uint32_t i, cudaStream_t stream) {
     const uint32_t needed = lbvhNodeCount(hostBlases_[i].primitiveCount);
-    if (nodeCapacity_[i] >= needed) return;
-    // A new layout with BLAS i's region grown; every region moves to its new offset. Child
+    if (nodeCapacity_[i] < needed) resizeBlasRegion(i, needed, stream);
+}
+
+void DeviceScene::resizeBlasRegion(uint32_t i, uint32_t capacity, cudaStream_t stream) {
+    // A new layout with BLAS i's region resized; every region moves to its new offset. Child
     // indices and parent links are relative to their region, so they move as they are.
     std::vector<uint32_t> offsets(hostBlases_.size());
     uint32_t total = 0;
     for (size_t b = 0; b < hostBlases_.size(); ++b) {
         offsets[b] = total;
-        total += b == i ? needed : nodeCapacity_[b];
+        total += b == i ? capacity : nodeCapacity_[b];
     }
+    hostBlases_[i].nodeCount = std::min(hostBlases_[i].nodeCount, capacity);
     DeviceBuffer<BvhNode> nodes(total);
     DeviceBuffer<uint32_t> parents(blasParents_.size() != 0 ? total : 0);
     for (size_t b = 0; b < hostBlases_.size(); ++b) {
@@ -198,13 +204,34 @@ void DeviceScene::reserveLbvhNodes(uint32_t i, cudaStream_t stream) {
     blasNodes_ = std::move(nodes);
     blasParents_ = std::move(parents);
     for (size_t b = 0; b < hostBlases_.size(); ++b) hostBlases_[b].nodeOffset = offsets[b];
-    nodeCapacity_[i] = needed;
+    nodeCapacity_[i] = capacity;
     blases_.upload(hostBlases_, stream);
 }
 
 void DeviceScene::setBlasNodeCount(uint32_t i, uint32_t nodeCount, cudaStream_t stream) {
     hostBlases_[i].nodeCount = nodeCount;
     blases_.uploadAt(i, &hostBlases_[i], 1, stream);
+    parentsReady_[i] = false;
+}
+
+void DeviceScene::uploadBlasTree(uint32_t i, const std::vector<BvhNode>& nodes,
+                                 const std::vector<uint32_t>& primIndices, cudaStream_t stream) {
+    const BlasRef& b = hostBlases_[i];
+    if (primIndices.size() != b.primitiveCount) {
+        throw std::logic_error("BLAS " + std::to_string(i) + ": a tree of " + std::to_string(nodes.size()) +
+                               " nodes and " + std::to_string(primIndices.size()) +
+                               " primitives for a region of " + std::to_string(nodeCapacity_[i]) +
+                               " nodes and " + std::to_string(b.primitiveCount) + " primitives");
+    }
+    if (nodes.size() != nodeCapacity_[i]) {
+        // The region fitted to the tree (a GPU build reserved 2n - 1 nodes; a SAH tree of 4
+        // primitives a leaf holds about n), without copying what the tree replaces.
+        hostBlases_[i].nodeCount = 0;
+        resizeBlasRegion(i, uint32_t(nodes.size()), stream);
+    }
+    blasNodes_.uploadAt(b.nodeOffset, nodes.data(), nodes.size(), stream);
+    blasPrimIndices_.uploadAt(b.primIndexOffset, primIndices.data(), primIndices.size(), stream);
+    setBlasNodeCount(i, uint32_t(nodes.size()), stream);
 }
 
 void DeviceScene::buildTlas(LbvhBuilder& lbvh, DeviceBuffer<Aabb>& boxes, cudaStream_t stream) {

@@ -73,8 +73,13 @@ public:
     // Before the first GPU rebuild of BLAS i: gives its region room for lbvhNodeCount(its
     // primitives), moving the BLASes' nodes and parents into a larger buffer where it has none.
     void reserveLbvhNodes(uint32_t i, cudaStream_t stream);
-    // After a GPU rebuild wrote `nodeCount` nodes into BLAS i's region.
+    // After a GPU rebuild wrote `nodeCount` nodes into BLAS i's region: its parent links come
+    // with its next refit (prepareRefit).
     void setBlasNodeCount(uint32_t i, uint32_t nodeCount, cudaStream_t stream);
+    // A host-built tree of BLAS i's primitives in place of its GPU build, its region fitted to
+    // the tree.
+    void uploadBlasTree(uint32_t i, const std::vector<BvhNode>& nodes,
+                        const std::vector<uint32_t>& primIndices, cudaStream_t stream);
 
     // BLAS i's compressed 8-wide nodes (where the scene has them): requantised after a refit
     // of its binary nodes, or dropped after a GPU rebuild (its new topology has no compressed
@@ -98,6 +103,10 @@ public:
 
 private:
     void uploadCompressed(const CompiledScene& host, cudaStream_t stream);
+    // A new layout of the BLAS node regions (and parent links) with BLAS i's holding `capacity`
+    // nodes, of which it keeps its first nodeCount (at most `capacity`); the others move as
+    // they are.
+    void resizeBlasRegion(uint32_t i, uint32_t capacity, cudaStream_t stream);
 
     // One buffer per scene array (render/kernel/scene_arrays.h), named as the array with a
     // trailing underscore.

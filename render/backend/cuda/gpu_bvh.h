@@ -35,6 +35,9 @@ public:
     // obeys every rule of binned_sah_builder.h's Bvh except the leaf size (always 1) and
     // depth-first order; its depth is at most 62 < kBvhStackSize.
     void build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint32_t* primIndices, cudaStream_t stream);
+    // Frees the scratch (the next build allocates it again): once the trees it built for a first
+    // frame have been replaced, at 10M triangles it would hold about 400 MiB for nothing.
+    void release();
     // Device memory the scratch holds (it grows with the largest build so far).
     uint64_t bytes() const {
         return keys_.bytes() + sortedKeys_.bytes() + sortScratch_.bytes() + centroidBounds_.bytes() +

@@ -172,6 +172,18 @@ void LbvhBuilder::reserve(uint32_t count) {
     capacity_ = capacity;
 }
 
+void LbvhBuilder::release() {
+    keys_ = {};
+    sortedKeys_ = {};
+    sortScratch_ = {};
+    centroidBounds_ = {};
+    reduceScratch_ = {};
+    leafSlots_ = {};
+    internalSlots_ = {};
+    visits_ = {};
+    capacity_ = 0;
+}
+
 void LbvhBuilder::build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint32_t* primIndices,
                         cudaStream_t stream) {
     if (count <= 1) {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "backend_hit_checks.h"
 #include "cuda_test_support.h"
 #include "render/backend/cpu/cpu_backend.h"
 #include "render/backend/cuda/cuda_backend.h"
@@ -42,21 +43,8 @@ std::vector<Ray> downwardRays(uint32_t count, uint32_t seed) {
     return test::downwardRays(count, seed, {2.2f, 1.0f, 1.2f}, 0.3f);
 }
 
-// The same closest hit (instance and distance) for every ray; ties between coincident
-// triangles may pick either primitive.
 void expectSameHits(Backend& a, Backend& b, const char* what) {
-    const std::vector<Ray> rays = downwardRays(50000, 11);
-    std::vector<Hit> ha, hb;
-    a.traceRays(rays, false, 1, &ha);
-    b.traceRays(rays, false, 1, &hb);
-    ASSERT_EQ(ha.size(), hb.size());
-    size_t mismatches = 0, hits = 0;
-    for (size_t i = 0; i < ha.size(); ++i) {
-        hits += ha[i].valid();
-        mismatches += ha[i].instance != hb[i].instance || ha[i].t != hb[i].t;
-    }
-    EXPECT_EQ(mismatches, 0u) << what;
-    EXPECT_GT(hits, ha.size() / 4) << what << ": too few rays hit to test anything";
+    test::expectSameHits(a, b, downwardRays(50000, 11), what);
 }
 
 std::map<std::string, uint64_t> memoryByBuffer(const Backend& backend) {

@@ -1,0 +1,138 @@
+// The first frame of a large mesh from a BVH built on the GPU (IntegratorToggles::gpuFirstBuild):
+// the sync builds an LBVH on the device instead of waiting for the host's SAH tree, which
+// builds on a thread behind it and is swapped in when done. No hit and no pixel changes on the
+// way, and an edit before the swap drops the tree it would make stale. Skips without a device.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "cuda_test_support.h"
+#include "render/backend/cpu/cpu_backend.h"
+#include "render/backend/cuda/cuda_backend.h"
+#include "soup_scene.h"
+#include "support/scene_builder.h"
+
+namespace pt {
+namespace {
+
+constexpr const char* kGpuFirstBuildStep = "build BLAS (GPU LBVH; SAH on the host behind it)";
+
+// A soup over the GPU first build's threshold (1 << 18 primitives), drawn twice, and a small
+// one below it: one deferred BLAS under the TLAS beside one built on the host.
+Scene largeSoupScene() {
+    Scene scene = test::soupScene(300000, 3000);
+    scene.render = {48, 32, 1, 4, 0};
+    return scene;
+}
+
+bool hasStep(const SyncReport& report, const std::string& name) {
+    return std::any_of(report.steps.begin(), report.steps.end(),
+                       [&](const SyncStep& s) { return s.name == name; });
+}
+
+// One schedule for both backends: the auto schedule's trial would run different kernels.
+IntegratorToggles fixedSchedule(bool gpuFirstBuild) {
+    IntegratorToggles t;
+    t.autoSchedule = false;
+    t.gpuFirstBuild = gpuFirstBuild;
+    return t;
+}
+
+// A first build of `scene` whose edits will refit and never rebuild.
+void syncForRefits(cuda::CudaBackend& backend, const Scene& scene) {
+    IntegratorToggles neverRebuild = fixedSchedule(true);
+    neverRebuild.rebuildSahRatio = 1e9f;
+    backend.setToggles(neverRebuild);
+    backend.sync(scene, SceneChanges::All, {});
+}
+
+TEST(CudaFirstBuild, TheFirstFrameWalksAGpuBuildAndTheSahTreeLandsBehindIt) {
+    PT_REQUIRE_CUDA_DEVICE();
+    const Scene scene = largeSoupScene();
+    cuda::CudaBackend deferred, hostBuilt;
+    deferred.setToggles(fixedSchedule(true));
+    hostBuilt.setToggles(fixedSchedule(false));
+    EXPECT_TRUE(hasStep(deferred.sync(scene, SceneChanges::All, {}), kGpuFirstBuildStep));
+    EXPECT_FALSE(hasStep(hostBuilt.sync(scene, SceneChanges::All, {}), kGpuFirstBuildStep));
+    const float lbvhCost = deferred.blasSahCost(0), sahCost = hostBuilt.blasSahCost(0);
+    EXPECT_GT(lbvhCost, sahCost) << "the first frame's tree should be the GPU's LBVH";
+    EXPECT_EQ(deferred.blasSahCost(1), hostBuilt.blasSahCost(1))
+        << "a mesh under the threshold, built on the host";
+
+    EXPECT_GT(test::bufferBytes(deferred, "BVH scratch (LBVH builder)"), 1u << 20);
+    const std::vector<Ray> rays = test::soupRays(100000, 3);
+    test::expectSameHits(deferred, hostBuilt, rays, "GPU first build vs host SAH");
+    deferred.render(2);               // on the LBVH, or on the SAH tree where it was done
+    deferred.finishBackgroundWork();  // lands it where render() did not
+    EXPECT_EQ(deferred.blasSahCost(0), sahCost) << "the host's SAH tree should have landed";
+    EXPECT_FALSE(deferred.finishBackgroundWork().has_value()) << "work left after finishing it";
+    // The first build's scratch went with it (300,000 boxes are 7 MiB).
+    EXPECT_EQ(test::bufferBytes(deferred, "BVH scratch (LBVH builder)"), 0u);
+    EXPECT_EQ(test::bufferBytes(deferred, "BVH scratch (primitive boxes)"), 0u);
+    EXPECT_EQ(test::bufferBytes(deferred, "BLAS nodes"), test::bufferBytes(hostBuilt, "BLAS nodes"))
+        << "the region the GPU build reserved (2n - 1 nodes) should fit the SAH tree";
+    test::expectSameHits(deferred, hostBuilt, rays, "landed SAH tree vs host SAH");
+
+    // The swap kept the accumulation, and it is the image the host's tree renders.
+    deferred.render(2);
+    hostBuilt.render(4);
+    EXPECT_EQ(deferred.stats().samplesPerPixel, 4u);
+    std::vector<float> a, b;
+    deferred.readBeauty(a);
+    hostBuilt.readBeauty(b);
+    ASSERT_EQ(a.size(), b.size());
+    float worst = 0.0f;
+    for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::fabs(a[i] - b[i]));
+    EXPECT_LE(worst, 1e-6f) << "the image changed with the tree";
+}
+
+TEST(CudaFirstBuild, AnEditBeforeTheSwapDropsTheStaleTree) {
+    PT_REQUIRE_CUDA_DEVICE();
+    Scene scene = largeSoupScene();
+    cuda::CudaBackend edited;
+    syncForRefits(edited, scene);
+    for (Vec3& p : scene.meshes[0].positions) p = p * 1.3f + Vec3(0.0f, 0.4f, 0.0f);
+    EXPECT_EQ(edited.sync(scene, SceneChanges::Geometry, {}).action, "refit");
+    const float refitCost = edited.blasSahCost(0);
+    EXPECT_TRUE(edited.finishBackgroundWork().has_value()) << "the stale build should still be waited for";
+    EXPECT_EQ(edited.blasSahCost(0), refitCost) << "a tree of the old positions landed";
+    CpuBackend cpu;
+    cpu.sync(scene, SceneChanges::All, {});
+    test::expectSameHits(edited, cpu, test::soupRays(100000, 4), "refitted GPU first build vs CPU");
+}
+
+// After the swap the BLAS's region holds the SAH tree alone; a refit walks that tree's parents.
+TEST(CudaFirstBuild, ARefitAfterTheSwapRefitsTheSahTree) {
+    PT_REQUIRE_CUDA_DEVICE();
+    Scene scene = largeSoupScene();
+    cuda::CudaBackend edited;
+    syncForRefits(edited, scene);
+    edited.finishBackgroundWork();
+    for (Vec3& p : scene.meshes[0].positions) p = p * 0.8f + Vec3(0.2f, -0.3f, 0.1f);
+    EXPECT_EQ(edited.sync(scene, SceneChanges::Geometry, {}).action, "refit");
+    CpuBackend cpu;
+    cpu.sync(scene, SceneChanges::All, {});
+    test::expectSameHits(edited, cpu, test::soupRays(100000, 5), "refitted SAH tree after the swap vs CPU");
+}
+
+TEST(CudaFirstBuild, TheToggleSaysWhenItCannotApply) {
+    PT_REQUIRE_CUDA_DEVICE();
+    cuda::CudaBackend backend;
+    IntegratorToggles wide;
+    wide.gpuWideBvh = true;
+    backend.setToggles(wide);
+    const Scene scene = largeSoupScene();
+    const SyncReport report = backend.sync(scene, SceneChanges::All, {});
+    EXPECT_FALSE(hasStep(report, kGpuFirstBuildStep)) << "the compressed nodes need the host's tree first";
+    for (const ToggleState& s : backend.toggleStates()) {
+        if (s.id != ToggleId::GpuFirstBuild) continue;
+        EXPECT_FALSE(s.active);
+        EXPECT_NE(s.note.find("gpu_wide_bvh"), std::string::npos) << s.note;
+    }
+}
+
+}  // namespace
+}  // namespace pt

@@ -1,0 +1,118 @@
+// CompileOptions::deferBlasesFrom: a mesh at or over the threshold gets a stand-in BLAS (one
+// leaf over all its primitives: exact, as brute force is) and its primitives' boxes for the
+// caller's own build; smaller meshes and the merged BLAS are built as ever.
+#include <gtest/gtest.h>
+
+#include <thread>
+
+#include "render/bvh/background_bvh_build.h"
+#include "render/bvh/bvh_test_util.h"
+#include "render/compile/compile_geometry.h"
+#include "render/compile/compile_scene.h"
+
+namespace pt {
+namespace {
+
+using test::InstanceSpec;
+
+// A large soup drawn once, a small one drawn at two places (merged where small enough).
+CompiledScene compileTwoSoups(uint32_t deferFrom, const Mesh& large, const Mesh& small) {
+    CompileOptions options;
+    options.deferBlasesFrom = deferFrom;
+    return test::compileTestScene({large, small},
+                                  {{0, Affine3{}},
+                                   {1, translationTransform(Vec3(3.0f, 0.0f, 0.0f))},
+                                   {1, translationTransform(Vec3(-3.0f, 0.0f, 0.0f))}},
+                                  options);
+}
+
+TEST(DeferredBlas, ALargeMeshGetsAStandInAndItsBoxes) {
+    test::Rng rng(12);
+    const Mesh large = test::makeSoup(test::SoupKind::Uniform, 5000, rng);
+    const Mesh small = test::makeSoup(test::SoupKind::Clustered, 200, rng);
+    const CompiledScene built = compileTwoSoups(0, large, small);
+    const CompiledScene deferred = compileTwoSoups(1000, large, small);
+    EXPECT_TRUE(built.deferredBlases.empty());
+    ASSERT_EQ(deferred.deferredBlases.size(), 1u);
+    const DeferredBlas& d = deferred.deferredBlases[0];
+    EXPECT_EQ(d.blas, 0u);
+    ASSERT_EQ(d.primBounds.size(), 5000u);
+    for (uint32_t p = 0; p < 5000; p += 499) {
+        const Aabb expected = primitiveBounds(deferred, deferred.blases[0], p);
+        EXPECT_EQ(d.primBounds[p].lo, expected.lo);
+        EXPECT_EQ(d.primBounds[p].hi, expected.hi);
+    }
+    // The stand-in: one leaf over every primitive, in order, with the built tree's root box.
+    const BlasRef& standIn = deferred.blases[0];
+    ASSERT_EQ(standIn.nodeCount, 1u);
+    const BvhNode& leaf = deferred.blasNodes[standIn.nodeOffset];
+    const BvhNode& root = built.blasNodes[built.blases[0].nodeOffset];
+    EXPECT_EQ(leaf.count, 5000u);
+    EXPECT_EQ(leaf.leftOrFirst, 0u);
+    EXPECT_EQ(leaf.lo, root.lo);
+    EXPECT_EQ(leaf.hi, root.hi);
+    for (uint32_t p = 0; p < 5000; ++p) ASSERT_EQ(deferred.blasPrimIndices[standIn.primIndexOffset + p], p);
+    // The small mesh is built here, as without deferral.
+    EXPECT_EQ(deferred.blases[1].nodeCount, built.blases[1].nodeCount);
+    EXPECT_GT(deferred.blases[1].nodeCount, 1u);
+}
+
+TEST(DeferredBlas, TheStandInFindsTheBruteForceHits) {
+    test::Rng rng(13);
+    const Mesh large = test::makeSoup(test::SoupKind::Uniform, 3000, rng);
+    const Mesh small = test::makeSoup(test::SoupKind::Clustered, 300, rng);
+    const CompiledScene deferred = compileTwoSoups(1000, large, small);
+    const RenderScene view = deferred.view();
+    int failures = 0, hits = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Ray ray = i % 2 ? test::rayAtTriangle(rng, large, Vec3(-5.0f), Vec3(5.0f))
+                              : test::randomRay(rng, Vec3(-5.0f), Vec3(5.0f));
+        hits += test::expectBvhMatchesBruteForce(view, ray, failures);
+    }
+    EXPECT_GT(hits, 200) << "too few rays hit to test anything";
+}
+
+TEST(DeferredBlas, TheMergedBlasIsNeverDeferred) {
+    test::Rng rng(14);
+    const Mesh large = test::makeSoup(test::SoupKind::Uniform, 2000, rng);
+    const Mesh small = test::makeSoup(test::SoupKind::Clustered, 1500, rng);
+    const CompiledScene deferred = compileTwoSoups(1000, large, small);
+    ASSERT_TRUE(deferred.merged.active()) << "no merged BLAS to test";
+    ASSERT_GE(deferred.blases[deferred.merged.blas].primitiveCount, 1000u);
+    for (const DeferredBlas& d : deferred.deferredBlases) EXPECT_NE(d.blas, deferred.merged.blas);
+    EXPECT_GT(deferred.blases[deferred.merged.blas].nodeCount, 1u);
+}
+
+// The thread's tree is the builder's, node for node.
+TEST(BackgroundBvhBuild, BuildsTheBinnedSahTree) {
+    test::Rng rng(15);
+    const std::vector<Aabb> bounds =
+        test::triangleBounds(test::makeSoup(test::SoupKind::Clustered, 20000, rng));
+    const Bvh direct = buildBinnedSahBvh(bounds.data(), uint32_t(bounds.size()));
+    BackgroundBvhBuild build(bounds);
+    const Bvh background = build.take();
+    EXPECT_TRUE(build.ready());
+    ASSERT_EQ(background.nodes.size(), direct.nodes.size());
+    EXPECT_EQ(background.primIndices, direct.primIndices);
+    for (size_t i = 0; i < direct.nodes.size(); ++i) {
+        ASSERT_EQ(background.nodes[i].lo, direct.nodes[i].lo) << i;
+        ASSERT_EQ(background.nodes[i].hi, direct.nodes[i].hi) << i;
+        ASSERT_EQ(background.nodes[i].leftOrFirst, direct.nodes[i].leftOrFirst) << i;
+        ASSERT_EQ(background.nodes[i].count, direct.nodes[i].count) << i;
+    }
+}
+
+TEST(BackgroundBvhBuild, FinishesWithoutBeingTakenAndIsWaitedForOnDestruction) {
+    test::Rng rng(16);
+    const std::vector<Aabb> bounds =
+        test::triangleBounds(test::makeSoup(test::SoupKind::Uniform, 50000, rng));
+    {
+        BackgroundBvhBuild finished(bounds);
+        while (!finished.ready()) std::this_thread::yield();  // done without anyone taking it
+        EXPECT_GT(finished.seconds(), 0.0);
+    }
+    { BackgroundBvhBuild dropped(bounds); }  // joined, or std::thread's destructor terminates
+}
+
+}  // namespace
+}  // namespace pt
