@@ -31,26 +31,46 @@ void appendMorphDeltas(const PrimitiveGeometry& g, size_t base, Mesh& mesh) {
     }
 }
 
-// Appends one primitive's geometry; its triangles take slot `slot`.
+// Appends one primitive's geometry (a mesh's first primitive's arrays are moved, leaving `g`
+// empty); its triangles take slot `slot`, and slot 0 is the first primitive's.
 void appendPrimitive(const GltfContext& ctx, PrimitiveGeometry& g, uint32_t slot, Mesh& mesh,
                      std::vector<uint32_t>& slots, const std::string& element) {
-    const size_t base = mesh.positions.size();
+    const size_t base = mesh.positions.size(), trianglesBefore = mesh.indices.size() / 3;
     if (g.positions.size() > std::numeric_limits<uint32_t>::max() - base) {
         ctx.fail(element, "more than 2^32 vertices");
     }
-    mesh.positions.insert(mesh.positions.end(), g.positions.begin(), g.positions.end());
-    mesh.normals.insert(mesh.normals.end(), g.normals.begin(), g.normals.end());
+    appendMorphDeltas(g, base, mesh);
+    // The arrays of a mesh's first primitive are moved in, the next ones' appended.
+    const auto append = [](auto& to, auto& from) {
+        if (to.empty()) {
+            to = std::move(from);
+        } else {
+            to.insert(to.end(), from.begin(), from.end());
+        }
+    };
+    append(mesh.positions, g.positions);
+    append(mesh.normals, g.normals);
     if (!g.uvs.empty()) {
         mesh.uvs.resize(base);  // earlier primitives without TEXCOORD_0 get (0, 0)
-        mesh.uvs.insert(mesh.uvs.end(), g.uvs.begin(), g.uvs.end());
+        append(mesh.uvs, g.uvs);
     }
     if (!g.tangents.empty()) {
         mesh.tangents.resize(base);  // zero: "derive from the UVs" for primitives without TANGENT
-        mesh.tangents.insert(mesh.tangents.end(), g.tangents.begin(), g.tangents.end());
+        append(mesh.tangents, g.tangents);
     }
-    appendMorphDeltas(g, base, mesh);
-    for (uint32_t index : g.indices) mesh.indices.push_back(uint32_t(base) + index);
-    slots.insert(slots.end(), g.indices.size() / 3, slot);
+    const size_t triangles = g.indices.size() / 3;
+    if (base == 0 && mesh.indices.empty()) {
+        mesh.indices = std::move(g.indices);
+    } else {
+        mesh.indices.reserve(mesh.indices.size() + g.indices.size());
+        for (uint32_t index : g.indices) mesh.indices.push_back(uint32_t(base) + index);
+    }
+    // Slots are listed only once a second one exists (a mesh of one slot keeps none): the
+    // triangles before it took slot 0.
+    if (slot > 0) {
+        slots.resize(trianglesBefore, 0u);
+        slots.insert(slots.end(), triangles, slot);
+    }
 }
 
 // The number of morph targets of the glTF mesh. glTF requires every primitive to have the

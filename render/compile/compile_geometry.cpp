@@ -39,7 +39,14 @@ void appendSlots(const Mesh& mesh, size_t index, std::vector<uint32_t>& slots) {
     }
 }
 
-void appendTriangles(const Mesh& mesh, size_t index, CompiledScene& out) {
+// Which per-vertex arrays some triangle mesh of the scene has: the others are left empty, not
+// filled with zeros for every vertex (at 10M triangles 120 MB of UVs and tangents no kernel
+// reads: they read UVs only where BlasRef::hasUvs says a mesh has them).
+struct VertexArraysUsed {
+    bool uvs = false, tangents = false;
+};
+
+void appendTriangles(const Mesh& mesh, size_t index, const VertexArraysUsed& used, CompiledScene& out) {
     const uint32_t base = uint32_t(out.positions.size());
     const uint32_t vertexCount = uint32_t(mesh.positions.size());
     out.positions.insert(out.positions.end(), mesh.positions.begin(), mesh.positions.end());
@@ -53,15 +60,15 @@ void appendTriangles(const Mesh& mesh, size_t index, CompiledScene& out) {
         out.normals.resize(out.positions.size());
     if (hasUvs)
         out.uvs.insert(out.uvs.end(), mesh.uvs.begin(), mesh.uvs.end());
-    else
+    else if (used.uvs)
         out.uvs.resize(out.positions.size());
-    // Zero tangents (w = 0) mean "derive from the UVs"; flattenGeometry drops the array when
-    // no mesh has any.
+    // Zero tangents (w = 0) mean "derive from the UVs".
     if (mesh.tangents.size() == vertexCount) {
         out.tangents.insert(out.tangents.end(), mesh.tangents.begin(), mesh.tangents.end());
-    } else {
+    } else if (used.tangents) {
         out.tangents.resize(out.positions.size());
     }
+    out.triangles.reserve(out.triangles.size() + mesh.indices.size() / 3);
     for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
         const uint32_t a = mesh.indices[i], b = mesh.indices[i + 1], c = mesh.indices[i + 2];
         if (a >= vertexCount || b >= vertexCount || c >= vertexCount) {
@@ -110,6 +117,12 @@ Aabb primitiveBounds(const CompiledScene& out, const BlasRef& blas, uint32_t p) 
 }
 
 void flattenGeometry(const Scene& scene, CompiledScene& out) {
+    VertexArraysUsed used;
+    for (const Mesh& m : scene.meshes) {
+        if (m.kind != GeometryKind::Triangles || m.positions.empty()) continue;
+        used.uvs |= m.uvs.size() == m.positions.size();
+        used.tangents |= m.tangents.size() == m.positions.size();
+    }
     for (size_t i = 0; i < scene.meshes.size(); ++i) {
         const Mesh& mesh = scene.meshes[i];
         BlasRef blas{};
@@ -124,15 +137,10 @@ void flattenGeometry(const Scene& scene, CompiledScene& out) {
         } else {
             blas.primitiveOffset = uint32_t(out.triangles.size());
             out.blases.push_back(blas);
-            appendTriangles(mesh, i, out);
+            appendTriangles(mesh, i, used, out);
             out.stats.meshTriangles += blas.primitiveCount;
         }
     }
-    const bool anyTangents = std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) {
-        return m.kind == GeometryKind::Triangles && !m.tangents.empty() &&
-               m.tangents.size() == m.positions.size();
-    });
-    if (!anyTangents) out.tangents.clear();
     out.stats.blasCount = uint32_t(out.blases.size());
 }
 

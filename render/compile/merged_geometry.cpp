@@ -53,7 +53,7 @@ bool mergeable(const Scene& scene, size_t i, const std::vector<uint32_t>& uses,
 // shading reads the instance's own mesh).
 void padVertexArrays(CompiledScene& out) {
     out.normals.resize(out.positions.size());
-    out.uvs.resize(out.positions.size());
+    if (!out.uvs.empty()) out.uvs.resize(out.positions.size());
     if (!out.tangents.empty()) out.tangents.resize(out.positions.size());
 }
 

@@ -121,6 +121,8 @@ int runBench(const std::vector<std::string>& args) {
     bar.finish();
     report.add({"scene", "load", "", input.loadSeconds, "s", r.scenePath});
     report.add({"scene", "first sync (compile, BVH, upload)", "", sync.seconds, "s", sync.action});
+    for (const SyncStep& step : sync.steps)
+        report.add({"scene", "first sync: " + step.name, "", step.seconds, "s", ""});
     report.add({"scene", "triangles traced", "", double(backend->stats().triangles), "", ""});
     report.add({"scene", "instances", "", double(backend->stats().instances), "", ""});
     report.add({"scene", "device memory after the first sync", "",
