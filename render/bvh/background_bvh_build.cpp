@@ -1,15 +1,19 @@
 #include "render/bvh/background_bvh_build.h"
 
-#include <chrono>
+#include <tbb/task_arena.h>
 
 namespace pt {
 
 BackgroundBvhBuild::BackgroundBvhBuild(std::vector<Aabb> primBounds) : primBounds_(std::move(primBounds)) {
     thread_ = std::thread([this] {
-        const auto start = std::chrono::steady_clock::now();
-        result_ = buildBinnedSahBvh(primBounds_.data(), uint32_t(primBounds_.size()));
+        try {
+            tbb::task_arena arena;
+            arena.execute(
+                [&] { result_ = buildBinnedSahBvh(primBounds_.data(), uint32_t(primBounds_.size())); });
+        } catch (...) {
+            failure_ = std::current_exception();  // std::thread would terminate the program
+        }
         primBounds_ = {};  // its memory back as soon as the tree no longer needs it
-        seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         ready_.store(true, std::memory_order_release);
     });
 }
@@ -20,6 +24,7 @@ BackgroundBvhBuild::~BackgroundBvhBuild() {
 
 Bvh BackgroundBvhBuild::take() {
     if (thread_.joinable()) thread_.join();
+    if (failure_) std::rethrow_exception(failure_);
     return std::move(result_);
 }
 

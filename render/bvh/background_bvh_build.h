@@ -3,8 +3,11 @@
 // not before the first frame: the CUDA backend's first frame of a large mesh walks an LBVH
 // built on the GPU in milliseconds while this builds the SAH tree behind it (issue 21; on the
 // H200's host, 1.5 s of a 10M-triangle sphere's 2.3 s first sync was the host build).
-// The build owns its input, so nothing it reads changes under it.
+// The build owns its input, so nothing it reads changes under it, and runs its tasks in a TBB
+// arena of its own: a thread waiting in another parallel loop (the render thread's) steals only
+// from its own arena, never a subtree of this build.
 #include <atomic>
+#include <exception>
 #include <thread>
 #include <vector>
 
@@ -23,15 +26,13 @@ public:
 
     // Whether the tree is built; never blocks.
     bool ready() const { return ready_.load(std::memory_order_acquire); }
-    // The tree, waiting for it if need be; once.
+    // The tree, waiting for it if need be; once. Throws what the build threw (std::bad_alloc).
     Bvh take();
-    // How long the build took (once ready()).
-    double seconds() const { return seconds_; }
 
 private:
     std::vector<Aabb> primBounds_;
     Bvh result_;
-    double seconds_ = 0.0;
+    std::exception_ptr failure_;
     std::atomic<bool> ready_{false};
     std::thread thread_;
 };

@@ -50,8 +50,8 @@ void appendTriangles(const Mesh& mesh, size_t index, const VertexArraysUsed& use
     const uint32_t base = uint32_t(out.positions.size());
     const uint32_t vertexCount = uint32_t(mesh.positions.size());
     out.positions.insert(out.positions.end(), mesh.positions.begin(), mesh.positions.end());
-    // Normals and UVs stay parallel to positions; meshes without them leave zeros, and their
-    // BlasRef says so.
+    // Normals stay parallel to positions, and UVs and tangents too where some mesh has them;
+    // meshes without them leave zeros, and their BlasRef says so.
     const bool hasNormals = mesh.normals.size() == vertexCount;
     const bool hasUvs = mesh.uvs.size() == vertexCount;
     if (hasNormals)
@@ -68,7 +68,6 @@ void appendTriangles(const Mesh& mesh, size_t index, const VertexArraysUsed& use
     } else if (used.tangents) {
         out.tangents.resize(out.positions.size());
     }
-    out.triangles.reserve(out.triangles.size() + mesh.indices.size() / 3);
     for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
         const uint32_t a = mesh.indices[i], b = mesh.indices[i + 1], c = mesh.indices[i + 2];
         if (a >= vertexCount || b >= vertexCount || c >= vertexCount) {
@@ -83,8 +82,8 @@ void appendTriangles(const Mesh& mesh, size_t index, const VertexArraysUsed& use
     appendSlots(mesh, index, out.triangleSlots);
 }
 
-// What a deferred BLAS holds until its caller builds it (DeferredBlas): one leaf over all
-// `count` primitives, whose box is their union, and the identity index list.
+// What a deferred BLAS holds until its caller builds it (DeferredBlas): one leaf over all the
+// primitives of `primBounds`, whose box is their union, and the identity index list.
 Bvh singleLeafStandIn(const std::vector<Aabb>& primBounds) {
     using Range = tbb::blocked_range<size_t>;
     const Aabb box = tbb::parallel_reduce(
@@ -118,11 +117,14 @@ Aabb primitiveBounds(const CompiledScene& out, const BlasRef& blas, uint32_t p) 
 
 void flattenGeometry(const Scene& scene, CompiledScene& out) {
     VertexArraysUsed used;
+    size_t triangles = 0;
     for (const Mesh& m : scene.meshes) {
         if (m.kind != GeometryKind::Triangles || m.positions.empty()) continue;
         used.uvs |= m.uvs.size() == m.positions.size();
         used.tangents |= m.tangents.size() == m.positions.size();
+        triangles += m.indices.size() / 3;
     }
+    out.triangles.reserve(triangles);  // once: a reservation per mesh would copy them all each time
     for (size_t i = 0; i < scene.meshes.size(); ++i) {
         const Mesh& mesh = scene.meshes[i];
         BlasRef blas{};

@@ -3,9 +3,6 @@
 // caller's own build; smaller meshes and the merged BLAS are built as ever.
 #include <gtest/gtest.h>
 
-#include <thread>
-
-#include "render/bvh/background_bvh_build.h"
 #include "render/bvh/bvh_test_util.h"
 #include "render/compile/compile_geometry.h"
 #include "render/compile/compile_scene.h"
@@ -81,37 +78,6 @@ TEST(DeferredBlas, TheMergedBlasIsNeverDeferred) {
     ASSERT_GE(deferred.blases[deferred.merged.blas].primitiveCount, 1000u);
     for (const DeferredBlas& d : deferred.deferredBlases) EXPECT_NE(d.blas, deferred.merged.blas);
     EXPECT_GT(deferred.blases[deferred.merged.blas].nodeCount, 1u);
-}
-
-// The thread's tree is the builder's, node for node.
-TEST(BackgroundBvhBuild, BuildsTheBinnedSahTree) {
-    test::Rng rng(15);
-    const std::vector<Aabb> bounds =
-        test::triangleBounds(test::makeSoup(test::SoupKind::Clustered, 20000, rng));
-    const Bvh direct = buildBinnedSahBvh(bounds.data(), uint32_t(bounds.size()));
-    BackgroundBvhBuild build(bounds);
-    const Bvh background = build.take();
-    EXPECT_TRUE(build.ready());
-    ASSERT_EQ(background.nodes.size(), direct.nodes.size());
-    EXPECT_EQ(background.primIndices, direct.primIndices);
-    for (size_t i = 0; i < direct.nodes.size(); ++i) {
-        ASSERT_EQ(background.nodes[i].lo, direct.nodes[i].lo) << i;
-        ASSERT_EQ(background.nodes[i].hi, direct.nodes[i].hi) << i;
-        ASSERT_EQ(background.nodes[i].leftOrFirst, direct.nodes[i].leftOrFirst) << i;
-        ASSERT_EQ(background.nodes[i].count, direct.nodes[i].count) << i;
-    }
-}
-
-TEST(BackgroundBvhBuild, FinishesWithoutBeingTakenAndIsWaitedForOnDestruction) {
-    test::Rng rng(16);
-    const std::vector<Aabb> bounds =
-        test::triangleBounds(test::makeSoup(test::SoupKind::Uniform, 50000, rng));
-    {
-        BackgroundBvhBuild finished(bounds);
-        while (!finished.ready()) std::this_thread::yield();  // done without anyone taking it
-        EXPECT_GT(finished.seconds(), 0.0);
-    }
-    { BackgroundBvhBuild dropped(bounds); }  // joined, or std::thread's destructor terminates
 }
 
 }  // namespace
