@@ -60,8 +60,8 @@ void appendPrimitive(const GltfContext& ctx, PrimitiveGeometry& g, uint32_t slot
         append(mesh.tangents, g.tangents);
     }
     const size_t triangles = g.indices.size() / 3;
-    if (base == 0 && mesh.indices.empty()) {
-        mesh.indices = std::move(g.indices);
+    if (base == 0) {
+        append(mesh.indices, g.indices);  // no offset to add
     } else {
         for (uint32_t index : g.indices) mesh.indices.push_back(uint32_t(base) + index);
     }

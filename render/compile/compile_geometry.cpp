@@ -82,27 +82,16 @@ void appendTriangles(const Mesh& mesh, size_t index, const VertexArraysUsed& use
     appendSlots(mesh, index, out.triangleSlots);
 }
 
-// What a deferred BLAS holds until its caller builds it (DeferredBlas): one leaf over all the
-// primitives of `primBounds`, whose box is their union, and the identity index list.
-Bvh singleLeafStandIn(const std::vector<Aabb>& primBounds) {
-    using Range = tbb::blocked_range<size_t>;
-    const Aabb box = tbb::parallel_reduce(
-        Range(0, primBounds.size(), 1u << 14), Aabb{},
-        [&](const Range& r, Aabb acc) {
-            for (size_t p = r.begin(); p != r.end(); ++p) acc.grow(primBounds[p]);
-            return acc;
-        },
-        [](Aabb a, const Aabb& b) {
-            a.grow(b);
-            return a;
-        });
+// What a deferred BLAS holds until its caller builds it (DeferredBlas): one leaf over all
+// `count` primitives, whose box is `box` (their union), and the identity index list.
+Bvh singleLeafStandIn(const Aabb& box, uint32_t count) {
     Bvh bvh;
     bvh.nodes.resize(1);
     bvh.nodes[0].lo = box.lo;
     bvh.nodes[0].hi = box.hi;
     bvh.nodes[0].leftOrFirst = 0;
-    bvh.nodes[0].count = uint32_t(primBounds.size());
-    bvh.primIndices.resize(primBounds.size());
+    bvh.nodes[0].count = count;
+    bvh.primIndices.resize(count);
     std::iota(bvh.primIndices.begin(), bvh.primIndices.end(), 0u);
     return bvh;
 }
@@ -171,14 +160,25 @@ void buildBlases(CompiledScene& out, const ProgressFn& progress, uint32_t deferF
     tbb::parallel_for(size_t(0), meshCount, [&](size_t i) {
         const BlasRef& blas = out.blases[i];
         std::vector<Aabb> bounds(blas.primitiveCount);
-        // In parallel within a mesh too: a scan of 10M triangles is one mesh.
-        tbb::parallel_for(tbb::blocked_range<uint32_t>(0, blas.primitiveCount, 1u << 14),
-                          [&](const tbb::blocked_range<uint32_t>& r) {
-                              for (uint32_t p = r.begin(); p != r.end(); ++p)
-                                  bounds[p] = primitiveBounds(out, blas, p);
-                          });
-        if (deferFrom > 0 && i < deferrable && blas.primitiveCount >= deferFrom) {
-            bvhs[i] = singleLeafStandIn(bounds);
+        const bool deferred = deferFrom > 0 && i < deferrable && blas.primitiveCount >= deferFrom;
+        // In parallel within a mesh too: a scan of 10M triangles is one mesh. A deferred mesh's
+        // stand-in takes the union on the way, not from a second pass over the boxes.
+        using Range = tbb::blocked_range<uint32_t>;
+        const Aabb all = tbb::parallel_reduce(
+            Range(0, blas.primitiveCount, 1u << 14), Aabb{},
+            [&](const Range& r, Aabb acc) {
+                for (uint32_t p = r.begin(); p != r.end(); ++p) {
+                    bounds[p] = primitiveBounds(out, blas, p);
+                    if (deferred) acc.grow(bounds[p]);
+                }
+                return acc;
+            },
+            [](Aabb a, const Aabb& b) {
+                a.grow(b);
+                return a;
+            });
+        if (deferred) {
+            bvhs[i] = singleLeafStandIn(all, blas.primitiveCount);
             deferredBounds[i] = std::move(bounds);
             return;
         }
