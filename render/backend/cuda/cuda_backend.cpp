@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <new>
 #include <stdexcept>
 #include <utility>
 
@@ -183,9 +184,11 @@ void CudaBackend::fullBuild(const Scene& scene, const ProgressFn& progress, Sync
                                 : "build BLAS (host, binned SAH; large meshes deferred)",
                             compiled->stats.blasSeconds});
     retireSahTrees();
-    // The deferred meshes' SAH trees start building now, beside the upload and the GPU builds.
+    // The deferred meshes' SAH trees start building now, beside the upload and the GPU builds;
+    // they are pending once those are done (should those throw, the builds are dropped here).
+    std::vector<PendingSahTree> started;
     for (DeferredBlas& deferred : compiled->deferredBlases) {
-        pendingSahTrees_.push_back(
+        started.push_back(
             {deferred.blas, std::make_unique<BackgroundBvhBuild>(std::move(deferred.primBounds))});
     }
     pinnedVertices_.clear();
@@ -204,6 +207,7 @@ void CudaBackend::fullBuild(const Scene& scene, const ProgressFn& progress, Sync
     // Measured when a BLAS is first refitted, not here: most meshes never are.
     builtSah_.assign(device_.blasCount(), kSahUnknown);
     buildDeferredBlasesOnDevice(report);
+    pendingSahTrees_ = std::move(started);
     skins_.clear();
     skinnedOnDevice_.assign(scene.meshes.size(), false);
     // The compile read the host's vertices of meshes whose pose the device is to skin (an
@@ -305,32 +309,36 @@ std::optional<SyncAction> CudaBackend::refitChangedMeshes(const Scene& scene, co
 
 bool CudaBackend::refitBlas(uint32_t i, SyncReport& report) {
     if (builtSah_[i] == kSahUnknown) builtSah_[i] = blasSahCost(i);  // still as built
-    const uint32_t primitives = device_.blas(i).primitiveCount;
-    primBoxes_.resize(primitives);
-    refitVisits_.resize(device_.blasNodeCapacity(i));
-    timedStep(stream_, report, "refit BLAS", [&] {
-        device_.prepareRefit(i, stream_);  // parent links, on a BLAS's first refit
-        computePrimitiveBoxes(device_.view(*compiled_), device_.blas(i), primBoxes_.data(), stream_);
-        refitBvh(device_.blasNodes(i), device_.blas(i).nodeCount, device_.blasParents(i),
-                 device_.blasPrimIndices(i), primBoxes_.data(), refitVisits_.data(), stream_);
-    });
-    retireSahTree(i);  // a tree of the old positions would need this refit again
+    timedStep(stream_, report, "refit BLAS", [&] { refitToPrimitives(i); });
     bool rebuilt = false;
     const float cost = blasSahCost(i);
     if (cost > toggles_.rebuildSahRatio * builtSah_[i]) {
         timedStep(stream_, report, "rebuild BLAS (GPU LBVH)", [&] { rebuildBlasOnDevice(i); });
         builtSah_[i] = blasSahCost(i);
+        retireSahTree(i);  // a tree of positions this far from the current ones is no better
         rebuilt = true;
     } else if (device_.hasCompressedForm(i)) {
         timedStep(stream_, report, "requantise BLAS (8-wide)",
                   [&] { device_.requantizeCompressed(i, stream_); });
     }
+    // A tree's topology holds for any positions of its primitives: the SAH tree building
+    // behind the first frame is refitted to the current ones when it lands.
+    for (PendingSahTree& pending : pendingSahTrees_) pending.refitOnLanding |= !rebuilt && pending.blas == i;
     // The host keeps each BLAS's root box current (32 bytes): the host TLAS, and so the
     // scene bounds the light table uses, are built from it. Refit and rebuild give the
     // same root, the union of the primitives' boxes.
     PT_CUDA_CHECK(cudaMemcpyAsync(compiled_->blasNodes.data() + compiled_->blases[i].nodeOffset,
                                   device_.blasNodes(i), sizeof(BvhNode), cudaMemcpyDeviceToHost, stream_));
     return rebuilt;
+}
+
+void CudaBackend::refitToPrimitives(uint32_t i) {
+    primBoxes_.resize(device_.blas(i).primitiveCount);
+    refitVisits_.resize(device_.blasNodeCapacity(i));
+    device_.prepareRefit(i, stream_);  // parent links, on a BLAS's first refit
+    computePrimitiveBoxes(device_.view(*compiled_), device_.blas(i), primBoxes_.data(), stream_);
+    refitBvh(device_.blasNodes(i), device_.blas(i).nodeCount, device_.blasParents(i),
+             device_.blasPrimIndices(i), primBoxes_.data(), refitVisits_.data(), stream_);
 }
 
 void CudaBackend::rebuildBlasOnDevice(uint32_t i) {
@@ -369,22 +377,29 @@ void CudaBackend::landSahTrees(bool wait) {
         std::remove_if(staleSahTrees_.begin(), staleSahTrees_.end(),
                        [&](const std::unique_ptr<BackgroundBvhBuild>& b) { return wait || b->ready(); }),
         staleSahTrees_.end());
-    bool landed = false, landedAll = false;
+    bool landed = false;
     for (auto it = pendingSahTrees_.begin(); it != pendingSahTrees_.end();) {
         if (!wait && !it->build->ready()) {
             ++it;
             continue;
         }
-        const Bvh tree = it->build->take();
-        device_.uploadBlasTree(it->blas, tree.nodes, tree.primIndices, stream_);
-        builtSah_[it->blas] = kSahUnknown;  // measured again at its first refit
-        landed = true;
+        const PendingSahTree done = std::move(*it);  // out of the list before anything can throw
         it = pendingSahTrees_.erase(it);
-        if (pendingSahTrees_.empty()) landedAll = true;
+        Bvh tree;
+        try {
+            tree = done.build->take();
+        } catch (const std::bad_alloc&) {
+            continue;  // the host ran out of memory for it: the BLAS keeps its GPU build
+        }
+        device_.uploadBlasTree(done.blas, tree.nodes, tree.primIndices, stream_);
+        if (done.refitOnLanding) refitToPrimitives(done.blas);
+        builtSah_[done.blas] = kSahUnknown;  // measured again at its next refit
+        landed = true;
     }
     PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
-    if (landed) updateView();  // fitting a region to its tree moved the BLAS nodes
-    if (landedAll) {           // the first frame's build memory back (a later GPU rebuild allocates it again)
+    if (!landed) return;
+    updateView();                    // fitting a region to its tree moved the BLAS nodes
+    if (pendingSahTrees_.empty()) {  // the first frame's build memory back (a GPU rebuild allocates it again)
         lbvh_.release();
         primBoxes_ = {};
     }

@@ -103,6 +103,8 @@ private:
     // refits it; returns Refit or Rebuild.
     SyncAction refitMergedBlas(SyncReport& report);
     void buildTlasOnDevice(SyncReport& report);
+    // BLAS i's boxes made the exact bounds of its primitives' current boxes (primBoxes_).
+    void refitToPrimitives(uint32_t i);
     // An LBVH of BLAS i over primBoxes_ (its primitives' boxes), in place of its tree.
     void rebuildBlasOnDevice(uint32_t i);
     // The first frame's trees of the meshes the compile deferred (IntegratorToggles::
@@ -112,7 +114,7 @@ private:
     // Swaps in the SAH trees that are built (all of them, waiting for them, where `wait`); a
     // swap keeps the accumulation, as every BVH of the same primitives gives the same hits.
     void landSahTrees(bool wait);
-    // BLAS `blas` changed (a refit), or every BLAS did (a new compile): what is building for it
+    // BLAS `blas` was rebuilt, or every BLAS changed (a new compile): what is building for it
     // would be stale, and is dropped once done (never waited for).
     void retireSahTree(uint32_t blas);
     void retireSahTrees();
@@ -150,6 +152,7 @@ private:
     struct PendingSahTree {
         uint32_t blas;
         std::unique_ptr<BackgroundBvhBuild> build;
+        bool refitOnLanding = false;  // the BLAS was refitted since: its positions moved
     };
     std::vector<PendingSahTree> pendingSahTrees_;
     std::vector<std::unique_ptr<BackgroundBvhBuild>> staleSahTrees_;

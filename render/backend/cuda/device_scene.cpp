@@ -1,8 +1,6 @@
 #include "render/backend/cuda/device_scene.h"
 
 #include <algorithm>
-#include <stdexcept>
-#include <string>
 
 #include "render/compile/wide_blases.h"
 
@@ -59,9 +57,13 @@ void DeviceScene::uploadAll(const CompiledScene& host, cudaStream_t stream) {
     hostBlases_ = host.blases;
     nodeCapacity_.assign(hostBlases_.size(), 0);
     parentsReady_.assign(hostBlases_.size(), false);
+    for (size_t i = 0; i < hostBlases_.size(); ++i) nodeCapacity_[i] = host.blases[i].nodeCount;
+    // A deferred BLAS (CompiledScene::deferredBlases) is about to be built here: its region has
+    // room for the LBVH from the start, so that no build moves every region once more.
+    for (const DeferredBlas& deferred : host.deferredBlases)
+        nodeCapacity_[deferred.blas] = lbvhNodeCount(host.blases[deferred.blas].primitiveCount);
     uint32_t nodeOffset = 0;
     for (size_t i = 0; i < hostBlases_.size(); ++i) {
-        nodeCapacity_[i] = host.blases[i].nodeCount;
         hostBlases_[i].nodeOffset = nodeOffset;
         nodeOffset += nodeCapacity_[i];
     }
@@ -174,10 +176,10 @@ void DeviceScene::prepareRefit(uint32_t i, cudaStream_t stream) {
 
 void DeviceScene::reserveLbvhNodes(uint32_t i, cudaStream_t stream) {
     const uint32_t needed = lbvhNodeCount(hostBlases_[i].primitiveCount);
-    if (nodeCapacity_[i] < needed) resizeBlasRegion(i, needed, stream);
+    if (nodeCapacity_[i] < needed) resizeBlasRegion(i, needed, hostBlases_[i].nodeCount, stream);
 }
 
-void DeviceScene::resizeBlasRegion(uint32_t i, uint32_t capacity, cudaStream_t stream) {
+void DeviceScene::resizeBlasRegion(uint32_t i, uint32_t capacity, uint32_t keep, cudaStream_t stream) {
     // A new layout with BLAS i's region resized; every region moves to its new offset. Child
     // indices and parent links are relative to their region, so they move as they are.
     std::vector<uint32_t> offsets(hostBlases_.size());
@@ -186,11 +188,11 @@ void DeviceScene::resizeBlasRegion(uint32_t i, uint32_t capacity, cudaStream_t s
         offsets[b] = total;
         total += b == i ? capacity : nodeCapacity_[b];
     }
-    hostBlases_[i].nodeCount = std::min(hostBlases_[i].nodeCount, capacity);
     DeviceBuffer<BvhNode> nodes(total);
     DeviceBuffer<uint32_t> parents(blasParents_.size() != 0 ? total : 0);
     for (size_t b = 0; b < hostBlases_.size(); ++b) {
-        const size_t count = hostBlases_[b].nodeCount, from = hostBlases_[b].nodeOffset;
+        const size_t count = b == i ? std::min(keep, capacity) : hostBlases_[b].nodeCount;
+        const size_t from = hostBlases_[b].nodeOffset;
         if (count == 0) continue;
         PT_CUDA_CHECK(cudaMemcpyAsync(nodes.data() + offsets[b], blasNodes_.data() + from,
                                       count * sizeof(BvhNode), cudaMemcpyDeviceToDevice, stream));
@@ -217,17 +219,11 @@ void DeviceScene::setBlasNodeCount(uint32_t i, uint32_t nodeCount, cudaStream_t 
 void DeviceScene::uploadBlasTree(uint32_t i, const std::vector<BvhNode>& nodes,
                                  const std::vector<uint32_t>& primIndices, cudaStream_t stream) {
     const BlasRef& b = hostBlases_[i];
-    if (primIndices.size() != b.primitiveCount) {
-        throw std::logic_error("BLAS " + std::to_string(i) + ": a tree of " + std::to_string(nodes.size()) +
-                               " nodes and " + std::to_string(primIndices.size()) +
-                               " primitives for a region of " + std::to_string(nodeCapacity_[i]) +
-                               " nodes and " + std::to_string(b.primitiveCount) + " primitives");
-    }
+    PT_CHECK(primIndices.size() == b.primitiveCount && !nodes.empty());
     if (nodes.size() != nodeCapacity_[i]) {
         // The region fitted to the tree (a GPU build reserved 2n - 1 nodes; a SAH tree of 4
         // primitives a leaf holds about n), without copying what the tree replaces.
-        hostBlases_[i].nodeCount = 0;
-        resizeBlasRegion(i, uint32_t(nodes.size()), stream);
+        resizeBlasRegion(i, uint32_t(nodes.size()), 0, stream);
     }
     blasNodes_.uploadAt(b.nodeOffset, nodes.data(), nodes.size(), stream);
     blasPrimIndices_.uploadAt(b.primIndexOffset, primIndices.data(), primIndices.size(), stream);

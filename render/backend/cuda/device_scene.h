@@ -104,9 +104,9 @@ public:
 private:
     void uploadCompressed(const CompiledScene& host, cudaStream_t stream);
     // A new layout of the BLAS node regions (and parent links) with BLAS i's holding `capacity`
-    // nodes, of which it keeps its first nodeCount (at most `capacity`); the others move as
-    // they are.
-    void resizeBlasRegion(uint32_t i, uint32_t capacity, cudaStream_t stream);
+    // nodes, of which it keeps its first `keep` (at most `capacity`); the others move as they
+    // are.
+    void resizeBlasRegion(uint32_t i, uint32_t capacity, uint32_t keep, cudaStream_t stream);
 
     // One buffer per scene array (render/kernel/scene_arrays.h), named as the array with a
     // trailing underscore.

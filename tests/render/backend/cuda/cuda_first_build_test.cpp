@@ -1,7 +1,7 @@
 // The first frame of a large mesh from a BVH built on the GPU (IntegratorToggles::gpuFirstBuild):
 // the sync builds an LBVH on the device instead of waiting for the host's SAH tree, which
 // builds on a thread behind it and is swapped in when done. No hit and no pixel changes on the
-// way, and an edit before the swap drops the tree it would make stale. Skips without a device.
+// way, and a tree that lands after an edit is refitted to it. Skips without a device.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -89,19 +89,39 @@ TEST(CudaFirstBuild, TheFirstFrameWalksAGpuBuildAndTheSahTreeLandsBehindIt) {
     EXPECT_LE(worst, 1e-6f) << "the image changed with the tree";
 }
 
-TEST(CudaFirstBuild, AnEditBeforeTheSwapDropsTheStaleTree) {
+// A tree's topology holds for any positions of its primitives: the SAH tree built from the
+// positions before an edit lands refitted to the positions after it.
+TEST(CudaFirstBuild, AnEditBeforeTheSwapRefitsTheTreeThatLands) {
     PT_REQUIRE_CUDA_DEVICE();
     Scene scene = largeSoupScene();
     cuda::CudaBackend edited;
     syncForRefits(edited, scene);
     for (Vec3& p : scene.meshes[0].positions) p = p * 1.3f + Vec3(0.0f, 0.4f, 0.0f);
     EXPECT_EQ(edited.sync(scene, SceneChanges::Geometry, {}).action, "refit");
-    const float refitCost = edited.blasSahCost(0);
-    EXPECT_TRUE(edited.finishBackgroundWork().has_value()) << "the stale build should still be waited for";
-    EXPECT_EQ(edited.blasSahCost(0), refitCost) << "a tree of the old positions landed";
+    const float refittedLbvhCost = edited.blasSahCost(0);
+    EXPECT_TRUE(edited.finishBackgroundWork().has_value()) << "nothing was building behind the first frame";
+    EXPECT_LT(edited.blasSahCost(0), refittedLbvhCost) << "the SAH tree should have landed";
     CpuBackend cpu;
     cpu.sync(scene, SceneChanges::All, {});
-    test::expectSameHits(edited, cpu, test::soupRays(100000, 4), "refitted GPU first build vs CPU");
+    test::expectSameHits(edited, cpu, test::soupRays(100000, 4), "SAH tree landed after an edit vs CPU");
+}
+
+// Two meshes over the threshold: both regions have room for their LBVHs from the upload, and
+// both trees land.
+TEST(CudaFirstBuild, TwoLargeMeshesBothGetTheirSahTrees) {
+    PT_REQUIRE_CUDA_DEVICE();
+    Scene scene = test::soupScene(300000, 270000);
+    cuda::CudaBackend deferred, hostBuilt;
+    deferred.setToggles(fixedSchedule(true));
+    hostBuilt.setToggles(fixedSchedule(false));
+    EXPECT_TRUE(hasStep(deferred.sync(scene, SceneChanges::All, {}), kGpuFirstBuildStep));
+    hostBuilt.sync(scene, SceneChanges::All, {});
+    const std::vector<Ray> rays = test::soupRays(100000, 6);
+    test::expectSameHits(deferred, hostBuilt, rays, "two GPU first builds vs host SAH");
+    EXPECT_TRUE(deferred.finishBackgroundWork().has_value());
+    for (uint32_t blas : {0u, 1u}) EXPECT_EQ(deferred.blasSahCost(blas), hostBuilt.blasSahCost(blas)) << blas;
+    EXPECT_EQ(test::bufferBytes(deferred, "BLAS nodes"), test::bufferBytes(hostBuilt, "BLAS nodes"));
+    test::expectSameHits(deferred, hostBuilt, rays, "two landed SAH trees vs host SAH");
 }
 
 // After the swap the BLAS's region holds the SAH tree alone; a refit walks that tree's parents.
