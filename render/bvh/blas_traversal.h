@@ -8,6 +8,7 @@
 #include "render/bvh/triangle_intersect.h"
 #include "render/kernel/render_scene.h"
 #if !defined(__CUDACC__)
+#include "render/bvh/triangle_block_intersect.h"
 #include "render/bvh/wide_walk.h"
 #endif
 
@@ -96,8 +97,14 @@ PT_HD bool traverseBlas(const RenderScene& scene, const BlasRef& blas, const Tra
     BlasLeaf<kF, Count> leaf{scene, blas,  scene.blasPrimIndices.data + blas.primIndexOffset, ray, hit,
                              count, anyHit};
 #if !defined(__CUDACC__)
-    // The CPU walks the 4-wide form where the scene has one (IntegratorToggles::wideBvh).
+    // The CPU walks the 4-wide form where the scene has one (IntegratorToggles::wideBvh), whose
+    // leaves are blocks of four triangles (triangle_block.h) or, for spheres, primitive ranges.
     if (!scene.blasWideRoots.empty()) {
+        if (!hasFeature<kF>(feature::kSpheres) || blas.kind == GeometryKind::Triangles) {
+            TriangleBlockLeaf<Count> blocks{scene.blasTriangleBlocks.data, ray, hit, count, anyHit};
+            return walkWideBvh(scene.blasWideNodes.data, scene.blasWideRoots[index], ray, tMax, blocks, count,
+                               anyHit);
+        }
         return walkWideBvh(scene.blasWideNodes.data, scene.blasWideRoots[index], ray, tMax, leaf, count,
                            anyHit);
     }

@@ -64,6 +64,9 @@ struct CompiledScene {
     // Per slot of blasWideNodes: the binary node it was collapsed from (wide_bvh.h), so a
     // refit refreshes the wide boxes.
     std::vector<uint32_t> wideSourceNodes;
+    // Per BLAS, its first block in blasTriangleBlocks (a sphere BLAS has none), so a refit
+    // refreshes its blocks' corners.
+    std::vector<uint32_t> blasFirstTriangleBlock;
     // The same per slot of blasCompressedNodes (compressed_wide_bvh.h), relative to each BLAS's
     // first binary node.
     std::vector<uint32_t> compressedSourceNodes;

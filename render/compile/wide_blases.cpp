@@ -11,10 +11,45 @@ namespace pt {
 namespace {
 
 // Nodes [first, end) of BLAS `blas` in a wide form whose BLASes start at `roots` (in order) and
-// which holds `total` nodes.
+// which holds `total` nodes (or the same of its triangle blocks).
 std::pair<uint32_t, uint32_t> nodeRange(const std::vector<uint32_t>& roots, size_t total, uint32_t blas) {
     PT_CHECK(blas < roots.size());
     return {roots[blas], blas + 1 < roots.size() ? roots[blas + 1] : uint32_t(total)};
+}
+
+// Lane `lane` of `block`: the corners of mesh-local triangle `local` of `blas`.
+void setBlockLane(const CompiledScene& compiled, const BlasRef& blas, uint32_t local, TriangleBlock& block,
+                  uint32_t lane) {
+    const TriangleIndices tri = compiled.triangles[blas.primitiveOffset + local];
+    const uint32_t corners[3] = {tri.v0, tri.v1, tri.v2};
+    for (int c = 0; c < 3; ++c) {
+        const Vec3 p = compiled.positions[corners[c]];
+        for (int axis = 0; axis < 3; ++axis) block.corner[c][axis][lane] = p[axis];
+    }
+    block.primitive[lane] = local;
+}
+
+// One block per leaf of the wide tree of triangle BLAS `blas`; each leaf slot's child becomes
+// its block's index (from the BLAS's first block). Lanes past a leaf's count repeat its first
+// triangle (triangle_block.h).
+std::vector<TriangleBlock> makeTriangleBlocks(const CompiledScene& compiled, const BlasRef& blas,
+                                              WideBvh& wide) {
+    std::vector<TriangleBlock> blocks;
+    for (WideBvhNode& node : wide.nodes) {
+        for (uint32_t s = 0; s < WideBvhNode::kWidth; ++s) {
+            if (node.count[s] == 0 || node.count[s] == WideBvhNode::kEmpty) continue;
+            PT_CHECK(node.count[s] <= TriangleBlock::kWidth);
+            TriangleBlock block;
+            for (uint32_t lane = 0; lane < TriangleBlock::kWidth; ++lane) {
+                const uint32_t entry = node.child[s] + (lane < node.count[s] ? lane : 0);
+                setBlockLane(compiled, blas, compiled.blasPrimIndices[blas.primIndexOffset + entry], block,
+                             lane);
+            }
+            node.child[s] = uint32_t(blocks.size());
+            blocks.push_back(block);
+        }
+    }
+    return blocks;
 }
 
 }  // namespace
@@ -22,26 +57,44 @@ std::pair<uint32_t, uint32_t> nodeRange(const std::vector<uint32_t>& roots, size
 void buildWideBlases(CompiledScene& compiled) {
     const size_t count = compiled.blases.size();
     std::vector<WideBvh> wide(count);
+    std::vector<std::vector<TriangleBlock>> blocks(count);
     tbb::parallel_for(size_t(0), count, [&](size_t i) {
         const BlasRef& blas = compiled.blases[i];
-        wide[i] = collapseToWide(compiled.blasNodes.data() + blas.nodeOffset, blas.nodeCount);
+        // Triangles: subtrees of up to four become one leaf, tested as one block (1M-triangle
+        // sphere, 2 threads: 15-18% more rays a second than blocks of the binary leaves).
+        // Spheres keep the binary leaves, tested one by one.
+        const bool triangles = blas.kind == GeometryKind::Triangles;
+        wide[i] = collapseToWide(compiled.blasNodes.data() + blas.nodeOffset, blas.nodeCount,
+                                 triangles ? TriangleBlock::kWidth : 0);
+        if (triangles) blocks[i] = makeTriangleBlocks(compiled, blas, wide[i]);
     });
     compiled.blasWideNodes.clear();
     compiled.wideSourceNodes.clear();
+    compiled.blasTriangleBlocks.clear();
     compiled.blasWideRoots.assign(count, 0);
+    compiled.blasFirstTriangleBlock.assign(count, 0);
     for (size_t i = 0; i < count; ++i) {
         const uint32_t first = uint32_t(compiled.blasWideNodes.size());
+        const uint32_t firstBlock = uint32_t(compiled.blasTriangleBlocks.size());
         compiled.blasWideRoots[i] = first;
-        // Child indices were made relative to the BLAS's first wide node: made absolute here.
+        compiled.blasFirstTriangleBlock[i] = firstBlock;
+        // Child indices were made relative to the BLAS's first wide node, and block indices to
+        // its first block: made absolute here.
+        const bool blockLeaves = compiled.blases[i].kind == GeometryKind::Triangles;
         for (WideBvhNode& node : wide[i].nodes) {
             for (uint32_t s = 0; s < WideBvhNode::kWidth; ++s) {
-                if (node.count[s] == 0) node.child[s] += first;
+                if (node.count[s] == 0)
+                    node.child[s] += first;
+                else if (blockLeaves && node.count[s] != WideBvhNode::kEmpty)
+                    node.child[s] += firstBlock;
             }
         }
         compiled.blasWideNodes.insert(compiled.blasWideNodes.end(), wide[i].nodes.begin(),
                                       wide[i].nodes.end());
         compiled.wideSourceNodes.insert(compiled.wideSourceNodes.end(), wide[i].sourceNodes.begin(),
                                         wide[i].sourceNodes.end());
+        compiled.blasTriangleBlocks.insert(compiled.blasTriangleBlocks.end(), blocks[i].begin(),
+                                           blocks[i].end());
     }
 }
 
@@ -90,6 +143,16 @@ void refreshWideBlas(CompiledScene& compiled, uint32_t blas) {
     const auto [first, end] = nodeRange(compiled.blasWideRoots, compiled.blasWideNodes.size(), blas);
     refreshWideBoxes(binary, compiled.wideSourceNodes.data() + size_t(first) * WideBvhNode::kWidth,
                      compiled.blasWideNodes.data() + first, end - first);
+    // The blocks' copies of the moved corners.
+    const auto [firstBlock, endBlock] =
+        nodeRange(compiled.blasFirstTriangleBlock, compiled.blasTriangleBlocks.size(), blas);
+    const BlasRef& ref = compiled.blases[blas];
+    tbb::parallel_for(firstBlock, endBlock, [&](uint32_t b) {
+        TriangleBlock& block = compiled.blasTriangleBlocks[b];
+        for (uint32_t lane = 0; lane < TriangleBlock::kWidth; ++lane) {
+            setBlockLane(compiled, ref, block.primitive[lane], block, lane);
+        }
+    });
 }
 
 }  // namespace pt

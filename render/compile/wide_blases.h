@@ -1,8 +1,9 @@
 #pragma once
 // The CPU backend's 4-wide BLASes (issue 21): every BLAS of a compiled scene collapsed from its
 // binary tree into CompiledScene::blasWideNodes (render/bvh/wide_bvh.h), which the shared
-// traversal walks on the host where they exist (blas_traversal.h). The binary nodes stay the
-// source: a host refit refreshes the wide boxes from them.
+// traversal walks on the host where they exist (blas_traversal.h), with the leaves of triangle
+// BLASes as blocks of four triangles (CompiledScene::blasTriangleBlocks). The binary nodes and
+// the positions stay the source: a host refit refreshes the wide boxes and the blocks.
 #include <cstdint>
 #include <utility>
 
@@ -10,7 +11,8 @@
 
 namespace pt {
 
-// Fills blasWideNodes, blasWideRoots and wideSourceNodes from the binary BLASes.
+// Fills blasWideNodes, blasWideRoots, wideSourceNodes, blasTriangleBlocks and
+// blasFirstTriangleBlock from the binary BLASes.
 void buildWideBlases(CompiledScene& compiled);
 
 // Fills blasCompressedNodes, blasCompressedPrims, blasCompressedRoots and
@@ -22,7 +24,7 @@ void buildCompressedBlases(CompiledScene& compiled);
 std::pair<uint32_t, uint32_t> compressedNodeRange(const CompiledScene& compiled, uint32_t blas);
 
 // After refitBlasOnHost(compiled, blas): its wide boxes (both forms, where the scene has them)
-// from its binary ones.
+// from its binary ones, and its triangle blocks from the positions.
 void refreshWideBlas(CompiledScene& compiled, uint32_t blas);
 
 }  // namespace pt

@@ -9,6 +9,7 @@
 #include "render/kernel/feature_set.h"
 #include "render/kernel/material.h"
 #include "render/kernel/scene_kinds.h"
+#include "render/kernel/triangle_block.h"
 #include "render/kernel/wide_bvh_node.h"
 #include "render/math/affine.h"
 #include "render/math/span.h"

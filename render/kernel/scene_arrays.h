@@ -39,6 +39,10 @@ PT_SCENE_ARRAY(uint32_t, blasPrimIndices, "BLAS primitive indices")
 // on the GPU, which never allocates them.
 PT_SCENE_ARRAY(WideBvhNode, blasWideNodes, "BLAS wide nodes (CPU)")
 PT_SCENE_ARRAY(uint32_t, blasWideRoots, "BLAS wide roots (CPU)")
+// The leaves of triangle BLASes' wide forms, four triangles each (render/kernel/triangle_block.h):
+// a wide leaf of a triangle BLAS indexes one block here, where a sphere BLAS's indexes
+// blasPrimIndices. Empty with the wide forms.
+PT_SCENE_ARRAY(TriangleBlock, blasTriangleBlocks, "BLAS triangle blocks (CPU)")
 // The CUDA traversal's compressed 8-wide form of the BLASes (render/bvh/compressed_wide_bvh.h;
 // IntegratorToggles::wideBvh): each BLAS's root node in blasCompressedNodes, or
 // kNoCompressedRoot where its binary nodes are walked (a BLAS rebuilt on the GPU); empty where
