@@ -16,7 +16,7 @@ const std::vector<ToggleRow>& toggleTable() {
          &T::bruteForce, true, S::Integrator},
         {ToggleId::MergeInstances, "merge_instances", "Merge small instances (one world-space BLAS)",
          "merged instances", "", "--no-merge", &T::mergeInstances, false, S::Integrator},
-        {ToggleId::WideBvh, "wide_bvh", "4-wide BVH (CPU traversal)", "4-wide BVH", "", "--no-wide-bvh",
+        {ToggleId::WideBvh, "wide_bvh", "8-wide BVH (CPU traversal)", "8-wide BVH", "", "--no-wide-bvh",
          &T::wideBvh, false, S::Integrator},
         {ToggleId::PixelJitter, "pixel_jitter", "Pixel jitter (antialiasing)", "pixel jitter", "",
          "--no-jitter", &T::pixelJitter, false, S::Integrator},

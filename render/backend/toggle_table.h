@@ -16,7 +16,7 @@ struct IntegratorToggles {
     bool bruteForce = false;  // BVH off: validation only, refused above a triangle budget
     // Small instances' triangles in one world-space BLAS (render/compile/merged_geometry.h).
     bool mergeInstances = true;
-    // The CPU walks 4-wide BLASes collapsed from the binary ones (render/bvh/wide_bvh.h); the
+    // The CPU walks 8-wide BLASes collapsed from the binary ones (render/bvh/wide_bvh.h); the
     // GPU walks the binary ones unless gpuWideBvh.
     bool wideBvh = true;
     float clampRadiance = 0.0f;  // firefly clamp on indirect luminance per sample; 0 = off

@@ -8,8 +8,8 @@
 #include "render/bvh/triangle_intersect.h"
 #include "render/kernel/render_scene.h"
 #if !defined(__CUDACC__)
-#include "render/bvh/triangle_block_intersect.h"
 #include "render/bvh/wide_walk.h"
+#include "render/bvh/wide_walk_simd.h"
 #endif
 
 namespace pt {
@@ -55,7 +55,7 @@ struct BlasLeaf {
 
     // Ties in t go to the lower primitive index within a BLAS, as brute force's in-order test
     // keeps it, so that the hit does not depend on the order a walk meets its leaves in: the
-    // binary, 4-wide and compressed 8-wide walks then agree on coincident faces (a box standing
+    // binary, 8-wide and compressed 8-wide walks then agree on coincident faces (a box standing
     // on a floor), where they would otherwise shade different surfaces.
     PT_HD bool operator()(uint32_t first, uint32_t count, float& tMax) {
         bool found = false;
@@ -97,13 +97,13 @@ PT_HD bool traverseBlas(const RenderScene& scene, const BlasRef& blas, const Tra
     BlasLeaf<kF, Count> leaf{scene, blas,  scene.blasPrimIndices.data + blas.primIndexOffset, ray, hit,
                              count, anyHit};
 #if !defined(__CUDACC__)
-    // The CPU walks the 4-wide form where the scene has one (IntegratorToggles::wideBvh), whose
+    // The CPU walks the 8-wide form where the scene has one (IntegratorToggles::wideBvh), whose
     // leaves are blocks of four triangles (triangle_block.h) or, for spheres, primitive ranges.
     if (!scene.blasWideRoots.empty()) {
         if (!hasFeature<kF>(feature::kSpheres) || blas.kind == GeometryKind::Triangles) {
-            TriangleBlockLeaf<Count> blocks{scene.blasTriangleBlocks.data, ray, hit, count, anyHit};
-            return walkWideBvh(scene.blasWideNodes.data, scene.blasWideRoots[index], ray, tMax, blocks, count,
-                               anyHit);
+            // At the widest SIMD level the processor runs (wide_walk_simd.h).
+            return walkTriangleWideBvh(scene.blasWideNodes.data, scene.blasWideRoots[index],
+                                       scene.blasTriangleBlocks.data, ray, tMax, hit, count.stats(), anyHit);
         }
         return walkWideBvh(scene.blasWideNodes.data, scene.blasWideRoots[index], ray, tMax, leaf, count,
                            anyHit);

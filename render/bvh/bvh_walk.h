@@ -24,14 +24,17 @@ static_assert(sizeof(TraversalStats) == 8, "TraversalStats: 8 bytes (an AOV buff
 // How a walk counts its work. The choice is made once per query (traversal.h), not per node:
 // the walk is compiled once with TraversalCounter and once with NoTraversalCount, whose calls
 // vanish, so rays nobody counts run exactly the code they ran before counters existed.
+// stats() hands the choice to a walk compiled apart (wide_walk_simd.h), as a pointer.
 struct NoTraversalCount {
     PT_HD void node() const {}
     PT_HD void primitive() const {}
+    PT_HD TraversalStats* stats() const { return nullptr; }
 };
 struct TraversalCounter {
-    TraversalStats* stats;  // never null
-    PT_HD void node() const { ++stats->nodesVisited; }
-    PT_HD void primitive() const { ++stats->primitivesTested; }
+    TraversalStats* counts;  // never null
+    PT_HD void node() const { ++counts->nodesVisited; }
+    PT_HD void primitive() const { ++counts->primitivesTested; }
+    PT_HD TraversalStats* stats() const { return counts; }
 };
 
 // min/max written as comparisons: one minss/maxss each on x86, where fminf's NaN rules cost

@@ -2,7 +2,7 @@
 // Collapsing a binary BVH into the compressed 8-wide form the CUDA traversal walks
 // (render/kernel/compressed_wide_node.h; Ylitie, Karras and Laine 2017). Each wide node takes a
 // binary node's children and opens the largest interior one until it holds eight
-// (openLargestChildren, as the CPU's 4-wide collapse; the paper's SAH-optimal collapse is a
+// (openLargestChildren, as the CPU's 8-wide collapse; the paper's SAH-optimal collapse is a
 // later refinement). A node's interior children are made together, so they are consecutive; its leaves'
 // primitives are copied next to each other into a primitive list of the compressed tree's own. Children are
 // placed in slots by the direction they lie in from the node's centre (the paper's section 3.1), a greedy

@@ -1,7 +1,7 @@
 #pragma once
-// Collapsing a binary BVH into a 4-wide one (issue 21) for the CPU traversal: each wide node
+// Collapsing a binary BVH into an 8-wide one (issue 21) for the CPU traversal: each wide node
 // takes a binary node's children and keeps opening the largest interior one (by surface area,
-// the child a ray is likeliest to enter) until it holds four, as Embree's BVH4 and Wald et al.
+// the child a ray is likeliest to enter) until it holds eight, as Embree's BVH8 and Wald et al.
 // 2008 ("Getting Rid of Packets", the multi-branching BVH) collapse a binary SAH tree. Leaves
 // keep their primitive ranges, so the wide walk tests the primitives the binary walk would;
 // optionally a binary subtree of few primitives becomes one wide leaf (their range), as
@@ -24,7 +24,7 @@ struct WideBvh {
 
 // The up to `width` binary nodes under binary interior node `binary` that one wide node holds:
 // its two children, the largest interior one (by surface area) opened while there is room.
-// Shared by the 4-wide collapse and the compressed 8-wide one (compressed_wide_bvh.h).
+// Shared by the CPU's 8-wide collapse and the compressed 8-wide one (compressed_wide_bvh.h).
 // Held in place: collapses run it once per wide node, hundreds of thousands of times.
 struct WideChildren {
     static constexpr uint32_t kMaxWidth = 8;

@@ -19,7 +19,7 @@ namespace pt {
 struct CompileOptions {
     bool bruteForce = false;             // no BVH: validation only
     bool mergeSmallInstances = true;     // merged_geometry.h (never with bruteForce)
-    bool wideBvh = false;                // the CPU's 4-wide BLASes too (wide_blases.h)
+    bool wideBvh = false;                // the CPU's 8-wide BLASes too (wide_blases.h)
     bool compressedWideBvh = false;      // the GPU's compressed 8-wide BLASes too (wide_blases.h)
     uint64_t bruteForceBudget = 100000;  // triangles x instances above which bruteForce is refused
     // Meshes of at least this many primitives get a stand-in BLAS (one leaf over them all) and

@@ -1,5 +1,5 @@
 #pragma once
-// The CPU backend's 4-wide BLASes (issue 21): every BLAS of a compiled scene collapsed from its
+// The CPU backend's 8-wide BLASes (issue 21): every BLAS of a compiled scene collapsed from its
 // binary tree into CompiledScene::blasWideNodes (render/bvh/wide_bvh.h), which the shared
 // traversal walks on the host where they exist (blas_traversal.h), with the leaves of triangle
 // BLASes as blocks of four triangles (CompiledScene::blasTriangleBlocks). The binary nodes and

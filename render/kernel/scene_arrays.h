@@ -34,7 +34,7 @@ PT_SCENE_ARRAY(uint32_t, sphereSlots, "sphere material slots")  // parallel to s
 PT_SCENE_ARRAY(BlasRef, blases, "BLAS refs")
 PT_SCENE_ARRAY(BvhNode, blasNodes, "BLAS nodes")
 PT_SCENE_ARRAY(uint32_t, blasPrimIndices, "BLAS primitive indices")
-// The CPU's 4-wide form of the BLASes (render/bvh/wide_bvh.h; IntegratorToggles::wideBvh): each
+// The CPU's 8-wide form of the BLASes (render/bvh/wide_bvh.h; IntegratorToggles::wideBvh): each
 // BLAS's root node in blasWideNodes, or none (empty) where the binary nodes are walked, as
 // on the GPU, which never allocates them.
 PT_SCENE_ARRAY(WideBvhNode, blasWideNodes, "BLAS wide nodes (CPU)")

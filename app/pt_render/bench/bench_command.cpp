@@ -20,6 +20,7 @@
 #include "pt_render/bench/bench_report.h"
 #include "pt_render/bench/bench_sync.h"
 #include "pt_render/commands.h"
+#include "render/bvh/wide_walk_simd.h"
 #include "render/util/stopwatch.h"
 
 namespace pt::cli {
@@ -47,6 +48,12 @@ BenchRequest parseBench(const std::vector<std::string>& args) {
     return r;
 }
 
+// The median rate of `runs` traces of the set after one that warms up; the hits of the last.
+double tracedMrays(Backend& backend, const TracedRaySet& set, uint32_t runs, std::vector<Hit>& hits) {
+    const std::vector<double> seconds = backend.traceRays(*set.rays, set.anyHit, runs + 1, &hits);
+    return double(set.rays->size()) / median({seconds.begin() + 1, seconds.end()}) / 1e6;
+}
+
 // Our traversal rates with the BVH as the toggles have it, with its binary form alone (the wide
 // forms off, where they are on: the yardstick of issue 21's wide BVHs, measured in the same
 // run) and with no BVH; the sets as traced with the first (for the baseline).
@@ -56,7 +63,7 @@ std::vector<TracedRaySet> benchRays(Backend& backend, const Scene& scene, const 
     sets[0].name = "primary", sets[0].rays = &rays.primary;
     sets[1].name = "diffuse bounce", sets[1].rays = &rays.diffuse;
     sets[2].name = "shadow (any hit)", sets[2].rays = &rays.shadow, sets[2].anyHit = true;
-    // The wide form this backend walks: the CPU's 4-wide one or the GPU's compressed 8-wide one.
+    // The wide form this backend walks: the CPU's 8-wide one or the GPU's compressed 8-wide one.
     const bool wide = backend.name() == "cpu" ? settings.toggles.wideBvh : settings.toggles.gpuWideBvh;
     struct Layout {
         const char* name;
@@ -80,10 +87,7 @@ std::vector<TracedRaySet> benchRays(Backend& backend, const Scene& scene, const 
         for (TracedRaySet& set : sets) {
             if (set.rays->empty()) continue;
             std::vector<Hit> hits;
-            const std::vector<double> seconds =
-                backend.traceRays(*set.rays, set.anyHit, settings.runs + 1, &hits);
-            const std::vector<double> timed(seconds.begin() + 1, seconds.end());  // the first run warms up
-            const double rate = double(set.rays->size()) / median(timed) / 1e6;
+            const double rate = tracedMrays(backend, set, settings.runs, hits);
             report.add(
                 {"rays", set.name, layout.name, rate, "Mrays/s", std::to_string(set.rays->size()) + " rays"});
             if (bvh) set.mraysPerSecond = rate, set.hits = std::move(hits);
@@ -102,6 +106,30 @@ std::vector<TracedRaySet> benchRays(Backend& backend, const Scene& scene, const 
     backend.setToggles(settings.toggles);
     syncSettled(backend, scene, SceneChanges::Settings);
     return sets;
+}
+
+// The CPU's 8-wide walk at SSE2 against the level it runs (wide_walk_simd.h), in the same run,
+// where that is AVX2: what the runtime dispatch buys, and that the hits are the same.
+void benchSimdLevels(Backend& backend, const std::vector<TracedRaySet>& sets, const BenchSettings& settings,
+                     BenchReport& report) {
+    if (backend.name() != "cpu" || !settings.toggles.wideBvh || settings.toggles.bruteForce) return;
+    const SimdLevel level = wideWalkSimdLevel();
+    if (level == SimdLevel::Sse2) return;
+    setWideWalkSimdLevel(SimdLevel::Sse2);
+    for (const TracedRaySet& set : sets) {
+        if (set.rays->empty() || set.mraysPerSecond <= 0) continue;
+        std::vector<Hit> hits;
+        const double rate = tracedMrays(backend, set, settings.runs, hits);
+        size_t differ = 0;
+        for (size_t i = 0; i < hits.size() && i < set.hits.size(); ++i) {
+            differ += hits[i].valid() != set.hits[i].valid() || hits[i].t != set.hits[i].t ||
+                      (!set.anyHit && hits[i].primitive != set.hits[i].primitive);
+        }
+        report.add({"rays", set.name, "8-wide BVH, SSE2 walk", rate, "Mrays/s", ""});
+        report.add({"rays", set.name, std::string(simdLevelName(level)) + " / SSE2 walk",
+                    set.mraysPerSecond / rate, "x", "same run; " + std::to_string(differ) + " hits differ"});
+    }
+    setWideWalkSimdLevel(level);
 }
 
 }  // namespace
@@ -158,6 +186,7 @@ int runBench(const std::vector<std::string>& args) {
     const BenchRays rays =
         makeBenchRays(compiled, scene.render.width, scene.render.height, scene.render.seed);
     const std::vector<TracedRaySet> traced = benchRays(*backend, scene, rays, r.settings, report);
+    benchSimdLevels(*backend, traced, r.settings, report);
     phase("path tracing");
     benchPathTracing(*backend, scene, r.settings, report);
     phase("BVH builds");

@@ -5,12 +5,14 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <random>
 #include <utility>
 #include <vector>
 
 #include "render/bvh/aabb.h"
 #include "render/bvh/traversal.h"
+#include "render/bvh/wide_walk_simd.h"
 #include "render/compile/compile_scene.h"
 #include "render/scene/scene.h"
 
@@ -127,15 +129,22 @@ inline Mesh makeIcosphere(int levels) {
 }
 
 // The BVH layouts traversal must agree on: the binary tree every backend builds, the CPU's
-// 4-wide form of it (render/bvh/wide_bvh.h, IntegratorToggles::wideBvh) and the GPU's
+// 8-wide form of it (render/bvh/wide_bvh.h, IntegratorToggles::wideBvh), walked at the widest
+// SIMD level the processor runs (Wide) and at SSE2 (WideSse2; wide_walk_simd.h), and the GPU's
 // compressed 8-wide form (render/bvh/compressed_wide_bvh.h), walked here by the same shared code.
-enum class Layout { Binary, Wide, Compressed };
-constexpr Layout kLayouts[] = {Layout::Binary, Layout::Wide, Layout::Compressed};
+enum class Layout { Binary, Wide, WideSse2, Compressed };
+constexpr Layout kLayouts[] = {Layout::Binary, Layout::Wide, Layout::WideSse2, Layout::Compressed};
 inline const char* layoutName(Layout layout) {
-    return layout == Layout::Wide ? "Wide" : layout == Layout::Compressed ? "Compressed" : "Binary";
+    switch (layout) {
+        case Layout::Binary: return "Binary";
+        case Layout::Wide: return "Wide";
+        case Layout::WideSse2: return "WideSse2";
+        case Layout::Compressed: return "Compressed";
+    }
+    return "";
 }
 inline CompileOptions layoutOptions(Layout layout, CompileOptions options = {}) {
-    options.wideBvh = layout == Layout::Wide;
+    options.wideBvh = layout == Layout::Wide || layout == Layout::WideSse2;
     options.compressedWideBvh = layout == Layout::Compressed;
     return options;
 }
@@ -143,6 +152,30 @@ inline CompileOptions layoutOptions(Layout layout, CompileOptions options = {}) 
 inline std::string layoutTestName(const ::testing::TestParamInfo<Layout>& info) {
     return layoutName(info.param);
 }
+
+// Sets the wide walk's SIMD level for its lifetime, and restores the one before.
+class ScopedSimdLevel {
+public:
+    explicit ScopedSimdLevel(SimdLevel level) : before_(wideWalkSimdLevel()) { setWideWalkSimdLevel(level); }
+    ~ScopedSimdLevel() { setWideWalkSimdLevel(before_); }
+    ScopedSimdLevel(const ScopedSimdLevel&) = delete;
+    ScopedSimdLevel& operator=(const ScopedSimdLevel&) = delete;
+
+private:
+    SimdLevel before_;
+};
+
+// Base of the suites of TEST_P over the layouts: WideSse2 walks at SSE2 while its test runs.
+class LayoutTest : public ::testing::TestWithParam<Layout> {
+protected:
+    void SetUp() override {
+        level_.emplace(GetParam() == Layout::WideSse2 ? SimdLevel::Sse2 : supportedSimdLevel());
+    }
+    void TearDown() override { level_.reset(); }
+
+private:
+    std::optional<ScopedSimdLevel> level_;
+};
 
 // A scene with the given meshes and (mesh, transform) instances, compiled with BVHs.
 struct InstanceSpec {

@@ -1,6 +1,6 @@
 // Closest- and any-hit traversal (render/bvh/traversal.h) against brute force over one mesh:
 // random soups of every kind, axis-aligned rays, finite tMax, empty scenes, stats; each for the
-// binary BVH and for the CPU's 4-wide form of it.
+// binary BVH and for the CPU's 8-wide form of it.
 #include "render/bvh/traversal.h"
 
 #include <gtest/gtest.h>
@@ -17,7 +17,7 @@ constexpr SoupKind kKinds[] = {SoupKind::Uniform, SoupKind::Clustered, SoupKind:
                                SoupKind::CoincidentCentroids};
 
 // rays x triangles per kind: many rays through small soups, fewer through large ones.
-class Traversal : public ::testing::TestWithParam<test::Layout> {};
+class Traversal : public test::LayoutTest {};
 INSTANTIATE_TEST_SUITE_P(Layouts, Traversal, ::testing::ValuesIn(test::kLayouts), test::layoutTestName);
 
 void compareSoups(uint32_t triangles, uint32_t rays, uint32_t seed, test::Layout layout) {

@@ -46,7 +46,7 @@ CompiledScene makeScene(Rng& rng, std::vector<test::InstanceSpec>& specs, bool m
     return test::compileTestScene(std::move(meshes), specs, options);
 }
 
-class TwoLevelLayouts : public ::testing::TestWithParam<test::Layout> {};
+class TwoLevelLayouts : public test::LayoutTest {};
 INSTANTIATE_TEST_SUITE_P(Layouts, TwoLevelLayouts, ::testing::ValuesIn(test::kLayouts), test::layoutTestName);
 
 TEST_P(TwoLevelLayouts, MatchesBruteForceOverInstances) {

@@ -103,7 +103,7 @@ uint64_t shootFromInside(const RenderScene& scene, const Mesh& mesh, Rng& rng, f
     return slipped;
 }
 
-class WatertightLayouts : public ::testing::TestWithParam<test::Layout> {};
+class WatertightLayouts : public test::LayoutTest {};
 INSTANTIATE_TEST_SUITE_P(Layouts, WatertightLayouts, ::testing::ValuesIn(test::kLayouts),
                          test::layoutTestName);
 

@@ -85,7 +85,7 @@ TEST(AovCuda, SphereAovsMatchTheCpu) {
     const AovMask aovs = kAllAovs & ~aovBit(Aov::Variance);  // variance: see the noisy scene
     CpuBackend cpu;
     // bvh_cost counts the nodes of the walk that ran: the CPU walks the binary tree here, as the
-    // GPU does, not its 4-wide form.
+    // GPU does, not its 8-wide form.
     IntegratorToggles binaryWalk = schedules(false)[0].toggles;
     binaryWalk.wideBvh = false;
     renderAovs(cpu, scene, 4, aovs, binaryWalk);

@@ -1,0 +1,74 @@
+// The CPU's 8-wide walk loop (issue 21), included twice on purpose, so no include guard: by
+// wide_walk.h into namespace pt, where the node test is SSE's, and by wide_walk_avx2.cpp into
+// namespace pt::avx2 under an AVX2 target pragma, where it is one 256-bit test. Each copy calls
+// the WideSlabRay, wideSlabRay and intersectWideNode of the namespace it is included in, and
+// its code is compiled for that namespace's instruction set; everything else comes from pt.
+// Included after those three are declared, inside the namespace; it includes nothing itself.
+// Calls to the per-namespace functions are written (f)(args): the parentheses turn off
+// argument-dependent lookup, which would also find pt's copy through the arguments' types.
+
+// walkBvh over the wide tree `nodes` from node `root`: `leaf(first, count, tMax)` as there. The
+// nearest child hit is taken next without a trip through the stack (a node whose ray hits one
+// child only pushes nothing); the order of visits is the binary walk's nearest-first order.
+template <class LeafFn, class Count>
+bool walkWideBvh(const WideBvhNode* nodes, uint32_t root, const TraversalRay& ray, float& tMax, LeafFn& leaf,
+                 Count count, bool anyHit) {
+    const WideSlabRay slab = (wideSlabRay)(ray);
+    WideWalkEntry stack[kWideStackSize];
+    uint32_t size = 0;
+    WideWalkEntry current{root, 0, 0.0f};
+    bool found = false;
+    for (;;) {
+        count.node();
+        if (current.count > 0) {
+            if (leaf(current.child, current.count, tMax)) {
+                found = true;
+                if (anyHit) return true;
+            }
+        } else {
+            const WideBvhNode& node = nodes[current.child];
+            alignas(32) float entry[WideBvhNode::kWidth];
+            int hits = (intersectWideNode)(slab, node, tMax, entry);
+            if (hits != 0) {
+                // The hit children farthest first (an insertion sort of at most eight): all but
+                // the nearest go on the stack, so the nearest of them is popped next.
+                uint32_t order[WideBvhNode::kWidth], n = 0;
+                for (; hits != 0; hits &= hits - 1) {
+                    const uint32_t slot = uint32_t(__builtin_ctz(unsigned(hits)));
+                    uint32_t at = n++;
+                    while (at > 0 && entry[order[at - 1]] < entry[slot]) {
+                        order[at] = order[at - 1];
+                        --at;
+                    }
+                    order[at] = slot;
+                }
+                assert(size + n - 1 <= kWideStackSize && "BVH deeper than the wide traversal stack");
+                for (uint32_t i = 0; i + 1 < n; ++i) {
+                    const uint32_t slot = order[i];
+                    stack[size++] = {node.child[slot], node.count[slot], entry[slot]};
+                }
+                const uint32_t nearest = order[n - 1];
+                current = {node.child[nearest], node.count[nearest], entry[nearest]};
+                continue;
+            }
+        }
+        // Next: the nearest entry left that the ray can still reach before tMax.
+        do {
+            if (size == 0) return found;
+            current = stack[--size];
+        } while (current.entry > tMax * kSlabExitScale);
+    }
+}
+
+// The walk of a triangle BLAS whose leaves index `blocks` (TriangleBlockLeaf), counted into
+// `stats` where it is not null.
+inline bool walkTriangleBlocks(const WideBvhNode* nodes, uint32_t root, const TriangleBlock* blocks,
+                               const TraversalRay& ray, float& tMax, Hit& hit, TraversalStats* stats,
+                               bool anyHit) {
+    if (stats) {
+        TriangleBlockLeaf<TraversalCounter> leaf{blocks, ray, hit, TraversalCounter{stats}, anyHit};
+        return (walkWideBvh)(nodes, root, ray, tMax, leaf, TraversalCounter{stats}, anyHit);
+    }
+    TriangleBlockLeaf<NoTraversalCount> leaf{blocks, ray, hit, {}, anyHit};
+    return (walkWideBvh)(nodes, root, ray, tMax, leaf, NoTraversalCount{}, anyHit);
+}

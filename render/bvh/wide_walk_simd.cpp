@@ -1,0 +1,66 @@
+#include "render/bvh/wide_walk_simd.h"
+
+#include <atomic>
+#include <stdexcept>
+#include <string>
+
+#include "render/bvh/wide_walk.h"
+
+namespace pt {
+
+namespace {
+
+using WalkFn = bool (*)(const WideBvhNode*, uint32_t, const TriangleBlock*, const TraversalRay&, float&, Hit&,
+                        TraversalStats*, bool);
+
+WalkFn walkOf(SimdLevel level) {
+    return level == SimdLevel::Avx2 ? simd_detail::walkTriangleWideBvhAvx2
+                                    : simd_detail::walkTriangleWideBvhSse2;
+}
+
+std::atomic<SimdLevel>& chosenLevel() {
+    static std::atomic<SimdLevel> level{supportedSimdLevel()};
+    return level;
+}
+
+std::atomic<WalkFn>& chosenWalk() {
+    static std::atomic<WalkFn> walk{walkOf(chosenLevel().load())};
+    return walk;
+}
+
+}  // namespace
+
+const char* simdLevelName(SimdLevel level) { return level == SimdLevel::Avx2 ? "AVX2" : "SSE2"; }
+
+SimdLevel supportedSimdLevel() {
+    // libgcc's cpuid check also asks the OS (XGETBV) whether it saves the 256-bit registers.
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") ? SimdLevel::Avx2 : SimdLevel::Sse2;
+}
+
+SimdLevel wideWalkSimdLevel() { return chosenLevel().load(std::memory_order_relaxed); }
+
+void setWideWalkSimdLevel(SimdLevel level) {
+    if (level == SimdLevel::Avx2 && supportedSimdLevel() != SimdLevel::Avx2) {
+        throw std::invalid_argument(std::string("this processor does not run ") + simdLevelName(level));
+    }
+    chosenLevel().store(level);
+    chosenWalk().store(walkOf(level));
+}
+
+bool walkTriangleWideBvh(const WideBvhNode* nodes, uint32_t root, const TriangleBlock* blocks,
+                         const TraversalRay& ray, float& tMax, Hit& hit, TraversalStats* stats, bool anyHit) {
+    return chosenWalk().load(std::memory_order_relaxed)(nodes, root, blocks, ray, tMax, hit, stats, anyHit);
+}
+
+namespace simd_detail {
+
+bool walkTriangleWideBvhSse2(const WideBvhNode* nodes, uint32_t root, const TriangleBlock* blocks,
+                             const TraversalRay& ray, float& tMax, Hit& hit, TraversalStats* stats,
+                             bool anyHit) {
+    return walkTriangleBlocks(nodes, root, blocks, ray, tMax, hit, stats, anyHit);
+}
+
+}  // namespace simd_detail
+
+}  // namespace pt
