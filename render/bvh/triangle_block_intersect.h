@@ -93,9 +93,10 @@ inline int intersectTriangleBlock(const WatertightRay& ray, float tMax, const Tr
 }
 
 // Leaf functor of walkWideBvh for a BLAS of triangles whose wide leaves index TriangleBlocks
-// (`first` a block, `count` its triangles). The same hit as BlasLeaf's over the same
-// primitives: the closest t, ties to the lower primitive, which does not depend on the order
-// the lanes are looked at in.
+// (`first` the first block, `count` its triangles, four a block, in consecutive blocks). The
+// same hit as BlasLeaf's over the same primitives: the closest t, ties to the lower primitive,
+// which does not depend on the order the lanes are looked at in. Every triangle of a block is
+// tested, so all count as tested, also where an any-hit query stops at the first.
 template <class Count>
 struct TriangleBlockLeaf {
     const TriangleBlock* blocks;  // RenderScene::blasTriangleBlocks
@@ -107,8 +108,19 @@ struct TriangleBlockLeaf {
     bool hitHere = false;  // this walk has found a hit: tMax is that hit's t
 
     bool operator()(uint32_t first, uint32_t count, float& tMax) {
-        for (uint32_t i = 0; i < count; ++i) counter.primitive();
-        const TriangleBlock& block = blocks[first];
+        bool found = false;
+        for (uint32_t b = 0; b * TriangleBlock::kWidth < count; ++b) {
+            if (testBlock(blocks[first + b], count - b * TriangleBlock::kWidth, tMax)) {
+                found = true;
+                if (anyHit) return true;
+            }
+        }
+        return found;
+    }
+
+    // One block, of which `count` lanes (at most all four) are triangles of the leaf.
+    bool testBlock(const TriangleBlock& block, uint32_t count, float& tMax) {
+        for (uint32_t i = 0; i < count && i < TriangleBlock::kWidth; ++i) counter.primitive();
         const float limit = hitHere ? intAsFloat(floatAsInt(tMax) + 1) : tMax;  // t == tMax too
         __m128 t, u, v;
         int lanes = intersectTriangleBlock(ray.watertight, limit, block, t, u, v);

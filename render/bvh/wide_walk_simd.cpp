@@ -10,22 +10,10 @@ namespace pt {
 
 namespace {
 
-using WalkFn = bool (*)(const WideBvhNode*, uint32_t, const TriangleBlock*, const TraversalRay&, float&, Hit&,
-                        TraversalStats*, bool);
-
-WalkFn walkOf(SimdLevel level) {
-    return level == SimdLevel::Avx2 ? simd_detail::walkTriangleWideBvhAvx2
-                                    : simd_detail::walkTriangleWideBvhSse2;
-}
-
+// The level alone is stored (the walk follows from it at each call), so a change is one store.
 std::atomic<SimdLevel>& chosenLevel() {
     static std::atomic<SimdLevel> level{supportedSimdLevel()};
     return level;
-}
-
-std::atomic<WalkFn>& chosenWalk() {
-    static std::atomic<WalkFn> walk{walkOf(chosenLevel().load())};
-    return walk;
 }
 
 }  // namespace
@@ -45,12 +33,13 @@ void setWideWalkSimdLevel(SimdLevel level) {
         throw std::invalid_argument(std::string("this processor does not run ") + simdLevelName(level));
     }
     chosenLevel().store(level);
-    chosenWalk().store(walkOf(level));
 }
 
 bool walkTriangleWideBvh(const WideBvhNode* nodes, uint32_t root, const TriangleBlock* blocks,
                          const TraversalRay& ray, float& tMax, Hit& hit, TraversalStats* stats, bool anyHit) {
-    return chosenWalk().load(std::memory_order_relaxed)(nodes, root, blocks, ray, tMax, hit, stats, anyHit);
+    return wideWalkSimdLevel() == SimdLevel::Avx2
+               ? simd_detail::walkTriangleWideBvhAvx2(nodes, root, blocks, ray, tMax, hit, stats, anyHit)
+               : simd_detail::walkTriangleWideBvhSse2(nodes, root, blocks, ray, tMax, hit, stats, anyHit);
 }
 
 namespace simd_detail {

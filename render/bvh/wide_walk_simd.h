@@ -28,6 +28,18 @@ SimdLevel wideWalkSimdLevel();
 // processor does not run. Not meant to change while rays are in flight.
 void setWideWalkSimdLevel(SimdLevel level);
 
+// Sets the wide walk's level for its lifetime, and restores the one before.
+class ScopedSimdLevel {
+public:
+    explicit ScopedSimdLevel(SimdLevel level) : before_(wideWalkSimdLevel()) { setWideWalkSimdLevel(level); }
+    ~ScopedSimdLevel() { setWideWalkSimdLevel(before_); }
+    ScopedSimdLevel(const ScopedSimdLevel&) = delete;
+    ScopedSimdLevel& operator=(const ScopedSimdLevel&) = delete;
+
+private:
+    SimdLevel before_;
+};
+
 // walkWideBvh over the 8-wide tree of a triangle BLAS whose leaves index `blocks`, with
 // TriangleBlockLeaf, at the chosen level; counts into `stats` where it is not null.
 bool walkTriangleWideBvh(const WideBvhNode* nodes, uint32_t root, const TriangleBlock* blocks,

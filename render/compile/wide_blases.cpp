@@ -29,24 +29,28 @@ void setBlockLane(const CompiledScene& compiled, const BlasRef& blas, uint32_t l
     block.primitive[lane] = local;
 }
 
-// One block per leaf of the wide tree of triangle BLAS `blas`; each leaf slot's child becomes
-// its block's index (from the BLAS's first block). Lanes past a leaf's count repeat its first
-// triangle (triangle_block.h).
+// The blocks of each leaf of the wide tree of triangle BLAS `blas`, one per four triangles
+// (one, but for leaves the collapse did not make, as a deferred mesh's stand-in), consecutive;
+// each leaf slot's child becomes its first block's index (from the BLAS's first block). Lanes
+// past a leaf's count repeat its last block's first triangle (triangle_block.h).
 std::vector<TriangleBlock> makeTriangleBlocks(const CompiledScene& compiled, const BlasRef& blas,
                                               WideBvh& wide) {
     std::vector<TriangleBlock> blocks;
     for (WideBvhNode& node : wide.nodes) {
         for (uint32_t s = 0; s < WideBvhNode::kWidth; ++s) {
-            if (node.count[s] == 0 || node.count[s] == WideBvhNode::kEmpty) continue;
-            PT_CHECK(node.count[s] <= TriangleBlock::kWidth);
-            TriangleBlock block;
-            for (uint32_t lane = 0; lane < TriangleBlock::kWidth; ++lane) {
-                const uint32_t entry = node.child[s] + (lane < node.count[s] ? lane : 0);
-                setBlockLane(compiled, blas, compiled.blasPrimIndices[blas.primIndexOffset + entry], block,
-                             lane);
+            const uint32_t count = node.count[s];
+            if (count == 0 || count == WideBvhNode::kEmpty) continue;
+            const uint32_t firstBlock = uint32_t(blocks.size());
+            for (uint32_t first = 0; first < count; first += TriangleBlock::kWidth) {
+                TriangleBlock block;
+                for (uint32_t lane = 0; lane < TriangleBlock::kWidth; ++lane) {
+                    const uint32_t entry = node.child[s] + first + (first + lane < count ? lane : 0);
+                    setBlockLane(compiled, blas, compiled.blasPrimIndices[blas.primIndexOffset + entry],
+                                 block, lane);
+                }
+                blocks.push_back(block);
             }
-            node.child[s] = uint32_t(blocks.size());
-            blocks.push_back(block);
+            node.child[s] = firstBlock;
         }
     }
     return blocks;

@@ -16,8 +16,9 @@ struct alignas(32) WideBvhNode {
     float loX[kWidth], loY[kWidth], loZ[kWidth];
     float hiX[kWidth], hiY[kWidth], hiZ[kWidth];
     // Interior child: its node index (into the scene's wide nodes) and count 0. Leaf: its
-    // first entry in its BLAS's primitive-index list and its count (1..maxLeafSize). Unused:
-    // count kEmpty (children fill the slots from the first).
+    // primitive count and, in a triangle BLAS, its first block in the scene's triangle blocks
+    // (four triangles a block), in a sphere BLAS its first entry in the BLAS's primitive-index
+    // list. Unused: count kEmpty (children fill the slots from the first).
     uint32_t child[kWidth];
     uint32_t count[kWidth];
 };

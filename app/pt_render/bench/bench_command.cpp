@@ -115,7 +115,7 @@ void benchSimdLevels(Backend& backend, const std::vector<TracedRaySet>& sets, co
     if (backend.name() != "cpu" || !settings.toggles.wideBvh || settings.toggles.bruteForce) return;
     const SimdLevel level = wideWalkSimdLevel();
     if (level == SimdLevel::Sse2) return;
-    setWideWalkSimdLevel(SimdLevel::Sse2);
+    const ScopedSimdLevel sse2(SimdLevel::Sse2);
     for (const TracedRaySet& set : sets) {
         if (set.rays->empty() || set.mraysPerSecond <= 0) continue;
         std::vector<Hit> hits;
@@ -129,7 +129,6 @@ void benchSimdLevels(Backend& backend, const std::vector<TracedRaySet>& sets, co
         report.add({"rays", set.name, std::string(simdLevelName(level)) + " / SSE2 walk",
                     set.mraysPerSecond / rate, "x", "same run; " + std::to_string(differ) + " hits differ"});
     }
-    setWideWalkSimdLevel(level);
 }
 
 }  // namespace

@@ -153,18 +153,6 @@ inline std::string layoutTestName(const ::testing::TestParamInfo<Layout>& info) 
     return layoutName(info.param);
 }
 
-// Sets the wide walk's SIMD level for its lifetime, and restores the one before.
-class ScopedSimdLevel {
-public:
-    explicit ScopedSimdLevel(SimdLevel level) : before_(wideWalkSimdLevel()) { setWideWalkSimdLevel(level); }
-    ~ScopedSimdLevel() { setWideWalkSimdLevel(before_); }
-    ScopedSimdLevel(const ScopedSimdLevel&) = delete;
-    ScopedSimdLevel& operator=(const ScopedSimdLevel&) = delete;
-
-private:
-    SimdLevel before_;
-};
-
 // Base of the suites of TEST_P over the layouts: WideSse2 walks at SSE2 while its test runs.
 class LayoutTest : public ::testing::TestWithParam<Layout> {
 protected:

@@ -161,13 +161,16 @@ TEST(TriangleBlock, TheLeafKeepsTheClosestHitAndTiesGoToTheLowerPrimitive) {
         }
     }
     {
-        // Any hit stops at the first lane it accepts, and counts every triangle of the leaf.
+        // Any hit stops at the first lane it accepts (lane 0, at t = 3), and counts every
+        // triangle of the leaf.
         Hit hit;
         TraversalStats stats;
         TriangleBlockLeaf<TraversalCounter> leaf{&block, ray, hit, TraversalCounter{&stats}, true};
         float tMax = kInf;
         EXPECT_TRUE(leaf(0, 3, tMax));
         EXPECT_EQ(stats.primitivesTested, 3u);
+        EXPECT_EQ(hit.primitive, 40u) << "the first lane that hits, not the closest";
+        EXPECT_EQ(tMax, 3.0f);
     }
 }
 

@@ -18,7 +18,7 @@ using test::Rng;
 TEST(WideWalkSimd, TheWalkStartsAtTheWidestLevelTheProcessorRuns) {
     EXPECT_EQ(wideWalkSimdLevel(), supportedSimdLevel());
     {
-        const test::ScopedSimdLevel sse2(SimdLevel::Sse2);
+        const ScopedSimdLevel sse2(SimdLevel::Sse2);
         EXPECT_EQ(wideWalkSimdLevel(), SimdLevel::Sse2);
     }
     EXPECT_EQ(wideWalkSimdLevel(), supportedSimdLevel());
@@ -46,19 +46,22 @@ TEST(WideWalkSimd, EveryLevelWalksTheSameNodesToTheSameHits) {
                             : test::rayAtTriangle(rng, mesh, Vec3(-1.2f), Vec3(1.2f));
             if (i % 5 == 0) ray.tMax = rng.uniform(0.0f, 1.5f);
             Hit hit[2];
-            TraversalStats stats[2];
+            TraversalStats stats[2], anyStats[2];
             bool any[2];
             for (const SimdLevel level : {SimdLevel::Sse2, SimdLevel::Avx2}) {
-                const test::ScopedSimdLevel scoped(level);
+                const ScopedSimdLevel scoped(level);
                 const int l = level == SimdLevel::Avx2;
                 intersectClosest(scene, ray, hit[l], &stats[l]);
-                any[l] = intersectAny(scene, ray);
+                any[l] = intersectAny(scene, ray, &anyStats[l]);
             }
             hits += hit[0].valid();
             differ += hit[0].valid() != hit[1].valid() || hit[0].t != hit[1].t || hit[0].u != hit[1].u ||
-                      hit[0].primitive != hit[1].primitive || any[0] != any[1] ||
+                      hit[0].v != hit[1].v || hit[0].primitive != hit[1].primitive ||
+                      hit[0].instance != hit[1].instance || any[0] != any[1] ||
                       stats[0].nodesVisited != stats[1].nodesVisited ||
-                      stats[0].primitivesTested != stats[1].primitivesTested;
+                      stats[0].primitivesTested != stats[1].primitivesTested ||
+                      anyStats[0].nodesVisited != anyStats[1].nodesVisited ||
+                      anyStats[0].primitivesTested != anyStats[1].primitivesTested;
         }
         EXPECT_EQ(differ, 0u);
         EXPECT_GT(hits, 5000u) << "the rays should hit often enough to test something";

@@ -13,9 +13,11 @@ namespace {
 using test::InstanceSpec;
 
 // A large soup drawn once, a small one drawn at two places (merged where small enough).
-CompiledScene compileTwoSoups(uint32_t deferFrom, const Mesh& large, const Mesh& small) {
+CompiledScene compileTwoSoups(uint32_t deferFrom, const Mesh& large, const Mesh& small,
+                              bool wideBvh = false) {
     CompileOptions options;
     options.deferBlasesFrom = deferFrom;
+    options.wideBvh = wideBvh;
     return test::compileTestScene({large, small},
                                   {{0, Affine3{}},
                                    {1, translationTransform(Vec3(3.0f, 0.0f, 0.0f))},
@@ -54,11 +56,16 @@ TEST(DeferredBlas, ALargeMeshGetsAStandInAndItsBoxes) {
     EXPECT_GT(deferred.blases[1].nodeCount, 1u);
 }
 
-TEST(DeferredBlas, TheStandInFindsTheBruteForceHits) {
+// Also as the CPU's 8-wide form, whose leaf of 3000 triangles is 750 consecutive blocks.
+class DeferredBlasLayouts : public ::testing::TestWithParam<bool> {};
+INSTANTIATE_TEST_SUITE_P(WideBvh, DeferredBlasLayouts, ::testing::Bool());
+
+TEST_P(DeferredBlasLayouts, TheStandInFindsTheBruteForceHits) {
     test::Rng rng(13);
     const Mesh large = test::makeSoup(test::SoupKind::Uniform, 3000, rng);
     const Mesh small = test::makeSoup(test::SoupKind::Clustered, 300, rng);
-    const CompiledScene deferred = compileTwoSoups(1000, large, small);
+    const CompiledScene deferred = compileTwoSoups(1000, large, small, GetParam());
+    EXPECT_EQ(deferred.blasWideNodes.empty(), !GetParam());
     const RenderScene view = deferred.view();
     int failures = 0, hits = 0;
     for (int i = 0; i < 2000; ++i) {
