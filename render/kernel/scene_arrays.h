@@ -39,9 +39,9 @@ PT_SCENE_ARRAY(uint32_t, blasPrimIndices, "BLAS primitive indices")
 // on the GPU, which never allocates them.
 PT_SCENE_ARRAY(WideBvhNode, blasWideNodes, "BLAS wide nodes (CPU)")
 PT_SCENE_ARRAY(uint32_t, blasWideRoots, "BLAS wide roots (CPU)")
-// The leaves of triangle BLASes' wide forms, four triangles each (render/kernel/triangle_block.h):
-// a wide leaf of a triangle BLAS indexes one block here, where a sphere BLAS's indexes
-// blasPrimIndices. Empty with the wide forms.
+// The leaves of triangle BLASes' wide forms, four triangles a block (render/kernel/triangle_block.h):
+// a wide leaf of a triangle BLAS indexes its first block here (its blocks are consecutive),
+// where a sphere BLAS's indexes blasPrimIndices. Empty without the wide forms.
 PT_SCENE_ARRAY(TriangleBlock, blasTriangleBlocks, "BLAS triangle blocks (CPU)")
 // The CUDA traversal's compressed 8-wide form of the BLASes (render/bvh/compressed_wide_bvh.h;
 // IntegratorToggles::wideBvh): each BLAS's root node in blasCompressedNodes, or

@@ -129,9 +129,9 @@ TEST(WideBvh, TheWideWalkVisitsFewerNodesForTheSameHits) {
     // Nodes popped (leaves included): eight children a node and merged leaves (measured: 2.7x
     // fewer).
     EXPECT_LT(wideStats.nodesVisited * 2, binaryStats.nodesVisited);
-    // Subtrees of up to four triangles are one leaf there, tested four at a time: more
-    // triangles are tested (measured: 3.4x), but not four for each the binary walk tests.
-    EXPECT_LT(wideStats.primitivesTested, binaryStats.primitivesTested * 4);
+    // Subtrees of up to eight triangles are one leaf there, tested four at a time: more
+    // triangles are tested (measured: 7.0x), but not eight for each the binary walk tests.
+    EXPECT_LT(wideStats.primitivesTested, binaryStats.primitivesTested * 8);
     EXPECT_GT(wideStats.primitivesTested, binaryStats.primitivesTested * 0.9);
 }
 
