@@ -1,11 +1,12 @@
 #pragma once
-// The CPU's walk of an 8-wide BVH (wide_bvh.h; issue 21): SSE slab tests take a node's eight
-// child boxes four at a time, the children hit are visited nearest first, and leaves go to the same
-// leaf functor the binary walk (bvh_walk.h) calls, so the primitives tested and the hits found
-// are the binary walk's. Each lane computes exactly what intersectBox computes for that box
-// (the same zero-axis origins, the same exit scale, min/max with the same operand order), so
-// the box test is as conservative as the binary one and hits stay exact. Host only: SSE2 is
-// part of every x86-64 CPU, so no dispatch is needed.
+// The CPU's walk of an 8-wide BVH (wide_bvh.h; issue 21) at SSE2, which every x86-64 CPU runs:
+// slab tests take a node's eight child boxes four at a time, the children hit are visited
+// nearest first, and leaves go to a leaf functor (a sphere BLAS's is the binary walk's,
+// bvh_walk.h; a triangle BLAS's tests blocks of four, triangle_block_intersect.h), so the hits
+// found are the binary walk's. Each lane computes exactly what intersectBox computes for that
+// box (the same zero-axis origins, the same exit scale, min/max with the same operand order),
+// so the box test is as conservative as the binary one and hits stay exact. Where the CPU runs
+// AVX2, triangle BLASes take the same loop with a 256-bit test (wide_walk_simd.h).
 #if defined(__CUDACC__)
 #error "wide_walk.h is CPU code: CUDA translation units walk the binary BVH"
 #endif
