@@ -6,12 +6,12 @@
 #include <tbb/task_group.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cassert>
 #include <memory>
 
 #include "render/bvh/bvh_walk.h"
 #include "render/bvh/sah_split.h"
+#include "render/util/large_array.h"
 
 // Sections: the recursive builder / compaction into the canonical depth-first layout /
 // entry point. Split selection and partitioning live in sah_split.{h,cpp}.
@@ -26,6 +26,9 @@ using sah::SahSplit;
 
 constexpr uint32_t kParallelTaskSize = 4096;  // nodes this large build their children as tasks
 constexpr uint32_t kGrain = 1u << 14;
+// Marks an interior node in the scratch array (a leaf's count is at most maxLeafSize).
+constexpr uint32_t kInteriorFlag = 1u << 31;
+constexpr uint32_t kParallelCompactSize = 1u << 13;  // subtrees of this many nodes compact as tasks
 
 // BvhNode's 32 bytes without its initialisers, for the uninitialised scratch array: 2n - 1 of
 // them are reserved, and every page the build touches is one the kernel clears first (10M
@@ -65,27 +68,28 @@ public:
           binCount_(std::clamp(options.binCount, 2u, sah::kMaxBins)),
           maxLeafSize_(std::max(options.maxLeafSize, 1u)) {}
 
-    // Nodes made so far: a binary tree of L leaves has 2L - 1.
-    uint32_t nodeCount() const { return 2 * leaves_.load() - 1; }
-
-    void build(const NodeTask& task) {
+    // Builds the subtree of `task` and returns its node count. An interior node's scratch
+    // `count` holds kInteriorFlag | the node count of its left subtree, which is where the
+    // compaction puts its right child's descendants.
+    uint32_t build(const NodeTask& task) {
         NodeTask left, right;
         if (!split(task, left, right)) {
             nodes_[task.slot] = rawNode(task.bounds, task.begin, task.end - task.begin);
-            leaves_.fetch_add(1, std::memory_order_relaxed);
             if (options_.onLeaf) options_.onLeaf(task.end - task.begin);
-            return;
+            return 1;
         }
-        nodes_[task.slot] = rawNode(task.bounds, task.childBase, 0);
+        uint32_t leftNodes = 0, rightNodes = 0;
         if (task.end - task.begin >= kParallelTaskSize) {
             tbb::task_group group;
-            group.run([&] { build(left); });
-            build(right);
+            group.run([&] { leftNodes = build(left); });
+            rightNodes = build(right);
             group.wait();
         } else {
-            build(left);
-            build(right);
+            leftNodes = build(left);
+            rightNodes = build(right);
         }
+        nodes_[task.slot] = rawNode(task.bounds, task.childBase, kInteriorFlag | leftNodes);
+        return 1 + leftNodes + rightNodes;
     }
 
 private:
@@ -160,7 +164,6 @@ private:
     RawNode* nodes_;
     BvhBuildOptions options_;
     uint32_t binCount_, maxLeafSize_;
-    std::atomic<uint32_t> leaves_{0};
 };
 
 // ---- compaction into the canonical layout ----------------------------------------------------
@@ -175,30 +178,40 @@ BvhNode toBvhNode(const RawNode& raw) {
 }
 
 // The scratch array has gaps (reservations are upper bounds); this renumbers the reachable
-// nodes (`nodeCount` of them) depth first, sibling pairs adjacent, which is also the
-// cache-friendly order. Reserved at their exact number: reserving 2n - 1 and shrinking after
-// copied the whole tree once more.
+// nodes depth first, sibling pairs adjacent, which is also the cache-friendly order: node `src`
+// of the scratch goes to out[dst], and its descendants from out[next] on. Each interior node
+// knows its left subtree's node count, so both subtrees are placed at once and large ones are
+// copied as parallel tasks.
+void compactSubtree(const RawNode* scratch, uint32_t src, BvhNode* out, uint32_t dst, uint32_t next) {
+    const RawNode& raw = scratch[src];
+    out[dst] = toBvhNode(raw);
+    if (!(raw.count & kInteriorFlag)) return;
+    out[dst].count = 0;
+    out[dst].leftOrFirst = next;
+    const uint32_t leftNodes = raw.count & ~kInteriorFlag;
+    // The children at next and next + 1; the left one's descendants (leftNodes - 1 of them)
+    // first, then the right one's.
+    const auto left = [&] { compactSubtree(scratch, raw.leftOrFirst, out, next, next + 2); };
+    const auto right = [&] {
+        compactSubtree(scratch, raw.leftOrFirst + 1, out, next + 1, next + 1 + leftNodes);
+    };
+    if (leftNodes >= kParallelCompactSize) {
+        tbb::task_group group;
+        group.run(left);
+        right();
+        group.wait();
+    } else {
+        left();
+        right();
+    }
+}
+
 std::vector<BvhNode> compactNodes(const RawNode* scratch, uint32_t nodeCount) {
     std::vector<BvhNode> out;
     out.reserve(nodeCount);
-    out.push_back(toBvhNode(scratch[0]));
-    struct Pending {
-        uint32_t src, dst;
-    };
-    std::vector<Pending> stack{{0, 0}};
-    while (!stack.empty()) {
-        const Pending p = stack.back();
-        stack.pop_back();
-        const RawNode& raw = scratch[p.src];
-        out[p.dst] = toBvhNode(raw);
-        if (raw.count > 0) continue;
-        const uint32_t left = uint32_t(out.size());
-        out[p.dst].leftOrFirst = left;
-        out.resize(out.size() + 2);
-        stack.push_back({raw.leftOrFirst + 1, left + 1});
-        stack.push_back({raw.leftOrFirst, left});
-    }
-    assert(out.size() == nodeCount && "every node made is reachable");
+    adviseHugePages(out.data(), nodeCount * sizeof(BvhNode));
+    out.resize(nodeCount);
+    compactSubtree(scratch, 0, out.data(), 0, 1);
     return out;
 }
 
@@ -242,13 +255,13 @@ Bvh buildBinnedSahBvh(const Aabb* primBounds, uint32_t count, const BvhBuildOpti
         bvh.nodes[0].count = 0;
         return bvh;
     }
-    std::unique_ptr<Box4[]> boxes(new Box4[count]);
+    const LargeArray<Box4> boxes(count);
     bvh.primIndices.resize(count);
-    std::unique_ptr<RawNode[]> scratch(new RawNode[2 * size_t(count) - 1]);
-    const NodeTask root = prepareRoot(primBounds, count, boxes.get(), bvh.primIndices.data());
-    BinnedSahBuilder builder(boxes.get(), bvh.primIndices.data(), scratch.get(), options);
-    builder.build(root);
-    bvh.nodes = compactNodes(scratch.get(), builder.nodeCount());
+    const LargeArray<RawNode> scratch(2 * size_t(count) - 1);
+    const NodeTask root = prepareRoot(primBounds, count, boxes.data(), bvh.primIndices.data());
+    BinnedSahBuilder builder(boxes.data(), bvh.primIndices.data(), scratch.data(), options);
+    const uint32_t nodeCount = builder.build(root);
+    bvh.nodes = compactNodes(scratch.data(), nodeCount);
     return bvh;
 }
 

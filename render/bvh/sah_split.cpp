@@ -27,12 +27,11 @@ struct BinGrid {
         }
     }
     void add(const Box4& box, const BinMapping& m) {
-        float f[4];
-        m.coordinates(box, f);
+        uint32_t bin[4];
+        m.bins(box, bin);
         for (int a = 0; a < 3; ++a) {
-            const uint32_t b = uint32_t(f[a] > 0.0f ? (f[a] < m.lastBin ? f[a] : m.lastBin) : 0.0f);
-            boxes[a][b].grow(box);
-            ++counts[a][b];
+            boxes[a][bin[a]].grow(box);
+            ++counts[a][bin[a]];
         }
     }
     void merge(const BinGrid& other, uint32_t binCount) {

@@ -97,6 +97,21 @@ struct BinMapping {
         for (int k = 0; k < 4; ++k) out[k] = (box.lo[k] + box.hi[k] - lo[k]) * scale[k];
 #endif
     }
+    // The bins of a box along each axis: its coordinates clamped to [0, lastBin] (NaN to 0) and
+    // truncated, in all lanes at once.
+    void bins(const Box4& box, uint32_t out[4]) const {
+#if defined(__SSE2__)
+        const __m128 c = _mm_add_ps(_mm_load_ps(box.lo), _mm_load_ps(box.hi));
+        const __m128 f = _mm_mul_ps(_mm_sub_ps(c, _mm_load_ps(lo)), _mm_load_ps(scale));
+        // max(f, 0) with f first gives 0 for NaN (maxps returns its second operand then).
+        const __m128 clamped = _mm_min_ps(_mm_max_ps(f, _mm_setzero_ps()), _mm_set1_ps(lastBin));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm_cvttps_epi32(clamped));
+#else
+        float f[4];
+        coordinates(box, f);
+        for (int k = 0; k < 4; ++k) out[k] = uint32_t(f[k] > 0.0f ? (f[k] < lastBin ? f[k] : lastBin) : 0.0f);
+#endif
+    }
     bool belowBin(const Box4& box, int axis, uint32_t bin) const {
         float f[4];
         coordinates(box, f);

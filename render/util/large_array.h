@@ -1,0 +1,71 @@
+#pragma once
+// An uninitialised array of trivially copyable elements for a build's scratch memory, backed by
+// transparent huge pages where the kernel offers them on request (Linux, THP mode "madvise").
+// A build of 1M triangles touches about 100 MB of fresh memory; in 4 KiB pages each first touch
+// is a fault and a page cleared (a tenth of the binned SAH build's samples under perf), in
+// 2 MiB pages one fault in 512: one thread's build of a 1M-triangle sphere went from 299 to
+// 278 ms with its scratch and its nodes on huge pages.
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <memory>
+#include <new>
+#include <type_traits>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+namespace pt {
+
+constexpr size_t kHugePageBytes = size_t(2) << 20;
+
+// Asks for huge pages under the whole 2 MiB pages of [memory, memory + bytes) that nothing has
+// touched yet (a std::vector's reserved storage); harmless where they are not offered.
+inline void adviseHugePages(void* memory, size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    const uintptr_t begin =
+        (reinterpret_cast<uintptr_t>(memory) + kHugePageBytes - 1) / kHugePageBytes * kHugePageBytes;
+    const uintptr_t end = (reinterpret_cast<uintptr_t>(memory) + bytes) / kHugePageBytes * kHugePageBytes;
+    if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#else
+    (void)memory;
+    (void)bytes;
+#endif
+}
+
+template <class T>
+class LargeArray {
+    static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>,
+                  "LargeArray holds plain data it never constructs or destroys");
+
+public:
+    LargeArray() = default;
+    explicit LargeArray(size_t count) : count_(count) {
+        if (count == 0) return;
+        // Below a huge page, a huge page would waste more than it saves.
+        const size_t alignment =
+            count * sizeof(T) >= kHugePageBytes ? kHugePageBytes : alignof(std::max_align_t);
+        const size_t bytes = (count * sizeof(T) + alignment - 1) / alignment * alignment;
+        void* memory = std::aligned_alloc(alignment < alignof(T) ? alignof(T) : alignment, bytes);
+        if (!memory) throw std::bad_alloc();
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+        if (alignment == kHugePageBytes)
+            madvise(memory, bytes, MADV_HUGEPAGE);  // advice: failure is harmless
+#endif
+        data_.reset(static_cast<T*>(memory));
+    }
+
+    T* data() const { return data_.get(); }
+    size_t size() const { return count_; }
+    T& operator[](size_t i) const { return data_.get()[i]; }
+
+private:
+    struct Free {
+        void operator()(T* p) const { std::free(p); }
+    };
+    std::unique_ptr<T, Free> data_;
+    size_t count_ = 0;
+};
+
+}  // namespace pt
