@@ -75,6 +75,7 @@ public:
         NodeTask left, right;
         if (!split(task, left, right)) {
             nodes_[task.slot] = rawNode(task.bounds, task.begin, task.end - task.begin);
+            for (uint32_t i = task.begin; i < task.end; ++i) indices_[i] = boxes_[i].primitive();
             if (options_.onLeaf) options_.onLeaf(task.end - task.begin);
             return 1;
         }
@@ -95,9 +96,7 @@ public:
 private:
     enum class Choice { Leaf, Sah, Median };
 
-    PrimRange range(uint32_t begin, uint32_t end) const {
-        return {boxes_ + begin, indices_ + begin, end - begin};
-    }
+    PrimRange range(uint32_t begin, uint32_t end) const { return {boxes_ + begin, end - begin}; }
 
     Choice choose(const NodeTask& task, const sah::BinMapping& m, SahSplit& split) const {
         const uint32_t n = task.end - task.begin;
@@ -160,7 +159,7 @@ private:
     }
 
     Box4* boxes_;
-    uint32_t* indices_;
+    uint32_t* indices_;  // the output's primIndices, written as each leaf is made
     RawNode* nodes_;
     BvhBuildOptions options_;
     uint32_t binCount_, maxLeafSize_;
@@ -218,7 +217,7 @@ std::vector<BvhNode> compactNodes(const RawNode* scratch, uint32_t nodeCount) {
 // ---- entry point -----------------------------------------------------------------------------
 
 // Copies the input into the build arrays and returns the root task (bounds in parallel).
-NodeTask prepareRoot(const Aabb* primBounds, uint32_t count, Box4* boxes, uint32_t* indices) {
+NodeTask prepareRoot(const Aabb* primBounds, uint32_t count, Box4* boxes) {
     struct Bounds {
         Box4 box = Box4::empty(), centroids = Box4::empty();
     };
@@ -227,9 +226,7 @@ NodeTask prepareRoot(const Aabb* primBounds, uint32_t count, Box4* boxes, uint32
         Range(0, count, kGrain), Bounds{},
         [&](const Range& r, Bounds acc) {
             for (uint32_t i = r.begin(); i != r.end(); ++i) {
-                const Aabb& b = primBounds[i];
-                boxes[i] = {{b.lo.x, b.lo.y, b.lo.z, 0.0f}, {b.hi.x, b.hi.y, b.hi.z, 0.0f}};
-                indices[i] = i;
+                boxes[i] = Box4::ofPrimitive(primBounds[i].lo, primBounds[i].hi, i);
                 acc.box.grow(boxes[i]);
                 acc.centroids.grow(boxes[i].centroidPoint());
             }
@@ -258,7 +255,7 @@ Bvh buildBinnedSahBvh(const Aabb* primBounds, uint32_t count, const BvhBuildOpti
     const LargeArray<Box4> boxes(count);
     bvh.primIndices.resize(count);
     const LargeArray<RawNode> scratch(2 * size_t(count) - 1);
-    const NodeTask root = prepareRoot(primBounds, count, boxes.data(), bvh.primIndices.data());
+    const NodeTask root = prepareRoot(primBounds, count, boxes.data());
     BinnedSahBuilder builder(boxes.data(), bvh.primIndices.data(), scratch.data(), options);
     const uint32_t nodeCount = builder.build(root);
     bvh.nodes = compactNodes(scratch.data(), nodeCount);

@@ -118,33 +118,67 @@ SahSplit findBinnedSplit(const PrimRange& prims, const BinMapping& mapping) {
     return best;
 }
 
-// Sorting a handful of 8-byte keys per axis is cheaper than the fixed 3 x binCount bins of
-// binning, which would dominate the many small nodes near the leaves, and the sweep is exact.
+namespace {
+
+// findSweepSplit of two primitives, most of its calls (half of a 1M-triangle build's nodes):
+// every axis splits a pair the same way at the same cost (a sum of the same two areas), and
+// the sweep takes the first axis of equal costs, so the pair is ordered along x as the sweep
+// would order it, without its sorts.
+SahSplit splitPair(const PrimRange& prims) {
+    SahSplit split;
+    const auto centroidX = [&](uint32_t i) { return prims.boxes[i].lo[0] + prims.boxes[i].hi[0]; };
+    const uint32_t first = centroidX(1) < centroidX(0) ? 1 : 0;
+    const float cost = prims.boxes[first].halfArea() * 1.0f + prims.boxes[1 - first].halfArea() * 1.0f;
+    if (!(cost < kInf)) return split;
+    if (first == 1) std::swap(prims.boxes[0], prims.boxes[1]);
+    split.axis = 0;
+    split.cost = cost;
+    split.leftCount = 1;
+    split.sorted = true;
+    return split;
+}
+
+// A sweep's sort key: the centroid's bits made to order as unsigned integers (negative floats
+// reversed, positive ones above them; -0 is made +0 first, as float comparison has them
+// equal), and the slot below them, so that equal centroids keep their slots' order.
+uint64_t sweepKey(float centroid, uint32_t slot) {
+    const uint32_t bits = uint32_t(floatAsInt(centroid + 0.0f));
+    const uint32_t ordered = bits & 0x80000000u ? ~bits : bits | 0x80000000u;
+    return uint64_t(ordered) << 32 | slot;
+}
+
+}  // namespace
+
+// Sorting a handful of keys per axis is cheaper than the fixed 3 x binCount bins of binning,
+// which would dominate the many small nodes near the leaves, and the sweep is exact.
 SahSplit findSweepSplit(const PrimRange& prims) {
-    struct Key {
-        float centroid;
-        uint32_t slot;
-    };
     const uint32_t n = prims.count;
-    Key keys[3][kSweepSize];
+    if (n == 2) return splitPair(prims);
+    Box4 boxes[kSweepSize];
+    std::copy(prims.boxes, prims.boxes + n, boxes);
+    uint64_t keys[3][kSweepSize];
+    for (uint32_t i = 0; i < n; ++i) {
+        const Box4 c = boxes[i].centroidPoint();
+        for (int a = 0; a < 3; ++a) keys[a][i] = sweepKey(c.lo[a], i);
+    }
     float rightArea[kSweepSize];
     SahSplit best;
     for (int a = 0; a < 3; ++a) {
-        for (uint32_t i = 0; i < n; ++i) keys[a][i] = {prims.boxes[i].lo[a] + prims.boxes[i].hi[a], i};
+        uint64_t* key = keys[a];
         for (uint32_t i = 1; i < n; ++i) {  // insertion sort: n is tiny
-            const Key key = keys[a][i];
+            const uint64_t k = key[i];
             uint32_t j = i;
-            for (; j > 0 && key.centroid < keys[a][j - 1].centroid; --j) keys[a][j] = keys[a][j - 1];
-            keys[a][j] = key;
+            for (; j > 0 && k < key[j - 1]; --j) key[j] = key[j - 1];
+            key[j] = k;
         }
         Box4 acc = Box4::empty();
         for (uint32_t i = n - 1; i > 0; --i) {
-            acc.grow(prims.boxes[keys[a][i].slot]);
+            acc.grow(boxes[uint32_t(key[i])]);
             rightArea[i] = acc.halfArea();
         }
         acc = Box4::empty();
         for (uint32_t i = 1; i < n; ++i) {
-            acc.grow(prims.boxes[keys[a][i - 1].slot]);
+            acc.grow(boxes[uint32_t(key[i - 1])]);
             const float cost = acc.halfArea() * float(i) + rightArea[i] * float(n - i);
             if (cost < best.cost) {
                 best.axis = a;
@@ -154,14 +188,7 @@ SahSplit findSweepSplit(const PrimRange& prims) {
         }
     }
     if (best.axis < 0) return best;
-    Box4 boxes[kSweepSize];
-    uint32_t indices[kSweepSize];
-    for (uint32_t i = 0; i < n; ++i) {
-        boxes[i] = prims.boxes[keys[best.axis][i].slot];
-        indices[i] = prims.indices[keys[best.axis][i].slot];
-    }
-    std::copy(boxes, boxes + n, prims.boxes);
-    std::copy(indices, indices + n, prims.indices);
+    for (uint32_t i = 0; i < n; ++i) prims.boxes[i] = boxes[uint32_t(keys[best.axis][i])];
     best.sorted = true;
     return best;
 }
@@ -175,13 +202,10 @@ uint32_t partitionByBin(const PrimRange& prims, const BinMapping& mapping, const
     uint32_t left = 0;
     for (uint32_t i = 0; i < prims.count; ++i) {
         const Box4 box = prims.boxes[i];
-        const uint32_t index = prims.indices[i];
         const uint32_t goesLeft = mapping.belowBin(box, a, split.bin) ? 1u : 0u;
         centroids[goesLeft].grow(box.centroidPoint());
         prims.boxes[i] = prims.boxes[left];
-        prims.indices[i] = prims.indices[left];
         prims.boxes[left] = box;
-        prims.indices[left] = index;
         left += goesLeft;
     }
     leftCentroids = centroids[1];
@@ -190,7 +214,7 @@ uint32_t partitionByBin(const PrimRange& prims, const BinMapping& mapping, const
 }
 
 // nth_element over a permutation, then one gather: moving 4-byte slots is cheaper than moving
-// 32-byte boxes and their indices in step.
+// 32-byte boxes.
 uint32_t partitionByMedian(const PrimRange& prims, const Box4& centroids) {
     const int axis = centroids.largestAxis();
     const uint32_t n = prims.count, mid = n / 2;
@@ -201,13 +225,8 @@ uint32_t partitionByMedian(const PrimRange& prims, const Box4& centroids) {
                prims.boxes[y].lo[axis] + prims.boxes[y].hi[axis];
     });
     std::vector<Box4> boxes(n);
-    std::vector<uint32_t> indices(n);
-    for (uint32_t i = 0; i < n; ++i) {
-        boxes[i] = prims.boxes[order[i]];
-        indices[i] = prims.indices[order[i]];
-    }
+    for (uint32_t i = 0; i < n; ++i) boxes[i] = prims.boxes[order[i]];
     std::copy(boxes.begin(), boxes.end(), prims.boxes);
-    std::copy(indices.begin(), indices.end(), prims.indices);
     return mid;
 }
 

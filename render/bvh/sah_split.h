@@ -23,6 +23,14 @@ struct alignas(16) Box4 {
     float lo[4], hi[4];
 
     static Box4 empty() { return {{kInf, kInf, kInf, 0.0f}, {-kInf, -kInf, -kInf, 0.0f}}; }
+    // A primitive's box carries the primitive's index in its fourth lanes, 16 bits in each as a
+    // whole float (exact, and never a denormal, which would slow the SSE operations on the box),
+    // so that sorting and partitioning move one 32-byte record. Boxes grown from these hold junk
+    // there, which nothing reads.
+    static Box4 ofPrimitive(Vec3 lo, Vec3 hi, uint32_t index) {
+        return {{lo.x, lo.y, lo.z, float(index & 0xffffu)}, {hi.x, hi.y, hi.z, float(index >> 16)}};
+    }
+    uint32_t primitive() const { return uint32_t(lo[3]) | uint32_t(hi[3]) << 16; }
     void grow(const Box4& b) {
 #if defined(__SSE2__)
         _mm_store_ps(lo, _mm_min_ps(_mm_load_ps(lo), _mm_load_ps(b.lo)));
@@ -58,13 +66,12 @@ struct alignas(16) Box4 {
     }
 };
 
-// A node's primitive range: boxes and, in parallel, their indices into the builder's input.
+// A node's primitive range: their boxes, each with its index into the builder's input.
 struct PrimRange {
     Box4* boxes;
-    uint32_t* indices;
     uint32_t count;
 
-    PrimRange sub(uint32_t begin, uint32_t n) const { return {boxes + begin, indices + begin, n}; }
+    PrimRange sub(uint32_t begin, uint32_t n) const { return {boxes + begin, n}; }
 };
 
 struct SahSplit {
