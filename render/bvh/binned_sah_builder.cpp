@@ -53,7 +53,8 @@ struct NodeTask {
     uint32_t depth;       // root: 0
     uint32_t childBase;   // first of the 2n - 2 scratch slots reserved for its descendants
     Box4 bounds;          // of the primitive boxes
-    Box4 centroids;       // of the doubled centroids
+    Box4 centroids;       // of the doubled centroids, where centroidsKnown
+    bool centroidsKnown;  // false below a sweep's split, where only a median split reads them
 };
 
 uint32_t ceilLog2(uint32_t n) { return n <= 1 ? 0u : 32u - uint32_t(__builtin_clz(n - 1)); }
@@ -118,17 +119,29 @@ private:
 
     // Partitions the node's range and describes both children; false: make a leaf.
     bool split(const NodeTask& task, NodeTask& left, NodeTask& right) {
-        const sah::BinMapping m(task.centroids, binCount_);
+        // Nodes small enough for the sweep are never binned (choose).
+        const sah::BinMapping m = task.end - task.begin > sah::kSweepSize
+                                      ? sah::BinMapping(task.centroids, binCount_)
+                                      : sah::BinMapping::none();
         SahSplit sahSplit;
         const Choice choice = choose(task, m, sahSplit);
         if (choice == Choice::Leaf) return false;
         const PrimRange prims = range(task.begin, task.end);
         uint32_t leftCount;
         bool boundsKnown = false;
+        left.centroidsKnown = right.centroidsKnown = true;
         if (choice == Choice::Median) {
-            leftCount = sah::partitionByMedian(prims, task.centroids);
+            Box4 bounds, centroids = task.centroids;
+            if (!task.centroidsKnown) sah::boundsOf(prims, bounds, centroids);
+            leftCount = sah::partitionByMedian(prims, centroids);
         } else if (sahSplit.sorted) {
+            // The sweep's prefix and suffix are the children's boxes; their centroids are left
+            // unknown, as their children are split by sweeps too.
             leftCount = sahSplit.leftCount;
+            left.bounds = sahSplit.leftBounds;
+            right.bounds = sahSplit.rightBounds;
+            left.centroidsKnown = right.centroidsKnown = false;
+            boundsKnown = true;
         } else {
             leftCount = sah::partitionByBin(prims, m, sahSplit, left.centroids, right.centroids);
             // Binning and partitioning share their arithmetic (BinMapping::coordinates), so the
@@ -237,7 +250,7 @@ NodeTask prepareRoot(const Aabb* primBounds, uint32_t count, Box4* boxes) {
             a.centroids.grow(b.centroids);
             return a;
         });
-    return {0, 0, count, 0, 1, root.box, root.centroids};
+    return {0, 0, count, 0, 1, root.box, root.centroids, true};
 }
 
 }  // namespace

@@ -131,6 +131,8 @@ SahSplit splitPair(const PrimRange& prims) {
     const float cost = prims.boxes[first].halfArea() * 1.0f + prims.boxes[1 - first].halfArea() * 1.0f;
     if (!(cost < kInf)) return split;
     if (first == 1) std::swap(prims.boxes[0], prims.boxes[1]);
+    split.leftBounds = prims.boxes[0];
+    split.rightBounds = prims.boxes[1];
     split.axis = 0;
     split.cost = cost;
     split.leftCount = 1;
@@ -161,7 +163,7 @@ SahSplit findSweepSplit(const PrimRange& prims) {
         const Box4 c = boxes[i].centroidPoint();
         for (int a = 0; a < 3; ++a) keys[a][i] = sweepKey(c.lo[a], i);
     }
-    float rightArea[kSweepSize];
+    Box4 rightBounds[kSweepSize];
     SahSplit best;
     for (int a = 0; a < 3; ++a) {
         uint64_t* key = keys[a];
@@ -172,8 +174,10 @@ SahSplit findSweepSplit(const PrimRange& prims) {
             key[j] = k;
         }
         Box4 acc = Box4::empty();
+        float rightArea[kSweepSize];
         for (uint32_t i = n - 1; i > 0; --i) {
             acc.grow(boxes[uint32_t(key[i])]);
+            rightBounds[i] = acc;
             rightArea[i] = acc.halfArea();
         }
         acc = Box4::empty();
@@ -184,6 +188,8 @@ SahSplit findSweepSplit(const PrimRange& prims) {
                 best.axis = a;
                 best.cost = cost;
                 best.leftCount = i;
+                best.leftBounds = acc;
+                best.rightBounds = rightBounds[i];
             }
         }
     }

@@ -80,7 +80,7 @@ struct SahSplit {
     uint32_t bin = 0;     // binned: primitives in bins [0, bin) go left
     float cost = kInf;    // sum over the children of halfArea x count (not normalised)
     uint32_t leftCount = 0;
-    Box4 leftBounds, rightBounds;  // binned: exact unions of the children's boxes
+    Box4 leftBounds, rightBounds;  // exact unions of the children's boxes
 };
 
 // Maps (doubled) centroids to bins along each axis; flat axes map everything to bin 0.
@@ -91,6 +91,8 @@ struct BinMapping {
     uint32_t binCount;
 
     BinMapping(const Box4& centroids, uint32_t bins);
+    // A mapping that separates nothing (for nodes that are not binned).
+    static BinMapping none() { return BinMapping(Box4::empty(), 2); }
     bool separable() const { return scale[0] > 0.0f || scale[1] > 0.0f || scale[2] > 0.0f; }
     // The fractional bin coordinates of a box's (doubled) centroid, (lo + hi - this->lo) *
     // scale, in all lanes at once. Binning and partitioning both go through here, so they agree

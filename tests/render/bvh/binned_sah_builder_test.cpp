@@ -120,6 +120,20 @@ TEST(BinnedSahBuilder, PointBoxesTerminate) {
     checkInvariants(buildBinnedSahBvh(line.data(), uint32_t(line.size())), line, {});
 }
 
+// A node small enough for the sweep whose primitives are two clusters of coincident points: the
+// sweep separates the clusters, and each cluster (no area, more than a leaf holds) is split by
+// count around the centroid bounds it works out itself (the sweep's children do not carry them).
+TEST(BinnedSahBuilder, CoincidentPointsBelowASweepSplitSplitByCount) {
+    for (const uint32_t first : {5u, 10u, 13u}) {
+        std::vector<Aabb> points(16, Aabb{{0.25f, 0.5f, 0.75f}, {0.25f, 0.5f, 0.75f}});
+        for (uint32_t i = first; i < 16; ++i) points[i] = Aabb{{2, 1, 3}, {2, 1, 3}};
+        const TreeShape shape =
+            checkInvariants(buildBinnedSahBvh(points.data(), uint32_t(points.size())), points, {});
+        EXPECT_LE(shape.largestLeaf, 4u);
+        EXPECT_GE(shape.leaves, 4u) << first << " and " << 16 - first << " points need leaves of at most 4";
+    }
+}
+
 TEST(BinnedSahBuilder, SoupsKeepInvariantsForSeveralOptions) {
     Rng rng(11);
     for (SoupKind kind :
