@@ -57,6 +57,18 @@ double tracedMrays(Backend& backend, const TracedRaySet& set, uint32_t runs, std
 // Our traversal rates with the BVH as the toggles have it, with its binary form alone (the wide
 // forms off, where they are on: the yardstick of issue 21's wide BVHs, measured in the same
 // run) and with no BVH; the sets as traced with the first (for the baseline).
+// How many of `hits` differ from what the default layout found for `set`: whether a ray hit,
+// and for closest hits where and which primitive (ties go to the lower one on every layout). Any
+// hit: which one a walk finds first is its own business; only whether.
+size_t countDifferentHits(const std::vector<Hit>& hits, const TracedRaySet& set) {
+    size_t differ = 0;
+    for (size_t i = 0; i < hits.size() && i < set.hits.size(); ++i) {
+        differ += hits[i].valid() != set.hits[i].valid() ||
+                  (!set.anyHit && (hits[i].t != set.hits[i].t || hits[i].primitive != set.hits[i].primitive));
+    }
+    return differ;
+}
+
 std::vector<TracedRaySet> benchRays(Backend& backend, const Scene& scene, const BenchRays& rays,
                                     const BenchSettings& settings, BenchReport& report) {
     std::vector<TracedRaySet> sets(3);
@@ -92,14 +104,8 @@ std::vector<TracedRaySet> benchRays(Backend& backend, const Scene& scene, const 
                 {"rays", set.name, layout.name, rate, "Mrays/s", std::to_string(set.rays->size()) + " rays"});
             if (bvh) set.mraysPerSecond = rate, set.hits = std::move(hits);
             if (!layout.bruteForce && !layout.wide && wide && set.mraysPerSecond > 0) {
-                size_t differ = 0;
-                for (size_t i = 0; i < hits.size() && i < set.hits.size(); ++i) {
-                    // Any hit: which one a walk finds first is its own business; only whether.
-                    differ +=
-                        hits[i].valid() != set.hits[i].valid() || (!set.anyHit && hits[i].t != set.hits[i].t);
-                }
                 report.add({"rays", set.name, "wide / binary BVH", set.mraysPerSecond / rate, "x",
-                            "same run; " + std::to_string(differ) + " hits differ"});
+                            "same run; " + std::to_string(countDifferentHits(hits, set)) + " hits differ"});
             }
         }
     }
@@ -120,14 +126,10 @@ void benchSimdLevels(Backend& backend, const std::vector<TracedRaySet>& sets, co
         if (set.rays->empty() || set.mraysPerSecond <= 0) continue;
         std::vector<Hit> hits;
         const double rate = tracedMrays(backend, set, settings.runs, hits);
-        size_t differ = 0;
-        for (size_t i = 0; i < hits.size() && i < set.hits.size(); ++i) {
-            differ += hits[i].valid() != set.hits[i].valid() || hits[i].t != set.hits[i].t ||
-                      (!set.anyHit && hits[i].primitive != set.hits[i].primitive);
-        }
         report.add({"rays", set.name, "8-wide BVH, SSE2 walk", rate, "Mrays/s", ""});
         report.add({"rays", set.name, std::string(simdLevelName(level)) + " / SSE2 walk",
-                    set.mraysPerSecond / rate, "x", "same run; " + std::to_string(differ) + " hits differ"});
+                    set.mraysPerSecond / rate, "x",
+                    "same run; " + std::to_string(countDifferentHits(hits, set)) + " hits differ"});
     }
 }
 
