@@ -4,7 +4,7 @@
 
 namespace pt {
 
-BackgroundBvhBuild::BackgroundBvhBuild(std::vector<Aabb> primBounds) : primBounds_(std::move(primBounds)) {
+BackgroundBvhBuild::BackgroundBvhBuild(LargeArray<Aabb> primBounds) : primBounds_(std::move(primBounds)) {
     thread_ = std::thread([this] {
         try {
             tbb::task_arena arena;

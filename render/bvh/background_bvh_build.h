@@ -12,13 +12,14 @@
 #include <vector>
 
 #include "render/bvh/binned_sah_builder.h"
+#include "render/util/large_array.h"
 
 namespace pt {
 
 class BackgroundBvhBuild {
 public:
     // Starts building over `primBounds` (moved in: the thread's own copy).
-    explicit BackgroundBvhBuild(std::vector<Aabb> primBounds);
+    explicit BackgroundBvhBuild(LargeArray<Aabb> primBounds);
     // Waits for the thread: a build cannot be stopped half way.
     ~BackgroundBvhBuild();
     BackgroundBvhBuild(const BackgroundBvhBuild&) = delete;
@@ -30,7 +31,7 @@ public:
     Bvh take();
 
 private:
-    std::vector<Aabb> primBounds_;
+    LargeArray<Aabb> primBounds_;
     Bvh result_;
     std::exception_ptr failure_;
     std::atomic<bool> ready_{false};

@@ -92,7 +92,10 @@ Bvh singleLeafStandIn(const Aabb& box, uint32_t count) {
     bvh.nodes[0].leftOrFirst = 0;
     bvh.nodes[0].count = count;
     bvh.primIndices.resize(count);
-    std::iota(bvh.primIndices.begin(), bvh.primIndices.end(), 0u);
+    tbb::parallel_for(
+        tbb::blocked_range<uint32_t>(0, count, 1u << 16), [&](const tbb::blocked_range<uint32_t>& r) {
+            std::iota(bvh.primIndices.begin() + r.begin(), bvh.primIndices.begin() + r.end(), r.begin());
+        });
     return bvh;
 }
 
@@ -155,11 +158,13 @@ void buildBlases(CompiledScene& out, const ProgressFn& progress, uint32_t deferF
     // The merged BLAS (always last where there is one) is never deferred: it is rewritten by
     // every compileInstances, on the host.
     const size_t deferrable = out.merged.active() ? meshCount - 1 : meshCount;
-    std::vector<std::vector<Aabb>> deferredBounds(meshCount);
+    std::vector<LargeArray<Aabb>> deferredBounds(meshCount);
     // Large meshes parallelise inside the builder; many small meshes parallelise here.
     tbb::parallel_for(size_t(0), meshCount, [&](size_t i) {
         const BlasRef& blas = out.blases[i];
-        std::vector<Aabb> bounds(blas.primitiveCount);
+        // Every box is written below, in parallel: a std::vector would first fill them all on
+        // this thread (a 10M-triangle mesh's 240 MB).
+        LargeArray<Aabb> bounds(blas.primitiveCount);
         const bool deferred = deferFrom > 0 && i < deferrable && blas.primitiveCount >= deferFrom;
         // In parallel within a mesh too: a scan of 10M triangles is one mesh. A deferred mesh's
         // stand-in takes the union on the way, not from a second pass over the boxes.

@@ -12,6 +12,7 @@
 #include "render/lights/emitter_table.h"
 #include "render/lights/environment_distribution.h"
 #include "render/scene/scene.h"
+#include "render/util/large_array.h"
 #include "render/util/progress.h"
 
 namespace pt {
@@ -34,7 +35,7 @@ struct CompileOptions {
 // tree's root box, and its primitive index list is 0 .. n - 1.
 struct DeferredBlas {
     uint32_t blas;
-    std::vector<Aabb> primBounds;  // primitive p's box, as a build takes them
+    LargeArray<Aabb> primBounds;  // primitive p's box, as a build takes them
 };
 
 struct CompileStats {

@@ -1,5 +1,6 @@
 #pragma once
-// An uninitialised array of trivially copyable elements for a build's scratch memory, backed by
+// An uninitialised array of trivially copyable elements for a build's input and scratch memory,
+// written in parallel by its owner (a std::vector first fills it on one thread), backed by
 // transparent huge pages where the kernel offers them on request (Linux, THP mode "madvise").
 // A build of 1M triangles touches about 100 MB of fresh memory; in 4 KiB pages each first touch
 // is a fault and a page cleared (a tenth of the binned SAH build's samples under perf), in
@@ -56,7 +57,18 @@ public:
         data_.reset(static_cast<T*>(memory));
     }
 
+    LargeArray(LargeArray&& other) noexcept : data_(std::move(other.data_)), count_(other.count_) {
+        other.count_ = 0;
+    }
+    LargeArray& operator=(LargeArray&& other) noexcept {
+        data_ = std::move(other.data_);
+        count_ = other.count_;
+        other.count_ = 0;
+        return *this;
+    }
+
     T* data() const { return data_.get(); }
+    bool empty() const { return count_ == 0; }
     size_t size() const { return count_; }
     T& operator[](size_t i) const { return data_.get()[i]; }
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <thread>
 
 #include "render/bvh/bvh_test_util.h"
@@ -11,13 +12,20 @@
 namespace pt {
 namespace {
 
+// The build's own copy of `bounds` (it takes a LargeArray, as the scene compiler fills one).
+LargeArray<Aabb> copyOf(const std::vector<Aabb>& bounds) {
+    LargeArray<Aabb> copy(bounds.size());
+    std::copy(bounds.begin(), bounds.end(), copy.data());
+    return copy;
+}
+
 // The thread's tree is the builder's, node for node.
 TEST(BackgroundBvhBuild, BuildsTheBinnedSahTree) {
     test::Rng rng(15);
     const std::vector<Aabb> bounds =
         test::triangleBounds(test::makeSoup(test::SoupKind::Clustered, 20000, rng));
     const Bvh direct = buildBinnedSahBvh(bounds.data(), uint32_t(bounds.size()));
-    BackgroundBvhBuild build(bounds);
+    BackgroundBvhBuild build(copyOf(bounds));
     const Bvh background = build.take();
     EXPECT_TRUE(build.ready());
     ASSERT_EQ(background.nodes.size(), direct.nodes.size());
@@ -35,11 +43,11 @@ TEST(BackgroundBvhBuild, FinishesWithoutBeingTakenAndIsWaitedForOnDestruction) {
     const std::vector<Aabb> bounds =
         test::triangleBounds(test::makeSoup(test::SoupKind::Uniform, 50000, rng));
     {
-        BackgroundBvhBuild finished(bounds);
+        BackgroundBvhBuild finished(copyOf(bounds));
         while (!finished.ready()) std::this_thread::yield();  // done without anyone taking it
         EXPECT_EQ(finished.take().primIndices.size(), bounds.size());
     }
-    { BackgroundBvhBuild dropped(bounds); }  // joined, or std::thread's destructor terminates
+    { BackgroundBvhBuild dropped(copyOf(bounds)); }  // joined, or std::thread's destructor terminates
 }
 
 }  // namespace

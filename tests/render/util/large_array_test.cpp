@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <utility>
 
 namespace pt {
 namespace {
@@ -30,6 +31,25 @@ TEST(LargeArray, SmallAndEmptyArrays) {
     EXPECT_EQ(empty.data(), nullptr);
     const LargeArray<double> none;
     EXPECT_EQ(none.data(), nullptr);
+}
+
+// Moved, the array's elements go with it and the source is left empty (a deferred mesh's boxes
+// move from the scene compiler to the background build).
+TEST(LargeArray, AMoveTakesTheElementsAndEmptiesTheSource) {
+    LargeArray<int> a(3);
+    a[0] = 7, a[1] = 8, a[2] = 9;
+    const int* elements = a.data();
+    LargeArray<int> b(std::move(a));
+    EXPECT_EQ(b.data(), elements);
+    EXPECT_EQ(b.size(), 3u);
+    EXPECT_EQ(b[2], 9);
+    EXPECT_TRUE(a.empty());  // NOLINT(bugprone-use-after-move): what a move leaves is the point
+    EXPECT_EQ(a.data(), nullptr);
+    LargeArray<int> c;
+    c = std::move(b);
+    EXPECT_EQ(c.size(), 3u);
+    EXPECT_EQ(c[0], 7);
+    EXPECT_TRUE(b.empty());
 }
 
 }  // namespace
