@@ -54,9 +54,6 @@ double tracedMrays(Backend& backend, const TracedRaySet& set, uint32_t runs, std
     return double(set.rays->size()) / median({seconds.begin() + 1, seconds.end()}) / 1e6;
 }
 
-// Our traversal rates with the BVH as the toggles have it, with its binary form alone (the wide
-// forms off, where they are on: the yardstick of issue 21's wide BVHs, measured in the same
-// run) and with no BVH; the sets as traced with the first (for the baseline).
 // How many of `hits` differ from what the default layout found for `set`: whether a ray hit,
 // and for closest hits where and which primitive (ties go to the lower one on every layout). Any
 // hit: which one a walk finds first is its own business; only whether.
@@ -69,6 +66,9 @@ size_t countDifferentHits(const std::vector<Hit>& hits, const TracedRaySet& set)
     return differ;
 }
 
+// Our traversal rates with the BVH as the toggles have it, with its binary form alone (the wide
+// forms off, where they are on: the yardstick of issue 21's wide BVHs, measured in the same
+// run) and with no BVH; the sets as traced with the first (for the baseline).
 std::vector<TracedRaySet> benchRays(Backend& backend, const Scene& scene, const BenchRays& rays,
                                     const BenchSettings& settings, BenchReport& report) {
     std::vector<TracedRaySet> sets(3);
