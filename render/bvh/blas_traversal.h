@@ -40,8 +40,10 @@ PT_HD bool intersectBlasPrimitive(const RenderScene& scene, const BlasRef& blas,
     return true;
 }
 
-// Leaf functor of walkBvh for one BLAS.
-template <FeatureSet kF, class Count>
+// Leaf functor of walkBvh for one BLAS. With kLeafTriangles (a triangle BLAS's compressed
+// form), entry i is leafTriangles[i], whose corners sit beside its primitive index; otherwise
+// primIndices[i], tested through the scene's triangles and positions.
+template <FeatureSet kF, class Count, bool kLeafTriangles = false>
 struct BlasLeaf {
     const RenderScene& scene;
     const BlasRef& blas;
@@ -50,8 +52,22 @@ struct BlasLeaf {
     Hit& hit;
     Count counter;
     bool anyHit;
+    const LeafTriangle* leafTriangles = nullptr;  // with kLeafTriangles: parallel to primIndices
 
     bool hitHere = false;  // this walk has found a hit: tMax is that hit's t
+
+    // Entry i against (0, limit): its primitive, and on a hit t, u and v of `candidate`.
+    PT_HD bool testEntry(uint32_t i, float limit, Hit& candidate, uint32_t& primitive) const {
+        if constexpr (kLeafTriangles) {
+            const LeafTriangle t = loadLeafTriangle(leafTriangles, i);
+            primitive = t.primitive;
+            return intersectTriangle(ray.watertight, limit, t.p0, t.p1, t.p2, candidate.t, candidate.u,
+                                     candidate.v);
+        } else {
+            primitive = primIndices[i];
+            return intersectBlasPrimitive<kF>(scene, blas, primitive, ray, limit, candidate);
+        }
+    }
 
     // Ties in t go to the lower primitive index within a BLAS, as brute force's in-order test
     // keeps it, so that the hit does not depend on the order a walk meets its leaves in: the
@@ -61,10 +77,10 @@ struct BlasLeaf {
         bool found = false;
         for (uint32_t i = first; i < first + count; ++i) {
             counter.primitive();
-            const uint32_t primitive = primIndices[i];
             const float limit = hitHere ? intAsFloat(floatAsInt(tMax) + 1) : tMax;  // t == tMax too
             Hit candidate;
-            if (intersectBlasPrimitive<kF>(scene, blas, primitive, ray, limit, candidate) &&
+            uint32_t primitive;
+            if (testEntry(i, limit, candidate, primitive) &&
                 (candidate.t < tMax || primitive < hit.primitive)) {
                 hit.t = candidate.t, hit.u = candidate.u, hit.v = candidate.v, hit.primitive = primitive;
                 tMax = candidate.t;
@@ -86,13 +102,19 @@ PT_HD bool traverseBlas(const RenderScene& scene, const BlasRef& blas, const Tra
     const uint32_t index = uint32_t(&blas - scene.blases.data);
     // The compressed 8-wide form where the BLAS has one (IntegratorToggles::gpuWideBvh; the CPU's
     // tests walk it too) and the ray's direction allows it (compressedWalkTakes). Its leaf
-    // entries are mesh-local primitives, as the binary list's are, so the same leaf functor
-    // tests them.
+    // entries are mesh-local primitives, as the binary list's are, and a triangle BLAS's come
+    // with their corners (leaf_triangle.h).
     if (!scene.blasCompressedRoots.empty() && scene.blasCompressedRoots[index] != kNoCompressedRoot &&
         compressedWalkTakes(ray)) {
+        const CompressedWideNode* nodes = scene.blasCompressedNodes.data;
+        const uint32_t root = scene.blasCompressedRoots[index];
+        if (!hasFeature<kF>(feature::kSpheres) || blas.kind == GeometryKind::Triangles) {
+            BlasLeaf<kF, Count, true> leaf{scene, blas,  nullptr, ray,
+                                           hit,   count, anyHit,  scene.blasCompressedTriangles.data};
+            return walkCompressedWideBvh(nodes, root, ray, tMax, leaf, count, anyHit);
+        }
         BlasLeaf<kF, Count> leaf{scene, blas, scene.blasCompressedPrims.data, ray, hit, count, anyHit};
-        return walkCompressedWideBvh(scene.blasCompressedNodes.data, scene.blasCompressedRoots[index], ray,
-                                     tMax, leaf, count, anyHit);
+        return walkCompressedWideBvh(nodes, root, ray, tMax, leaf, count, anyHit);
     }
     BlasLeaf<kF, Count> leaf{scene, blas,  scene.blasPrimIndices.data + blas.primIndexOffset, ray, hit,
                              count, anyHit};

@@ -81,17 +81,15 @@ PT_HD void quantizeWideBoxes(CompressedWideNode& node, const BvhNode* binary, co
         node.origin[a] = empty ? 0.0f : lo[a] - 2.0f * step[a].step;
     }
     for (uint32_t s = 0; s < CompressedWideNode::kWidth; ++s) {
-        if (slotSources[s] == kNoSourceNode) {
-            node.loX[s] = node.loY[s] = node.loZ[s] = node.hiX[s] = node.hiY[s] = node.hiZ[s] = 0;
-            continue;
+        const bool used = slotSources[s] != kNoSourceNode;
+        for (uint32_t a = 0; a < 3; ++a) {
+            const auto lower = CompressedWideNode::BoxPlane(CompressedWideNode::kLoX + a);
+            const auto upper = CompressedWideNode::BoxPlane(CompressedWideNode::kHiX + a);
+            node.plane(lower, s) =
+                used ? quantizeLower(binary[slotSources[s]].lo[int(a)], node.origin[int(a)], step[a]) : 0;
+            node.plane(upper, s) =
+                used ? quantizeUpper(binary[slotSources[s]].hi[int(a)], node.origin[int(a)], step[a]) : 0;
         }
-        const BvhNode& box = binary[slotSources[s]];
-        node.loX[s] = quantizeLower(box.lo.x, node.origin.x, step[0]);
-        node.loY[s] = quantizeLower(box.lo.y, node.origin.y, step[1]);
-        node.loZ[s] = quantizeLower(box.lo.z, node.origin.z, step[2]);
-        node.hiX[s] = quantizeUpper(box.hi.x, node.origin.x, step[0]);
-        node.hiY[s] = quantizeUpper(box.hi.y, node.origin.y, step[1]);
-        node.hiZ[s] = quantizeUpper(box.hi.z, node.origin.z, step[2]);
     }
 }
 

@@ -40,17 +40,17 @@ PT_HD uint32_t bitCount(uint32_t bits) {
 
 // A compressed node's header as the walk reads it: its first eight 32-bit words, two 16-byte
 // loads through the read-only path on the GPU. Word 3 holds the exponents (bytes 0-2) and the
-// interior mask (byte 3); words 6-7 the leaf metas. The box bytes follow (boxWord): two words
-// (slots 0-3, 4-7) of each of loX, loY, loZ, hiX, hiY, hiZ, one byte per slot. The child test
-// reads them a half (four slots) at a time, six 4-byte loads a half: holding the whole node
-// from three 16-byte loads took 18 registers more (ptxas, sm_90: 90 against 72 in the
-// one-instance ray kernel).
+// interior mask (byte 3); words 6-7 the leaf metas. The box bytes follow: six words a half node
+// (slots 0-3 from word 8, 4-7 from word 14), one for each of loX, loY, loZ, hiX, hiY, hiZ, one
+// byte per slot. The child test reads them a half at a time: holding the whole node from three
+// 16-byte loads took 18 registers more (ptxas, sm_90: 90 against 72 in the one-instance ray
+// kernel).
 struct CompressedNodeHeader {
     uint32_t w[8];
 };
 static_assert(offsetof(CompressedWideNode, childBase) == 16 && offsetof(CompressedWideNode, leafMeta) == 24 &&
-                  offsetof(CompressedWideNode, loX) == 32 && offsetof(CompressedWideNode, hiX) == 56,
-              "CompressedNodeHeader, boxWord: word indices follow CompressedWideNode's layout");
+                  offsetof(CompressedWideNode, planes) == 32,
+              "CompressedNodeHeader, loadHalfBoxes: word indices follow CompressedWideNode's layout");
 
 PT_HD CompressedNodeHeader loadCompressedNodeHeader(const CompressedWideNode* nodes, uint32_t index) {
     CompressedNodeHeader header;
@@ -67,18 +67,6 @@ PT_HD CompressedNodeHeader loadCompressedNodeHeader(const CompressedWideNode* no
     return header;
 }
 
-// Word k (8 to 19: the box bytes) of node `index`.
-PT_HD uint32_t boxWord(const CompressedWideNode* nodes, uint32_t index, uint32_t k) {
-    const uint32_t* words = reinterpret_cast<const uint32_t*>(nodes + index);
-#if defined(__CUDA_ARCH__)
-    return __ldg(words + k);
-#else
-    uint32_t word;
-    __builtin_memcpy(&word, words + k, sizeof(word));
-    return word;
-#endif
-}
-
 // The six box words of slots 4 * half to 4 * half + 3, near and far planes chosen per axis
 // from the ray's octant (the near planes are the lower ones where the direction is positive).
 struct HalfNodeBoxes {
@@ -87,12 +75,25 @@ struct HalfNodeBoxes {
 
 PT_HD HalfNodeBoxes loadHalfBoxes(const CompressedWideNode* nodes, uint32_t index, uint32_t half,
                                   uint32_t negative) {
-    const uint32_t loX = boxWord(nodes, index, 8 + half), loY = boxWord(nodes, index, 10 + half),
-                   loZ = boxWord(nodes, index, 12 + half);
-    const uint32_t hiX = boxWord(nodes, index, 14 + half), hiY = boxWord(nodes, index, 16 + half),
-                   hiZ = boxWord(nodes, index, 18 + half);
+    uint32_t p[6];  // loX, loY, loZ, hiX, hiY, hiZ
+#if defined(__CUDA_ARCH__)
+    // Words 8-13 or 14-19: a 16-byte and an 8-byte load, in the order their alignment allows.
+    const uint32_t* words = reinterpret_cast<const uint32_t*>(nodes + index);
+    if (half == 0) {
+        const uint4 a = __ldg(reinterpret_cast<const uint4*>(words + 8));
+        const uint2 b = __ldg(reinterpret_cast<const uint2*>(words + 12));
+        p[0] = a.x, p[1] = a.y, p[2] = a.z, p[3] = a.w, p[4] = b.x, p[5] = b.y;
+    } else {
+        const uint2 a = __ldg(reinterpret_cast<const uint2*>(words + 14));
+        const uint4 b = __ldg(reinterpret_cast<const uint4*>(words + 16));
+        p[0] = a.x, p[1] = a.y, p[2] = b.x, p[3] = b.y, p[4] = b.z, p[5] = b.w;
+    }
+#else
+    __builtin_memcpy(p, nodes[index].planes[half], sizeof(p));
+#endif
     const bool nx = negative & 1u, ny = negative & 2u, nz = negative & 4u;
-    return {nx ? hiX : loX, nx ? loX : hiX, ny ? hiY : loY, ny ? loY : hiY, nz ? hiZ : loZ, nz ? loZ : hiZ};
+    return {nx ? p[3] : p[0], nx ? p[0] : p[3], ny ? p[4] : p[1],
+            ny ? p[1] : p[4], nz ? p[5] : p[2], nz ? p[2] : p[5]};
 }
 
 // Byte k of `word` as a float, exactly. On the GPU one byte permute puts it under the exponent
@@ -169,22 +170,29 @@ PT_HD NodePlanes nodePlanes(const CompressedWalkRay& r, const CompressedNodeHead
     return p;
 }
 
+// `slotBits` (bit s: slot s) renumbered in the ray's visiting order: bit s ^ firstSlot. XOR
+// by a constant permutes the bits in three conditional swaps (of neighbours, pairs, halves).
+PT_HD uint32_t inVisitingOrder(uint32_t slotBits, uint32_t firstSlot) {
+    uint32_t m = slotBits;
+    if (firstSlot & 1u) m = ((m & 0x55u) << 1) | ((m >> 1) & 0x55u);
+    if (firstSlot & 2u) m = ((m & 0x33u) << 2) | ((m >> 2) & 0x33u);
+    if (firstSlot & 4u) m = ((m & 0x0fu) << 4) | ((m >> 4) & 0x0fu);
+    return m;
+}
+
+// The primitive bits of a leaf slot's meta byte, (count << 5) | offset from primBase: count
+// bits from offset. Interior and unused slots have count 0 and give none, whatever their (zero)
+// box gives.
+PT_HD uint32_t leafPrimitiveBits(uint32_t meta) { return ((1u << (meta >> 5)) - 1u) << (meta & 31u); }
+
 // The hits of the slots whose bits are set in `slotHits`, sorted into interior children and
 // leaf primitives.
 PT_HD ChildHits classifyHits(const CompressedWalkRay& r, const CompressedNodeHeader& node,
                              uint32_t slotHits) {
-    const uint32_t interiorMask = node.w[3] >> 24;
-    ChildHits hits{0u, 0u};
-    for (; slotHits != 0; slotHits &= slotHits - 1) {
-        const uint32_t slot = lowestBit(slotHits);
-        if ((interiorMask >> slot) & 1u) {
-            hits.interior |= 1u << (slot ^ r.firstSlot);
-        } else {
-            // A leaf's (count << 5) | offset; unused slots have count 0 and add nothing,
-            // whatever their (zero) box gives.
-            const uint32_t leaf = (node.w[6 + (slot >> 2)] >> (8 * (slot & 3u))) & 0xffu;
-            hits.primitives |= ((1u << (leaf >> 5)) - 1u) << (leaf & 31u);
-        }
+    ChildHits hits{inVisitingOrder(slotHits & (node.w[3] >> 24), r.firstSlot), 0u};
+    for (uint32_t leaves = slotHits & ~(node.w[3] >> 24); leaves != 0; leaves &= leaves - 1) {
+        const uint32_t slot = lowestBit(leaves);
+        hits.primitives |= leafPrimitiveBits((node.w[6 + (slot >> 2)] >> (8 * (slot & 3u))) & 0xffu);
     }
     return hits;
 }
@@ -231,9 +239,10 @@ PT_HD ChildHits intersectCompressedChildren(const CompressedWalkRay& r, const Co
                                             const CompressedWideNode* nodes, uint32_t index, float tMax) {
     const NodePlanes p = nodePlanes(r, node);
     const Vec3 scale = p.scale, nearOffset = p.nearOffset, farOffset = p.farOffset;
-    const uint32_t interiorMask = node.w[3] >> 24;
     const float limit = tMax * kSlabExitScale;
-    ChildHits hits{0u, 0u};
+    // Branch-free: each slot sets its hit bit and, if a leaf, its primitives' bits (interior
+    // slots' metas are 0); the interior bits are renumbered once at the end.
+    uint32_t slotHits = 0, primitives = 0;
     // Half a node at a time: unrolled, the compiler loads both halves' boxes up front and keeps
     // them live (84 registers against 72 in the one-instance ray kernel).
     PT_NO_UNROLL
@@ -249,19 +258,12 @@ PT_HD ChildHits intersectCompressedChildren(const CompressedWalkRay& r, const Co
             const float z1 = fmaf(byteAsFloat(b.farZ, k), scale.z, farOffset.z);
             const float tNear = maxFast(maxFast(x0, y0), maxFast(z0, 0.0f));
             const float tFar = minFast(x1, minFast(y1, z1)) * kSlabExitScale;
-            if (!(tNear <= minFast(tFar, limit))) continue;
-            const uint32_t slot = 4 * half + k;
-            if ((interiorMask >> slot) & 1u) {
-                hits.interior |= 1u << (slot ^ r.firstSlot);
-            } else {
-                // A leaf's (count << 5) | offset; unused slots have count 0 and add nothing,
-                // whatever their (zero) box gives.
-                const uint32_t leaf = (meta >> (8 * k)) & 0xffu;
-                hits.primitives |= ((1u << (leaf >> 5)) - 1u) << (leaf & 31u);
-            }
+            const bool hit = tNear <= minFast(tFar, limit);
+            slotHits |= uint32_t(hit) << (4 * half + k);
+            primitives |= hit ? leafPrimitiveBits((meta >> (8 * k)) & 0xffu) : 0u;
         }
     }
-    return hits;
+    return {inVisitingOrder(slotHits & (node.w[3] >> 24), r.firstSlot), primitives};
 }
 #endif
 

@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include "render/bvh/compressed_wide_bvh.h"
+#include "render/bvh/gather_leaf_triangles.h"
 #include "render/bvh/wide_bvh.h"
 #include "render/util/check.h"
 
@@ -120,6 +121,7 @@ void buildCompressedBlases(CompiledScene& compiled) {
     });
     compiled.blasCompressedNodes.clear();
     compiled.blasCompressedPrims.clear();
+    compiled.blasCompressedTriangles.clear();
     compiled.compressedSourceNodes.clear();
     compiled.blasCompressedRoots.assign(count, 0);
     for (size_t i = 0; i < count; ++i) {
@@ -134,6 +136,10 @@ void buildCompressedBlases(CompiledScene& compiled) {
                                             wide[i].nodes.end());
         compiled.blasCompressedPrims.insert(compiled.blasCompressedPrims.end(), wide[i].primIndices.begin(),
                                             wide[i].primIndices.end());
+        for (const uint32_t primitive : wide[i].primIndices) {
+            compiled.blasCompressedTriangles.push_back(gatherLeafTriangle(
+                compiled.triangles.data(), compiled.positions.data(), compiled.blases[i], primitive));
+        }
         compiled.compressedSourceNodes.insert(compiled.compressedSourceNodes.end(),
                                               wide[i].sourceNodes.begin(), wide[i].sourceNodes.end());
     }
@@ -143,6 +149,17 @@ std::pair<uint32_t, uint32_t> compressedNodeRange(const CompiledScene& compiled,
     return nodeRange(compiled.blasCompressedRoots, compiled.blasCompressedNodes.size(), blas);
 }
 
+std::pair<uint32_t, uint32_t> compressedPrimRange(const CompiledScene& compiled, uint32_t blas) {
+    // A BLAS's root is its first node filled, so its primBase is the BLAS's first entry.
+    const auto primBaseOf = [&](uint32_t b) {
+        return compiled.blasCompressedNodes[compiled.blasCompressedRoots[b]].primBase;
+    };
+    PT_CHECK(blas < compiled.blasCompressedRoots.size());
+    return {primBaseOf(blas), blas + 1 < compiled.blasCompressedRoots.size()
+                                  ? primBaseOf(blas + 1)
+                                  : uint32_t(compiled.blasCompressedPrims.size())};
+}
+
 void refreshWideBlas(CompiledScene& compiled, uint32_t blas) {
     const BvhNode* binary = compiled.blasNodes.data() + compiled.blases[blas].nodeOffset;
     if (!compiled.blasCompressedRoots.empty()) {
@@ -150,6 +167,12 @@ void refreshWideBlas(CompiledScene& compiled, uint32_t blas) {
         requantizeWideBoxes(
             binary, compiled.compressedSourceNodes.data() + size_t(first) * CompressedWideNode::kWidth,
             compiled.blasCompressedNodes.data() + first, end - first);
+        const auto [firstPrim, endPrim] = compressedPrimRange(compiled, blas);
+        tbb::parallel_for(firstPrim, endPrim, [&](uint32_t i) {
+            compiled.blasCompressedTriangles[i] =
+                gatherLeafTriangle(compiled.triangles.data(), compiled.positions.data(),
+                                   compiled.blases[blas], compiled.blasCompressedPrims[i]);
+        });
     }
     if (compiled.blasWideRoots.empty()) return;
     const auto [first, end] = nodeRange(compiled.blasWideRoots, compiled.blasWideNodes.size(), blas);

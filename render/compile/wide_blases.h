@@ -15,16 +15,18 @@ namespace pt {
 // blasFirstTriangleBlock from the binary BLASes.
 void buildWideBlases(CompiledScene& compiled);
 
-// Fills blasCompressedNodes, blasCompressedPrims, blasCompressedRoots and
-// compressedSourceNodes (the CUDA traversal's 8-wide form, compressed_wide_bvh.h). Child and
-// primitive bases are made absolute: the walk reads the whole scene's arrays.
+// Fills blasCompressedNodes, blasCompressedPrims, blasCompressedTriangles, blasCompressedRoots
+// and compressedSourceNodes (the CUDA traversal's 8-wide form, compressed_wide_bvh.h). Child
+// and primitive bases are made absolute: the walk reads the whole scene's arrays.
 void buildCompressedBlases(CompiledScene& compiled);
 
 // Compressed nodes [first, end) of BLAS `blas` in blasCompressedNodes.
 std::pair<uint32_t, uint32_t> compressedNodeRange(const CompiledScene& compiled, uint32_t blas);
+// Its entries [first, end) in blasCompressedPrims and blasCompressedTriangles.
+std::pair<uint32_t, uint32_t> compressedPrimRange(const CompiledScene& compiled, uint32_t blas);
 
 // After refitBlasOnHost(compiled, blas): its wide boxes (both forms, where the scene has them)
-// from its binary ones, and its triangle blocks from the positions.
+// from its binary ones, and its triangle blocks and compressed leaf triangles from the positions.
 void refreshWideBlas(CompiledScene& compiled, uint32_t blas);
 
 }  // namespace pt

@@ -7,6 +7,7 @@
 #include "render/kernel/bvh_node.h"
 #include "render/kernel/compressed_wide_node.h"
 #include "render/kernel/feature_set.h"
+#include "render/kernel/leaf_triangle.h"
 #include "render/kernel/material.h"
 #include "render/kernel/scene_kinds.h"
 #include "render/kernel/triangle_block.h"

@@ -46,9 +46,12 @@ PT_SCENE_ARRAY(TriangleBlock, blasTriangleBlocks, "BLAS triangle blocks (CPU)")
 // The CUDA traversal's compressed 8-wide form of the BLASes (render/bvh/compressed_wide_bvh.h;
 // IntegratorToggles::wideBvh): each BLAS's root node in blasCompressedNodes, or
 // kNoCompressedRoot where its binary nodes are walked (a BLAS rebuilt on the GPU); empty where
-// no BLAS has one. Leaves index blasCompressedPrims, whose entries are mesh-local primitives.
+// no BLAS has one. Leaves index blasCompressedPrims, whose entries are mesh-local primitives,
+// and, for triangle BLASes, blasCompressedTriangles in parallel: the same triangles with their
+// corners (leaf_triangle.h), gathered again when a refit moves them.
 PT_SCENE_ARRAY(CompressedWideNode, blasCompressedNodes, "BLAS compressed 8-wide nodes")
 PT_SCENE_ARRAY(uint32_t, blasCompressedPrims, "BLAS compressed primitive indices")
+PT_SCENE_ARRAY(LeafTriangle, blasCompressedTriangles, "BLAS compressed leaf triangles")
 PT_SCENE_ARRAY(uint32_t, blasCompressedRoots, "BLAS compressed roots")
 PT_SCENE_ARRAY(RenderInstance, instances, "instances")
 PT_SCENE_ARRAY(BvhNode, tlasNodes, "TLAS nodes")

@@ -87,13 +87,16 @@ void DeviceScene::uploadAll(const CompiledScene& host, cudaStream_t stream) {
 void DeviceScene::uploadCompressed(const CompiledScene& host, cudaStream_t stream) {
     uploadFitted(blasCompressedNodes_, host.blasCompressedNodes, stream);
     uploadFitted(blasCompressedPrims_, host.blasCompressedPrims, stream);
+    uploadFitted(blasCompressedTriangles_, host.blasCompressedTriangles, stream);
     uploadFitted(blasCompressedRoots_, host.blasCompressedRoots, stream);
     uploadFitted(compressedSources_, host.compressedSourceNodes, stream);
     compressedRoots_ = host.blasCompressedRoots;
     compressedCounts_.assign(compressedRoots_.size(), 0);
+    compressedPrimRanges_.assign(compressedRoots_.size(), {0, 0});
     for (uint32_t i = 0; i < compressedRoots_.size(); ++i) {
         const auto [first, end] = compressedNodeRange(host, i);
         compressedCounts_[i] = end - first;
+        compressedPrimRanges_[i] = compressedPrimRange(host, i);
     }
 }
 
@@ -102,6 +105,9 @@ void DeviceScene::requantizeCompressed(uint32_t i, cudaStream_t stream) {
     const uint32_t first = compressedRoots_[i];
     requantizeCompressedNodes(blasCompressedNodes_.data() + first, compressedCounts_[i], blasNodes(i),
                               compressedSources_.data() + size_t(first) * CompressedWideNode::kWidth, stream);
+    const auto [firstPrim, endPrim] = compressedPrimRanges_[i];
+    gatherLeafTriangles(blasCompressedTriangles_.data() + firstPrim, blasCompressedPrims_.data() + firstPrim,
+                        endPrim - firstPrim, triangles_.data(), positions_.data(), hostBlases_[i], stream);
 }
 
 void DeviceScene::dropCompressed(uint32_t i, cudaStream_t stream) {

@@ -82,8 +82,9 @@ public:
                         const std::vector<uint32_t>& primIndices, cudaStream_t stream);
 
     // BLAS i's compressed 8-wide nodes (where the scene has them): requantised after a refit
-    // of its binary nodes, or dropped after a GPU rebuild (its new topology has no compressed
-    // form yet: the kernels walk its binary nodes).
+    // of its binary nodes (its leaf triangles gathered again from the moved positions), or
+    // dropped after a GPU rebuild (its new topology has no compressed form yet: the kernels
+    // walk its binary nodes).
     bool hasCompressedForm(uint32_t i) const {
         return i < compressedRoots_.size() && compressedRoots_[i] != kNoCompressedRoot;
     }
@@ -115,7 +116,8 @@ private:
     DeviceBuffer<uint32_t> blasParents_;  // per BLAS region, as blasNodes_: for refits
     // Per slot of blasCompressedNodes_: its binary node (CompiledScene::compressedSourceNodes).
     DeviceBuffer<uint32_t> compressedSources_;
-    std::vector<uint32_t> compressedRoots_, compressedCounts_;  // per BLAS, as on the device
+    std::vector<uint32_t> compressedRoots_, compressedCounts_;         // per BLAS, as on the device
+    std::vector<std::pair<uint32_t, uint32_t>> compressedPrimRanges_;  // per BLAS: its leaf entries
 
     std::vector<BlasRef> hostBlases_;     // as on the device: offsets into the node regions
     std::vector<uint32_t> nodeCapacity_;  // nodes each BLAS's region holds

@@ -77,6 +77,11 @@ void refitBvh(BvhNode* nodes, uint32_t nodeCount, const uint32_t* parents, const
 // nodes `binary` their slots came from (`sourceNodes`, 8 per node, relative to `binary`).
 void requantizeCompressedNodes(CompressedWideNode* nodes, uint32_t count, const BvhNode* binary,
                                const uint32_t* sourceNodes, cudaStream_t stream);
+// And its `count` compressed leaf triangles `out` from the primitives `prims` (parallel to
+// them), corners from `positions`.
+void gatherLeafTriangles(LeafTriangle* out, const uint32_t* prims, uint32_t count,
+                         const TriangleIndices* triangles, const Vec3* positions, const BlasRef& blas,
+                         cudaStream_t stream);
 
 // SAH cost as sah_cost.h defines it (traversal and intersection cost 1), equal to the host's
 // sahCost() of the same nodes to float rounding. Synchronises `stream`.

@@ -125,8 +125,11 @@ TEST(CompressedWideBvh, QuantisedBoxesHoldTheirBinaryBoxesWithAStepOfMargin) {
                 const uint32_t source = wide.sourceNodes[n * CompressedWideNode::kWidth + s];
                 if (source == kNoSourceNode) continue;
                 const BvhNode& box = bvh.nodes[source];
-                const uint8_t lo[3] = {node.loX[s], node.loY[s], node.loZ[s]};
-                const uint8_t hi[3] = {node.hiX[s], node.hiY[s], node.hiZ[s]};
+                using P = CompressedWideNode::BoxPlane;
+                const uint8_t lo[3] = {node.plane(P::kLoX, s), node.plane(P::kLoY, s),
+                                       node.plane(P::kLoZ, s)};
+                const uint8_t hi[3] = {node.plane(P::kHiX, s), node.plane(P::kHiY, s),
+                                       node.plane(P::kHiZ, s)};
                 for (int a = 0; a < 3; ++a) {
                     const double step = exponentStep(node.exponent[a]);
                     const double margin = 0.99 * step;

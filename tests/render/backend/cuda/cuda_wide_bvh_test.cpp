@@ -34,6 +34,8 @@ TEST(CudaWideBvh, TheCompressedWalkFindsTheBinaryWalksAndTheCpusHits) {
     EXPECT_EQ(test::bufferBytes(binary, "BLAS compressed 8-wide nodes"), 0u)
         << "allocated with the toggle off";
     EXPECT_EQ(test::bufferBytes(binary, "BLAS compressed sources (refit)"), 0u);
+    EXPECT_EQ(test::bufferBytes(binary, "BLAS compressed leaf triangles"), 0u);
+    EXPECT_GT(test::bufferBytes(wide, "BLAS compressed leaf triangles"), 0u);
     CpuBackend cpu;
     cpu.sync(scene, SceneChanges::All, {});
     const std::vector<Ray> rays = test::soupRays(200000, 5);
