@@ -37,6 +37,17 @@ struct TraversalCounter {
     PT_HD TraversalStats* stats() const { return counts; }
 };
 
+// A Count for a walk that shares its call site with other work: the megakernel's fused step
+// (intersectScene), where a warp's threads reach the walk from shading as well. There the
+// compressed walk does not postpone leaves (compressed_wide_walk.h): it cost the megakernel 5%
+// where it gave the ray-tracing kernels up to 36%.
+template <class Count>
+struct SharedSiteCount : Count {};
+template <class Count>
+constexpr bool kSharedSite = false;
+template <class Count>
+constexpr bool kSharedSite<SharedSiteCount<Count>> = true;
+
 // min/max written as comparisons: one minss/maxss each on x86, where fminf's NaN rules cost
 // extra instructions; inputs here are never NaN, so the two agree.
 PT_HD float minFast(float a, float b) { return a < b ? a : b; }

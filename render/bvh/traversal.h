@@ -44,7 +44,8 @@ PT_HD bool intersectAny(const RenderScene& scene, const Ray& worldRay, Traversal
 // Closest hit, or with `anyHit` whether anything is hit (as intersectAny), through one walk:
 // the megakernel traces path segments and shadow rays at one call site, so a warp whose
 // threads trace both kinds walks the BVH together, and the kernel holds one copy of the walk.
-// As intersectClosest, hit.t starts at worldRay.tMax and hit.instance at Hit::kNoHit.
+// As intersectClosest, hit.t starts at worldRay.tMax and hit.instance at Hit::kNoHit. The walk
+// knows its call site is shared (SharedSiteCount).
 template <FeatureSet kF = kAllFeatures>
 PT_HD bool intersectScene(const RenderScene& scene, const Ray& worldRay, bool anyHit, Hit& hit) {
     hit.t = worldRay.tMax;
@@ -52,7 +53,7 @@ PT_HD bool intersectScene(const RenderScene& scene, const Ray& worldRay, bool an
     hit.primitive = 0;
     hit.instance = Hit::kNoHit;
     float tMax = worldRay.tMax;
-    return traverseScene<kF>(scene, worldRay, tMax, hit, NoTraversalCount{}, anyHit);
+    return traverseScene<kF>(scene, worldRay, tMax, hit, SharedSiteCount<NoTraversalCount>{}, anyHit);
 }
 
 }  // namespace pt
