@@ -48,6 +48,20 @@ constexpr bool kSharedSite = false;
 template <class Count>
 constexpr bool kSharedSite<SharedSiteCount<Count>> = true;
 
+// Whether fewer than a fifth of the warp's active threads have `mine` set: a vote, so every
+// active thread must reach it (false on the host). A walk's thread with leaf work to do while
+// the rest of its warp walks on postpones it: it would leave them idle (Ylitie, Karras and
+// Laine 2017, section 4).
+PT_HD bool rareInWarp(bool mine) {
+#if defined(__CUDA_ARCH__)
+    const uint32_t active = __activemask();
+    return __popc(__ballot_sync(active, mine)) * 5 < __popc(active);
+#else
+    (void)mine;
+    return false;
+#endif
+}
+
 // min/max written as comparisons: one minss/maxss each on x86, where fminf's NaN rules cost
 // extra instructions; inputs here are never NaN, so the two agree.
 PT_HD float minFast(float a, float b) { return a < b ? a : b; }

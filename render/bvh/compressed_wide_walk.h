@@ -280,8 +280,8 @@ PT_HD ChildHits intersectCompressedChildren(const CompressedWalkRay& r, const Co
 // from 2058 and 1125 to 2794 and 1466 Mrays/s (active threads a warp, diffuse: 10.6 to 14.5),
 // and its shadow rays from 1256 to 1225; but it cost the megakernel's fused step 5% (525.6 to
 // 501.9 spp/s), whose warps reach the walk from shading too: not there (kSharedSite).
-constexpr uint32_t kPostponedGroups = 16;          // pushed only while the stack holds fewer entries
-constexpr uint32_t kPrimitiveGroup = 0x80000000u;  // marks a postponed group's base on the stack
+constexpr uint32_t kPostponedGroups = 16;  // pushed only while the stack holds fewer entries
+constexpr uint32_t kPrimitiveGroup = kCompressedPrimitiveLimit;  // marks a postponed group's base
 
 template <class LeafFn, class Count>
 PT_HD bool walkCompressedWideBvh(const CompressedWideNode* nodes, uint32_t root, const TraversalRay& ray,
@@ -323,18 +323,13 @@ PT_HD bool walkCompressedWideBvh(const CompressedWideNode* nodes, uint32_t root,
             primBase = node.w[5];
             primBits = hits.primitives;
         }
-#if defined(__CUDA_ARCH__)
         if constexpr (kPostpone) {
-            const uint32_t active = __activemask();
-            const uint32_t testing = __ballot_sync(active, primBits != 0);
-            if (primBits != 0 && groupBits != 0 && bitCount(testing) * 5 < bitCount(active) &&
-                size < kPostponedGroups) {
+            if (rareInWarp(primBits != 0) && primBits != 0 && groupBits != 0 && size < kPostponedGroups) {
                 stackBase[size] = primBase | kPrimitiveGroup;
                 stackBits[size++] = primBits;
                 primBits = 0;
             }
         }
-#endif
         while (primBits != 0) {
             const uint32_t bit = lowestBit(primBits);
             primBits &= primBits - 1;

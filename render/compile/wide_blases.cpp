@@ -2,6 +2,9 @@
 
 #include <tbb/parallel_for.h>
 
+#include <stdexcept>
+#include <string>
+
 #include "render/bvh/compressed_wide_bvh.h"
 #include "render/bvh/gather_leaf_triangles.h"
 #include "render/bvh/wide_bvh.h"
@@ -142,6 +145,11 @@ void buildCompressedBlases(CompiledScene& compiled) {
         }
         compiled.compressedSourceNodes.insert(compiled.compressedSourceNodes.end(),
                                               wide[i].sourceNodes.begin(), wide[i].sourceNodes.end());
+    }
+    if (compiled.blasCompressedPrims.size() >= kCompressedPrimitiveLimit) {
+        throw std::invalid_argument("gpu_wide_bvh refused: the scene's BLASes hold " +
+                                    std::to_string(compiled.blasCompressedPrims.size()) +
+                                    " primitives, the compressed BVH at most 2^31 - 1");
     }
 }
 

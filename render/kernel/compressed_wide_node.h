@@ -43,6 +43,10 @@ struct alignas(16) CompressedWideNode {
 };
 static_assert(sizeof(CompressedWideNode) == 80, "CompressedWideNode: 80 bytes (five 16-byte loads)");
 
+// A scene's compressed primitive list holds fewer entries than this: the walk marks a postponed
+// primitive group's base on its stack with this bit (compressed_wide_walk.h).
+constexpr uint32_t kCompressedPrimitiveLimit = 0x80000000u;
+
 // A BLAS without a compressed form (RenderScene::blasCompressedRoots): its binary nodes are walked.
 constexpr uint32_t kNoCompressedRoot = 0xffffffffu;
 
