@@ -52,7 +52,9 @@ struct BlasLeaf {
     Hit& hit;
     Count counter;
     bool anyHit;
-    const LeafTriangle* leafTriangles = nullptr;  // with kLeafTriangles: parallel to primIndices
+    // With kLeafTriangles (primIndices null): RenderScene::blasCompressedTriangles, parallel to
+    // blasCompressedPrims.
+    const LeafTriangle* leafTriangles = nullptr;
 
     bool hitHere = false;  // this walk has found a hit: tMax is that hit's t
 

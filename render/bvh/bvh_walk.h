@@ -40,7 +40,8 @@ struct TraversalCounter {
 // A Count for a walk that shares its call site with other work: the megakernel's fused step
 // (intersectScene), where a warp's threads reach the walk from shading as well. There the
 // compressed walk does not postpone leaves (compressed_wide_walk.h): it cost the megakernel 5%
-// where it gave the ray-tracing kernels up to 36%.
+// where it gave the ray-tracing kernels up to 36%. (The rare walks a fused step makes through
+// intersectClosest, past alpha-tested blockers of a shadow ray, still postpone.)
 template <class Count>
 struct SharedSiteCount : Count {};
 template <class Count>

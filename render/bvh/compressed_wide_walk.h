@@ -5,9 +5,10 @@
 // bit per child hit), the primitives of the leaves hit a "primitive group" (base index with a
 // bit per primitive), so a node costs one stack entry however many children it hits, and no
 // sorting: the bits are numbered in the slot order the collapse chose for the ray's octant,
-// which visits near children first. Leaves go to the same leaf functor the binary walk
-// (bvh_walk.h) calls, one primitive at a time, and the boxes are conservative
-// (compressed_wide_quantize.h), so the hits are the binary walk's.
+// which visits near children first. Leaves go to a leaf functor one primitive at a time (a
+// triangle BLAS's reads the triangle's corners from its LeafTriangle, leaf_triangle.h, with the
+// binary walk's triangle test), and the boxes are conservative (compressed_wide_quantize.h),
+// so the hits are the binary walk's.
 // Shared by both backends: the CUDA traversal walks it, and the CPU's tests check it.
 #if !defined(__CUDACC__)
 #include <emmintrin.h>

@@ -122,6 +122,13 @@ void buildCompressedBlases(CompiledScene& compiled) {
         wide[i] = compressToWide(compiled.blasNodes.data() + blas.nodeOffset, blas.nodeCount,
                                  compiled.blasPrimIndices.data() + blas.primIndexOffset);
     });
+    size_t entries = 0;
+    for (const CompressedWideBvh& w : wide) entries += w.primIndices.size();
+    if (entries >= kCompressedPrimitiveLimit) {
+        throw std::invalid_argument("gpu_wide_bvh refused: the scene's BLASes hold " +
+                                    std::to_string(entries) +
+                                    " primitives, the compressed BVH at most 2^31 - 1");
+    }
     compiled.blasCompressedNodes.clear();
     compiled.blasCompressedPrims.clear();
     compiled.blasCompressedTriangles.clear();
@@ -146,11 +153,6 @@ void buildCompressedBlases(CompiledScene& compiled) {
         compiled.compressedSourceNodes.insert(compiled.compressedSourceNodes.end(),
                                               wide[i].sourceNodes.begin(), wide[i].sourceNodes.end());
     }
-    if (compiled.blasCompressedPrims.size() >= kCompressedPrimitiveLimit) {
-        throw std::invalid_argument("gpu_wide_bvh refused: the scene's BLASes hold " +
-                                    std::to_string(compiled.blasCompressedPrims.size()) +
-                                    " primitives, the compressed BVH at most 2^31 - 1");
-    }
 }
 
 std::pair<uint32_t, uint32_t> compressedNodeRange(const CompiledScene& compiled, uint32_t blas) {
@@ -158,8 +160,10 @@ std::pair<uint32_t, uint32_t> compressedNodeRange(const CompiledScene& compiled,
 }
 
 std::pair<uint32_t, uint32_t> compressedPrimRange(const CompiledScene& compiled, uint32_t blas) {
-    // A BLAS's root is its first node filled, so its primBase is the BLAS's first entry.
+    // A BLAS's root is its first node filled, so its primBase is the BLAS's first entry. The
+    // host's roots are all set, in order (buildCompressedBlases); only the device drops one.
     const auto primBaseOf = [&](uint32_t b) {
+        PT_CHECK(compiled.blasCompressedRoots[b] < compiled.blasCompressedNodes.size());
         return compiled.blasCompressedNodes[compiled.blasCompressedRoots[b]].primBase;
     };
     PT_CHECK(blas < compiled.blasCompressedRoots.size());

@@ -178,6 +178,25 @@ TEST(CompressedWideBvh, EachChildSitsInTheSlotFacingIt) {
     }
 }
 
+// The walk's bit tricks against their definitions: a slot's bit moves to slot ^ firstSlot (the
+// visiting order), and a leaf's meta byte (count << 5 | offset) gives count bits from offset.
+TEST(CompressedWideBvh, VisitingOrderAndLeafBitsFollowTheirDefinitions) {
+    for (uint32_t firstSlot = 0; firstSlot < 8; ++firstSlot) {
+        for (uint32_t slots = 0; slots < 256; ++slots) {
+            uint32_t expected = 0;
+            for (uint32_t s = 0; s < 8; ++s) expected |= ((slots >> s) & 1u) << (s ^ firstSlot);
+            ASSERT_EQ(inVisitingOrder(slots, firstSlot), expected) << slots << " from slot " << firstSlot;
+        }
+    }
+    for (uint32_t count = 0; count <= CompressedWideNode::kMaxLeafSize; ++count) {
+        for (uint32_t offset = 0; offset < 32 && offset + count <= 32; ++offset) {
+            uint32_t expected = 0;
+            for (uint32_t k = 0; k < count; ++k) expected |= 1u << (offset + k);
+            EXPECT_EQ(leafPrimitiveBits(count << 5 | offset), expected) << count << " from " << offset;
+        }
+    }
+}
+
 // The same closest hits through far fewer nodes: what the CUDA traversal walks.
 TEST(CompressedWideBvh, TheWalkVisitsFewerNodesForTheSameHits) {
     const auto [binaryStats, wideStats] = test::walkWorkAgainstBinary(test::Layout::Compressed);
