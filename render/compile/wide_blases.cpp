@@ -69,6 +69,16 @@ std::vector<TriangleBlock> makeTriangleBlocks(const CompiledScene& compiled, con
     return blocks;
 }
 
+// BLAS `blas`'s compressed leaf triangles, from its entries and the current positions.
+void gatherCompressedTriangles(CompiledScene& compiled, uint32_t blas) {
+    const auto [first, end] = compressedPrimRange(compiled, blas);
+    tbb::parallel_for(first, end, [&](uint32_t i) {
+        compiled.blasCompressedTriangles[i] =
+            gatherLeafTriangle(compiled.triangles.data(), compiled.positions.data(), compiled.blases[blas],
+                               compiled.blasCompressedPrims[i]);
+    });
+}
+
 }  // namespace
 
 void buildWideBlases(CompiledScene& compiled) {
@@ -146,13 +156,11 @@ void buildCompressedBlases(CompiledScene& compiled) {
                                             wide[i].nodes.end());
         compiled.blasCompressedPrims.insert(compiled.blasCompressedPrims.end(), wide[i].primIndices.begin(),
                                             wide[i].primIndices.end());
-        for (const uint32_t primitive : wide[i].primIndices) {
-            compiled.blasCompressedTriangles.push_back(gatherLeafTriangle(
-                compiled.triangles.data(), compiled.positions.data(), compiled.blases[i], primitive));
-        }
         compiled.compressedSourceNodes.insert(compiled.compressedSourceNodes.end(),
                                               wide[i].sourceNodes.begin(), wide[i].sourceNodes.end());
     }
+    compiled.blasCompressedTriangles.resize(compiled.blasCompressedPrims.size());
+    for (uint32_t i = 0; i < count; ++i) gatherCompressedTriangles(compiled, i);
 }
 
 std::pair<uint32_t, uint32_t> compressedNodeRange(const CompiledScene& compiled, uint32_t blas) {
@@ -179,12 +187,7 @@ void refreshWideBlas(CompiledScene& compiled, uint32_t blas) {
         requantizeWideBoxes(
             binary, compiled.compressedSourceNodes.data() + size_t(first) * CompressedWideNode::kWidth,
             compiled.blasCompressedNodes.data() + first, end - first);
-        const auto [firstPrim, endPrim] = compressedPrimRange(compiled, blas);
-        tbb::parallel_for(firstPrim, endPrim, [&](uint32_t i) {
-            compiled.blasCompressedTriangles[i] =
-                gatherLeafTriangle(compiled.triangles.data(), compiled.positions.data(),
-                                   compiled.blases[blas], compiled.blasCompressedPrims[i]);
-        });
+        gatherCompressedTriangles(compiled, blas);
     }
     if (compiled.blasWideRoots.empty()) return;
     const auto [first, end] = nodeRange(compiled.blasWideRoots, compiled.blasWideNodes.size(), blas);
