@@ -1,7 +1,7 @@
 #pragma once
 // What `pt-render bench` measures of a GPU backend's BVH builders, behind Backend (issue 16:
-// the front end times nothing on the device itself): the device LBVH build of one mesh's
-// triangle boxes and its SAH cost, bottom-up refits of that tree and of the CPU-built tree, and
+// the front end times nothing on the device itself): the device LBVH and PLOC builds of one
+// mesh's triangle boxes and their SAH costs, bottom-up refits of that tree and of the CPU-built tree, and
 // the TLAS build over the instances' world boxes.
 #include <cstdint>
 #include <vector>
@@ -21,6 +21,9 @@ struct BvhBuildInput {
 struct DeviceBvhFigures {
     double buildSeconds = 0.0;  // LBVH over meshBoxes
     float sahCost = 0.0f;       // of that LBVH (sah_cost.h)
+    double plocSeconds = 0.0;   // PLOC over meshBoxes
+    float plocSahCost = 0.0f;
+    bool plocFellBack = false;  // its tree was too deep: an LBVH took its place
     double refitSeconds = 0.0;  // of that LBVH
     double refitCpuTreeSeconds = 0.0;
     double tlasSeconds = 0.0;  // LBVH over instanceBoxes

@@ -52,6 +52,11 @@ struct IntegratorToggles {
     // thread behind it and swaps each in when done (the same hits, so the accumulation goes
     // on). Not with gpuWideBvh, whose compressed nodes come from the host's SAH tree.
     bool gpuFirstBuild = true;
+    // The GPU backend's builds (the first frame's above, and rebuilds once refits have degraded a
+    // tree) by PLOC (render/backend/cuda/gpu_bvh.h; Meister and Bittner 2018), whose trees come
+    // within a few percent of the binned SAH build's cost; off: by LBVH, faster to build but
+    // about 1.2x the cost to walk.
+    bool gpuPloc = true;
     // A refitted BLAS is rebuilt once its SAH cost exceeds this times its cost when last built.
     float rebuildSahRatio = 1.25f;
 };
@@ -73,6 +78,7 @@ enum class ToggleId {
     FirstHitCache,
     GpuWideBvh,
     GpuFirstBuild,
+    GpuPloc,
 };
 
 // Who can apply a toggle: every backend, or a GPU backend's scheduler only (the CPU runs one

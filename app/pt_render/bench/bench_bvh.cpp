@@ -44,6 +44,8 @@ void addBuildRows(BenchReport& report, const char* builder, double seconds, uint
 void addDeviceRows(const DeviceBvhFigures& gpu, uint32_t tris, uint32_t instances, float cpuSah,
                    BenchReport& report) {
     addBuildRows(report, "GPU LBVH", gpu.buildSeconds, tris, cpuSah > 0 ? gpu.sahCost / cpuSah : 0.0);
+    addBuildRows(report, gpu.plocFellBack ? "GPU PLOC, fell back to LBVH" : "GPU PLOC", gpu.plocSeconds, tris,
+                 cpuSah > 0 ? gpu.plocSahCost / cpuSah : 0.0);
     report.add({"BVH", "BLAS refit (GPU)", "LBVH", gpu.refitSeconds * 1e3, "ms", ""});
     report.add({"BVH", "BLAS refit (GPU)", "CPU binned SAH tree", gpu.refitCpuTreeSeconds * 1e3, "ms", ""});
     report.add({"BVH", "TLAS build (GPU LBVH)", std::to_string(instances) + " instances",

@@ -313,7 +313,8 @@ bool CudaBackend::refitBlas(uint32_t i, SyncReport& report) {
     bool rebuilt = false;
     const float cost = blasSahCost(i);
     if (cost > toggles_.rebuildSahRatio * builtSah_[i]) {
-        timedStep(stream_, report, "rebuild BLAS (GPU LBVH)", [&] { rebuildBlasOnDevice(i); });
+        timedStep(stream_, report, toggles_.gpuPloc ? "rebuild BLAS (GPU PLOC)" : "rebuild BLAS (GPU LBVH)",
+                  [&] { rebuildBlasOnDevice(i); });
         builtSah_[i] = blasSahCost(i);
         retireSahTree(i);  // a tree of positions this far from the current ones is no better
         rebuilt = true;
@@ -344,7 +345,11 @@ void CudaBackend::refitToPrimitives(uint32_t i) {
 void CudaBackend::rebuildBlasOnDevice(uint32_t i) {
     device_.reserveLbvhNodes(i, stream_);  // room for 2n - 1 nodes, on a first rebuild
     const uint32_t primitives = device_.blas(i).primitiveCount;
-    lbvh_.build(primBoxes_.data(), primitives, device_.blasNodes(i), device_.blasPrimIndices(i), stream_);
+    if (toggles_.gpuPloc) {
+        ploc_.build(primBoxes_.data(), primitives, device_.blasNodes(i), device_.blasPrimIndices(i), stream_);
+    } else {
+        lbvh_.build(primBoxes_.data(), primitives, device_.blasNodes(i), device_.blasPrimIndices(i), stream_);
+    }
     device_.setBlasNodeCount(i, lbvhNodeCount(primitives), stream_);
     device_.dropCompressed(i, stream_);  // the kernels walk the new tree's binary nodes
 }
@@ -361,7 +366,9 @@ bool CudaBackend::firstBuildOnGpu(std::string* why) const {
 
 void CudaBackend::buildDeferredBlasesOnDevice(SyncReport& report) {
     if (compiled_->deferredBlases.empty()) return;
-    timedStep(stream_, report, "build BLAS (GPU LBVH; SAH on the host behind it)", [&] {
+    const char* step = toggles_.gpuPloc ? "build BLAS (GPU PLOC; SAH on the host behind it)"
+                                        : "build BLAS (GPU LBVH; SAH on the host behind it)";
+    timedStep(stream_, report, step, [&] {
         for (const DeferredBlas& deferred : compiled_->deferredBlases) {
             primBoxes_.resize(device_.blas(deferred.blas).primitiveCount);
             computePrimitiveBoxes(device_.view(*compiled_), device_.blas(deferred.blas), primBoxes_.data(),
@@ -401,6 +408,7 @@ void CudaBackend::landSahTrees(bool wait) {
     updateView();                    // fitting a region to its tree moved the BLAS nodes
     if (pendingSahTrees_.empty()) {  // the first frame's build memory back (a GPU rebuild allocates it again)
         lbvh_.release();
+        ploc_.release();
         primBoxes_ = {};
     }
 }
@@ -747,6 +755,7 @@ std::vector<std::pair<std::string, uint64_t>> CudaBackend::deviceMemoryByBuffer(
     rows.emplace_back("BVH scratch (primitive boxes)", primBoxes_.bytes());
     rows.emplace_back("BVH scratch (refit visits)", refitVisits_.bytes());
     rows.emplace_back("BVH scratch (LBVH builder)", lbvh_.bytes());
+    rows.emplace_back("BVH scratch (PLOC builder)", ploc_.bytes());
     rows.emplace_back("ray queries", queryRays_.bytes() + queryHits_.bytes());
     return rows;
 }

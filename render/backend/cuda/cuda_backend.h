@@ -105,10 +105,12 @@ private:
     void buildTlasOnDevice(SyncReport& report);
     // BLAS i's boxes made the exact bounds of its primitives' current boxes (primBoxes_).
     void refitToPrimitives(uint32_t i);
-    // An LBVH of BLAS i over primBoxes_ (its primitives' boxes), in place of its tree.
+    // A GPU build of BLAS i over primBoxes_ (its primitives' boxes), in place of its tree: PLOC,
+    // or an LBVH without IntegratorToggles::gpuPloc.
     void rebuildBlasOnDevice(uint32_t i);
     // The first frame's trees of the meshes the compile deferred (IntegratorToggles::
-    // gpuFirstBuild): an LBVH each, built on the GPU, while their SAH trees build on the host.
+    // gpuFirstBuild): a GPU build each (rebuildBlasOnDevice), while their SAH trees build on the
+    // host.
     void buildDeferredBlasesOnDevice(SyncReport& report);
     bool firstBuildOnGpu(std::string* why = nullptr) const;
     // Swaps in the SAH trees that are built (all of them, waiting for them, where `wait`); a
@@ -133,7 +135,8 @@ private:
     // are unpinned before its memory goes.
     std::vector<PinnedRange> pinnedVertices_;
     DeviceScene device_;
-    LbvhBuilder lbvh_;
+    LbvhBuilder lbvh_;  // BLAS builds without gpuPloc, and the TLAS beyond kHostTlasMaxInstances
+    PlocBuilder ploc_;
     PathScheduler scheduler_;
     ScheduleChooser scheduleChooser_;
     DeviceBuffer<double> sum_;

@@ -4,6 +4,7 @@
 #include <cuda_runtime.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -12,6 +13,12 @@
 #include "render/util/check.h"
 
 namespace pt::cuda {
+
+// The capacity a builder's scratch grows to for `needed` items from `current`: at least half as
+// much again, so that builds growing a little at a time do not reallocate each time.
+inline uint32_t grownCapacity(uint32_t needed, uint32_t current) {
+    return needed > current + current / 2 ? needed : current + current / 2;
+}
 
 template <class T>
 class DeviceBuffer {

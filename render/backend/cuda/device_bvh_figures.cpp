@@ -36,6 +36,14 @@ DeviceBvhFigures measureDeviceBvhBuilds(const BvhBuildInput& in, uint32_t runs, 
     figures.buildSeconds = medianDeviceSeconds(
         runs, stream, [&] { builder.build(boxes.data(), n, nodes.data(), primIndices.data(), stream); });
     figures.sahCost = sahCostOnDevice(nodes.data(), lbvhNodeCount(n), stream);
+    {
+        PlocBuilder ploc;
+        figures.plocSeconds = medianDeviceSeconds(
+            runs, stream, [&] { ploc.build(boxes.data(), n, nodes.data(), primIndices.data(), stream); });
+        figures.plocSahCost = sahCostOnDevice(nodes.data(), lbvhNodeCount(n), stream);
+        figures.plocFellBack = ploc.lastBuildFellBack();
+        builder.build(boxes.data(), n, nodes.data(), primIndices.data(), stream);  // the LBVH again, to refit
+    }
 
     computeParents(nodes.data(), lbvhNodeCount(n), parents.data(), stream);
     figures.refitSeconds = medianDeviceSeconds(runs, stream, [&] {

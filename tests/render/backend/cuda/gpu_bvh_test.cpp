@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <type_traits>
 
 #include "render/backend/cuda/cuda_test_support.h"
 #include "render/backend/cuda/gpu_bvh_test_util.h"
@@ -24,8 +25,9 @@ using test::TestStream;
 
 // ---- LBVH structure ---------------------------------------------------------------------------
 
-// Every promise of gpu_bvh.h's LbvhBuilder::build, for a tree of `boxes`.
-void expectValidLbvh(const Bvh& bvh, const std::vector<Aabb>& boxes) {
+// Every promise of gpu_bvh.h's LbvhBuilder::build (and PlocBuilder::build), for a tree of
+// `boxes`; its depth to `treeDepth`.
+void expectValidTree(const Bvh& bvh, const std::vector<Aabb>& boxes, uint32_t* treeDepth = nullptr) {
     const uint32_t n = uint32_t(boxes.size());
     ASSERT_EQ(bvh.nodes.size(), cuda::lbvhNodeCount(n));
     ASSERT_EQ(bvh.primIndices.size(), n);
@@ -47,7 +49,7 @@ void expectValidLbvh(const Bvh& bvh, const std::vector<Aabb>& boxes) {
         const BvhNode& node = bvh.nodes[index];
         Aabb exact;
         if (node.isLeaf()) {
-            ASSERT_EQ(node.count, 1u) << "LBVH leaves hold one primitive";
+            ASSERT_EQ(node.count, 1u) << "leaves hold one primitive";
             ASSERT_LT(node.leftOrFirst, n);
             const uint32_t prim = bvh.primIndices[node.leftOrFirst];
             ASSERT_LT(prim, n);
@@ -73,6 +75,7 @@ void expectValidLbvh(const Bvh& bvh, const std::vector<Aabb>& boxes) {
     Aabb all;
     for (const Aabb& b : boxes) all.grow(b);
     EXPECT_TRUE(test::sameBox(bvh.nodes[0], all)) << "root box is not the union of all boxes";
+    if (treeDepth) *treeDepth = maxDepth;
 }
 
 struct SoupSize {
@@ -83,37 +86,50 @@ std::vector<Aabb> soupBoxes(SoupKind kind, uint32_t count, Rng& rng) {
     return test::triangleBounds(test::makeSoup(kind, count, rng));
 }
 
-TEST(GpuBvh, LbvhIsValidForEverySize) {
+// The structure and hit tests run for both GPU builders.
+template <class Builder>
+class GpuTreeBuilder : public testing::Test {};
+using GpuTreeBuilders = testing::Types<cuda::LbvhBuilder, cuda::PlocBuilder>;
+struct GpuTreeBuilderName {
+    template <class Builder>
+    static std::string GetName(int) {
+        return std::is_same_v<Builder, cuda::LbvhBuilder> ? "Lbvh" : "Ploc";
+    }
+};
+TYPED_TEST_SUITE(GpuTreeBuilder, GpuTreeBuilders, GpuTreeBuilderName);
+
+TYPED_TEST(GpuTreeBuilder, IsValidForEverySize) {
     PT_REQUIRE_CUDA_DEVICE();
     TestStream s;
     Rng rng(101);
-    cuda::LbvhBuilder builder;  // one builder throughout: its scratch grows, shrinks back and is reused
+    TypeParam builder;  // one builder throughout: its scratch grows, shrinks back and is reused
     for (uint32_t n : {1000u, 0u, 1u, 2u, 3u, 100000u, 5u, 1000u, 17u}) {
         for (SoupKind kind : {SoupKind::Uniform, SoupKind::Clustered, SoupKind::Needles}) {
             SCOPED_TRACE(std::to_string(n) + " " + test::soupName(kind));
             const std::vector<Aabb> boxes = soupBoxes(kind, n, rng);
-            expectValidLbvh(test::buildLbvhOnDevice(builder, boxes, s), boxes);
+            expectValidTree(test::buildTreeOnDevice(builder, boxes, s), boxes);
         }
     }
 }
 
-// Coincident centres: the index half of the keys must keep them unique and the depth bounded.
-TEST(GpuBvh, LbvhIsValidForDuplicateCentroids) {
+// Coincident centres: the index half of the keys must keep them unique and the depth bounded
+// (the LBVH), and equal costs must not stall the merging (PLOC's tie order).
+TYPED_TEST(GpuTreeBuilder, IsValidForDuplicateCentroids) {
     PT_REQUIRE_CUDA_DEVICE();
     TestStream s;
     Rng rng(102);
-    cuda::LbvhBuilder builder;
+    TypeParam builder;
     {
         SCOPED_TRACE("all primitives at one point");
         const Vec3 p = rng.inBox(Vec3(-1.0f), Vec3(1.0f));
         const std::vector<Aabb> boxes(50000, Aabb{p, p});
-        const Bvh bvh = test::buildLbvhOnDevice(builder, boxes, s);
-        expectValidLbvh(bvh, boxes);
+        const Bvh bvh = test::buildTreeOnDevice(builder, boxes, s);
+        expectValidTree(bvh, boxes);
     }
     {
         SCOPED_TRACE("boxes of many sizes about one centre");
         const std::vector<Aabb> boxes = soupBoxes(SoupKind::CoincidentCentroids, 20000, rng);
-        expectValidLbvh(test::buildLbvhOnDevice(builder, boxes, s), boxes);
+        expectValidTree(test::buildTreeOnDevice(builder, boxes, s), boxes);
     }
     {
         SCOPED_TRACE("centres on a 3x3x3 grid, in a plane, and on a line");
@@ -127,25 +143,58 @@ TEST(GpuBvh, LbvhIsValidForDuplicateCentroids) {
             const Vec3 r{rng.uniform(-1, 1), 0.0f, 0.0f};
             line.push_back(Aabb{r, r});
         }
-        expectValidLbvh(test::buildLbvhOnDevice(builder, grid, s), grid);
-        expectValidLbvh(test::buildLbvhOnDevice(builder, plane, s), plane);
-        expectValidLbvh(test::buildLbvhOnDevice(builder, line, s), line);
+        expectValidTree(test::buildTreeOnDevice(builder, grid, s), grid);
+        expectValidTree(test::buildTreeOnDevice(builder, plane, s), plane);
+        expectValidTree(test::buildTreeOnDevice(builder, line, s), line);
     }
 }
 
-TEST(GpuBvh, LbvhClosestHitsMatchBruteForce) {
+// Coincident boxes cost the same to merge with any neighbour: PLOC's tie order pairs them off,
+// (0, 1), (2, 3) ..., each round, into a balanced tree. An order that favoured one end would
+// grow one chain a round, too deep to walk, and fall back to the LBVH.
+TEST(GpuBvh, PlocPairsOffCoincidentBoxes) {
+    PT_REQUIRE_CUDA_DEVICE();
+    TestStream s;
+    cuda::PlocBuilder builder;
+    const Vec3 p(0.25f, -0.5f, 1.0f);
+    const std::vector<Aabb> boxes(50000, Aabb{p - Vec3(0.1f), p + Vec3(0.1f)});
+    uint32_t depth = ~0u;
+    expectValidTree(test::buildTreeOnDevice(builder, boxes, s), boxes, &depth);
+    EXPECT_FALSE(builder.lastBuildFellBack());
+    EXPECT_LE(depth, 17u);  // a balanced tree of 50,000 leaves is 16 deep
+}
+
+// Nested boxes about one centre: each box's least union is with the next smaller one, so PLOC
+// merges one pair a round into a chain 99 deep, which the traversal stack could not walk. The
+// build falls back to an LBVH of the same boxes, and the next build does not.
+TEST(GpuBvh, PlocFallsBackToAnLbvhBeyondTheStacksDepth) {
+    PT_REQUIRE_CUDA_DEVICE();
+    TestStream s;
+    cuda::PlocBuilder builder;
+    std::vector<Aabb> nested;
+    float half = 1.0f;
+    for (int k = 0; k < 100; ++k, half *= 1.5f) nested.push_back(Aabb{Vec3(-half), Vec3(half)});
+    expectValidTree(test::buildTreeOnDevice(builder, nested, s), nested);
+    EXPECT_TRUE(builder.lastBuildFellBack());
+    Rng rng(111);
+    const std::vector<Aabb> soup = soupBoxes(SoupKind::Uniform, 5000, rng);
+    expectValidTree(test::buildTreeOnDevice(builder, soup, s), soup);
+    EXPECT_FALSE(builder.lastBuildFellBack());
+}
+
+TYPED_TEST(GpuTreeBuilder, ClosestHitsMatchBruteForce) {
     PT_REQUIRE_CUDA_DEVICE();
     TestStream s;
     Rng rng(103);
-    cuda::LbvhBuilder builder;
+    TypeParam builder;
     for (SoupKind kind :
          {SoupKind::Uniform, SoupKind::Clustered, SoupKind::Needles, SoupKind::CoincidentCentroids}) {
         for (const SoupSize& size : {SoupSize{2, 2000}, {3, 2000}, {2000, 20000}, {20000, 2000}}) {
             const auto [triangles, rays] = size;
             SCOPED_TRACE(std::to_string(triangles) + " " + test::soupName(kind));
             const Mesh mesh = test::makeSoup(kind, triangles, rng);
-            Bvh lbvh = test::buildLbvhOnDevice(builder, test::triangleBounds(mesh), s);
-            EXPECT_EQ(test::compareClosestHits(mesh, std::move(lbvh), rays, rng), 0);
+            Bvh tree = test::buildTreeOnDevice(builder, test::triangleBounds(mesh), s);
+            EXPECT_EQ(test::compareClosestHits(mesh, std::move(tree), rays, rng), 0);
         }
     }
 }
@@ -242,15 +291,15 @@ TEST(GpuBvh, RefitOfCpuBuiltTreeIsExact) {
     }
 }
 
-TEST(GpuBvh, RefitOfLbvhIsExact) {
+TYPED_TEST(GpuTreeBuilder, RefitIsExact) {
     PT_REQUIRE_CUDA_DEVICE();
     TestStream s;
     Rng rng(105);
-    cuda::LbvhBuilder builder;
+    TypeParam builder;
     for (uint32_t triangles : {2u, 1000u, 100000u}) {
         SCOPED_TRACE(triangles);
         const Mesh mesh = test::makeSoup(SoupKind::Uniform, triangles, rng);
-        const Bvh tree = test::buildLbvhOnDevice(builder, test::triangleBounds(mesh), s);
+        const Bvh tree = test::buildTreeOnDevice(builder, test::triangleBounds(mesh), s);
         expectRefitExact(tree, perturbed(mesh, 0.5f, rng), 2000, rng, s);
     }
 }
@@ -291,7 +340,7 @@ TEST(GpuBvh, SahCostMatchesHost) {
             SCOPED_TRACE(std::to_string(n) + " " + test::soupName(kind));
             const std::vector<Aabb> boxes = soupBoxes(kind, n, rng);
             expectSahAgrees(buildBinnedSahBvh(boxes.data(), n), s);
-            expectSahAgrees(test::buildLbvhOnDevice(builder, boxes, s), s);
+            expectSahAgrees(test::buildTreeOnDevice(builder, boxes, s), s);
         }
     }
     // A root of zero area: every node counts as if it had the root's area.
@@ -299,31 +348,39 @@ TEST(GpuBvh, SahCostMatchesHost) {
         const Vec3 p{0.5f, -0.25f, 2.0f};
         const std::vector<Aabb> point(n, Aabb{p, p});
         expectSahAgrees(buildBinnedSahBvh(point.data(), n), s);
-        expectSahAgrees(test::buildLbvhOnDevice(builder, point, s), s);
+        expectSahAgrees(test::buildTreeOnDevice(builder, point, s), s);
     }
     EXPECT_EQ(cuda::sahCostOnDevice(nullptr, 0, s.stream), 0.0f);
 }
 
-// LBVH quality against the binned SAH builder: reported, and bounded loosely (an LBVH of
-// one-primitive leaves is typically 1.2-2x the binned builder's cost).
-TEST(GpuBvh, LbvhSahCostAgainstBinnedBuilder) {
+// GPU build quality against the binned SAH builder: reported, and bounded. An LBVH of
+// one-primitive leaves is typically 1.2-2x the binned builder's cost; PLOC, clustering by
+// surface area, must come out below the LBVH on every mesh.
+TEST(GpuBvh, SahCostOfGpuBuildsAgainstTheBinnedBuilder) {
     PT_REQUIRE_CUDA_DEVICE();
     TestStream s;
     Rng rng(107);
-    cuda::LbvhBuilder builder;
+    cuda::LbvhBuilder lbvhBuilder;
+    cuda::PlocBuilder plocBuilder;
     const std::pair<const char*, Mesh> meshes[] = {
         {"random100k", test::makeSoup(SoupKind::Uniform, 100000, rng)},
+        {"clustered100k", test::makeSoup(SoupKind::Clustered, 100000, rng)},
         {"icosphere82k", test::makeIcosphere(6)}};
     for (const auto& [name, mesh] : meshes) {
         const std::vector<Aabb> boxes = test::triangleBounds(mesh);
-        const Bvh binned = buildBinnedSahBvh(boxes.data(), uint32_t(boxes.size()));
-        const Bvh lbvh = test::buildLbvhOnDevice(builder, boxes, s);
-        const float ratio = sahCost(lbvh) / sahCost(binned);
-        std::cout << "[ sah      ] " << name << " (" << boxes.size() << " triangles): LBVH " << sahCost(lbvh)
-                  << ", binned SAH " << sahCost(binned) << ", ratio " << ratio << "\n";
-        ::testing::Test::RecordProperty(std::string("lbvh_sah_ratio_") + name, std::to_string(ratio));
-        EXPECT_GT(ratio, 0.8f);
-        EXPECT_LT(ratio, 3.0f);
+        const float binned = sahCost(buildBinnedSahBvh(boxes.data(), uint32_t(boxes.size())));
+        const float lbvh = sahCost(test::buildTreeOnDevice(lbvhBuilder, boxes, s)) / binned;
+        const float ploc = sahCost(test::buildTreeOnDevice(plocBuilder, boxes, s)) / binned;
+        std::cout << "[ sah      ] " << name << " (" << boxes.size()
+                  << " triangles), cost over the binned SAH"
+                  << " build's " << binned << ": LBVH " << lbvh << ", PLOC " << ploc << "\n";
+        ::testing::Test::RecordProperty(std::string("lbvh_sah_ratio_") + name, std::to_string(lbvh));
+        ::testing::Test::RecordProperty(std::string("ploc_sah_ratio_") + name, std::to_string(ploc));
+        EXPECT_GT(lbvh, 0.8f);
+        EXPECT_LT(lbvh, 3.0f);
+        EXPECT_FALSE(plocBuilder.lastBuildFellBack());
+        EXPECT_GT(ploc, 0.8f);
+        EXPECT_LT(ploc, lbvh);
     }
 }
 
@@ -464,6 +521,10 @@ TEST(GpuBvh, BuildAndRefitSpeedOfOneMillionTriangles) {
     cuda::LbvhBuilder builder;
     const float boxMs = medianMilliseconds(
         s, 10, [&] { cuda::computePrimitiveBoxes(device.view(), device.blas, boxes.data(), s.stream); });
+    cuda::PlocBuilder ploc;
+    const float plocMs = medianMilliseconds(
+        s, 10, [&] { ploc.build(boxes.data(), n, nodes.data(), primIndices.data(), s.stream); });
+    const float sahPloc = cuda::sahCostOnDevice(nodes.data(), nodeCount, s.stream);
     const float buildMs = medianMilliseconds(
         s, 10, [&] { builder.build(boxes.data(), n, nodes.data(), primIndices.data(), s.stream); });
     cuda::computeParents(nodes.data(), nodeCount, parents.data(), s.stream);
@@ -479,8 +540,11 @@ TEST(GpuBvh, BuildAndRefitSpeedOfOneMillionTriangles) {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - hostStart).count();
     std::printf(
         "[ speed    ] %u triangles: primitive boxes %.3f ms, LBVH build %.3f ms (%.0f Mtris/s), refit %.3f "
-        "ms (median of 10); CPU binned SAH build %.1f ms; SAH LBVH %.2f, binned %.2f\n",
-        n, boxMs, buildMs, n / (buildMs * 1e3), refitMs, binnedMs, sahLbvh, sahCost(binned));
+        "ms (median of 10); PLOC build %.3f ms; CPU binned SAH build %.1f ms; SAH LBVH %.2f, PLOC %.2f, "
+        "binned "
+        "%.2f\n",
+        n, boxMs, buildMs, n / (buildMs * 1e3), refitMs, plocMs, binnedMs, sahLbvh, sahPloc, sahCost(binned));
+    ::testing::Test::RecordProperty("ploc_build_1m_ms", std::to_string(plocMs));
     ::testing::Test::RecordProperty("lbvh_build_1m_ms", std::to_string(buildMs));
     ::testing::Test::RecordProperty("refit_1m_ms", std::to_string(refitMs));
     Bvh lbvh;

@@ -34,9 +34,10 @@ inline Aabb boxOf(const BvhNode& node) {
     return box;
 }
 
-// An LBVH of `boxes` built on the device with `builder`, downloaded.
-inline Bvh buildLbvhOnDevice(cuda::LbvhBuilder& builder, const std::vector<Aabb>& boxes,
-                             const TestStream& s) {
+// A tree of `boxes` built on the device with `builder` (cuda::LbvhBuilder or cuda::PlocBuilder),
+// downloaded.
+template <class Builder>
+Bvh buildTreeOnDevice(Builder& builder, const std::vector<Aabb>& boxes, const TestStream& s) {
     const uint32_t n = uint32_t(boxes.size());
     cuda::DeviceBuffer<Aabb> deviceBoxes;
     deviceBoxes.upload(boxes, s.stream);

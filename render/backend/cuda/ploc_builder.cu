@@ -1,0 +1,309 @@
+// PlocBuilder::build (gpu_bvh.h): Meister and Bittner 2018. Passes, queued on the caller's
+// stream:
+//   1. keys sorted by the Morton code of the box centres (MortonSort)
+//   2. one cluster a primitive, in that order: the leaf it will become
+//   3. rounds while more clusters are left than one block holds, each one kernel (as PLOC++,
+//      Benthin et al. 2022, fuses them): every cluster's nearest neighbour among kPlocRadius on
+//      either side (the least surface area of the union), then every mutual pair merged into a
+//      new cluster at the lower index; then the clusters merged away compacted out
+//      (cub::DeviceSelect). The count stays on the device: the rounds are launched over the
+//      last count read back, which is read again every kRoundsPerReadBack rounds
+//   4. the last rounds in one block, in shared memory (a round of a few hundred clusters would
+//      cost more in launches than in work)
+// A merge writes its two clusters as nodes into a pair of fresh slots and becomes an interior
+// cluster pointing at them, so siblings are adjacent without a renumbering pass; the last
+// cluster is the root, node 0.
+#include <algorithm>
+#include <cub/block/block_scan.cuh>
+#include <cub/device/device_select.cuh>
+
+#include "render/backend/cuda/bvh_bottom_up.cuh"
+#include "render/backend/cuda/gpu_bvh.h"
+
+namespace pt::cuda {
+
+namespace {
+
+// counters_'s words.
+enum PlocCounter : uint32_t { kNextSlot, kClustersLeft, kRootHeight, kPlocCounters };
+
+// A cluster is the node it will become. A leaf's count is 1; an interior cluster's count field
+// holds kInteriorCluster | its height (a leaf's is 0), set to 0 when it is written as a node.
+constexpr uint32_t kInteriorCluster = 0x80000000u;
+// The clusters the last rounds take in one block.
+constexpr int kFinishClusters = 1024;
+// Rounds between read-backs of the cluster count. Each read-back waits for the stream (about
+// 15 us); the rounds between launch over the count last read, which shrinks about 11% a round
+// on a million triangles, and blocks past the current count exit at once.
+constexpr int kRoundsPerReadBack = 3;
+
+__device__ __forceinline__ uint32_t clusterHeight(uint32_t count) {
+    return count & kInteriorCluster ? count & ~kInteriorCluster : 0u;
+}
+
+// A cluster as two 16-byte words, the form it takes in shared memory: lo and leftOrFirst, hi
+// and count.
+struct ClusterWords {
+    float4 low, high;
+};
+
+__device__ __forceinline__ ClusterWords loadCluster(const BvhNode* clusters, int i) {
+    const float4* words = reinterpret_cast<const float4*>(clusters + i);
+    return {words[0], words[1]};
+}
+
+__device__ __forceinline__ void storeCluster(BvhNode* out, const ClusterWords& c) {
+    float4* words = reinterpret_cast<float4*>(out);
+    words[0] = c.low;
+    words[1] = c.high;
+}
+
+// The cluster written as a node: an interior cluster's count becomes 0.
+__device__ __forceinline__ void storeAsNode(BvhNode* out, ClusterWords c) {
+    if (__float_as_uint(c.high.w) & kInteriorCluster) c.high.w = __uint_as_float(0u);
+    storeCluster(out, c);
+}
+
+// Half the surface area of the union of two clusters' boxes: PLOC's distance. Symmetric to
+// the bit (min and max commute), so both ends of a pair see the same cost.
+__device__ __forceinline__ float unionCost(const ClusterWords& a, const ClusterWords& b) {
+    const float dx = fmaxf(a.high.x, b.high.x) - fminf(a.low.x, b.low.x);
+    const float dy = fmaxf(a.high.y, b.high.y) - fminf(a.low.y, b.low.y);
+    const float dz = fmaxf(a.high.z, b.high.z) - fminf(a.low.z, b.low.z);
+    const float cost = dx * dy + dy * dz + dz * dx;
+    return cost == cost ? cost : INFINITY;  // an infinite box's 0 * inf orders as the largest
+}
+
+// Where two pairs of clusters cost the same, the one that goes first: the nearer in the order,
+// then the one whose lower end is even, then the lower. A total order on pairs that both ends of
+// a pair agree on, so the least pair of a round is chosen from both ends and every round merges
+// at least once; and where a run of clusters all cost the same (coincident boxes) it pairs them
+// off two by two, (0, 1), (2, 3) ..., rather than growing one chain a round.
+__device__ __forceinline__ uint64_t tieOrder(int i, int j) {
+    const uint32_t gap = uint32_t(i > j ? i - j : j - i), lower = uint32_t(min(i, j));
+    return uint64_t(gap) << 33 | uint64_t(lower & 1u) << 32 | lower;
+}
+
+// The index of cluster i's nearest neighbour among the `count` of the round (count >= 2),
+// `clusterAt(k)` giving cluster k.
+template <class ClusterAt>
+__device__ __forceinline__ int nearestNeighbour(int i, int count, const ClusterAt& clusterAt) {
+    const ClusterWords mine = clusterAt(i);
+    const int first = max(i - kPlocRadius, 0), last = min(i + kPlocRadius, count - 1);
+    int best = -1;
+    float bestCost = INFINITY;
+    for (int j = first; j <= last; ++j) {
+        if (j == i) continue;
+        const float cost = unionCost(mine, clusterAt(j));
+        if (best < 0 || cost < bestCost || (cost == bestCost && tieOrder(i, j) < tieOrder(i, best))) {
+            bestCost = cost;
+            best = j;
+        }
+    }
+    return best;
+}
+
+// Cluster i's part in its round's merges, given its neighbour j: a mutual pair is merged by
+// its lower end (its two clusters written as nodes into fresh slots, `nodes` + the slot from
+// `nextSlot`), and dropped by its higher end; any other cluster goes on as it is. Returns
+// whether cluster i goes on, as `next`.
+__device__ __forceinline__ bool mergeStep(int i, int j, bool mutual, const ClusterWords& mine,
+                                          const ClusterWords& neighbour, BvhNode* nodes, uint32_t* nextSlot,
+                                          ClusterWords& next) {
+    if (!mutual) {
+        next = mine;
+        return true;
+    }
+    if (i > j) return false;
+    const uint32_t slot = atomicAdd(nextSlot, 2u);
+    storeAsNode(nodes + slot, mine);
+    storeAsNode(nodes + slot + 1, neighbour);
+    const uint32_t height =
+        max(clusterHeight(__float_as_uint(mine.high.w)), clusterHeight(__float_as_uint(neighbour.high.w))) +
+        1u;
+    next.low = make_float4(fminf(mine.low.x, neighbour.low.x), fminf(mine.low.y, neighbour.low.y),
+                           fminf(mine.low.z, neighbour.low.z), __uint_as_float(slot));
+    next.high = make_float4(fmaxf(mine.high.x, neighbour.high.x), fmaxf(mine.high.y, neighbour.high.y),
+                            fmaxf(mine.high.z, neighbour.high.z), __uint_as_float(kInteriorCluster | height));
+    return true;
+}
+
+// Pass 2: the leaf cluster of the primitive at sorted position q, and its primIndices entry.
+__global__ void leafClustersKernel(const Aabb* boxes, const uint64_t* sortedKeys, uint32_t count,
+                                   BvhNode* clusters, uint32_t* primIndices, uint32_t* counters) {
+    const uint32_t q = blockIdx.x * blockDim.x + threadIdx.x;
+    if (q == 0) {
+        counters[kNextSlot] = 1;  // slot 0 is the root's
+        counters[kClustersLeft] = count;
+    }
+    if (q >= count) return;
+    const uint32_t prim = uint32_t(sortedKeys[q]);  // the low 32 bits
+    primIndices[q] = prim;
+    const Aabb box = boxes[prim];
+    BvhNode leaf;
+    leaf.lo = box.lo;
+    leaf.leftOrFirst = q;
+    leaf.hi = box.hi;
+    leaf.count = 1;
+    clusters[q] = leaf;
+}
+
+// Pass 3: one round over the clusters counters[kClustersLeft] holds (at most `bound`): the
+// merged clusters into `merged` (at each cluster's index), and whether each goes on into `keep`
+// (0 past the count, where the compaction still looks). A block finds the nearest neighbours of
+// its clusters and of kPlocRadius on either side, whose choices its own mutual tests need,
+// from its clusters and 2 kPlocRadius on either side, read into shared memory once.
+constexpr int kRoundNeighbours = kBvhBlockSize + 2 * kPlocRadius;
+constexpr int kRoundTile = kBvhBlockSize + 4 * kPlocRadius;
+__global__ void __launch_bounds__(kBvhBlockSize)
+    roundKernel(const BvhNode* clusters, uint32_t bound, uint32_t* counters, BvhNode* merged, uint8_t* keep,
+                BvhNode* nodes) {
+    __shared__ float4 low[kRoundTile], high[kRoundTile];
+    __shared__ int32_t neighbour[kRoundNeighbours];
+    const int count = int(counters[kClustersLeft]);
+    const int blockStart = int(blockIdx.x * blockDim.x), i = blockStart + int(threadIdx.x);
+    if (blockStart >= count || count < 2) {  // the whole block: nothing to merge
+        if (i < int(bound)) keep[i] = i < count ? 1 : 0;
+        if (i < count) merged[i] = clusters[i];
+        return;
+    }
+    const int tileStart = blockStart - 2 * kPlocRadius, neighboursStart = blockStart - kPlocRadius;
+    for (int t = int(threadIdx.x); t < kRoundTile; t += kBvhBlockSize) {
+        const int k = tileStart + t;
+        if (k >= 0 && k < count) {
+            const ClusterWords c = loadCluster(clusters, k);
+            low[t] = c.low;
+            high[t] = c.high;
+        }
+    }
+    __syncthreads();
+    const auto clusterAt = [&](int k) { return ClusterWords{low[k - tileStart], high[k - tileStart]}; };
+    for (int t = int(threadIdx.x); t < kRoundNeighbours; t += kBvhBlockSize) {
+        const int k = neighboursStart + t;
+        if (k >= 0 && k < count) neighbour[t] = nearestNeighbour(k, count, clusterAt);
+    }
+    __syncthreads();
+    if (i >= int(bound)) return;
+    if (i >= count) {
+        keep[i] = 0;
+        return;
+    }
+    const int j = neighbour[i - neighboursStart];  // within kPlocRadius of i: in the block's range
+    ClusterWords next;
+    const bool goesOn = mergeStep(i, j, neighbour[j - neighboursStart] == i, clusterAt(i), clusterAt(j),
+                                  nodes, counters + kNextSlot, next);
+    if (goesOn) storeCluster(merged + i, next);
+    keep[i] = goesOn ? 1 : 0;
+}
+
+// Pass 4: the rounds of the last counters[kClustersLeft] <= kFinishClusters clusters, in one
+// block of kFinishClusters threads; the root to node 0 and its height to counters[kRootHeight].
+__global__ void __launch_bounds__(kFinishClusters)
+    finishKernel(const BvhNode* clusters, BvhNode* nodes, uint32_t* counters) {
+    using Scan = cub::BlockScan<int, kFinishClusters>;
+    __shared__ typename Scan::TempStorage scanStorage;
+    __shared__ float4 low[kFinishClusters], high[kFinishClusters];
+    __shared__ int32_t neighbour[kFinishClusters];
+    const int t = int(threadIdx.x);
+    int left = int(counters[kClustersLeft]);
+    if (t < left) {
+        const ClusterWords c = loadCluster(clusters, t);
+        low[t] = c.low;
+        high[t] = c.high;
+    }
+    __syncthreads();
+    const auto clusterAt = [&](int k) { return ClusterWords{low[k], high[k]}; };
+    while (left > 1) {
+        if (t < left) neighbour[t] = nearestNeighbour(t, left, clusterAt);
+        __syncthreads();
+        ClusterWords next{};
+        int goesOn = 0;
+        if (t < left) {
+            const int j = neighbour[t];
+            goesOn = mergeStep(t, j, neighbour[j] == t, clusterAt(t), clusterAt(j), nodes,
+                               counters + kNextSlot, next);
+        }
+        int position = 0, total = 0;
+        Scan(scanStorage).ExclusiveSum(goesOn, position, total);
+        __syncthreads();  // every thread has read the round's clusters and neighbours
+        if (goesOn) {
+            low[position] = next.low;
+            high[position] = next.high;
+        }
+        left = total;
+        __syncthreads();
+    }
+    if (t == 0) {
+        const ClusterWords root = clusterAt(0);
+        storeAsNode(nodes, root);
+        counters[kRootHeight] = clusterHeight(__float_as_uint(root.high.w));
+    }
+}
+
+}  // namespace
+
+void PlocBuilder::reserve(uint32_t count) {
+    if (count <= capacity_) return;
+    const uint32_t capacity = grownCapacity(count, capacity_);
+    clusters_.resize(capacity);
+    merged_.resize(capacity);
+    keep_.resize(capacity);
+    counters_.resize(kPlocCounters);
+    size_t selectBytes = 0;
+    PT_CUDA_CHECK(cub::DeviceSelect::Flagged(nullptr, selectBytes, merged_.data(), keep_.data(),
+                                             clusters_.data(), counters_.data() + kClustersLeft, capacity));
+    selectScratch_.resize(std::max<size_t>(selectBytes, 1));
+    capacity_ = capacity;
+}
+
+void PlocBuilder::release() {
+    morton_.release();
+    clusters_ = {};
+    merged_ = {};
+    keep_ = {};
+    selectScratch_ = {};
+    counters_ = {};
+    fallback_.release();
+    capacity_ = 0;
+}
+
+void PlocBuilder::build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint32_t* primIndices,
+                        cudaStream_t stream) {
+    fellBack_ = false;
+    if (count <= 1) {  // the empty root or a single leaf, as the LBVH makes them
+        fallback_.build(boxes, count, nodes, primIndices, stream);
+        return;
+    }
+    reserve(count);
+    const uint64_t* sorted = morton_.sort(boxes, count, stream);
+    leafClustersKernel<<<bvhBlocks(count), kBvhBlockSize, 0, stream>>>(boxes, sorted, count, clusters_.data(),
+                                                                       primIndices, counters_.data());
+    PT_CUDA_CHECK_LAUNCH("leafClustersKernel");
+    uint32_t bound = count;  // the count last read back: no less than the count on the device
+    while (bound > uint32_t(kFinishClusters)) {
+        for (int round = 0; round < kRoundsPerReadBack; ++round) {
+            roundKernel<<<bvhBlocks(bound), kBvhBlockSize, 0, stream>>>(
+                clusters_.data(), bound, counters_.data(), merged_.data(), keep_.data(), nodes);
+            PT_CUDA_CHECK_LAUNCH("roundKernel");
+            size_t selectBytes = selectScratch_.bytes();
+            PT_CUDA_CHECK(cub::DeviceSelect::Flagged(selectScratch_.data(), selectBytes, merged_.data(),
+                                                     keep_.data(), clusters_.data(),
+                                                     counters_.data() + kClustersLeft, bound, stream));
+        }
+        PT_CUDA_CHECK(cudaMemcpyAsync(&bound, counters_.data() + kClustersLeft, sizeof(bound),
+                                      cudaMemcpyDeviceToHost, stream));
+        PT_CUDA_CHECK(cudaStreamSynchronize(stream));
+    }
+    finishKernel<<<1, kFinishClusters, 0, stream>>>(clusters_.data(), nodes, counters_.data());
+    PT_CUDA_CHECK_LAUNCH("finishKernel");
+    uint32_t height = 0;
+    PT_CUDA_CHECK(cudaMemcpyAsync(&height, counters_.data() + kRootHeight, sizeof(height),
+                                  cudaMemcpyDeviceToHost, stream));
+    PT_CUDA_CHECK(cudaStreamSynchronize(stream));
+    if (height > kPlocMaxDepth) {
+        fallback_.build(boxes, count, nodes, primIndices, stream);
+        fellBack_ = true;
+    }
+}
+
+}  // namespace pt::cuda
