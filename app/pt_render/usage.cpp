@@ -34,8 +34,8 @@ constexpr CommandUsage kCommands[] = {
                 [--runs N] [--spp N] [--json OUT.json] [--quiet] [TOGGLES]
       Medians of several runs: traversal Mrays/s (primary, diffuse, shadow; BVH on and off),
       path tracing spp/s and Mpaths/s with each toggle flipped, BLAS/TLAS build and refit
-      times (CPU binned SAH; GPU LBVH with the cuda backend), edit-to-first-frame latency, and
-      the largest deviation of the backend's image from the CPU's.
+      times (CPU binned SAH; GPU LBVH and PLOC with the cuda backend), edit-to-first-frame
+      latency, and the largest deviation of the backend's image from the CPU's.
 )",
      kToggles},
     {"reference",
@@ -90,8 +90,9 @@ constexpr const char* kToggleText =
   next at once), --no-compaction, --sort-materials | --no-sort-materials,
   --no-first-hit-cache, --rebuild-ratio R (refit until SAH cost exceeds R x the built one)
   --gpu-wide-bvh (the GPU walks compressed 8-wide BLASes), --no-gpu-first-build (the GPU's
-  first frame waits for the host's SAH trees of large meshes, instead of walking LBVHs built
-  on the GPU while those build behind it)
+  first frame waits for the host's SAH trees of large meshes, instead of walking trees built
+  on the GPU while those build behind it), --no-ploc (the GPU builds BLASes, for first frames
+  and rebuilds, as LBVHs instead of by PLOC: faster to build, about 1.1-1.2x the cost to walk)
 )";
 
 constexpr const char* kDisplayText =
