@@ -1,9 +1,9 @@
 #pragma once
 // The CUDA backend's BVH work on the device: building a BLAS or the TLAS from primitive boxes
-// (LBVH), refitting a BLAS bottom-up after its vertices moved, and measuring SAH cost, all in
-// the canonical layout of bvh_node.h, so the shared traversal reads GPU-built and CPU-built
-// trees alike. Host functions; every pointer argument is device memory; work is queued on
-// `stream` and nothing here synchronises unless it says so.
+// (LBVH, or PLOC for BLASes), refitting a BLAS bottom-up after its vertices moved, and measuring SAH cost,
+// all in the canonical layout of bvh_node.h, so the shared traversal reads GPU-built and CPU-built trees
+// alike. Host functions; every pointer argument is device memory; work is queued on `stream` and nothing here
+// synchronises unless it says so.
 #include <cuda_runtime.h>
 
 #include <cstdint>
@@ -11,13 +11,20 @@
 #include "render/backend/cuda/device_buffer.h"
 #include "render/backend/cuda/morton_sort.h"
 #include "render/bvh/aabb.h"
+#include "render/bvh/bvh_walk.h"  // kBvhStackSize
 #include "render/kernel/bvh_node.h"
 #include "render/kernel/render_scene.h"
 
 namespace pt::cuda {
 
-// Node count the LBVH of `count` primitives writes: 2 count - 1, and 1 (an empty root) for 0.
+// Node count the LBVH (and PLOC) of `count` primitives writes: 2 count - 1, and 1 (an empty
+// root) for 0.
 inline uint32_t lbvhNodeCount(uint32_t count) { return count == 0 ? 1u : 2u * count - 1u; }
+
+// The deepest leaf (root at depth 0) of a GPU-built tree: the LBVH's keys bound it, PLOC falls
+// back to an LBVH beyond it.
+constexpr uint32_t kGpuBvhMaxDepth = 62;
+static_assert(kGpuBvhMaxDepth < kBvhStackSize, "the traversal stack must hold a GPU-built tree's path");
 
 // Linear BVH (Karras, "Maximizing Parallelism in the Construction of BVHs, Octrees, and k-d
 // Trees", HPG 2012): 30-bit Morton codes of box centres in the boxes' common bounds, a radix
@@ -34,7 +41,8 @@ public:
     // Writes lbvhNodeCount(count) nodes to `nodes` (root first; siblings adjacent) and `count`
     // entries to `primIndices` (indices into `boxes`). `boxes` must hold no NaN. The result
     // obeys every rule of binned_sah_builder.h's Bvh except the leaf size (always 1) and
-    // depth-first order; its depth is at most 62 < kBvhStackSize.
+    // depth-first order; its depth is at most kGpuBvhMaxDepth. `nodes` must be 16-byte aligned,
+    // as every cudaMalloc'd array is.
     void build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint32_t* primIndices, cudaStream_t stream);
     // Frees the scratch (the next build allocates it again): once the trees it built for a first
     // frame have been replaced, at 10M triangles it would hold about 400 MiB for nothing.
@@ -60,21 +68,23 @@ private:
 // clusters in Morton order, each with the one among its kPlocRadius neighbours on either side
 // whose union has the least surface area, wherever the choice is mutual, until one is left.
 // Agglomerative clustering by surface area is what a SAH top-down build approximates from the
-// other end, and PLOC's trees come within a few percent of a full-sweep SAH build's cost where
-// an LBVH's Morton splits cost 20% more or worse (gpu_bvh_test.cpp measures both).
-// The same contract as LbvhBuilder::build (one primitive a leaf, siblings adjacent, root at 0,
-// lbvhNodeCount(count) nodes), except that leaves are not in Morton order and the build
-// synchronises `stream`: it reads the cluster count back every few rounds. PLOC bounds no depth:
-// a tree deeper than kPlocMaxDepth (which the traversal stack could not walk) is replaced by an
-// LBVH of the same boxes, and `lastBuildFellBack()` says so.
+// other end: on an H200, PLOC's trees cost 1.03-1.15x the binned SAH build's where the LBVH's
+// Morton splits cost 1.09-1.21x (gpu_bvh_test.cpp and pt-render bench measure both).
 constexpr int kPlocRadius = 16;
-constexpr uint32_t kPlocMaxDepth = 62;
 
+// The same contract as LbvhBuilder::build (one primitive a leaf, siblings adjacent, root at 0,
+// lbvhNodeCount(count) nodes, `nodes` 16-byte aligned), except that leaves are not in Morton
+// order and the build synchronises `stream`: it reads the cluster count back every few rounds.
+// PLOC bounds no depth: a tree deeper than kGpuBvhMaxDepth is replaced by an LBVH of the same
+// boxes, and lastBuildFellBack() says so.
 class PlocBuilder {
 public:
     void build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint32_t* primIndices, cudaStream_t stream);
     // Whether the last build's tree was too deep and an LBVH took its place.
     bool lastBuildFellBack() const { return fellBack_; }
+    // The depth of the last build's tree as PLOC made it (deeper than kGpuBvhMaxDepth where it
+    // fell back; 0 for fewer than two primitives).
+    uint32_t lastBuildDepth() const { return depth_; }
     // Frees the scratch, as LbvhBuilder::release.
     void release();
     uint64_t bytes() const {
@@ -88,6 +98,7 @@ private:
 
     uint32_t capacity_ = 0;
     bool fellBack_ = false;
+    uint32_t depth_ = 0;
     MortonSort morton_;
     // The clusters of a round in Morton order, each as the node it will become (ploc_builder.cu
     // says how an interior cluster's count field carries its height), and the round's clusters

@@ -2,8 +2,6 @@
 //   1-3. keys sorted by the Morton code of the box centres (MortonSort, morton_sort.h)
 //   4. one thread per internal node: its key range, its split, its children's node slots
 //   5. one thread per leaf: the leaf node, then boxes bottom-up (bvh_bottom_up.cuh)
-#include <algorithm>
-
 #include "render/backend/cuda/bvh_bottom_up.cuh"
 #include "render/backend/cuda/gpu_bvh.h"
 

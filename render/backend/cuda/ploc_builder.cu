@@ -27,8 +27,9 @@ namespace {
 // counters_'s words.
 enum PlocCounter : uint32_t { kNextSlot, kClustersLeft, kRootHeight, kPlocCounters };
 
-// A cluster is the node it will become. A leaf's count is 1; an interior cluster's count field
-// holds kInteriorCluster | its height (a leaf's is 0), set to 0 when it is written as a node.
+// A cluster is the node it will become. A leaf's count is 1 (its height 0); an interior
+// cluster's count field holds kInteriorCluster | its height, set to 0 when it is written as a
+// node.
 constexpr uint32_t kInteriorCluster = 0x80000000u;
 // The clusters the last rounds take in one block.
 constexpr int kFinishClusters = 1024;
@@ -162,7 +163,10 @@ __global__ void __launch_bounds__(kBvhBlockSize)
     __shared__ int32_t neighbour[kRoundNeighbours];
     const int count = int(counters[kClustersLeft]);
     const int blockStart = int(blockIdx.x * blockDim.x), i = blockStart + int(threadIdx.x);
-    if (blockStart >= count || count < 2) {  // the whole block: nothing to merge
+    // The whole block has nothing to merge. (count < 2 does not happen while the host reads the
+    // count back before it could: a round at most halves it, and the rounds run from over
+    // kFinishClusters.)
+    if (blockStart >= count || count < 2) {
         if (i < int(bound)) keep[i] = i < count ? 1 : 0;
         if (i < count) merged[i] = clusters[i];
         return;
@@ -270,6 +274,7 @@ void PlocBuilder::release() {
 void PlocBuilder::build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint32_t* primIndices,
                         cudaStream_t stream) {
     fellBack_ = false;
+    depth_ = 0;
     if (count <= 1) {  // the empty root or a single leaf, as the LBVH makes them
         fallback_.build(boxes, count, nodes, primIndices, stream);
         return;
@@ -296,11 +301,10 @@ void PlocBuilder::build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint3
     }
     finishKernel<<<1, kFinishClusters, 0, stream>>>(clusters_.data(), nodes, counters_.data());
     PT_CUDA_CHECK_LAUNCH("finishKernel");
-    uint32_t height = 0;
-    PT_CUDA_CHECK(cudaMemcpyAsync(&height, counters_.data() + kRootHeight, sizeof(height),
+    PT_CUDA_CHECK(cudaMemcpyAsync(&depth_, counters_.data() + kRootHeight, sizeof(depth_),
                                   cudaMemcpyDeviceToHost, stream));
     PT_CUDA_CHECK(cudaStreamSynchronize(stream));
-    if (height > kPlocMaxDepth) {
+    if (depth_ > kGpuBvhMaxDepth) {
         fallback_.build(boxes, count, nodes, primIndices, stream);
         fellBack_ = true;
     }

@@ -87,6 +87,7 @@ TEST(CudaFirstBuild, TheFirstFrameWalksAGpuBuildAndTheSahTreeLandsBehindIt) {
     EXPECT_FALSE(deferred.finishBackgroundWork().has_value()) << "work left after finishing it";
     // The first build's scratch went with it (300,000 boxes are 7 MiB).
     EXPECT_EQ(test::bufferBytes(deferred, "BVH scratch (PLOC builder)"), 0u);
+    EXPECT_EQ(test::bufferBytes(deferred, "BVH scratch (LBVH builder)"), 0u);
     EXPECT_EQ(test::bufferBytes(deferred, "BVH scratch (primitive boxes)"), 0u);
     EXPECT_EQ(test::bufferBytes(deferred, "BLAS nodes"), test::bufferBytes(hostBuilt, "BLAS nodes"))
         << "the region the GPU build reserved (2n - 1 nodes) should fit the SAH tree";
