@@ -44,8 +44,8 @@ struct IntegratorToggles {
     bool firstHitCache = true;     // reuse camera-ray hits across passes where the camera allows
     // The GPU walks compressed 8-wide BLASes (render/bvh/compressed_wide_bvh.h; Ylitie et al.
     // 2017). Off by default: on an H200 at 1080p it traces a 1M-triangle sphere's shadow rays
-    // 1.15x as fast as the binary walk but its camera and diffuse rays at 0.69x and 0.72x, and
-    // the megakernel's path tracing there at 0.82x (480.8 against 589.6 spp/s; issue 21).
+    // 1.24x as fast as the binary walk and its camera and diffuse rays as fast, but the
+    // megakernel's path tracing there at 0.91x (527.8 against 579.4 spp/s; Balloon 0.95x).
     bool gpuWideBvh = false;
     // The GPU backend's first frame after a full build walks LBVHs built on the GPU for meshes
     // of kGpuFirstBuildMinPrimitives or more, while the host builds their binned SAH trees on a
