@@ -150,10 +150,17 @@ protected:
     // Long enough for a few UI frames to see a key or button down (see the file comment).
     double hold() const { return std::clamp(3.0 * frameSeconds, 0.25, 2.0); }
 
+    // Presses the keys of `keys` ("ctrl+s") in order and releases them in reverse, as a hand
+    // does. Released in the same order (xdotool keyup ctrl+s), ctrl went up ~12 ms before s,
+    // and an auto-repeat of the still-held s in that gap typed "s" into the save dialog's path
+    // field, which the Return then saved to (a CI run: the window became "s - pathtracer").
     void chord(const std::string& keys, double seconds = 0.0) {
+        std::vector<std::string> release{"keyup"};
+        std::istringstream names(keys);
+        for (std::string key; std::getline(names, key, '+');) release.insert(release.begin() + 1, key);
         xdo({"keydown", keys});
         sleepSeconds(std::max(seconds, hold()));
-        xdo({"keyup", keys});
+        xdo(release);
         sleepSeconds(hold());
     }
 
