@@ -44,6 +44,10 @@ public:
     // depth-first order; its depth is at most kGpuBvhMaxDepth. `nodes` must be 16-byte aligned,
     // as every cudaMalloc'd array is.
     void build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint32_t* primIndices, cudaStream_t stream);
+    // The same from the boxes' keys as MortonSort::sort gives them (count >= 2), where another
+    // builder has sorted them already.
+    void buildFromSortedKeys(const Aabb* boxes, const uint64_t* sortedKeys, uint32_t count, BvhNode* nodes,
+                             uint32_t* primIndices, cudaStream_t stream);
     // Frees the scratch (the next build allocates it again): once the trees it built for a first
     // frame have been replaced, at 10M triangles it would hold about 400 MiB for nothing.
     void release();
@@ -108,6 +112,47 @@ private:
     DeviceBuffer<uint8_t> selectScratch_;
     DeviceBuffer<uint32_t> counters_;  // PlocCounter: the next free node slot, clusters left, root height
     LbvhBuilder fallback_;
+};
+
+// H-PLOC (Benthin et al., "H-PLOC: Hierarchical Parallel Locally-Ordered Clustering for
+// Bounding Volume Hierarchy Construction", HPG 2024): PLOC's clustering done inside the LBVH's
+// hierarchy, in one kernel. Threads climb the LBVH from its leaves (Apetrei, "Fast and Simply
+// Constructing Binary Radix Trees", 2014: the second child to arrive goes on); where a node spans
+// more than kHplocThreshold primitives, its warp merges the clusters its two children kept, by
+// PLOC with kHplocRadius, until kHplocThreshold are left (the root: one). No rounds over the
+// whole set, so no read-backs and one launch. The same contract as PlocBuilder; its fallback
+// LBVH reuses the sorted keys.
+// Not yet run on a GPU (written in a session whose device time was spent): the backend does not
+// use it; gpu_bvh_test.cpp tests it with the other builders and times it against PLOC's rounds.
+constexpr int kHplocThreshold = 16;
+constexpr int kHplocRadius = 8;
+
+class HplocBuilder {
+public:
+    void build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint32_t* primIndices, cudaStream_t stream);
+    bool lastBuildFellBack() const { return fellBack_; }
+    uint32_t lastBuildDepth() const { return depth_; }
+    void release();
+    uint64_t bytes() const {
+        return morton_.bytes() + clusters_.bytes() + siblingBounds_.bytes() + counters_.bytes() +
+               fallback_.bytes();
+    }
+
+private:
+    void reserve(uint32_t count);
+
+    uint32_t capacity_ = 0;
+    bool fellBack_ = false;
+    uint32_t depth_ = 0;
+    MortonSort morton_;
+    // At each sorted position, the cluster of that leaf, until a subtree's merge writes its
+    // clusters over the first positions of its range and marks the rest empty.
+    DeviceBuffer<BvhNode> clusters_;
+    // Per LBVH split (between sorted keys i and i + 1): the far end of the range of the child that
+    // arrived first, ~0u until then.
+    DeviceBuffer<uint32_t> siblingBounds_;
+    DeviceBuffer<uint32_t> counters_;  // PlocCounter: slots taken, -, root height
+    LbvhBuilder fallback_;             // from the same sorted keys
 };
 
 // The object-space box of each primitive of `blas` (mesh-local order), read from the device

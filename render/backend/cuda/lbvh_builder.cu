@@ -123,8 +123,12 @@ void LbvhBuilder::build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint3
         PT_CUDA_CHECK_LAUNCH("trivialTreeKernel");
         return;
     }
+    buildFromSortedKeys(boxes, morton_.sort(boxes, count, stream), count, nodes, primIndices, stream);
+}
+
+void LbvhBuilder::buildFromSortedKeys(const Aabb* boxes, const uint64_t* sorted, uint32_t count,
+                                      BvhNode* nodes, uint32_t* primIndices, cudaStream_t stream) {
     reserve(count);
-    const uint64_t* sorted = morton_.sort(boxes, count, stream);
     karrasNodesKernel<<<bvhBlocks(count - 1), kBvhBlockSize, 0, stream>>>(
         sorted, count, nodes, leafSlots_.data(), internalSlots_.data());
     PT_CUDA_CHECK_LAUNCH("karrasNodesKernel");

@@ -19,71 +19,18 @@
 
 #include "render/backend/cuda/bvh_bottom_up.cuh"
 #include "render/backend/cuda/gpu_bvh.h"
+#include "render/backend/cuda/ploc_clusters.cuh"
 
 namespace pt::cuda {
 
 namespace {
 
-// counters_'s words.
-enum PlocCounter : uint32_t { kNextSlot, kClustersLeft, kRootHeight, kPlocCounters };
-
-// A cluster is the node it will become. A leaf's count is 1 (its height 0); an interior
-// cluster's count field holds kInteriorCluster | its height, set to 0 when it is written as a
-// node.
-constexpr uint32_t kInteriorCluster = 0x80000000u;
 // The clusters the last rounds take in one block.
 constexpr int kFinishClusters = 1024;
 // Rounds between read-backs of the cluster count. Each read-back waits for the stream (about
 // 15 us); the rounds between launch over the count last read, which shrinks about 11% a round
 // on a million triangles, and blocks past the current count exit at once.
 constexpr int kRoundsPerReadBack = 3;
-
-__device__ __forceinline__ uint32_t clusterHeight(uint32_t count) {
-    return count & kInteriorCluster ? count & ~kInteriorCluster : 0u;
-}
-
-// A cluster as two 16-byte words, the form it takes in shared memory: lo and leftOrFirst, hi
-// and count.
-struct ClusterWords {
-    float4 low, high;
-};
-
-__device__ __forceinline__ ClusterWords loadCluster(const BvhNode* clusters, int i) {
-    const float4* words = reinterpret_cast<const float4*>(clusters + i);
-    return {words[0], words[1]};
-}
-
-__device__ __forceinline__ void storeCluster(BvhNode* out, const ClusterWords& c) {
-    float4* words = reinterpret_cast<float4*>(out);
-    words[0] = c.low;
-    words[1] = c.high;
-}
-
-// The cluster written as a node: an interior cluster's count becomes 0.
-__device__ __forceinline__ void storeAsNode(BvhNode* out, ClusterWords c) {
-    if (__float_as_uint(c.high.w) & kInteriorCluster) c.high.w = __uint_as_float(0u);
-    storeCluster(out, c);
-}
-
-// Half the surface area of the union of two clusters' boxes: PLOC's distance. Symmetric to
-// the bit (min and max commute), so both ends of a pair see the same cost.
-__device__ __forceinline__ float unionCost(const ClusterWords& a, const ClusterWords& b) {
-    const float dx = fmaxf(a.high.x, b.high.x) - fminf(a.low.x, b.low.x);
-    const float dy = fmaxf(a.high.y, b.high.y) - fminf(a.low.y, b.low.y);
-    const float dz = fmaxf(a.high.z, b.high.z) - fminf(a.low.z, b.low.z);
-    const float cost = dx * dy + dy * dz + dz * dx;
-    return cost == cost ? cost : INFINITY;  // an infinite box's 0 * inf orders as the largest
-}
-
-// Where two pairs of clusters cost the same, the one that goes first: the nearer in the order,
-// then the one whose lower end is even, then the lower. A total order on pairs that both ends of
-// a pair agree on, so the least pair of a round is chosen from both ends and every round merges
-// at least once; and where a run of clusters all cost the same (coincident boxes) it pairs them
-// off two by two, (0, 1), (2, 3) ..., rather than growing one chain a round.
-__device__ __forceinline__ uint64_t tieOrder(int i, int j) {
-    const uint32_t gap = uint32_t(i > j ? i - j : j - i), lower = uint32_t(min(i, j));
-    return uint64_t(gap) << 33 | uint64_t(lower & 1u) << 32 | lower;
-}
 
 // The index of cluster i's nearest neighbour among the `count` of the round (count >= 2),
 // `clusterAt(k)` giving cluster k.
@@ -96,7 +43,7 @@ __device__ __forceinline__ int nearestNeighbour(int i, int count, const ClusterA
     for (int j = first; j <= last; ++j) {
         if (j == i) continue;
         const float cost = unionCost(mine, clusterAt(j));
-        if (best < 0 || cost < bestCost || (cost == bestCost && tieOrder(i, j) < tieOrder(i, best))) {
+        if (betterNeighbour(i, j, cost, best, bestCost)) {
             bestCost = cost;
             best = j;
         }
@@ -116,16 +63,7 @@ __device__ __forceinline__ bool mergeStep(int i, int j, bool mutual, const Clust
         return true;
     }
     if (i > j) return false;
-    const uint32_t slot = atomicAdd(nextSlot, 2u);
-    storeAsNode(nodes + slot, mine);
-    storeAsNode(nodes + slot + 1, neighbour);
-    const uint32_t height =
-        max(clusterHeight(__float_as_uint(mine.high.w)), clusterHeight(__float_as_uint(neighbour.high.w))) +
-        1u;
-    next.low = make_float4(fminf(mine.low.x, neighbour.low.x), fminf(mine.low.y, neighbour.low.y),
-                           fminf(mine.low.z, neighbour.low.z), __uint_as_float(slot));
-    next.high = make_float4(fmaxf(mine.high.x, neighbour.high.x), fmaxf(mine.high.y, neighbour.high.y),
-                            fmaxf(mine.high.z, neighbour.high.z), __uint_as_float(kInteriorCluster | height));
+    next = mergeClusters(mine, neighbour, nodes, atomicAdd(nextSlot, 2u));
     return true;
 }
 
@@ -138,15 +76,7 @@ __global__ void leafClustersKernel(const Aabb* boxes, const uint64_t* sortedKeys
         counters[kClustersLeft] = count;
     }
     if (q >= count) return;
-    const uint32_t prim = uint32_t(sortedKeys[q]);  // the low 32 bits
-    primIndices[q] = prim;
-    const Aabb box = boxes[prim];
-    BvhNode leaf;
-    leaf.lo = box.lo;
-    leaf.leftOrFirst = q;
-    leaf.hi = box.hi;
-    leaf.count = 1;
-    clusters[q] = leaf;
+    storeCluster(clusters + q, leafCluster(boxes, sortedKeys[q], q, primIndices));
 }
 
 // Pass 3: one round over the clusters counters[kClustersLeft] holds (at most `bound`): the
@@ -240,7 +170,7 @@ __global__ void __launch_bounds__(kFinishClusters)
     if (t == 0) {
         const ClusterWords root = clusterAt(0);
         storeAsNode(nodes, root);
-        counters[kRootHeight] = clusterHeight(__float_as_uint(root.high.w));
+        counters[kRootHeight] = root.height();
     }
 }
 

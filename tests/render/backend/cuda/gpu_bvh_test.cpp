@@ -88,11 +88,12 @@ std::vector<Aabb> soupBoxes(SoupKind kind, uint32_t count, Rng& rng) {
 // The structure and hit tests run for both GPU builders.
 template <class Builder>
 class GpuTreeBuilder : public testing::Test {};
-using GpuTreeBuilders = testing::Types<cuda::LbvhBuilder, cuda::PlocBuilder>;
+using GpuTreeBuilders = testing::Types<cuda::LbvhBuilder, cuda::PlocBuilder, cuda::HplocBuilder>;
 struct GpuTreeBuilderName {
     template <class Builder>
     static std::string GetName(int) {
-        return std::is_same_v<Builder, cuda::LbvhBuilder> ? "Lbvh" : "Ploc";
+        if (std::is_same_v<Builder, cuda::LbvhBuilder>) return "Lbvh";
+        return std::is_same_v<Builder, cuda::PlocBuilder> ? "Ploc" : "Hploc";
     }
 };
 TYPED_TEST_SUITE(GpuTreeBuilder, GpuTreeBuilders, GpuTreeBuilderName);
@@ -109,7 +110,7 @@ TYPED_TEST(GpuTreeBuilder, IsValidForEverySize) {
             const std::vector<Aabb> boxes = soupBoxes(kind, n, rng);
             uint32_t depth = 0;
             expectValidTree(test::buildTreeOnDevice(builder, boxes, s), boxes, &depth);
-            if constexpr (std::is_same_v<TypeParam, cuda::PlocBuilder>) {
+            if constexpr (!std::is_same_v<TypeParam, cuda::LbvhBuilder>) {
                 // The height the merges carry through the rounds is the tree's.
                 if (n >= 2) {
                     EXPECT_EQ(builder.lastBuildDepth(), depth);
@@ -156,13 +157,19 @@ TYPED_TEST(GpuTreeBuilder, IsValidForDuplicateCentroids) {
     }
 }
 
+// The two clustering builders: PLOC's rounds and H-PLOC.
+template <class Builder>
+class GpuClusteringBuilder : public testing::Test {};
+using GpuClusteringBuilders = testing::Types<cuda::PlocBuilder, cuda::HplocBuilder>;
+TYPED_TEST_SUITE(GpuClusteringBuilder, GpuClusteringBuilders, GpuTreeBuilderName);
+
 // Coincident boxes cost the same to merge with any neighbour: PLOC's tie order pairs them off,
 // (0, 1), (2, 3) ..., each round, into a balanced tree. An order that favoured one end would
 // grow one chain a round, too deep to walk, and fall back to the LBVH.
-TEST(GpuBvh, PlocPairsOffCoincidentBoxes) {
+TYPED_TEST(GpuClusteringBuilder, PairsOffCoincidentBoxes) {
     PT_REQUIRE_CUDA_DEVICE();
     TestStream s;
-    cuda::PlocBuilder builder;
+    TypeParam builder;
     const Vec3 p(0.25f, -0.5f, 1.0f);
     const std::vector<Aabb> boxes(50000, Aabb{p - Vec3(0.1f), p + Vec3(0.1f)});
     uint32_t depth = ~0u;
@@ -172,18 +179,22 @@ TEST(GpuBvh, PlocPairsOffCoincidentBoxes) {
 }
 
 // Nested boxes about one centre: each box's least union is with the next smaller one, so PLOC
-// merges one pair a round into a chain 99 deep, which the traversal stack could not walk. The
-// build falls back to an LBVH of the same boxes, and the next build does not.
-TEST(GpuBvh, PlocFallsBackToAnLbvhBeyondTheStacksDepth) {
+// merges one pair a pass into a chain (399 deep from PLOC's rounds; H-PLOC's grows by up to
+// kHplocThreshold at each level of the LBVH), which the traversal stack could not walk. The build
+// falls back to an LBVH of the same boxes, and the next build does not.
+TYPED_TEST(GpuClusteringBuilder, FallsBackToAnLbvhBeyondTheStacksDepth) {
     PT_REQUIRE_CUDA_DEVICE();
     TestStream s;
-    cuda::PlocBuilder builder;
+    TypeParam builder;
     std::vector<Aabb> nested;
     float half = 1.0f;
-    for (int k = 0; k < 100; ++k, half *= 1.5f) nested.push_back(Aabb{Vec3(-half), Vec3(half)});
+    for (int k = 0; k < 400; ++k, half *= 1.1f) nested.push_back(Aabb{Vec3(-half), Vec3(half)});
     expectValidTree(test::buildTreeOnDevice(builder, nested, s), nested);
     EXPECT_TRUE(builder.lastBuildFellBack());
-    EXPECT_EQ(builder.lastBuildDepth(), 99u);
+    EXPECT_GT(builder.lastBuildDepth(), cuda::kGpuBvhMaxDepth);
+    if constexpr (std::is_same_v<TypeParam, cuda::PlocBuilder>) {
+        EXPECT_EQ(builder.lastBuildDepth(), 399u);
+    }
     Rng rng(111);
     const std::vector<Aabb> soup = soupBoxes(SoupKind::Uniform, 5000, rng);
     expectValidTree(test::buildTreeOnDevice(builder, soup, s), soup);
@@ -370,6 +381,7 @@ TEST(GpuBvh, SahCostOfGpuBuildsAgainstTheBinnedBuilder) {
     Rng rng(107);
     cuda::LbvhBuilder lbvhBuilder;
     cuda::PlocBuilder plocBuilder;
+    cuda::HplocBuilder hplocBuilder;
     const std::pair<const char*, Mesh> meshes[] = {
         {"random100k", test::makeSoup(SoupKind::Uniform, 100000, rng)},
         {"clustered100k", test::makeSoup(SoupKind::Clustered, 100000, rng)},
@@ -379,9 +391,13 @@ TEST(GpuBvh, SahCostOfGpuBuildsAgainstTheBinnedBuilder) {
         const float binned = sahCost(buildBinnedSahBvh(boxes.data(), uint32_t(boxes.size())));
         const float lbvh = sahCost(test::buildTreeOnDevice(lbvhBuilder, boxes, s)) / binned;
         const float ploc = sahCost(test::buildTreeOnDevice(plocBuilder, boxes, s)) / binned;
+        const float hploc = sahCost(test::buildTreeOnDevice(hplocBuilder, boxes, s)) / binned;
         std::cout << "[ sah      ] " << name << " (" << boxes.size()
                   << " triangles), cost over the binned SAH"
-                  << " build's " << binned << ": LBVH " << lbvh << ", PLOC " << ploc << "\n";
+                  << " build's " << binned << ": LBVH " << lbvh << ", PLOC " << ploc << ", H-PLOC " << hploc
+                  << "\n";
+        EXPECT_FALSE(hplocBuilder.lastBuildFellBack());
+        EXPECT_LT(hploc, lbvh);
         ::testing::Test::RecordProperty(std::string("lbvh_sah_ratio_") + name, std::to_string(lbvh));
         ::testing::Test::RecordProperty(std::string("ploc_sah_ratio_") + name, std::to_string(ploc));
         EXPECT_GT(lbvh, 0.8f);
@@ -533,6 +549,11 @@ TEST(GpuBvh, BuildAndRefitSpeedOfOneMillionTriangles) {
     const float plocMs = medianMilliseconds(
         s, 10, [&] { ploc.build(boxes.data(), n, nodes.data(), primIndices.data(), s.stream); });
     const float sahPloc = cuda::sahCostOnDevice(nodes.data(), nodeCount, s.stream);
+    cuda::HplocBuilder hploc;
+    const float hplocMs = medianMilliseconds(
+        s, 10, [&] { hploc.build(boxes.data(), n, nodes.data(), primIndices.data(), s.stream); });
+    const float sahHploc = cuda::sahCostOnDevice(nodes.data(), nodeCount, s.stream);
+    std::printf("[ speed    ] H-PLOC build %.3f ms, SAH %.2f\n", hplocMs, sahHploc);
     const float buildMs = medianMilliseconds(
         s, 10, [&] { builder.build(boxes.data(), n, nodes.data(), primIndices.data(), s.stream); });
     cuda::computeParents(nodes.data(), nodeCount, parents.data(), s.stream);
