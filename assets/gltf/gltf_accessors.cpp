@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "assets/gltf/gltf_meshopt.h"
+#include "render/util/large_array.h"
 
 namespace pt {
 namespace {
@@ -224,11 +225,14 @@ std::vector<T> readAll(const GltfContext& ctx, int accessor, const AccessorUse& 
                              layout.componentType == nativeComponentType<T>() &&
                              layout.stride == sizeof(T) * size_t(layout.components) &&
                              reinterpret_cast<uintptr_t>(layout.data) % alignof(T) == 0;
+    std::vector<T> out;
+    reserveOnHugePages(out, values);
     if (asTheyStand) {
         const T* first = reinterpret_cast<const T*>(layout.data);
-        return std::vector<T>(first, first + values);
+        out.assign(first, first + values);
+        return out;
     }
-    std::vector<T> out(values, T(0));
+    out.resize(values, T(0));
     if (layout.data) copyElements(layout, out, nullptr, convert);
     applySparse(ctx, accessor, layout, out, use, convert);
     return out;

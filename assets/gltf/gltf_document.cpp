@@ -14,6 +14,7 @@
 #include "assets/gltf/gltf_json_check.h"
 #include "assets/gltf/gltf_tinygltf_compat.h"
 #include "assets/scene_json/json_depth.h"
+#include "render/util/large_array.h"
 
 namespace pt {
 namespace {
@@ -28,7 +29,9 @@ std::vector<uint8_t> readWholeFile(const std::string& path, const std::string& l
         throw InputError(label + ": cannot open '" + path + "'");
     }
     if (size > kMaxFileBytes) throw InputError(label + ": file larger than 4 GiB");
-    std::vector<uint8_t> bytes(size);
+    std::vector<uint8_t> bytes;
+    reserveOnHugePages(bytes, size);
+    bytes.resize(size);
     std::ifstream in(path, std::ios::binary);
     if (!in || !in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size))) {
         throw InputError(label + ": cannot read '" + path + "'");

@@ -7,6 +7,7 @@
 #include "assets/gltf/gltf_accessors.h"
 #include "assets/gltf/gltf_draco.h"
 #include "assets/mesh_normals.h"
+#include "render/util/large_array.h"
 
 namespace pt {
 namespace {
@@ -83,7 +84,9 @@ std::vector<uint32_t> readCorners(const GltfContext& ctx, const tinygltf::Primit
                                   std::optional<std::vector<uint32_t>> draco, size_t vertexCount,
                                   const std::string& element) {
     if (!draco && primitive.indices < 0) {
-        std::vector<uint32_t> corners(vertexCount);
+        std::vector<uint32_t> corners;
+        reserveOnHugePages(corners, vertexCount);
+        corners.resize(vertexCount);
         std::iota(corners.begin(), corners.end(), 0u);
         return corners;
     }
@@ -200,7 +203,9 @@ void compactVertices(PrimitiveGeometry& g) {
 }
 
 std::vector<Vec3> toVec3s(const std::vector<float>& xyz) {
-    std::vector<Vec3> out(xyz.size() / 3);
+    std::vector<Vec3> out;
+    reserveOnHugePages(out, xyz.size() / 3);
+    out.resize(xyz.size() / 3);
     for (size_t v = 0; v < out.size(); ++v) out[v] = {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
     return out;
 }

@@ -12,6 +12,7 @@
 
 #include "render/bvh/binned_sah_builder.h"
 #include "render/bvh/primitive_bounds.h"
+#include "render/util/large_array.h"
 
 namespace pt {
 
@@ -109,14 +110,25 @@ Aabb primitiveBounds(const CompiledScene& out, const BlasRef& blas, uint32_t p) 
 
 void flattenGeometry(const Scene& scene, CompiledScene& out) {
     VertexArraysUsed used;
-    size_t triangles = 0;
+    size_t triangles = 0, vertices = 0, spheres = 0;
     for (const Mesh& m : scene.meshes) {
+        spheres += m.kind == GeometryKind::Spheres ? m.spheres.size() : 0;
         if (m.kind != GeometryKind::Triangles || m.positions.empty()) continue;
         used.uvs |= m.uvs.size() == m.positions.size();
         used.tangents |= m.tangents.size() == m.positions.size();
         triangles += m.indices.size() / 3;
+        vertices += m.positions.size();
     }
-    out.triangles.reserve(triangles);  // once: a reservation per mesh would copy them all each time
+    // Each array reserved once (growing them mesh by mesh would copy them all each time), on
+    // huge pages (large_array.h).
+    reserveOnHugePages(out.triangles, triangles);
+    reserveOnHugePages(out.triangleSlots, triangles);
+    reserveOnHugePages(out.positions, vertices);
+    reserveOnHugePages(out.normals, vertices);
+    if (used.uvs) reserveOnHugePages(out.uvs, vertices);
+    if (used.tangents) reserveOnHugePages(out.tangents, vertices);
+    reserveOnHugePages(out.spheres, spheres);
+    reserveOnHugePages(out.sphereSlots, spheres);
     for (size_t i = 0; i < scene.meshes.size(); ++i) {
         const Mesh& mesh = scene.meshes[i];
         BlasRef blas{};

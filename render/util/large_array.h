@@ -13,6 +13,7 @@
 #include <memory>
 #include <new>
 #include <type_traits>
+#include <vector>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -34,6 +35,16 @@ inline void adviseHugePages(void* memory, size_t bytes) {
     (void)memory;
     (void)bytes;
 #endif
+}
+
+// Reserves room for `count` elements in `v` and asks for huge pages under it, before anything
+// is written there: for the large arrays of a load and a compile (a 10M-triangle glTF reads
+// 240 MB of file and writes several arrays as large), whose first touches in 4 KiB pages were
+// 45% of the samples of its load and compile under perf. Fill with assign, insert or resize.
+template <class T>
+void reserveOnHugePages(std::vector<T>& v, size_t count) {
+    v.reserve(count);
+    adviseHugePages(v.data(), v.capacity() * sizeof(T));
 }
 
 template <class T>
