@@ -1,12 +1,18 @@
 #include "assets/gltf/gltf_primitive.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <memory>
 #include <numeric>
 
 #include "assets/gltf/gltf_accessors.h"
 #include "assets/gltf/gltf_draco.h"
 #include "assets/mesh_normals.h"
+#include "render/util/first_failing.h"
 #include "render/util/large_array.h"
 
 namespace pt {
@@ -50,12 +56,11 @@ std::vector<uint32_t> toTriangleList(const GltfContext& ctx, std::vector<uint32_
 std::vector<float> readFiniteFloats(const GltfContext& ctx, int accessor, int components,
                                     const std::string& element, const std::string& role) {
     std::vector<float> values = readGltfFloats(ctx, accessor, components, {element, role});
-    for (size_t i = 0; i < values.size(); ++i) {
-        if (!std::isfinite(values[i])) {
-            ctx.fail(element, role + " accessor " + std::to_string(accessor) + " element " +
-                                  std::to_string(i / size_t(components)) + " is not finite (" +
-                                  std::to_string(values[i]) + ")");
-        }
+    const size_t i = firstFailing(values.size(), [&](size_t k) { return !std::isfinite(values[k]); });
+    if (i < values.size()) {
+        ctx.fail(element, role + " accessor " + std::to_string(accessor) + " element " +
+                              std::to_string(i / size_t(components)) + " is not finite (" +
+                              std::to_string(values[i]) + ")");
     }
     return values;
 }
@@ -95,11 +100,10 @@ std::vector<uint32_t> readCorners(const GltfContext& ctx, const tinygltf::Primit
     std::vector<uint32_t> corners =
         draco ? std::move(*draco)
               : readGltfIndices(ctx, primitive.indices, {element, std::string("indices")});
-    for (size_t i = 0; i < corners.size(); ++i) {
-        if (corners[i] >= vertexCount) {
-            ctx.fail(element, source + " " + std::to_string(i) + " is " + std::to_string(corners[i]) +
-                                  ", past the vertex count " + std::to_string(vertexCount));
-        }
+    const size_t i = firstFailing(corners.size(), [&](size_t k) { return corners[k] >= vertexCount; });
+    if (i < corners.size()) {
+        ctx.fail(element, source + " " + std::to_string(i) + " is " + std::to_string(corners[i]) +
+                              ", past the vertex count " + std::to_string(vertexCount));
     }
     return corners;
 }
@@ -182,12 +186,27 @@ void unshareVertices(PrimitiveGeometry& g) {
     std::iota(g.indices.begin(), g.indices.end(), 0u);
 }
 
+// Whether the triangles use every vertex: marked in parallel (a 10M-triangle mesh has 30M
+// corners), so the common case skips compactVertices' serial first-use pass.
+bool usesEveryVertex(const PrimitiveGeometry& g) {
+    const size_t vertices = g.positions.size();
+    std::unique_ptr<std::atomic<uint8_t>[]> used(new std::atomic<uint8_t>[vertices]());
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, g.indices.size(), size_t(1) << 16),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                          for (size_t i = r.begin(); i < r.end(); ++i)
+                              used[g.indices[i]].store(1, std::memory_order_relaxed);
+                      });
+    return firstFailing(vertices, [&](size_t v) { return used[v].load(std::memory_order_relaxed) == 0; }) ==
+           vertices;
+}
+
 // Keeps only the vertices the triangles use, in first-use order: several primitives often
 // index one shared vertex accessor, which would otherwise be copied whole into each. Where
 // every vertex is used (one primitive over its own accessor, the common case) the arrays stay
 // as they are: at 10M triangles copying them once more was a fifth of the load, most of it
 // the kernel zeroing fresh pages.
 void compactVertices(PrimitiveGeometry& g) {
+    if (usesEveryVertex(g)) return;
     constexpr uint32_t kUnused = ~0u;
     std::vector<uint32_t> remap(g.positions.size(), kUnused);
     std::vector<uint32_t> used;
@@ -206,7 +225,11 @@ std::vector<Vec3> toVec3s(const std::vector<float>& xyz) {
     std::vector<Vec3> out;
     reserveOnHugePages(out, xyz.size() / 3);
     out.resize(xyz.size() / 3);
-    for (size_t v = 0; v < out.size(); ++v) out[v] = {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, out.size(), size_t(1) << 16),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                          for (size_t v = r.begin(); v < r.end(); ++v)
+                              out[v] = {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
+                      });
     return out;
 }
 

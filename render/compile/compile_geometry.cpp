@@ -12,6 +12,7 @@
 
 #include "render/bvh/binned_sah_builder.h"
 #include "render/bvh/primitive_bounds.h"
+#include "render/util/first_failing.h"
 #include "render/util/large_array.h"
 
 namespace pt {
@@ -29,14 +30,18 @@ void appendSlots(const Mesh& mesh, size_t index, std::vector<uint32_t>& slots) {
                                     std::to_string(mesh.primitiveSlots.size()) + " material slots for " +
                                     std::to_string(count) + " primitives");
     }
-    for (uint32_t p = 0; p < count; ++p) {
-        const uint32_t slot = mesh.primitiveSlots.empty() ? 0u : mesh.primitiveSlots[p];
-        if (slot >= mesh.slotCount) {
-            throw std::invalid_argument(meshLabel(mesh, index) + ": primitive " + std::to_string(p) +
-                                        " uses slot " + std::to_string(slot) + " of " +
-                                        std::to_string(mesh.slotCount));
-        }
-        slots.push_back(slot);
+    // Without a list every primitive takes slot 0.
+    const auto slotOf = [&](size_t p) { return mesh.primitiveSlots.empty() ? 0u : mesh.primitiveSlots[p]; };
+    const size_t p = firstFailing(count, [&](size_t q) { return slotOf(q) >= mesh.slotCount; });
+    if (p < count) {
+        throw std::invalid_argument(meshLabel(mesh, index) + ": primitive " + std::to_string(p) +
+                                    " uses slot " + std::to_string(slotOf(p)) + " of " +
+                                    std::to_string(mesh.slotCount));
+    }
+    if (mesh.primitiveSlots.empty()) {
+        slots.resize(slots.size() + count, 0u);
+    } else {
+        slots.insert(slots.end(), mesh.primitiveSlots.begin(), mesh.primitiveSlots.end());
     }
 }
 
@@ -69,14 +74,24 @@ void appendTriangles(const Mesh& mesh, size_t index, const VertexArraysUsed& use
     } else if (used.tangents) {
         out.tangents.resize(out.positions.size());
     }
-    for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
-        const uint32_t a = mesh.indices[i], b = mesh.indices[i + 1], c = mesh.indices[i + 2];
-        if (a >= vertexCount || b >= vertexCount || c >= vertexCount) {
-            throw std::invalid_argument(meshLabel(mesh, index) + ": triangle " + std::to_string(i / 3) +
-                                        " indexes past its " + std::to_string(vertexCount) + " vertices");
-        }
-        out.triangles.push_back({base + a, base + b, base + c});
+    // Checked, then offset and copied, in parallel: a 10M-triangle mesh is one mesh.
+    const uint32_t* corners = mesh.indices.data();
+    const size_t triangles = mesh.indices.size() / 3, first = out.triangles.size();
+    const size_t bad = firstFailing(triangles, [&](size_t t) {
+        return corners[3 * t] >= vertexCount || corners[3 * t + 1] >= vertexCount ||
+               corners[3 * t + 2] >= vertexCount;
+    });
+    if (bad < triangles) {
+        throw std::invalid_argument(meshLabel(mesh, index) + ": triangle " + std::to_string(bad) +
+                                    " indexes past its " + std::to_string(vertexCount) + " vertices");
     }
+    out.triangles.resize(first + triangles);
+    TriangleIndices* to = out.triangles.data() + first;
+    tbb::parallel_for(
+        tbb::blocked_range<size_t>(0, triangles, size_t(1) << 16), [&](const tbb::blocked_range<size_t>& r) {
+            for (size_t t = r.begin(); t < r.end(); ++t)
+                to[t] = {base + corners[3 * t], base + corners[3 * t + 1], base + corners[3 * t + 2]};
+        });
     BlasRef& blas = out.blases.back();
     blas.hasNormals = hasNormals ? 1u : 0u;
     blas.hasUvs = hasUvs ? 1u : 0u;

@@ -133,6 +133,41 @@ TEST(CompileScene, BadReferencesAreErrorsNotCrashes) {
     EXPECT_THROW(compileRenderScene(badMaterial), std::invalid_argument);
 }
 
+// The compiler checks a mesh's corners and material slots in parallel chunks; like the serial
+// loop before it, it names the first bad triangle or primitive, whichever chunk finds one first.
+TEST(CompileScene, ABadCornerOrSlotIsNamedByTheFirstTriangleThatHasOne) {
+    Scene corners = sceneWithGrid(300, 1);  // 180,000 triangles: several chunks
+    const uint32_t vertices = uint32_t(corners.meshes[0].positions.size());
+    corners.meshes[0].indices[3 * 170000 + 2] = vertices;  // a late chunk
+    corners.meshes[0].indices[3 * 90001 + 1] = vertices + 5;
+    try {
+        compileRenderScene(corners);
+        FAIL() << "expected an error";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_STREQ(e.what(), ("mesh 0 \"grid\": triangle 90001 indexes past its " +
+                                std::to_string(vertices) + " vertices")
+                                   .c_str());
+    }
+    Scene slots = sceneWithGrid(300, 1);
+    Mesh& mesh = slots.meshes[0];
+    mesh.slotCount = 2;
+    mesh.primitiveSlots.assign(mesh.indices.size() / 3, 1u);
+    mesh.primitiveSlots[175000] = 7;
+    mesh.primitiveSlots[70002] = 2;
+    slots.instances[0].materials.push_back(slots.instances[0].materials[0]);
+    try {
+        compileRenderScene(slots);
+        FAIL() << "expected an error";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_STREQ(e.what(), "mesh 0 \"grid\": primitive 70002 uses slot 2 of 2");
+    }
+    mesh.primitiveSlots[175000] = mesh.primitiveSlots[70002] = 0;
+    const CompiledScene compiled = compileRenderScene(slots);
+    ASSERT_EQ(compiled.triangleSlots.size(), mesh.primitiveSlots.size());
+    EXPECT_EQ(compiled.triangleSlots[70002], 0u);
+    EXPECT_EQ(compiled.triangleSlots[70003], 1u);
+}
+
 TEST(CompileScene, EmittersAreWeightedByWorldAreaTimesLuminance) {
     Scene scene;
     Material bright = diffuse({0, 0, 0});
