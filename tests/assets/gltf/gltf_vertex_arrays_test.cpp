@@ -27,6 +27,7 @@ void appendBytes(std::string& bytes, const std::vector<T>& values) {
 struct Layout {
     bool interleaved = false;  // positions and normals in one view, byteStride 24
     bool shortIndices = false;
+    std::vector<Vec3> normals = {};  // packed layout only; empty: kNormal for every vertex
 };
 
 // A glTF of kPositions (normals +Z) and one primitive per entry of `primitives` (each a list
@@ -49,7 +50,7 @@ Scene importPrimitives(const std::string& name, const std::vector<std::vector<ui
                        {"bufferView": 0, "byteOffset": 12, "componentType": 5126, "count": 6, "type": "VEC3"})";
     } else {
         appendBytes(bin, kPositions);
-        appendBytes(bin, std::vector<Vec3>(n, kNormal));
+        appendBytes(bin, layout.normals.empty() ? std::vector<Vec3>(n, kNormal) : layout.normals);
         views =
             R"({"buffer": 0, "byteOffset": 0, "byteLength": 72}, {"buffer": 0, "byteOffset": 72, "byteLength": 72})";
         accessors = R"({"bufferView": 0, "componentType": 5126, "count": 6, "type": "VEC3",
@@ -103,7 +104,7 @@ TEST(GltfVertexArrays, PrimitivesSharingAnAccessorKeepOnlyTheirVertices) {
 }
 
 TEST(GltfVertexArrays, APrimitiveUsingEveryVertexKeepsTheFilesOrder) {
-    for (const Layout layout : {Layout{false, false}, Layout{true, false}, Layout{false, true}}) {
+    for (const Layout& layout : {Layout{false, false}, Layout{true, false}, Layout{false, true}}) {
         const Scene scene = importPrimitives("whole", {{2, 0, 1, 3, 5, 4}}, layout);
         ASSERT_EQ(scene.meshes.size(), 1u);
         const Mesh& mesh = scene.meshes[0];
@@ -115,6 +116,25 @@ TEST(GltfVertexArrays, APrimitiveUsingEveryVertexKeepsTheFilesOrder) {
         EXPECT_EQ(mesh.slotCount, 1u) << what;
         EXPECT_TRUE(mesh.primitiveSlots.empty()) << what << ": one slot needs no list";
     }
+}
+
+// NORMALs are normalised, and zero-length ones replaced by their triangles' normal with one
+// warning that counts them (the normalisation runs in parallel, and so does the count).
+TEST(GltfVertexArrays, NormalsAreNormalisedAndZeroOnesReplacedWithACountedWarning) {
+    Layout layout;
+    layout.normals = {{0, 0, 3}, {0, 0, 0}, {0, 0.6f, 0.8f}, {0, 0, 0}, {0, 0, 0.5f}, {0, 0, 1}};
+    const Scene scene = importPrimitives("zero_normals", {{0, 1, 2, 3, 4, 5}}, layout);
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    const std::vector<Vec3> expected = {kNormal, kNormal, {0, 0.6f, 0.8f}, kNormal, kNormal, kNormal};
+    for (size_t v = 0; v < expected.size(); ++v) {
+        EXPECT_NEAR(scene.meshes[0].normals[v].y, expected[v].y, 1e-6f) << v;
+        EXPECT_NEAR(scene.meshes[0].normals[v].z, expected[v].z, 1e-6f) << v;
+    }
+    size_t warnings = 0;
+    for (const std::string& w : scene.warnings) {
+        warnings += w.find("2 zero-length NORMAL vectors replaced") != std::string::npos;
+    }
+    EXPECT_EQ(warnings, 1u);
 }
 
 }  // namespace
