@@ -214,21 +214,27 @@ constexpr int nativeComponentType() {
     return std::is_same_v<T, float> ? TINYGLTF_COMPONENT_TYPE_FLOAT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
 }
 
-template <class T, class Convert>
-std::vector<T> readAll(const GltfContext& ctx, int accessor, const AccessorUse& use, Convert convert) {
-    const Layout layout = layoutOf(ctx, accessor, use);
-    const size_t values = layout.count * size_t(layout.components);
-    // Packed values of T's own type and alignment (a mesh's float positions, its 32-bit
-    // indices): one copy, where converting element by element into a zeroed vector wrote the
-    // memory twice (at 10M triangles a tenth of the load).
+// Where the accessor's values stand in its buffer as packed T's of T's own type and alignment
+// (a mesh's float positions, its 32-bit indices), with no sparse substitution: the first of
+// them, which can be copied as they are; else nullptr.
+template <class T>
+const T* valuesAsTheyStand(const GltfContext& ctx, int accessor, const Layout& layout) {
     const bool asTheyStand = layout.data && !ctx.model().accessors[size_t(accessor)].sparse.isSparse &&
                              layout.componentType == nativeComponentType<T>() &&
                              layout.stride == sizeof(T) * size_t(layout.components) &&
                              reinterpret_cast<uintptr_t>(layout.data) % alignof(T) == 0;
+    return asTheyStand ? reinterpret_cast<const T*>(layout.data) : nullptr;
+}
+
+template <class T, class Convert>
+std::vector<T> readAll(const GltfContext& ctx, int accessor, const AccessorUse& use, Convert convert) {
+    const Layout layout = layoutOf(ctx, accessor, use);
+    const size_t values = layout.count * size_t(layout.components);
     std::vector<T> out;
     reserveOnHugePages(out, values);
-    if (asTheyStand) {
-        const T* first = reinterpret_cast<const T*>(layout.data);
+    // Values as they stand: one copy, where converting element by element into a zeroed vector
+    // wrote the memory twice (at 10M triangles a tenth of the load).
+    if (const T* first = valuesAsTheyStand<T>(ctx, accessor, layout)) {
         out.assign(first, first + values);
         return out;
     }
@@ -240,8 +246,11 @@ std::vector<T> readAll(const GltfContext& ctx, int accessor, const AccessorUse& 
 
 }  // namespace
 
-std::vector<float> readGltfFloats(const GltfContext& ctx, int accessor, int components,
-                                  const AccessorUse& use) {
+namespace {
+
+// The accessor, checked to have `components` components per element.
+const tinygltf::Accessor& floatAccessor(const GltfContext& ctx, int accessor, int components,
+                                        const AccessorUse& use) {
     const auto& acc =
         gltfElement(ctx, ctx.model().accessors, accessor, use.element, (use.role + " accessor").c_str());
     if (gltfTypeComponents(acc.type) != components) {
@@ -249,6 +258,14 @@ std::vector<float> readGltfFloats(const GltfContext& ctx, int accessor, int comp
                                   std::to_string(gltfTypeComponents(acc.type)) +
                                   " components per element, expected " + std::to_string(components));
     }
+    return acc;
+}
+
+}  // namespace
+
+std::vector<float> readGltfFloats(const GltfContext& ctx, int accessor, int components,
+                                  const AccessorUse& use) {
+    const auto& acc = floatAccessor(ctx, accessor, components, use);
     if (auto decoded = ctx.decodedFloats.find(accessor); decoded != ctx.decodedFloats.end())
         return decoded->second;
     const int type = acc.componentType;
@@ -256,6 +273,28 @@ std::vector<float> readGltfFloats(const GltfContext& ctx, int accessor, int comp
     return readAll<float>(ctx, accessor, use, [type, normalized](const uint8_t* p) {
         return componentAsFloat(p, type, normalized);
     });
+}
+
+std::vector<Vec3> readGltfVec3s(const GltfContext& ctx, int accessor, const AccessorUse& use) {
+    floatAccessor(ctx, accessor, 3, use);
+    std::vector<Vec3> out;
+    if (ctx.decodedFloats.find(accessor) == ctx.decodedFloats.end()) {
+        const Layout layout = layoutOf(ctx, accessor, use);
+        if (const float* first = valuesAsTheyStand<float>(ctx, accessor, layout)) {
+            // Straight into the Vec3s: a float array's copy and its conversion were a fifth of
+            // a 10M-triangle load. Vec3 is three floats and trivially copyable.
+            static_assert(sizeof(Vec3) == 3 * sizeof(float) && std::is_trivially_copyable_v<Vec3>);
+            reserveOnHugePages(out, layout.count);
+            out.resize(layout.count);
+            std::memcpy(static_cast<void*>(out.data()), first, layout.count * sizeof(Vec3));
+            return out;
+        }
+    }
+    const std::vector<float> xyz = readGltfFloats(ctx, accessor, 3, use);
+    reserveOnHugePages(out, xyz.size() / 3);
+    out.resize(xyz.size() / 3);
+    for (size_t v = 0; v < out.size(); ++v) out[v] = {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
+    return out;
 }
 
 std::vector<uint32_t> readGltfIndices(const GltfContext& ctx, int accessor, const AccessorUse& use) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "assets/gltf/gltf_context.h"
+#include "render/math/vec.h"
 
 namespace pt {
 
@@ -26,6 +27,9 @@ struct AccessorUse {
 // integer's value), which also covers KHR_mesh_quantization.
 std::vector<float> readGltfFloats(const GltfContext& ctx, int accessor, int components,
                                   const AccessorUse& use);
+
+// A VEC3 accessor as readGltfFloats reads it, as Vec3s.
+std::vector<Vec3> readGltfVec3s(const GltfContext& ctx, int accessor, const AccessorUse& use);
 
 // A SCALAR accessor of unsigned bytes, shorts or ints.
 std::vector<uint32_t> readGltfIndices(const GltfContext& ctx, int accessor, const AccessorUse& use);

@@ -54,14 +54,34 @@ std::vector<uint32_t> toTriangleList(const GltfContext& ctx, std::vector<uint32_
     return triangles;
 }
 
+[[noreturn]] void failNotFinite(const GltfContext& ctx, int accessor, size_t elementIndex, float value,
+                                const std::string& element, const std::string& role) {
+    ctx.fail(element, role + " accessor " + std::to_string(accessor) + " element " +
+                          std::to_string(elementIndex) + " is not finite (" + std::to_string(value) + ")");
+}
+
 std::vector<float> readFiniteFloats(const GltfContext& ctx, int accessor, int components,
                                     const std::string& element, const std::string& role) {
     std::vector<float> values = readGltfFloats(ctx, accessor, components, {element, role});
     const size_t i = firstFailing(values.size(), [&](size_t k) { return !std::isfinite(values[k]); });
-    if (i < values.size()) {
-        ctx.fail(element, role + " accessor " + std::to_string(accessor) + " element " +
-                              std::to_string(i / size_t(components)) + " is not finite (" +
-                              std::to_string(values[i]) + ")");
+    if (i < values.size()) failNotFinite(ctx, accessor, i / size_t(components), values[i], element, role);
+    return values;
+}
+
+bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// A VEC3 attribute (POSITION, NORMAL, morph deltas) read as Vec3s, every component finite.
+std::vector<Vec3> readFiniteVec3s(const GltfContext& ctx, int accessor, const std::string& element,
+                                  const std::string& role) {
+    std::vector<Vec3> values = readGltfVec3s(ctx, accessor, {element, role});
+    const size_t v = firstFailing(values.size(), [&](size_t k) { return !finite(values[k]); });
+    if (v < values.size()) {
+        const Vec3 bad = values[v];
+        failNotFinite(ctx, accessor, v,
+                      !std::isfinite(bad.x)   ? bad.x
+                      : !std::isfinite(bad.y) ? bad.y
+                                              : bad.z,
+                      element, role);
     }
     return values;
 }
@@ -71,16 +91,27 @@ int attribute(const tinygltf::Primitive& primitive, const char* name) {
     return it == primitive.attributes.end() ? -1 : it->second;
 }
 
+void checkVertexCount(const GltfContext& ctx, int accessor, size_t count, size_t vertexCount,
+                      const std::string& element, const std::string& role) {
+    if (count != vertexCount) {
+        ctx.fail(element, role + " accessor " + std::to_string(accessor) + " has " + std::to_string(count) +
+                              " elements but POSITION has " + std::to_string(vertexCount));
+    }
+}
+
 // A per-vertex attribute with exactly one element per position.
 std::vector<float> readVertexAttribute(const GltfContext& ctx, int accessor, int components,
                                        size_t vertexCount, const std::string& element,
                                        const std::string& role) {
     std::vector<float> values = readFiniteFloats(ctx, accessor, components, element, role);
-    if (values.size() != vertexCount * size_t(components)) {
-        ctx.fail(element, role + " accessor " + std::to_string(accessor) + " has " +
-                              std::to_string(values.size() / size_t(components)) +
-                              " elements but POSITION has " + std::to_string(vertexCount));
-    }
+    checkVertexCount(ctx, accessor, values.size() / size_t(components), vertexCount, element, role);
+    return values;
+}
+
+std::vector<Vec3> readVertexVec3s(const GltfContext& ctx, int accessor, size_t vertexCount,
+                                  const std::string& element, const std::string& role) {
+    std::vector<Vec3> values = readFiniteVec3s(ctx, accessor, element, role);
+    checkVertexCount(ctx, accessor, values.size(), vertexCount, element, role);
     return values;
 }
 
@@ -222,18 +253,6 @@ void compactVertices(PrimitiveGeometry& g) {
     remapVertices(g, used);
 }
 
-std::vector<Vec3> toVec3s(const std::vector<float>& xyz) {
-    std::vector<Vec3> out;
-    reserveOnHugePages(out, xyz.size() / 3);
-    out.resize(xyz.size() / 3);
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, out.size(), size_t(1) << 16),
-                      [&](const tbb::blocked_range<size_t>& r) {
-                          for (size_t v = r.begin(); v < r.end(); ++v)
-                              out[v] = {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
-                      });
-    return out;
-}
-
 // The primitive's morph targets (glTF 2.0 section 3.7.2.2), one element per position each.
 // TANGENT deltas are dropped without a warning: tangents are not deformed, and the shading
 // frame re-orthogonalizes the tangent against the deformed normal (integrator/surface_hit.h),
@@ -252,7 +271,7 @@ std::vector<MorphTarget> readMorphTargets(const GltfContext& ctx, const tinygltf
                 ctx.warn(at, "morph target attribute " + name + " is not applied; ignored");
                 continue;
             }
-            std::vector<Vec3> deltas = toVec3s(readVertexAttribute(ctx, accessor, 3, vertexCount, at, name));
+            std::vector<Vec3> deltas = readVertexVec3s(ctx, accessor, vertexCount, at, name);
             (name == "POSITION" ? targets[t].positionDeltas : targets[t].normalDeltas) = std::move(deltas);
         }
         // A target without POSITION leaves the positions where they are.
@@ -338,9 +357,8 @@ std::optional<PrimitiveGeometry> readGltfPrimitive(const GltfContext& ctx, size_
         return std::nullopt;
     }
     PrimitiveGeometry g;
-    const std::vector<float> p = readFiniteFloats(ctx, position, 3, element, "POSITION");
-    const size_t vertexCount = p.size() / 3;
-    g.positions = toVec3s(p);
+    g.positions = readFiniteVec3s(ctx, position, element, "POSITION");
+    const size_t vertexCount = g.positions.size();
     g.indices = toTriangleList(ctx, readCorners(ctx, primitive, std::move(draco), vertexCount, element),
                                primitive.mode, element);
     if (g.indices.empty()) {
@@ -355,7 +373,7 @@ std::optional<PrimitiveGeometry> readGltfPrimitive(const GltfContext& ctx, size_
     const int normal = attribute(primitive, "NORMAL");
     g.targets = readMorphTargets(ctx, primitive, vertexCount, normal >= 0, element);
     if (normal >= 0) {
-        g.normals = toVec3s(readVertexAttribute(ctx, normal, 3, vertexCount, element, "NORMAL"));
+        g.normals = readVertexVec3s(ctx, normal, vertexCount, element, "NORMAL");
         if (const int tangent = attribute(primitive, "TANGENT"); tangent >= 0) {
             g.tangents = readTangents(ctx, tangent, vertexCount, element);
         }
