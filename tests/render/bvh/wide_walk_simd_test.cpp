@@ -30,7 +30,8 @@ TEST(WideWalkSimd, TheWalkStartsAtTheWidestLevelTheProcessorRuns) {
 }
 
 // Closest and any hits, and the work counted, at SSE2 and at AVX2, on soups that stress the
-// walk differently and on rays of every kind (hits behind others, misses, finite segments).
+// walk differently and on rays of every kind (hits behind others, misses, finite segments,
+// rays along axes).
 TEST(WideWalkSimd, EveryLevelWalksTheSameNodesToTheSameHits) {
     if (supportedSimdLevel() != SimdLevel::Avx2) GTEST_SKIP() << "this processor runs no AVX2";
     Rng rng(21);
@@ -45,6 +46,16 @@ TEST(WideWalkSimd, EveryLevelWalksTheSameNodesToTheSameHits) {
             Ray ray = i % 2 ? test::randomRay(rng, Vec3(-1.2f), Vec3(1.2f))
                             : test::rayAtTriangle(rng, mesh, Vec3(-1.2f), Vec3(1.2f));
             if (i % 5 == 0) ray.tMax = rng.uniform(0.0f, 1.5f);
+            if (i % 3 == 0) {
+                // Along one or two axes: zero components of either sign, whose slab test
+                // measures from padded origins (bvh_walk.h), and whose nearer plane AVX2 picks by
+                // the sign of the inverse.
+                const int kept = int(rng.index(3));
+                for (int a = 0; a < 3; ++a) {
+                    if (a != kept && rng.uniform(0.0f, 1.0f) < 0.6f)
+                        ray.direction[a] = rng.uniform(0.0f, 1.0f) < 0.5f ? 0.0f : -0.0f;
+                }
+            }
             Hit hit[2];
             TraversalStats stats[2], anyStats[2];
             bool any[2];
