@@ -54,9 +54,10 @@ for target in $targets; do
     run() { TMPDIR="$work" "$build_dir/tests/$target" --gtest_brief=1 >"$work/log" 2>&1; }
     run
     status=$?
-    # LeakSanitizer's own tracer can crash at exit (ptrace under a loaded machine: "Tracer
-    # caught signal 11 ... LeakSanitizer has encountered a fatal error"), after every test
-    # passed; seen once in CI. That is no report about our code: the program runs once more.
+    # LeakSanitizer's own tracer can crash (ptrace under a loaded machine: "Tracer caught
+    # signal 11 ... LeakSanitizer has encountered a fatal error"), after every test passed; seen
+    # in CI at exit, before the test programs ran the check themselves (tests/support/
+    # test_main.cpp). That is no report about our code: the program runs once more.
     if [ $status -ne 0 ] && grep -q "LeakSanitizer has encountered a fatal error" "$work/log" &&
         ! grep -qE "\[  FAILED  \]|ERROR: AddressSanitizer|runtime error:|ERROR: LeakSanitizer: detected" "$work/log"; then
         echo "sanitized: $target: LeakSanitizer's tracer crashed after the tests passed; running it again"
@@ -67,7 +68,8 @@ for target in $targets; do
     if [ $status -eq 0 ]; then
         echo "sanitized: $target: $(grep -o '[0-9]* tests\? from [0-9]* test suites\? ran' "$work/log" | head -n 1), clean, in $(($(date +%s) - start)) s"
     else
-        grep -E "FAILED|ERROR: AddressSanitizer|runtime error:|LeakSanitizer" -A12 "$work/log" | head -n 80
+        # The tracer says why it stopped on the lines before LeakSanitizer's own.
+        grep -E "FAILED|ERROR: AddressSanitizer|runtime error:|LeakSanitizer" -B3 -A12 "$work/log" | head -n 80
         echo "sanitized: $target: FAILED (log: $work/log)"
         failed=1
     fi
