@@ -275,27 +275,34 @@ std::vector<float> readGltfFloats(const GltfContext& ctx, int accessor, int comp
     });
 }
 
-std::vector<Vec3> readGltfVec3s(const GltfContext& ctx, int accessor, const AccessorUse& use) {
-    floatAccessor(ctx, accessor, 3, use);
-    std::vector<Vec3> out;
+template <class V>
+std::vector<V> readGltfVectors(const GltfContext& ctx, int accessor, const AccessorUse& use) {
+    constexpr int kComponents = int(sizeof(V) / sizeof(float));
+    static_assert(sizeof(V) == kComponents * sizeof(float) && std::is_trivially_copyable_v<V>,
+                  "V: only floats, as many as the accessor's components");
+    floatAccessor(ctx, accessor, kComponents, use);
+    std::vector<V> out;
     if (ctx.decodedFloats.find(accessor) == ctx.decodedFloats.end()) {
         const Layout layout = layoutOf(ctx, accessor, use);
         if (const float* first = valuesAsTheyStand<float>(ctx, accessor, layout)) {
-            // Straight into the Vec3s: a float array's copy and its conversion were a fifth of
-            // a 10M-triangle load. Vec3 is three floats and trivially copyable.
-            static_assert(sizeof(Vec3) == 3 * sizeof(float) && std::is_trivially_copyable_v<Vec3>);
+            // Straight into the vectors: a float array's copy and its conversion were a fifth
+            // of a 10M-triangle load.
             reserveOnHugePages(out, layout.count);
             out.resize(layout.count);
-            std::memcpy(static_cast<void*>(out.data()), first, layout.count * sizeof(Vec3));
+            std::memcpy(static_cast<void*>(out.data()), first, layout.count * sizeof(V));
             return out;
         }
     }
-    const std::vector<float> xyz = readGltfFloats(ctx, accessor, 3, use);
-    reserveOnHugePages(out, xyz.size() / 3);
-    out.resize(xyz.size() / 3);
-    for (size_t v = 0; v < out.size(); ++v) out[v] = {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
+    const std::vector<float> values = readGltfFloats(ctx, accessor, kComponents, use);
+    reserveOnHugePages(out, values.size() / kComponents);
+    out.resize(values.size() / kComponents);
+    std::memcpy(static_cast<void*>(out.data()), values.data(), out.size() * sizeof(V));
     return out;
 }
+
+template std::vector<Vec2> readGltfVectors<Vec2>(const GltfContext&, int, const AccessorUse&);
+template std::vector<Vec3> readGltfVectors<Vec3>(const GltfContext&, int, const AccessorUse&);
+template std::vector<Vec4> readGltfVectors<Vec4>(const GltfContext&, int, const AccessorUse&);
 
 std::vector<uint32_t> readGltfIndices(const GltfContext& ctx, int accessor, const AccessorUse& use) {
     const auto& acc =

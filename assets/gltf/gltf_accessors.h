@@ -28,8 +28,10 @@ struct AccessorUse {
 std::vector<float> readGltfFloats(const GltfContext& ctx, int accessor, int components,
                                   const AccessorUse& use);
 
-// A VEC3 accessor as readGltfFloats reads it, as Vec3s.
-std::vector<Vec3> readGltfVec3s(const GltfContext& ctx, int accessor, const AccessorUse& use);
+// A VEC2, VEC3 or VEC4 accessor as readGltfFloats reads it, as Vec2s, Vec3s or Vec4s (V is
+// one of them): packed floats are copied straight in, with no float array between.
+template <class V>
+std::vector<V> readGltfVectors(const GltfContext& ctx, int accessor, const AccessorUse& use);
 
 // A SCALAR accessor of unsigned bytes, shorts or ints.
 std::vector<uint32_t> readGltfIndices(const GltfContext& ctx, int accessor, const AccessorUse& use);

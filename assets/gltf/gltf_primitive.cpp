@@ -5,8 +5,10 @@
 #include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <numeric>
 
@@ -68,20 +70,29 @@ std::vector<float> readFiniteFloats(const GltfContext& ctx, int accessor, int co
     return values;
 }
 
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+// A vector's components (V: Vec2, Vec3 or Vec4, floats only).
+template <class V>
+std::array<float, sizeof(V) / sizeof(float)> componentsOf(const V& v) {
+    std::array<float, sizeof(V) / sizeof(float)> c;
+    std::memcpy(c.data(), &v, sizeof(V));
+    return c;
+}
 
-// A VEC3 attribute (POSITION, NORMAL, morph deltas) read as Vec3s, every component finite.
-std::vector<Vec3> readFiniteVec3s(const GltfContext& ctx, int accessor, const std::string& element,
-                                  const std::string& role) {
-    std::vector<Vec3> values = readGltfVec3s(ctx, accessor, {element, role});
-    const size_t v = firstFailing(values.size(), [&](size_t k) { return !finite(values[k]); });
+template <class V>
+std::vector<V> readFiniteVectors(const GltfContext& ctx, int accessor, const std::string& element,
+                                 const std::string& role) {
+    std::vector<V> values = readGltfVectors<V>(ctx, accessor, {element, role});
+    const auto notFinite = [&](size_t k) {
+        for (const float c : componentsOf(values[k])) {
+            if (!std::isfinite(c)) return true;
+        }
+        return false;
+    };
+    const size_t v = firstFailing(values.size(), notFinite);
     if (v < values.size()) {
-        const Vec3 bad = values[v];
-        failNotFinite(ctx, accessor, v,
-                      !std::isfinite(bad.x)   ? bad.x
-                      : !std::isfinite(bad.y) ? bad.y
-                                              : bad.z,
-                      element, role);
+        for (const float c : componentsOf(values[v])) {
+            if (!std::isfinite(c)) failNotFinite(ctx, accessor, v, c, element, role);
+        }
     }
     return values;
 }
@@ -108,9 +119,10 @@ std::vector<float> readVertexAttribute(const GltfContext& ctx, int accessor, int
     return values;
 }
 
-std::vector<Vec3> readVertexVec3s(const GltfContext& ctx, int accessor, size_t vertexCount,
-                                  const std::string& element, const std::string& role) {
-    std::vector<Vec3> values = readFiniteVec3s(ctx, accessor, element, role);
+template <class V>
+std::vector<V> readVertexVectors(const GltfContext& ctx, int accessor, size_t vertexCount,
+                                 const std::string& element, const std::string& role) {
+    std::vector<V> values = readFiniteVectors<V>(ctx, accessor, element, role);
     checkVertexCount(ctx, accessor, values.size(), vertexCount, element, role);
     return values;
 }
@@ -144,14 +156,16 @@ std::vector<uint32_t> readCorners(const GltfContext& ctx, const tinygltf::Primit
 // for vertices without UVs) stay zero, which tells the renderer to derive a frame.
 std::vector<Vec4> readTangents(const GltfContext& ctx, int accessor, size_t vertexCount,
                                const std::string& element) {
-    const std::vector<float> t = readVertexAttribute(ctx, accessor, 4, vertexCount, element, "TANGENT");
-    std::vector<Vec4> tangents(vertexCount);
-    for (size_t v = 0; v < vertexCount; ++v) {
-        const Vec3 xyz{t[4 * v], t[4 * v + 1], t[4 * v + 2]};
+    std::vector<Vec4> tangents = readVertexVectors<Vec4>(ctx, accessor, vertexCount, element, "TANGENT");
+    for (Vec4& t : tangents) {
+        const Vec3 xyz{t.x, t.y, t.z};
         const float len = length(xyz);
-        if (!(len > 0.0f)) continue;
+        if (!(len > 0.0f)) {
+            t = Vec4{};
+            continue;
+        }
         const Vec3 unitXyz = xyz / len;
-        tangents[v] = {unitXyz.x, unitXyz.y, unitXyz.z, t[4 * v + 3] < 0.0f ? -1.0f : 1.0f};
+        t = {unitXyz.x, unitXyz.y, unitXyz.z, t.w < 0.0f ? -1.0f : 1.0f};
     }
     return tangents;
 }
@@ -271,7 +285,7 @@ std::vector<MorphTarget> readMorphTargets(const GltfContext& ctx, const tinygltf
                 ctx.warn(at, "morph target attribute " + name + " is not applied; ignored");
                 continue;
             }
-            std::vector<Vec3> deltas = readVertexVec3s(ctx, accessor, vertexCount, at, name);
+            std::vector<Vec3> deltas = readVertexVectors<Vec3>(ctx, accessor, vertexCount, at, name);
             (name == "POSITION" ? targets[t].positionDeltas : targets[t].normalDeltas) = std::move(deltas);
         }
         // A target without POSITION leaves the positions where they are.
@@ -357,7 +371,7 @@ std::optional<PrimitiveGeometry> readGltfPrimitive(const GltfContext& ctx, size_
         return std::nullopt;
     }
     PrimitiveGeometry g;
-    g.positions = readFiniteVec3s(ctx, position, element, "POSITION");
+    g.positions = readFiniteVectors<Vec3>(ctx, position, element, "POSITION");
     const size_t vertexCount = g.positions.size();
     g.indices = toTriangleList(ctx, readCorners(ctx, primitive, std::move(draco), vertexCount, element),
                                primitive.mode, element);
@@ -366,14 +380,13 @@ std::optional<PrimitiveGeometry> readGltfPrimitive(const GltfContext& ctx, size_
         return std::nullopt;
     }
     if (const int uv = attribute(primitive, "TEXCOORD_0"); uv >= 0) {
-        const std::vector<float> t = readVertexAttribute(ctx, uv, 2, vertexCount, element, "TEXCOORD_0");
-        for (size_t v = 0; v < vertexCount; ++v) g.uvs.push_back({t[2 * v], t[2 * v + 1]});
+        g.uvs = readVertexVectors<Vec2>(ctx, uv, vertexCount, element, "TEXCOORD_0");
     }
     g.influences = readInfluences(ctx, primitive, vertexCount, element);
     const int normal = attribute(primitive, "NORMAL");
     g.targets = readMorphTargets(ctx, primitive, vertexCount, normal >= 0, element);
     if (normal >= 0) {
-        g.normals = readVertexVec3s(ctx, normal, vertexCount, element, "NORMAL");
+        g.normals = readVertexVectors<Vec3>(ctx, normal, vertexCount, element, "NORMAL");
         if (const int tangent = attribute(primitive, "TANGENT"); tangent >= 0) {
             g.tangents = readTangents(ctx, tangent, vertexCount, element);
         }
