@@ -27,10 +27,21 @@ inline constexpr uint32_t kSobolDirections[4][32] = {
 };
 
 // The Sobol generator matrices applied one index byte at a time: 4 lookups instead of a
-// 32-step loop (an Owen-shuffled index has all 32 bits set at random). 16 KiB.
+// 32-step loop (an Owen-shuffled index has all 32 bits set at random). 16 KiB. The tables map
+// a bit-reversed index to the bit-reversed point, which is what the nested uniform scrambles on
+// either side of the lookup take and give (their first and last reversal cancel those of the
+// index and the point; the generator matrices are linear over XOR, so the reversal of a point
+// is the XOR of the reversed direction numbers): sampleDimension reverses bits twice, not four
+// times.
 struct SobolByteTables {
-    uint32_t entries[4][4][256];  // [dimension][byte of the index][byte value]
+    uint32_t entries[4][4][256];  // [dimension][byte of the reversed index][byte value]
 };
+
+constexpr uint32_t reverseBitsConstexpr(uint32_t x) {
+    uint32_t r = 0;
+    for (uint32_t bit = 0; bit < 32; ++bit) r |= ((x >> bit) & 1u) << (31 - bit);
+    return r;
+}
 
 constexpr SobolByteTables makeSobolByteTables() {
     SobolByteTables tables{};
@@ -39,7 +50,9 @@ constexpr SobolByteTables makeSobolByteTables() {
             for (uint32_t value = 0; value < 256; ++value) {
                 uint32_t x = 0;
                 for (uint32_t bit = 0; bit < 8; ++bit) {
-                    if ((value >> bit) & 1u) x ^= kSobolDirections[dim][byte * 8 + bit];
+                    // Bit j of the reversed index is bit 31 - j of the index.
+                    const uint32_t indexBit = 31 - (byte * 8 + bit);
+                    if ((value >> bit) & 1u) x ^= reverseBitsConstexpr(kSobolDirections[dim][indexBit]);
                 }
                 tables.entries[dim][byte][value] = x;
             }
@@ -54,9 +67,11 @@ __device__ const SobolByteTables kSobolByteTables = makeSobolByteTables();
 inline constexpr SobolByteTables kSobolByteTables = makeSobolByteTables();
 #endif
 
-PT_HD uint32_t sobol(uint32_t index, uint32_t dim) {
+// reverseBits(sobol point of index reverseBits(reversedIndex)) in dimension `dim`.
+PT_HD uint32_t sobolReversed(uint32_t reversedIndex, uint32_t dim) {
     const auto& t = kSobolByteTables.entries[dim];
-    return t[0][index & 0xffu] ^ t[1][(index >> 8) & 0xffu] ^ t[2][(index >> 16) & 0xffu] ^ t[3][index >> 24];
+    return t[0][reversedIndex & 0xffu] ^ t[1][(reversedIndex >> 8) & 0xffu] ^
+           t[2][(reversedIndex >> 16) & 0xffu] ^ t[3][reversedIndex >> 24];
 }
 
 // Laine-Karras style permutation, as refined by Burley (2020), listing 2.
@@ -69,9 +84,8 @@ PT_HD uint32_t laineKarrasPermutation(uint32_t x, uint32_t seed) {
     return x;
 }
 
-PT_HD uint32_t nestedUniformScramble(uint32_t x, uint32_t seed) {
-    return reverseBits(laineKarrasPermutation(reverseBits(x), seed));
-}
+// Burley's nested uniform scramble is reverseBits(laineKarrasPermutation(reverseBits(x), seed));
+// sampleDimension applies it with the reversals folded into the Sobol tables.
 
 }  // namespace sobol_detail
 
@@ -118,23 +132,63 @@ struct SampleDims {
     }
 };
 
-// The sample value in [0, 1) for one pixel, sample and dimension.
-PT_HD float sampleDimension(uint32_t pixel, uint32_t sampleIndex, uint32_t dimension, uint32_t seed) {
-    using namespace sobol_detail;
-    const uint32_t group = dimension >> 2;
-    const uint32_t groupSeed = hashCombine(hashCombine(hashU32(seed), pixel), group);
-    const uint32_t shuffled = nestedUniformScramble(sampleIndex, groupSeed);
-    const uint32_t dim = dimension & 3u;
-    const uint32_t x = nestedUniformScramble(sobol(shuffled, dim), hashCombine(groupSeed, dim + 1));
-    return uintToUnitFloat(x);
+namespace sobol_detail {
+
+// What every sample of a path shares: the render's seed hashed with the pixel.
+PT_HD uint32_t pixelSeedOf(uint32_t pixel, uint32_t seed) { return hashCombine(hashU32(seed), pixel); }
+
+// What the four dimensions of a group share: the group's seed and the sample index shuffled by
+// it (a nested uniform scramble), kept bit-reversed as sobolReversed takes it.
+struct SobolGroup {
+    uint32_t seed, reversedShuffledIndex;
+};
+
+PT_HD SobolGroup sobolGroup(uint32_t pixelSeed, uint32_t sampleIndex, uint32_t group) {
+    const uint32_t groupSeed = hashCombine(pixelSeed, group);
+    return {groupSeed, laineKarrasPermutation(reverseBits(sampleIndex), groupSeed)};
 }
 
-// A per-path view that remembers pixel, sample and seed.
-struct PathSampler {
-    uint32_t pixel, sampleIndex, seed;
+// The shuffled index's Sobol point in dimension `dim` (0-3) of the group, scrambled again with
+// a seed of its own.
+PT_HD float sobolGroupValue(const SobolGroup& group, uint32_t dim) {
+    const uint32_t reversedPoint = sobolReversed(group.reversedShuffledIndex, dim);
+    return uintToUnitFloat(
+        reverseBits(laineKarrasPermutation(reversedPoint, hashCombine(group.seed, dim + 1))));
+}
 
-    PT_HD float get(uint32_t dimension) const { return sampleDimension(pixel, sampleIndex, dimension, seed); }
-    PT_HD Vec2 get2(uint32_t dimension) const { return {get(dimension), get(dimension + 1)}; }
+}  // namespace sobol_detail
+
+// The sample value in [0, 1) for one pixel, sample and dimension. The sample index is shuffled
+// by a nested uniform scramble seeded per pixel and group, its Sobol point taken, and that point
+// scrambled again, seeded per dimension:
+//   scramble(sobol(scramble(sampleIndex, groupSeed), dim), dimSeed),
+// with scramble(x, s) = reverseBits(laineKarrasPermutation(reverseBits(x), s)).
+PT_HD float sampleDimension(uint32_t pixel, uint32_t sampleIndex, uint32_t dimension, uint32_t seed) {
+    using namespace sobol_detail;
+    return sobolGroupValue(sobolGroup(pixelSeedOf(pixel, seed), sampleIndex, dimension >> 2), dimension & 3u);
+}
+
+// A per-path view: sampleDimension for one pixel and sample, with the pixel's share of the
+// hashing done once, and a pair within a group drawn from one shuffle.
+struct PathSampler {
+    uint32_t pixel, sampleIndex;
+    uint32_t pixelSeed;  // sobol_detail::pixelSeedOf(pixel, the render's seed)
+
+    PathSampler() = default;
+    PT_HD PathSampler(uint32_t pixel_, uint32_t sampleIndex_, uint32_t seed)
+        : pixel(pixel_), sampleIndex(sampleIndex_), pixelSeed(sobol_detail::pixelSeedOf(pixel_, seed)) {}
+
+    PT_HD float get(uint32_t dimension) const {
+        using namespace sobol_detail;
+        return sobolGroupValue(sobolGroup(pixelSeed, sampleIndex, dimension >> 2), dimension & 3u);
+    }
+    PT_HD Vec2 get2(uint32_t dimension) const {
+        using namespace sobol_detail;
+        const uint32_t dim = dimension & 3u;
+        if (dim == 3u) return {get(dimension), get(dimension + 1)};  // a pair across two groups
+        const SobolGroup group = sobolGroup(pixelSeed, sampleIndex, dimension >> 2);
+        return {sobolGroupValue(group, dim), sobolGroupValue(group, dim + 1)};
+    }
 };
 
 }  // namespace pt
