@@ -116,12 +116,13 @@ private:
 
 // H-PLOC (Benthin et al., "H-PLOC: Hierarchical Parallel Locally-Ordered Clustering for
 // Bounding Volume Hierarchy Construction", HPG 2024): PLOC's clustering done inside the LBVH's
-// hierarchy, in one kernel. Threads climb the LBVH from its leaves (Apetrei, "Fast and Simply
-// Constructing Binary Radix Trees", 2014: the second child to arrive goes on); where a node spans
+// hierarchy, in one kernel. Threads climb the LBVH from its leaves (Apetrei, "Fast and Simple
+// Agglomerative LBVH Construction", CGVC 2014: the second child to arrive goes on); where a node spans
 // more than kHplocThreshold primitives, its warp merges the clusters its two children kept, by
 // PLOC with kHplocRadius, until kHplocThreshold are left (the root: one). No rounds over the
 // whole set, so no read-backs and one launch. The same contract as PlocBuilder; its fallback
-// LBVH reuses the sorted keys.
+// LBVH reuses the sorted keys. build throws std::logic_error where the merges did not hand out
+// exactly the 2n - 2 slots below the root: a defect of the builder, never of the input.
 // Not yet run on a GPU (written in a session whose device time was spent): the backend does not
 // use it; gpu_bvh_test.cpp tests it with the other builders and times it against PLOC's rounds.
 constexpr int kHplocThreshold = 16;
@@ -151,7 +152,7 @@ private:
     // Per LBVH split (between sorted keys i and i + 1): the far end of the range of the child that
     // arrived first, ~0u until then.
     DeviceBuffer<uint32_t> siblingBounds_;
-    DeviceBuffer<uint32_t> counters_;  // PlocCounter: slots taken, -, root height
+    DeviceBuffer<uint32_t> counters_;  // PlocCounter: slots taken after the root's, -, root height
     LbvhBuilder fallback_;             // from the same sorted keys
 };
 

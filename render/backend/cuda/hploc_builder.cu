@@ -11,6 +11,9 @@
 //      positions.
 // Merges write their two clusters as nodes into fresh slot pairs, as PLOC's rounds do
 // (ploc_clusters.cuh), so siblings are adjacent and the root is node 0.
+#include <stdexcept>
+#include <string>
+
 #include "render/backend/cuda/bvh_bottom_up.cuh"
 #include "render/backend/cuda/gpu_bvh.h"
 #include "render/backend/cuda/ploc_clusters.cuh"
@@ -24,6 +27,7 @@ constexpr uint32_t kFullWarp = 0xffffffffu;
 constexpr uint32_t kNoSibling = ~0u;
 static_assert(2 * kHplocThreshold <= kWarpSize, "a node's clusters must fit its warp, one a lane");
 static_assert(kHplocRadius < kWarpSize, "neighbours are other lanes");
+static_assert(kBvhBlockSize % kWarpSize == 0, "whole warps: the votes and shuffles name every lane");
 
 // Apetrei's distance at split i, between sorted keys i and i + 1: their XOR, whose highest bit
 // is the level of the radix tree node that splits there. Keys are unique, so it is never 0.
@@ -144,7 +148,13 @@ __global__ void __launch_bounds__(kBvhBlockSize)
     while (__any_sync(kFullWarp, climbing)) {
         // Release: every lane's clusters are visible before any lane's arrival below is, so the
         // thread that arrives second at a node, in whatever block, reads its sibling's clusters.
-        if (wrote) __threadfence();
+        // Other lanes of the warp stored a merged node's clusters (mergeNode); the warp barrier
+        // orders their stores before this lane's fence and exchange (the votes and shuffles
+        // order no memory). `wrote` is the same in every lane.
+        if (wrote) {
+            __syncwarp();
+            __threadfence();
+        }
         bool merge = false;
         if (climbing) {
             // The parent splits at the end of the range whose neighbouring keys differ in a lower
@@ -165,6 +175,9 @@ __global__ void __launch_bounds__(kBvhBlockSize)
             }
         }
         const uint32_t merges = __ballot_sync(kFullWarp, merge);
+        // Acquire for the warp: each owner's fence above comes before every lane's loads of the
+        // sibling's clusters in mergeNode.
+        if (merges != 0) __syncwarp();
         for (uint32_t pending = merges; pending != 0; pending &= pending - 1) {
             const int owner = __ffs(pending) - 1;
             mergeNode(__shfl_sync(kFullWarp, first, owner), __shfl_sync(kFullWarp, split, owner),
@@ -211,9 +224,18 @@ void HplocBuilder::build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint
     hplocKernel<<<bvhBlocks(count), kBvhBlockSize, 0, stream>>>(
         boxes, sorted, count, clusters_.data(), primIndices, siblingBounds_.data(), nodes, counters_.data());
     PT_CUDA_CHECK_LAUNCH("hplocKernel");
-    PT_CUDA_CHECK(cudaMemcpyAsync(&depth_, counters_.data() + kRootHeight, sizeof(depth_),
-                                  cudaMemcpyDeviceToHost, stream));
+    uint32_t counters[kPlocCounters];
+    PT_CUDA_CHECK(
+        cudaMemcpyAsync(counters, counters_.data(), sizeof(counters), cudaMemcpyDeviceToHost, stream));
     PT_CUDA_CHECK(cudaStreamSynchronize(stream));
+    depth_ = counters[kRootHeight];
+    // n - 1 merges, two slots each, after the root's slot 0: any other count is a broken tree
+    // (and writes past `nodes`), which must not pass silently.
+    if (counters[kNextSlot] != 2 * (count - 1)) {
+        throw std::logic_error("H-PLOC handed out " + std::to_string(counters[kNextSlot]) +
+                               " node slots for " + std::to_string(count) + " primitives (" +
+                               std::to_string(2 * (count - 1)) + " expected)");
+    }
     if (depth_ > kGpuBvhMaxDepth) {
         fallback_.buildFromSortedKeys(boxes, sorted, count, nodes, primIndices, stream);
         fellBack_ = true;

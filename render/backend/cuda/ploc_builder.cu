@@ -235,7 +235,7 @@ void PlocBuilder::build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint3
                                   cudaMemcpyDeviceToHost, stream));
     PT_CUDA_CHECK(cudaStreamSynchronize(stream));
     if (depth_ > kGpuBvhMaxDepth) {
-        fallback_.build(boxes, count, nodes, primIndices, stream);
+        fallback_.buildFromSortedKeys(boxes, sorted, count, nodes, primIndices, stream);
         fellBack_ = true;
     }
 }

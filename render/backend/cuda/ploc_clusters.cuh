@@ -30,6 +30,8 @@ struct ClusterWords {
     __device__ uint32_t height() const { return clusterHeight(count()); }
 };
 
+// A cluster an earlier kernel wrote (PLOC's rounds). May come from L1: never for clusters other
+// SMs write while this kernel runs (H-PLOC's climb), which take loadClusterCoherent.
 __device__ __forceinline__ ClusterWords loadCluster(const BvhNode* clusters, int i) {
     const float4* words = reinterpret_cast<const float4*>(clusters + i);
     return {words[0], words[1]};

@@ -103,8 +103,11 @@ TYPED_TEST(GpuTreeBuilder, IsValidForEverySize) {
     TestStream s;
     Rng rng(101);
     TypeParam builder;  // one builder throughout: its scratch grows, shrinks back and is reused
-    // (1024 and 1025: PLOC's last block of rounds alone, and one round of the grid before it.)
-    for (uint32_t n : {1000u, 0u, 1u, 2u, 3u, 100000u, 5u, 1024u, 1025u, 4097u, 1000u, 17u}) {
+    // (1024 and 1025: PLOC's last block of rounds alone, and one round of the grid before it.
+    // 16 and 17: H-PLOC's root at and just past its threshold; 31 to 33 and 48, 65: one warp,
+    // just past one, and nodes past the threshold with a leaf for a child.)
+    for (uint32_t n : {1000u, 0u, 1u, 2u, 3u, 100000u, 5u, 1024u, 1025u, 4097u, 1000u, 17u, 16u, 31u, 32u,
+                       33u, 48u, 65u}) {
         for (SoupKind kind : {SoupKind::Uniform, SoupKind::Clustered, SoupKind::Needles}) {
             SCOPED_TRACE(std::to_string(n) + " " + test::soupName(kind));
             const std::vector<Aabb> boxes = soupBoxes(kind, n, rng);
@@ -199,6 +202,34 @@ TYPED_TEST(GpuClusteringBuilder, FallsBackToAnLbvhBeyondTheStacksDepth) {
     const std::vector<Aabb> soup = soupBoxes(SoupKind::Uniform, 5000, rng);
     expectValidTree(test::buildTreeOnDevice(builder, soup, s), soup);
     EXPECT_FALSE(builder.lastBuildFellBack());
+}
+
+// The clustering is a function of the sorted keys, so every build of the same boxes gives the
+// same tree (H-PLOC's node slots go to whichever warp asks first, so the node order may differ:
+// the depth must not, nor the SAH cost beyond the rounding of its sum's order). A build that
+// read a sibling's clusters before they were visible would differ now and then, if it stayed
+// valid at all.
+TYPED_TEST(GpuClusteringBuilder, RebuildsTheSameTreeEveryTime) {
+    PT_REQUIRE_CUDA_DEVICE();
+    TestStream s;
+    TypeParam builder;
+    Rng rng(112);
+    const std::vector<Aabb> boxes = soupBoxes(SoupKind::Clustered, 200000, rng);
+    uint32_t firstDepth = 0;
+    float firstSah = 0.0f;
+    for (int build = 0; build < 20; ++build) {
+        SCOPED_TRACE("build " + std::to_string(build));
+        const Bvh tree = test::buildTreeOnDevice(builder, boxes, s);
+        uint32_t depth = 0;
+        expectValidTree(tree, boxes, &depth);
+        const float sah = sahCost(tree);
+        if (build == 0) {
+            firstDepth = depth;
+            firstSah = sah;
+        }
+        EXPECT_EQ(depth, firstDepth);
+        EXPECT_NEAR(sah, firstSah, 1e-5f * firstSah);
+    }
 }
 
 TYPED_TEST(GpuTreeBuilder, ClosestHitsMatchBruteForce) {
@@ -554,6 +585,14 @@ TEST(GpuBvh, BuildAndRefitSpeedOfOneMillionTriangles) {
         s, 10, [&] { hploc.build(boxes.data(), n, nodes.data(), primIndices.data(), s.stream); });
     const float sahHploc = cuda::sahCostOnDevice(nodes.data(), nodeCount, s.stream);
     std::printf("[ speed    ] H-PLOC build %.3f ms, SAH %.2f\n", hplocMs, sahHploc);
+    {
+        // The one tree built at a scale where many blocks climb at once, checked whole.
+        s.sync();
+        Bvh tree;
+        nodes.download(tree.nodes);
+        primIndices.download(tree.primIndices);
+        expectValidTree(tree, test::triangleBounds(mesh));
+    }
     const float buildMs = medianMilliseconds(
         s, 10, [&] { builder.build(boxes.data(), n, nodes.data(), primIndices.data(), s.stream); });
     cuda::computeParents(nodes.data(), nodeCount, parents.data(), s.stream);
