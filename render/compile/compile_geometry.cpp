@@ -30,9 +30,11 @@ void appendSlots(const Mesh& mesh, size_t index, std::vector<uint32_t>& slots) {
                                     std::to_string(mesh.primitiveSlots.size()) + " material slots for " +
                                     std::to_string(count) + " primitives");
     }
-    // Without a list every primitive takes slot 0.
+    // Without a list every primitive takes slot 0, so one check answers for all of them.
     const auto slotOf = [&](size_t p) { return mesh.primitiveSlots.empty() ? 0u : mesh.primitiveSlots[p]; };
-    const size_t p = firstFailing(count, [&](size_t q) { return slotOf(q) >= mesh.slotCount; });
+    const size_t p = mesh.primitiveSlots.empty()
+                         ? (mesh.slotCount == 0 ? 0u : count)
+                         : firstFailing(count, [&](size_t q) { return slotOf(q) >= mesh.slotCount; });
     if (p < count) {
         throw std::invalid_argument(meshLabel(mesh, index) + ": primitive " + std::to_string(p) +
                                     " uses slot " + std::to_string(slotOf(p)) + " of " +

@@ -166,6 +166,16 @@ TEST(CompileScene, ABadCornerOrSlotIsNamedByTheFirstTriangleThatHasOne) {
     ASSERT_EQ(compiled.triangleSlots.size(), mesh.primitiveSlots.size());
     EXPECT_EQ(compiled.triangleSlots[70002], 0u);
     EXPECT_EQ(compiled.triangleSlots[70003], 1u);
+    // Without a slot list every primitive takes slot 0, which a mesh of no slots lacks: the
+    // first primitive is named.
+    Scene noSlots = sceneWithGrid(300, 1);
+    noSlots.meshes[0].slotCount = 0;
+    try {
+        compileRenderScene(noSlots);
+        FAIL() << "expected an error";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_STREQ(e.what(), "mesh 0 \"grid\": primitive 0 uses slot 0 of 0");
+    }
 }
 
 TEST(CompileScene, EmittersAreWeightedByWorldAreaTimesLuminance) {
