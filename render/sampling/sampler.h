@@ -158,17 +158,7 @@ PT_HD float sobolGroupValue(const SobolGroup& group, uint32_t dim) {
 
 }  // namespace sobol_detail
 
-// The sample value in [0, 1) for one pixel, sample and dimension. The sample index is shuffled
-// by a nested uniform scramble seeded per pixel and group, its Sobol point taken, and that point
-// scrambled again, seeded per dimension:
-//   scramble(sobol(scramble(sampleIndex, groupSeed), dim), dimSeed),
-// with scramble(x, s) = reverseBits(laineKarrasPermutation(reverseBits(x), s)).
-PT_HD float sampleDimension(uint32_t pixel, uint32_t sampleIndex, uint32_t dimension, uint32_t seed) {
-    using namespace sobol_detail;
-    return sobolGroupValue(sobolGroup(pixelSeedOf(pixel, seed), sampleIndex, dimension >> 2), dimension & 3u);
-}
-
-// A per-path view: sampleDimension for one pixel and sample, with the pixel's share of the
+// A per-path view of sampleDimension (below) for one pixel and sample: the pixel's share of the
 // hashing done once, and a pair within a group drawn from one shuffle.
 struct PathSampler {
     uint32_t pixel, sampleIndex;
@@ -190,5 +180,14 @@ struct PathSampler {
         return {sobolGroupValue(group, dim), sobolGroupValue(group, dim + 1)};
     }
 };
+
+// The sample value in [0, 1) for one pixel, sample and dimension. The sample index is shuffled
+// by a nested uniform scramble seeded per pixel and group, its Sobol point taken, and that point
+// scrambled again, seeded per dimension:
+//   scramble(sobol(scramble(sampleIndex, groupSeed), dim), dimSeed),
+// with scramble(x, s) = reverseBits(laineKarrasPermutation(reverseBits(x), s)).
+PT_HD float sampleDimension(uint32_t pixel, uint32_t sampleIndex, uint32_t dimension, uint32_t seed) {
+    return PathSampler(pixel, sampleIndex, seed).get(dimension);
+}
 
 }  // namespace pt
