@@ -123,8 +123,10 @@ private:
 // whole set, so no read-backs and one launch. The same contract as PlocBuilder; its fallback
 // LBVH reuses the sorted keys. build throws std::logic_error where the merges did not hand out
 // exactly the 2n - 2 slots below the root: a defect of the builder, never of the input.
-// Not yet run on a GPU (written in a session whose device time was spent): the backend does not
-// use it; gpu_bvh_test.cpp tests it with the other builders and times it against PLOC's rounds.
+// Not yet shown to work on a GPU: its first run (H200) hung in IsValidForEverySize, where lanes
+// past a node's clusters skipped a full-mask shuffle (fixed since, not yet rerun). The backend
+// does not use it; gpu_bvh_test.cpp tests it with the other builders and times it against
+// PLOC's rounds.
 constexpr int kHplocThreshold = 16;
 constexpr int kHplocRadius = 8;
 

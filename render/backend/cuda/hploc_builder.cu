@@ -111,11 +111,19 @@ __device__ void mergeNode(uint32_t first, uint32_t split, uint32_t last, uint32_
     while (n > target) {
         const int best = nearestInWarp(c, lane, n);
         const int from = best < 0 ? lane : best;
-        const bool mutual = best >= 0 && __shfl_sync(kFullWarp, best, from) == lane;
+        // Every lane takes part: a full-mask shuffle that some lanes skip (as the short-circuit
+        // `best >= 0 && __shfl_sync(...)` did, for the lanes past the clusters) is undefined
+        // behaviour; the first run on a GPU hung in it.
+        const int fromBest = __shfl_sync(kFullWarp, best, from);
+        const bool mutual = best >= 0 && fromBest == lane;
         const ClusterWords partner{shuffle(c.low, from), shuffle(c.high, from)};
         // The least-cost pair is mutual (tieOrder makes the order on pairs total), so every
         // pass merges at least once and `merging` is never empty.
         const uint32_t merging = __ballot_sync(kFullWarp, mutual && lane < best);
+        if (merging == 0) {  // cannot happen (above); counted, so build throws rather than hangs
+            if (lane == 0) atomicAdd(counters + kStalls, 1u);
+            break;
+        }
         const int leader = __ffs(merging) - 1;
         uint32_t base = 0;
         if (lane == leader) base = 1u + atomicAdd(counters + kNextSlot, 2u * uint32_t(__popc(merging)));
@@ -231,10 +239,11 @@ void HplocBuilder::build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint
     depth_ = counters[kRootHeight];
     // n - 1 merges, two slots each, after the root's slot 0: any other count is a broken tree
     // (and writes past `nodes`), which must not pass silently.
-    if (counters[kNextSlot] != 2 * (count - 1)) {
+    if (counters[kNextSlot] != 2 * (count - 1) || counters[kStalls] != 0) {
         throw std::logic_error("H-PLOC handed out " + std::to_string(counters[kNextSlot]) +
                                " node slots for " + std::to_string(count) + " primitives (" +
-                               std::to_string(2 * (count - 1)) + " expected)");
+                               std::to_string(2 * (count - 1)) + " expected); " +
+                               std::to_string(counters[kStalls]) + " merge passes found no pair");
     }
     if (depth_ > kGpuBvhMaxDepth) {
         fallback_.buildFromSortedKeys(boxes, sorted, count, nodes, primIndices, stream);

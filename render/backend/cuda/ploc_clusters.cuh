@@ -11,8 +11,9 @@
 
 namespace pt::cuda {
 
-// The builders' counters_ words.
-enum PlocCounter : uint32_t { kNextSlot, kClustersLeft, kRootHeight, kPlocCounters };
+// The builders' counters_ words. kStalls: H-PLOC's merge passes that found no mutual pair (a
+// defect: each would otherwise loop forever).
+enum PlocCounter : uint32_t { kNextSlot, kClustersLeft, kRootHeight, kStalls, kPlocCounters };
 
 // A cluster is the node it will become. A leaf's count is 1 (its height 0); an interior
 // cluster's count field holds kInteriorCluster | its height, set to 0 when it is written as a
