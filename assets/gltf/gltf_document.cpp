@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "assets/file_state.h"
+#include "assets/gltf/gltf_glb_bin.h"
 #include "assets/gltf/gltf_json_check.h"
 #include "assets/gltf/gltf_tinygltf_compat.h"
 #include "assets/scene_json/json_depth.h"
@@ -172,9 +173,13 @@ GltfDocument loadGltfDocument(const std::string& path) {
     }
     checkGltfJson(root,
                   {doc.label, doc.baseDir, binary ? std::optional<size_t>(glb->binBytes) : std::nullopt});
-    if (adaptGltfForTinygltf(root)) {
+    const bool adapted = adaptGltfForTinygltf(root);
+    // A .glb's BIN chunk: tinygltf parses the JSON alone, and the file's bytes become buffer 0.
+    const std::optional<DetachedGlbBin> detached =
+        binary && glb->binChunk != 0 ? detachGlbBin(root) : std::nullopt;
+    if (adapted || detached) {
         jsonText = root.dump();
-        if (binary) bytes = replaceGlbJson(bytes, *glb, jsonText);
+        if (binary && !detached) bytes = replaceGlbJson(bytes, *glb, jsonText);
     }
 
     tinygltf::TinyGLTF loader;
@@ -182,14 +187,20 @@ GltfDocument loadGltfDocument(const std::string& path) {
     loader.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readFileForTinygltf,
                            &tinygltf::WriteWholeFile, nullptr});
     std::string err, warn;
-    const bool ok = binary ? loader.LoadBinaryFromMemory(&doc.model, &err, &warn, bytes.data(),
-                                                         unsigned(bytes.size()), doc.baseDir)
-                           : loader.LoadASCIIFromString(&doc.model, &err, &warn, jsonText.data(),
-                                                        unsigned(jsonText.size()), doc.baseDir);
+    const bool ok = binary && !detached ? loader.LoadBinaryFromMemory(&doc.model, &err, &warn, bytes.data(),
+                                                                      unsigned(bytes.size()), doc.baseDir)
+                                        : loader.LoadASCIIFromString(&doc.model, &err, &warn, jsonText.data(),
+                                                                     unsigned(jsonText.size()), doc.baseDir);
     // tinygltf appends some errors without failing; both are bad input. Its warnings are
     // only about external images, which the texture stage reports per image itself.
     if (!ok || !err.empty()) {
         throw InputError(doc.label + ": " + (err.empty() ? "tinygltf failed" : summarize(err)));
+    }
+    if (detached) {
+        // The chunk's bytes moved down over the header and the JSON: no second array.
+        bytes.resize(glb->binChunk + 8 + detached->byteLength);  // at most the chunk (checked)
+        bytes.erase(bytes.begin(), bytes.begin() + std::ptrdiff_t(glb->binChunk + 8));
+        attachGlbBin(doc.model, *detached, std::move(bytes));
     }
     return doc;
 }

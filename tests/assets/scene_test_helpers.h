@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -42,6 +43,23 @@ inline std::string readFile(const std::string& path) {
     std::ostringstream text;
     text << in.rdbuf();
     return text.str();
+}
+
+// Writes a .glb of `json` and a BIN chunk of `bin` (each padded to 4 bytes, as the spec asks:
+// JSON with spaces, BIN with zeros) to `folder`/`name` and returns the path.
+inline std::string writeGlb(const std::string& folder, const std::string& name, std::string json,
+                            std::string bin) {
+    while (json.size() % 4) json += ' ';
+    while (bin.size() % 4) bin += '\0';
+    std::string glb = "glTF";
+    const auto u32 = [&glb](uint32_t v) { glb.append(reinterpret_cast<const char*>(&v), 4); };
+    u32(2);
+    u32(uint32_t(12 + 8 + json.size() + 8 + bin.size()));
+    u32(uint32_t(json.size()));
+    glb += "JSON" + json;
+    u32(uint32_t(bin.size()));
+    glb += std::string("BIN\0", 4) + bin;
+    return writeFile(folder, name, glb);
 }
 
 inline bool bitsEqual(float a, float b) { return std::memcmp(&a, &b, sizeof(float)) == 0; }

@@ -129,21 +129,7 @@ std::string writeTentGlb(const Encoded& e) {
     std::string json = tentGltf(e, e.bytes.size(), e.positionId);
     const std::string uri = R"("uri": "tent.bin", )";
     json.erase(json.find(uri), uri.size());
-    while (json.size() % 4) json += ' ';
-    std::string bin = e.bytes;
-    while (bin.size() % 4) bin += '\0';
-    std::string glb;
-    const auto u32 = [&glb](uint32_t v) { glb.append(reinterpret_cast<const char*>(&v), 4); };
-    glb += "glTF";
-    u32(2);
-    u32(uint32_t(12 + 8 + json.size() + 8 + bin.size()));
-    u32(uint32_t(json.size()));
-    glb += "JSON";
-    glb += json;
-    u32(uint32_t(bin.size()));
-    glb += std::string("BIN\0", 4);
-    glb += bin;
-    return test::writeFile(test::testFolder(), "tent.glb", glb);
+    return test::writeGlb(test::testFolder(), "tent.glb", json, e.bytes);
 }
 
 TEST(GltfDraco, AGlbWithTheBitstreamInItsBinChunk) {

@@ -1,0 +1,69 @@
+#include "assets/gltf/gltf_glb_bin.h"
+
+#include <string>
+
+namespace pt {
+namespace {
+
+// Four zero bytes: tinygltf decodes no empty data URI.
+constexpr const char* kStandInUri = "data:application/octet-stream;base64,AAAAAA==";
+
+bool lacksUri(const nlohmann::json& buffer) { return buffer.is_object() && !buffer.contains("uri"); }
+
+// An optional integer property as tinygltf's ParseIntegerProperty reads it: 0 where absent.
+int integerOr0(const nlohmann::json& object, const char* name) {
+    auto value = object.find(name);
+    return value != object.end() && value->is_number_integer() ? value->get<int>() : 0;
+}
+
+}  // namespace
+
+std::optional<DetachedGlbBin> detachGlbBin(nlohmann::json& root) {
+    auto buffers = root.find("buffers");
+    if (buffers == root.end() || !buffers->is_array() || buffers->empty() || !lacksUri((*buffers)[0])) {
+        return std::nullopt;
+    }
+    for (size_t i = 1; i < buffers->size(); ++i) {
+        if (lacksUri((*buffers)[i])) return std::nullopt;  // tinygltf's own path: left as it was
+    }
+    DetachedGlbBin detached;
+    nlohmann::json& bin = (*buffers)[0];
+    detached.byteLength = bin.at("byteLength").get<size_t>();
+    bin["uri"] = kStandInUri;
+    bin["byteLength"] = 4;
+    auto images = root.find("images");
+    if (images != root.end() && images->is_array()) {
+        for (size_t i = 0; i < images->size(); ++i) {
+            nlohmann::json& image = (*images)[i];
+            if (!image.is_object() || image.contains("uri")) continue;  // tinygltf says why
+            auto view = image.find("bufferView");
+            if (view == image.end() || !view->is_number_integer()) continue;
+            auto mimeType = image.find("mimeType");
+            detached.imageViews.push_back(
+                {i, view->get<int>(), integerOr0(image, "width"), integerOr0(image, "height"),
+                 mimeType != image.end() && mimeType->is_string() ? mimeType->get<std::string>() : ""});
+            image.erase(view);
+            image["uri"] = kStandInUri;
+        }
+    }
+    return detached;
+}
+
+void attachGlbBin(tinygltf::Model& model, const DetachedGlbBin& detached, std::vector<uint8_t> bin) {
+    bin.resize(detached.byteLength);
+    tinygltf::Buffer& buffer = model.buffers.at(0);
+    buffer.data = std::move(bin);
+    buffer.uri.clear();
+    for (const DetachedGlbBin::ImageView& view : detached.imageViews) {
+        tinygltf::Image& image = model.images.at(view.image);
+        image.bufferView = view.bufferView;
+        image.width = view.width;
+        image.height = view.height;
+        image.mimeType = view.mimeType;
+        image.uri.clear();
+        image.image.clear();
+        image.as_is = false;
+    }
+}
+
+}  // namespace pt

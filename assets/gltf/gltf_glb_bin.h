@@ -1,0 +1,41 @@
+#pragma once
+// The BIN chunk of a .glb given to tinygltf's model without a copy. tinygltf 2.7 copies the
+// chunk into buffer 0 (a fresh array as large as the file, zeroed, then filled), which made a
+// .glb load 1.6-2.6x slower than the same mesh as .gltf and .bin. So tinygltf parses the JSON
+// with buffer 0, and every image in a bufferView (whose bytes tinygltf would read at load),
+// standing in as 4-byte data URIs; then the file's own bytes, moved down over the header,
+// become buffer 0 and the images get their bufferViews back.
+// Internal to pt_assets.
+#include <cstddef>
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "assets/gltf/gltf_context.h"
+
+namespace pt {
+
+// What detachGlbBin took out of the JSON, for attachGlbBin to put back.
+struct DetachedGlbBin {
+    // An image in a bufferView as tinygltf would have parsed it (a data URI overwrites the
+    // image's mimeType with its own).
+    struct ImageView {
+        size_t image = 0;
+        int bufferView = -1, width = 0, height = 0;
+        std::string mimeType;
+    };
+    size_t byteLength = 0;  // buffer 0's
+    std::vector<ImageView> imageViews;
+};
+
+// Rewrites `root` (checked by checkGltfJson, adapted by adaptGltfForTinygltf) as above, where
+// buffer 0 is the only buffer without a uri; otherwise nullopt and `root` as it was.
+std::optional<DetachedGlbBin> detachGlbBin(nlohmann::json& root);
+
+// `bin` (at least byteLength bytes: the BIN chunk's) becomes buffer 0's data, and the images
+// are as tinygltf leaves images in bufferViews.
+void attachGlbBin(tinygltf::Model& model, const DetachedGlbBin& detached, std::vector<uint8_t> bin);
+
+}  // namespace pt
