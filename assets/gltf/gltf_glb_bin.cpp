@@ -35,7 +35,8 @@ std::optional<DetachedGlbBin> detachGlbBin(nlohmann::json& root) {
     if (images != root.end() && images->is_array()) {
         for (size_t i = 0; i < images->size(); ++i) {
             nlohmann::json& image = (*images)[i];
-            if (!image.is_object() || image.contains("uri")) continue;  // tinygltf says why
+            // An image with a uri is tinygltf's to read (or, beside a view, to reject).
+            if (!image.is_object() || image.contains("uri")) continue;
             auto view = image.find("bufferView");
             if (view == image.end() || !view->is_number_integer()) continue;
             auto mimeType = image.find("mimeType");
