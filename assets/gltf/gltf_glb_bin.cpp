@@ -2,11 +2,10 @@
 
 #include <string>
 
+#include "assets/gltf/gltf_tinygltf_compat.h"
+
 namespace pt {
 namespace {
-
-// Four zero bytes: tinygltf decodes no empty data URI.
-constexpr const char* kStandInUri = "data:application/octet-stream;base64,AAAAAA==";
 
 bool lacksUri(const nlohmann::json& buffer) { return buffer.is_object() && !buffer.contains("uri"); }
 
@@ -29,8 +28,7 @@ std::optional<DetachedGlbBin> detachGlbBin(nlohmann::json& root) {
     DetachedGlbBin detached;
     nlohmann::json& bin = (*buffers)[0];
     detached.byteLength = bin.at("byteLength").get<size_t>();
-    bin["uri"] = kStandInUri;
-    bin["byteLength"] = 4;
+    standInForTinygltf(bin);
     auto images = root.find("images");
     if (images != root.end() && images->is_array()) {
         for (size_t i = 0; i < images->size(); ++i) {
@@ -44,7 +42,7 @@ std::optional<DetachedGlbBin> detachGlbBin(nlohmann::json& root) {
                 {i, view->get<int>(), integerOr0(image, "width"), integerOr0(image, "height"),
                  mimeType != image.end() && mimeType->is_string() ? mimeType->get<std::string>() : ""});
             image.erase(view);
-            image["uri"] = kStandInUri;
+            image["uri"] = kTinygltfStandInUri;
         }
     }
     return detached;

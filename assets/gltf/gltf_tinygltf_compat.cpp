@@ -13,6 +13,11 @@ bool hasBufferView(const nlohmann::json& root, const nlohmann::json& index) {
 
 }  // namespace
 
+void standInForTinygltf(nlohmann::json& buffer) {
+    buffer["uri"] = kTinygltfStandInUri;
+    buffer["byteLength"] = 4;
+}
+
 bool isMeshoptFallbackBuffer(const nlohmann::json& buffer) {
     if (!buffer.is_object() || !buffer.contains("extensions")) return false;
     const nlohmann::json& extensions = buffer["extensions"];
@@ -30,8 +35,7 @@ bool emptyFallbackBuffers(nlohmann::json& root) {
     if (!root.contains("buffers") || !root["buffers"].is_array()) return false;
     for (nlohmann::json& buffer : root["buffers"]) {
         if (!isMeshoptFallbackBuffer(buffer) || buffer.contains("uri")) continue;
-        buffer["uri"] = "data:application/octet-stream;base64,AAAAAA==";  // tinygltf decodes no empty one
-        buffer["byteLength"] = 4;
+        standInForTinygltf(buffer);
         changed = true;
     }
     return changed;

@@ -13,6 +13,13 @@
 
 namespace pt {
 
+// Four zero bytes as a data URI: what stands in, for tinygltf, for bytes it must not read
+// (it decodes no empty data URI).
+inline constexpr const char* kTinygltfStandInUri = "data:application/octet-stream;base64,AAAAAA==";
+
+// `buffer` as tinygltf is to see it: those four bytes in place of its own.
+void standInForTinygltf(nlohmann::json& buffer);
+
 // A buffer marked {"extensions": {"EXT_meshopt_compression": {"fallback": true}}}.
 bool isMeshoptFallbackBuffer(const nlohmann::json& buffer);
 

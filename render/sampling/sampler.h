@@ -37,6 +37,8 @@ struct SobolByteTables {
     uint32_t entries[4][4][256];  // [dimension][byte of the reversed index][byte value]
 };
 
+// reverseBits (hash.h) for the tables' constant evaluation, which its device branch (__brev)
+// cannot take part in.
 constexpr uint32_t reverseBitsConstexpr(uint32_t x) {
     uint32_t r = 0;
     for (uint32_t bit = 0; bit < 32; ++bit) r |= ((x >> bit) & 1u) << (31 - bit);

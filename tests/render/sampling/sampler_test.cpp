@@ -84,6 +84,15 @@ uint32_t scrambleByListing(uint32_t x, uint32_t seed) {
     return reverseBits(sobol_detail::laineKarrasPermutation(reverseBits(x), seed));
 }
 
+// The sample value as sampler.h defines it, computed the textbook way:
+// scramble(sobol(scramble(sample index, group seed)), dimension seed).
+float definedSampleValue(uint32_t pixel, uint32_t sampleIndex, uint32_t dimension, uint32_t seed) {
+    const uint32_t groupSeed = hashCombine(hashCombine(hashU32(seed), pixel), dimension >> 2);
+    const uint32_t dim = dimension & 3u;
+    const uint32_t point = sobolByLoop(scrambleByListing(sampleIndex, groupSeed), dim);
+    return uintToUnitFloat(scrambleByListing(point, hashCombine(groupSeed, dim + 1)));
+}
+
 // The byte tables must equal the textbook generator-matrix product, bit by bit, with the index
 // and the point bit-reversed as the tables take and give them.
 TEST(Sampler, ByteTableSobolEqualsTheDirectNumberLoop) {
@@ -106,29 +115,27 @@ TEST(Sampler, SampleValuesAreThoseOfTheScrambledSobolSequenceAsDefined) {
     for (uint32_t i = 0; i < 200000; ++i) {
         const uint32_t pixel = hashU32(i * 3 + 1), sampleIndex = i % 7 == 0 ? i : hashU32(i) >> (i % 23);
         const uint32_t dimension = i % 71, seed = hashU32(i + 17);
-        const uint32_t groupSeed = hashCombine(hashCombine(hashU32(seed), pixel), dimension >> 2);
-        const uint32_t dim = dimension & 3u;
-        const uint32_t point = sobolByLoop(scrambleByListing(sampleIndex, groupSeed), dim);
-        const float expected = uintToUnitFloat(scrambleByListing(point, hashCombine(groupSeed, dim + 1)));
+        const float expected = definedSampleValue(pixel, sampleIndex, dimension, seed);
         ASSERT_EQ(floatAsInt(sampleDimension(pixel, sampleIndex, dimension, seed)), floatAsInt(expected))
             << "pixel " << pixel << " sample " << sampleIndex << " dimension " << dimension << " seed "
             << seed;
     }
 }
 
-// A path's sampler draws sampleDimension's values: its pixel seed hashed once, and a pair
-// within a group (or across two, from a group's last dimension) from one shuffle.
+// A path's sampler draws the defined values (sampleDimension is its get): its pixel seed hashed
+// once, and a pair within a group (or across two, from a group's last dimension) from one
+// shuffle.
 TEST(Sampler, PathSamplerDrawsTheValuesOfSampleDimension) {
     for (uint32_t i = 0; i < 20000; ++i) {
         const uint32_t pixel = hashU32(i), sampleIndex = i * 7, seed = i % 5;
         const PathSampler sampler(pixel, sampleIndex, seed);
         for (uint32_t dimension = 0; dimension < 40; ++dimension) {
-            const float expected = sampleDimension(pixel, sampleIndex, dimension, seed);
+            const float expected = definedSampleValue(pixel, sampleIndex, dimension, seed);
             ASSERT_EQ(floatAsInt(sampler.get(dimension)), floatAsInt(expected)) << dimension;
             const Vec2 pair = sampler.get2(dimension);
             ASSERT_EQ(floatAsInt(pair.x), floatAsInt(expected)) << dimension;
             ASSERT_EQ(floatAsInt(pair.y),
-                      floatAsInt(sampleDimension(pixel, sampleIndex, dimension + 1, seed)))
+                      floatAsInt(definedSampleValue(pixel, sampleIndex, dimension + 1, seed)))
                 << dimension;
         }
     }
