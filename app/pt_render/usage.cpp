@@ -34,7 +34,7 @@ constexpr CommandUsage kCommands[] = {
                 [--runs N] [--spp N] [--json OUT.json] [--quiet] [TOGGLES]
       Medians of several runs: traversal Mrays/s (primary, diffuse, shadow; BVH on and off),
       path tracing spp/s and Mpaths/s with each toggle flipped, BLAS/TLAS build and refit
-      times (CPU binned SAH; GPU LBVH and PLOC with the cuda backend), edit-to-first-frame
+      times (CPU binned SAH; GPU LBVH, PLOC and H-PLOC with the cuda backend), edit-to-first-frame
       latency, and the largest deviation of the backend's image from the CPU's.
 )",
      kToggles},
@@ -92,8 +92,8 @@ constexpr const char* kToggleText =
   --gpu-wide-bvh (the GPU walks compressed 8-wide BLASes), --no-gpu-first-build (the GPU's
   first frame waits for the host's SAH trees of large meshes, instead of walking trees built
   on the GPU while those build behind it), --no-ploc (the GPU builds BLASes, for first frames
-  and rebuilds, as LBVHs instead of by PLOC: faster to build, 1.09-1.21x the binned SAH cost
-  where PLOC is at 1.03-1.15x)
+  and rebuilds, as LBVHs instead of by H-PLOC: faster to build, 1.09-1.21x the binned SAH cost
+  where H-PLOC is at 1.04-1.10x)
 )";
 
 constexpr const char* kDisplayText =

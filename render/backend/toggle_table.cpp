@@ -35,7 +35,7 @@ const std::vector<ToggleRow>& toggleTable() {
          "compressed 8-wide BVH", "--gpu-wide-bvh", "", &T::gpuWideBvh, false, S::GpuScheduling},
         {ToggleId::GpuFirstBuild, "gpu_first_build", "First frame from a GPU-built BVH (SAH behind it)",
          "GPU first build", "", "--no-gpu-first-build", &T::gpuFirstBuild, false, S::GpuScheduling},
-        {ToggleId::GpuPloc, "gpu_ploc", "GPU BVH builds by PLOC (else LBVH)", "PLOC GPU builds", "",
+        {ToggleId::GpuPloc, "gpu_ploc", "GPU BVH builds by H-PLOC (else LBVH)", "H-PLOC GPU builds", "",
          "--no-ploc", &T::gpuPloc, false, S::GpuScheduling},
         {ToggleId::FirstHitCache, "first_hit_cache", "First-hit cache", "first-hit cache", "",
          "--no-first-hit-cache", &T::firstHitCache, false, S::GpuScheduling},

@@ -1,5 +1,7 @@
 #include "pt_render/bench/bench_bvh.h"
 
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "render/bvh/binned_sah_builder.h"
@@ -44,8 +46,10 @@ void addBuildRows(BenchReport& report, const char* builder, double seconds, uint
 void addDeviceRows(const DeviceBvhFigures& gpu, uint32_t tris, uint32_t instances, float cpuSah,
                    BenchReport& report) {
     addBuildRows(report, "GPU LBVH", gpu.buildSeconds, tris, cpuSah > 0 ? gpu.sahCost / cpuSah : 0.0);
-    addBuildRows(report, gpu.plocFellBack ? "GPU PLOC, fell back to LBVH" : "GPU PLOC", gpu.plocSeconds, tris,
-                 cpuSah > 0 ? gpu.plocSahCost / cpuSah : 0.0);
+    for (const auto& [name, build] : {std::pair{"GPU PLOC", gpu.ploc}, std::pair{"GPU H-PLOC", gpu.hploc}}) {
+        addBuildRows(report, (std::string(name) + (build.fellBack ? ", fell back to LBVH" : "")).c_str(),
+                     build.seconds, tris, cpuSah > 0 ? build.sahCost / cpuSah : 0.0);
+    }
     report.add({"BVH", "BLAS refit (GPU)", "LBVH", gpu.refitSeconds * 1e3, "ms", ""});
     report.add({"BVH", "BLAS refit (GPU)", "CPU binned SAH tree", gpu.refitCpuTreeSeconds * 1e3, "ms", ""});
     report.add({"BVH", "TLAS build (GPU LBVH)", std::to_string(instances) + " instances",

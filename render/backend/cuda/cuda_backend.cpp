@@ -313,7 +313,7 @@ bool CudaBackend::refitBlas(uint32_t i, SyncReport& report) {
     bool rebuilt = false;
     const float cost = blasSahCost(i);
     if (cost > toggles_.rebuildSahRatio * builtSah_[i]) {
-        timedStep(stream_, report, toggles_.gpuPloc ? "rebuild BLAS (GPU PLOC)" : "rebuild BLAS (GPU LBVH)",
+        timedStep(stream_, report, toggles_.gpuPloc ? "rebuild BLAS (GPU H-PLOC)" : "rebuild BLAS (GPU LBVH)",
                   [&] { rebuildBlasOnDevice(i); });
         builtSah_[i] = blasSahCost(i);
         retireSahTree(i);  // a tree of positions this far from the current ones is no better
@@ -346,7 +346,8 @@ void CudaBackend::rebuildBlasOnDevice(uint32_t i) {
     device_.reserveLbvhNodes(i, stream_);  // room for 2n - 1 nodes, on a first rebuild
     const uint32_t primitives = device_.blas(i).primitiveCount;
     if (toggles_.gpuPloc) {
-        ploc_.build(primBoxes_.data(), primitives, device_.blasNodes(i), device_.blasPrimIndices(i), stream_);
+        hploc_.build(primBoxes_.data(), primitives, device_.blasNodes(i), device_.blasPrimIndices(i),
+                     stream_);
     } else {
         lbvh_.build(primBoxes_.data(), primitives, device_.blasNodes(i), device_.blasPrimIndices(i), stream_);
     }
@@ -366,7 +367,7 @@ bool CudaBackend::firstBuildOnGpu(std::string* why) const {
 
 void CudaBackend::buildDeferredBlasesOnDevice(SyncReport& report) {
     if (compiled_->deferredBlases.empty()) return;
-    const char* step = toggles_.gpuPloc ? "build BLAS (GPU PLOC; SAH on the host behind it)"
+    const char* step = toggles_.gpuPloc ? "build BLAS (GPU H-PLOC; SAH on the host behind it)"
                                         : "build BLAS (GPU LBVH; SAH on the host behind it)";
     timedStep(stream_, report, step, [&] {
         for (const DeferredBlas& deferred : compiled_->deferredBlases) {
@@ -408,7 +409,7 @@ void CudaBackend::landSahTrees(bool wait) {
     updateView();                    // fitting a region to its tree moved the BLAS nodes
     if (pendingSahTrees_.empty()) {  // the first frame's build memory back (a GPU rebuild allocates it again)
         lbvh_.release();
-        ploc_.release();
+        hploc_.release();
         primBoxes_ = {};
     }
 }
@@ -755,7 +756,7 @@ std::vector<std::pair<std::string, uint64_t>> CudaBackend::deviceMemoryByBuffer(
     rows.emplace_back("BVH scratch (primitive boxes)", primBoxes_.bytes());
     rows.emplace_back("BVH scratch (refit visits)", refitVisits_.bytes());
     rows.emplace_back("BVH scratch (LBVH builder)", lbvh_.bytes());
-    rows.emplace_back("BVH scratch (PLOC builder)", ploc_.bytes());
+    rows.emplace_back("BVH scratch (H-PLOC builder)", hploc_.bytes());
     rows.emplace_back("ray queries", queryRays_.bytes() + queryHits_.bytes());
     return rows;
 }

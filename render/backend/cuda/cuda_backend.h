@@ -105,7 +105,7 @@ private:
     void buildTlasOnDevice(SyncReport& report);
     // BLAS i's boxes made the exact bounds of its primitives' current boxes (primBoxes_).
     void refitToPrimitives(uint32_t i);
-    // A GPU build of BLAS i over primBoxes_ (its primitives' boxes), in place of its tree: PLOC,
+    // A GPU build of BLAS i over primBoxes_ (its primitives' boxes), in place of its tree: H-PLOC,
     // or an LBVH without IntegratorToggles::gpuPloc.
     void rebuildBlasOnDevice(uint32_t i);
     // The first frame's trees of the meshes the compile deferred (IntegratorToggles::
@@ -136,7 +136,7 @@ private:
     std::vector<PinnedRange> pinnedVertices_;
     DeviceScene device_;
     LbvhBuilder lbvh_;  // BLAS builds without gpuPloc, and the TLAS beyond kHostTlasMaxInstances
-    PlocBuilder ploc_;
+    HplocBuilder hploc_;
     PathScheduler scheduler_;
     ScheduleChooser scheduleChooser_;
     DeviceBuffer<double> sum_;

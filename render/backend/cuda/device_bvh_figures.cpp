@@ -21,6 +21,18 @@ double medianDeviceSeconds(uint32_t runs, cudaStream_t stream, Queue&& queue) {
     return seconds[seconds.size() / 2];
 }
 
+template <class Builder>
+ClusteringBuildFigures measureClusteringBuild(const Aabb* boxes, uint32_t n, BvhNode* nodes,
+                                              uint32_t* primIndices, uint32_t runs, cudaStream_t stream) {
+    Builder builder;
+    ClusteringBuildFigures figures;
+    figures.seconds =
+        medianDeviceSeconds(runs, stream, [&] { builder.build(boxes, n, nodes, primIndices, stream); });
+    figures.sahCost = sahCostOnDevice(nodes, lbvhNodeCount(n), stream);
+    figures.fellBack = builder.lastBuildFellBack();
+    return figures;
+}
+
 }  // namespace
 
 DeviceBvhFigures measureDeviceBvhBuilds(const BvhBuildInput& in, uint32_t runs, cudaStream_t stream) {
@@ -36,14 +48,11 @@ DeviceBvhFigures measureDeviceBvhBuilds(const BvhBuildInput& in, uint32_t runs, 
     figures.buildSeconds = medianDeviceSeconds(
         runs, stream, [&] { builder.build(boxes.data(), n, nodes.data(), primIndices.data(), stream); });
     figures.sahCost = sahCostOnDevice(nodes.data(), lbvhNodeCount(n), stream);
-    {
-        PlocBuilder ploc;
-        figures.plocSeconds = medianDeviceSeconds(
-            runs, stream, [&] { ploc.build(boxes.data(), n, nodes.data(), primIndices.data(), stream); });
-        figures.plocSahCost = sahCostOnDevice(nodes.data(), lbvhNodeCount(n), stream);
-        figures.plocFellBack = ploc.lastBuildFellBack();
-        builder.build(boxes.data(), n, nodes.data(), primIndices.data(), stream);  // the LBVH again, to refit
-    }
+    figures.ploc =
+        measureClusteringBuild<PlocBuilder>(boxes.data(), n, nodes.data(), primIndices.data(), runs, stream);
+    figures.hploc =
+        measureClusteringBuild<HplocBuilder>(boxes.data(), n, nodes.data(), primIndices.data(), runs, stream);
+    builder.build(boxes.data(), n, nodes.data(), primIndices.data(), stream);  // the LBVH again, to refit
 
     computeParents(nodes.data(), lbvhNodeCount(n), parents.data(), stream);
     figures.refitSeconds = medianDeviceSeconds(runs, stream, [&] {

@@ -1,5 +1,5 @@
 // The first frame of a large mesh from a BVH built on the GPU (IntegratorToggles::gpuFirstBuild):
-// the sync builds a tree on the device (PLOC, or an LBVH without gpuPloc) instead of waiting for
+// the sync builds a tree on the device (H-PLOC, or an LBVH without gpuPloc) instead of waiting for
 // the host's SAH tree, which
 // builds on a thread behind it and is swapped in when done. No hit and no pixel changes on the
 // way, and a tree that lands after an edit is refitted to it. Skips without a device.
@@ -20,7 +20,7 @@
 namespace pt {
 namespace {
 
-constexpr const char* kGpuFirstBuildStep = "build BLAS (GPU PLOC; SAH on the host behind it)";
+constexpr const char* kGpuFirstBuildStep = "build BLAS (GPU H-PLOC; SAH on the host behind it)";
 constexpr const char* kLbvhFirstBuildStep = "build BLAS (GPU LBVH; SAH on the host behind it)";
 
 // A soup over the GPU first build's threshold (1 << 18 primitives), drawn twice, and a small
@@ -45,7 +45,7 @@ IntegratorToggles fixedSchedule(bool gpuFirstBuild) {
 }
 
 // A first build of `scene` whose edits will refit and never rebuild. By LBVH: its cost is
-// above the SAH tree's (PLOC's may be below), so a fall in cost shows that tree landed.
+// above the SAH tree's (H-PLOC's may be below), so a fall in cost shows that tree landed.
 void syncForRefits(cuda::CudaBackend& backend, const Scene& scene) {
     IntegratorToggles neverRebuild = fixedSchedule(true);
     neverRebuild.rebuildSahRatio = 1e9f;
@@ -62,8 +62,8 @@ TEST(CudaFirstBuild, TheFirstFrameWalksAGpuBuildAndTheSahTreeLandsBehindIt) {
     hostBuilt.setToggles(fixedSchedule(false));
     EXPECT_TRUE(hasStep(deferred.sync(scene, SceneChanges::All, {}), kGpuFirstBuildStep));
     EXPECT_FALSE(hasStep(hostBuilt.sync(scene, SceneChanges::All, {}), kGpuFirstBuildStep));
-    const float plocCost = deferred.blasSahCost(0), sahCost = hostBuilt.blasSahCost(0);
-    EXPECT_NE(plocCost, sahCost) << "the first frame's tree should be the GPU's";
+    const float hplocCost = deferred.blasSahCost(0), sahCost = hostBuilt.blasSahCost(0);
+    EXPECT_NE(hplocCost, sahCost) << "the first frame's tree should be the GPU's";
     {
         cuda::CudaBackend lbvhFirst;
         IntegratorToggles lbvh = fixedSchedule(true);
@@ -71,14 +71,14 @@ TEST(CudaFirstBuild, TheFirstFrameWalksAGpuBuildAndTheSahTreeLandsBehindIt) {
         lbvhFirst.setToggles(lbvh);
         EXPECT_TRUE(hasStep(lbvhFirst.sync(scene, SceneChanges::All, {}), kLbvhFirstBuildStep));
         const float lbvhCost = lbvhFirst.blasSahCost(0);
-        std::cout << "[ sah      ] first frame's BLAS of 300,000 triangles: PLOC " << plocCost << ", LBVH "
+        std::cout << "[ sah      ] first frame's BLAS of 300,000 triangles: H-PLOC " << hplocCost << ", LBVH "
                   << lbvhCost << ", host binned SAH " << sahCost << "\n";
-        EXPECT_LT(plocCost, lbvhCost) << "PLOC's tree should cost less to walk than the LBVH's";
+        EXPECT_LT(hplocCost, lbvhCost) << "H-PLOC's tree should cost less to walk than the LBVH's";
     }
     EXPECT_EQ(deferred.blasSahCost(1), hostBuilt.blasSahCost(1))
         << "a mesh under the threshold, built on the host";
 
-    EXPECT_GT(test::bufferBytes(deferred, "BVH scratch (PLOC builder)"), 1u << 20);
+    EXPECT_GT(test::bufferBytes(deferred, "BVH scratch (H-PLOC builder)"), 1u << 20);
     const std::vector<Ray> rays = test::soupRays(100000, 3);
     test::expectSameHits(deferred, hostBuilt, rays, "GPU first build vs host SAH");
     deferred.render(2);               // on the GPU's tree, or on the SAH tree where it was done
@@ -86,7 +86,7 @@ TEST(CudaFirstBuild, TheFirstFrameWalksAGpuBuildAndTheSahTreeLandsBehindIt) {
     EXPECT_EQ(deferred.blasSahCost(0), sahCost) << "the host's SAH tree should have landed";
     EXPECT_FALSE(deferred.finishBackgroundWork().has_value()) << "work left after finishing it";
     // The first build's scratch went with it (300,000 boxes are 7 MiB).
-    EXPECT_EQ(test::bufferBytes(deferred, "BVH scratch (PLOC builder)"), 0u);
+    EXPECT_EQ(test::bufferBytes(deferred, "BVH scratch (H-PLOC builder)"), 0u);
     EXPECT_EQ(test::bufferBytes(deferred, "BVH scratch (LBVH builder)"), 0u);
     EXPECT_EQ(test::bufferBytes(deferred, "BVH scratch (primitive boxes)"), 0u);
     EXPECT_EQ(test::bufferBytes(deferred, "BLAS nodes"), test::bufferBytes(hostBuilt, "BLAS nodes"))
