@@ -70,15 +70,16 @@ const uint8_t* viewRange(const GltfContext& ctx, int viewIndex, size_t offset, s
         viewData = decoded->data();  // its bytes as decoded; the fallback buffer may hold none
         viewBytes = std::min(decoded->size(), view.byteLength);
     } else {
-        const auto& buffer = gltfElement(ctx, model.buffers, view.buffer, use.element,
-                                         ("bufferView " + std::to_string(viewIndex) + " buffer").c_str());
-        const size_t bufferBytes = buffer.data.size();
+        gltfElement(ctx, model.buffers, view.buffer, use.element,
+                    ("bufferView " + std::to_string(viewIndex) + " buffer").c_str());
+        const GltfBufferBytes buffer = gltfBufferBytes(ctx.doc, view.buffer);
+        const size_t bufferBytes = buffer.size;
         if (view.byteOffset > bufferBytes || view.byteLength > bufferBytes - view.byteOffset) {
             ctx.fail(use.element, "bufferView " + std::to_string(viewIndex) +
                                       " runs past the end of buffer " + std::to_string(view.buffer) + " (" +
                                       std::to_string(bufferBytes) + " bytes)");
         }
-        viewData = buffer.data.data() + view.byteOffset;
+        viewData = buffer.data + view.byteOffset;
     }
     const size_t available = offset <= viewBytes ? viewBytes - offset : 0;
     if (offset > viewBytes || elementBytes > available || count - 1 > (available - elementBytes) / stride) {

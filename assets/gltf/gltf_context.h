@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "assets/input_error.h"
+#include "assets/mapped_file.h"
 #include "render/animation/skin_vertex.h"
 #include "render/scene/scene.h"
 
@@ -24,7 +25,22 @@ struct GltfDocument {
     std::string path;     // as given
     std::string baseDir;  // folder of the file, for external buffers and images
     tinygltf::Model model;
+    // Buffers whose bytes are a mapped file (gltf_external_buffers.h); tinygltf's model holds a
+    // 4-byte stand-in for each.
+    std::map<int, MappedFile> mappedBuffers;
 };
+
+// Buffer `index`'s bytes (an index the caller checked): its mapped file's, else tinygltf's.
+struct GltfBufferBytes {
+    const uint8_t* data = nullptr;
+    size_t size = 0;
+};
+inline GltfBufferBytes gltfBufferBytes(const GltfDocument& doc, int index) {
+    if (const auto mapped = doc.mappedBuffers.find(index); mapped != doc.mappedBuffers.end())
+        return {mapped->second.data(), mapped->second.size()};
+    const std::vector<unsigned char>& data = doc.model.buffers[size_t(index)].data;
+    return {data.data(), data.size()};
+}
 
 // One glTF mesh as it landed in the Scene: the Scene mesh and, per mesh slot, the glTF
 // material of the primitive that owns the slot (-1: the glTF default material) and the one

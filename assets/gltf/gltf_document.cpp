@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "assets/file_state.h"
+#include "assets/gltf/gltf_external_buffers.h"
 #include "assets/gltf/gltf_glb_bin.h"
 #include "assets/gltf/gltf_json_check.h"
 #include "assets/gltf/gltf_tinygltf_compat.h"
@@ -177,7 +178,8 @@ GltfDocument loadGltfDocument(const std::string& path) {
     // A .glb's BIN chunk: tinygltf parses the JSON alone, and the file's bytes become buffer 0.
     const std::optional<DetachedGlbBin> detached =
         binary && glb->binChunk != 0 ? detachGlbBin(root) : std::nullopt;
-    if (adapted || detached) {
+    const std::vector<ExternalBufferFile> external = detachExternalBuffers(root, doc.baseDir);
+    if (adapted || detached || !external.empty()) {
         jsonText = root.dump();
         if (binary && !detached) bytes = replaceGlbJson(bytes, *glb, jsonText);
     }
@@ -202,6 +204,8 @@ GltfDocument loadGltfDocument(const std::string& path) {
         bytes.erase(bytes.begin(), bytes.begin() + std::ptrdiff_t(glb->binChunk + 8));
         attachGlbBin(doc.model, *detached, std::move(bytes));
     }
+    for (const ExternalBufferFile& file : external)
+        doc.mappedBuffers.emplace(file.buffer, MappedFile(file.path, doc.label));
     return doc;
 }
 

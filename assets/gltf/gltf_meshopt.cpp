@@ -68,14 +68,14 @@ MeshoptView parse(const GltfContext& ctx, const tinygltf::Value& ext, const std:
 }
 
 std::vector<uint8_t> decode(const GltfContext& ctx, const MeshoptView& m, const std::string& element) {
-    const auto& buffer = gltfElement(ctx, ctx.model().buffers, m.buffer, element + ".buffer", "buffer");
-    if (m.byteOffset > buffer.data.size() || m.byteLength > buffer.data.size() - m.byteOffset) {
+    gltfElement(ctx, ctx.model().buffers, m.buffer, element + ".buffer", "buffer");
+    const GltfBufferBytes buffer = gltfBufferBytes(ctx.doc, m.buffer);
+    if (m.byteOffset > buffer.size || m.byteLength > buffer.size - m.byteOffset) {
         ctx.fail(element, "bytes [" + std::to_string(m.byteOffset) + ", " +
                               std::to_string(m.byteOffset + m.byteLength) + ") run past the end of buffer " +
-                              std::to_string(m.buffer) + " (" + std::to_string(buffer.data.size()) +
-                              " bytes)");
+                              std::to_string(m.buffer) + " (" + std::to_string(buffer.size) + " bytes)");
     }
-    const unsigned char* source = buffer.data.data() + m.byteOffset;
+    const unsigned char* source = buffer.data + m.byteOffset;
     std::vector<uint8_t> out(size_t(m.count * m.byteStride));
     const size_t count = size_t(m.count), stride = size_t(m.byteStride), length = size_t(m.byteLength);
     const int status =
