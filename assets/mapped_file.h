@@ -8,6 +8,12 @@
 
 namespace pt {
 
+// Bytes someone else owns.
+struct ByteSpan {
+    const uint8_t* data = nullptr;
+    size_t size = 0;
+};
+
 class MappedFile {
 public:
     MappedFile() = default;
@@ -21,6 +27,7 @@ public:
 
     const uint8_t* data() const { return static_cast<const uint8_t*>(data_); }
     size_t size() const { return size_; }
+    ByteSpan bytes() const { return {data(), size_}; }
 
 private:
     void unmap();

@@ -72,7 +72,7 @@ const uint8_t* viewRange(const GltfContext& ctx, int viewIndex, size_t offset, s
     } else {
         gltfElement(ctx, model.buffers, view.buffer, use.element,
                     ("bufferView " + std::to_string(viewIndex) + " buffer").c_str());
-        const GltfBufferBytes buffer = gltfBufferBytes(ctx.doc, view.buffer);
+        const ByteSpan buffer = gltfBufferBytes(ctx.doc, view.buffer);
         const size_t bufferBytes = buffer.size;
         if (view.byteOffset > bufferBytes || view.byteLength > bufferBytes - view.byteOffset) {
             ctx.fail(use.element, "bufferView " + std::to_string(viewIndex) +

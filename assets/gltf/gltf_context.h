@@ -25,19 +25,17 @@ struct GltfDocument {
     std::string path;     // as given
     std::string baseDir;  // folder of the file, for external buffers and images
     tinygltf::Model model;
-    // Buffers whose bytes are a mapped file (gltf_external_buffers.h); tinygltf's model holds a
-    // 4-byte stand-in for each.
-    std::map<int, MappedFile> mappedBuffers;
+    // Files mapped for the import (mapped_file.h): a .glb itself, a .gltf's buffer files.
+    std::vector<MappedFile> mappedFiles;
+    // Buffers whose bytes lie in those files (a .glb's BIN chunk: gltf_glb_bin.h; a buffer
+    // file: gltf_external_buffers.h); tinygltf's model holds a stand-in for each.
+    std::map<int, ByteSpan> mappedBuffers;
 };
 
-// Buffer `index`'s bytes (an index the caller checked): its mapped file's, else tinygltf's.
-struct GltfBufferBytes {
-    const uint8_t* data = nullptr;
-    size_t size = 0;
-};
-inline GltfBufferBytes gltfBufferBytes(const GltfDocument& doc, int index) {
+// Buffer `index`'s bytes (an index the caller checked): in a mapped file, else tinygltf's.
+inline ByteSpan gltfBufferBytes(const GltfDocument& doc, int index) {
     if (const auto mapped = doc.mappedBuffers.find(index); mapped != doc.mappedBuffers.end())
-        return {mapped->second.data(), mapped->second.size()};
+        return mapped->second;
     const std::vector<unsigned char>& data = doc.model.buffers[size_t(index)].data;
     return {data.data(), data.size()};
 }

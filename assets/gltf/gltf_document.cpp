@@ -24,13 +24,19 @@ namespace {
 // tinygltf takes sizes as unsigned int; nothing larger can be handed to it.
 constexpr uint64_t kMaxFileBytes = std::numeric_limits<uint32_t>::max();
 
-std::vector<uint8_t> readWholeFile(const std::string& path, const std::string& label) {
+// The size of a regular file tinygltf can be given, or an InputError saying why not.
+size_t readableFileSize(const std::string& path, const std::string& label) {
     std::error_code error;
     const auto size = std::filesystem::file_size(path, error);
     if (error || !std::filesystem::is_regular_file(path, error)) {
         throw InputError(label + ": cannot open '" + path + "'");
     }
     if (size > kMaxFileBytes) throw InputError(label + ": file larger than 4 GiB");
+    return size_t(size);
+}
+
+std::vector<uint8_t> readWholeFile(const std::string& path, const std::string& label) {
+    const size_t size = readableFileSize(path, label);
     std::vector<uint8_t> bytes;
     reserveOnHugePages(bytes, size);
     bytes.resize(size);
@@ -41,9 +47,9 @@ std::vector<uint8_t> readWholeFile(const std::string& path, const std::string& l
     return bytes;
 }
 
-uint32_t readU32(const std::vector<uint8_t>& bytes, size_t offset) {
+uint32_t readU32(const ByteSpan& bytes, size_t offset) {
     uint32_t v;  // GLB is little-endian, like every machine we build for
-    std::memcpy(&v, bytes.data() + offset, 4);
+    std::memcpy(&v, bytes.data + offset, 4);
     return v;
 }
 
@@ -55,21 +61,21 @@ struct GlbChunks {
     size_t binChunk = 0;  // where the BIN chunk's header starts (0: no BIN chunk)
 };
 
-GlbChunks splitGlb(const std::vector<uint8_t>& bytes, const std::string& label) {
+GlbChunks splitGlb(const ByteSpan& bytes, const std::string& label) {
     auto fail = [&](const std::string& what) { throw InputError(label + ": GLB " + what); };
-    if (bytes.size() < 20) fail("header: file too short");
+    if (bytes.size < 20) fail("header: file too short");
     if (readU32(bytes, 4) != 2)
         fail("header: version " + std::to_string(readU32(bytes, 4)) + " is not supported (expected 2)");
     const uint64_t length = readU32(bytes, 8);
-    if (length > bytes.size()) {
+    if (length > bytes.size) {
         fail("header: length " + std::to_string(length) + " is past the end of the file (" +
-             std::to_string(bytes.size()) + " bytes)");
+             std::to_string(bytes.size) + " bytes)");
     }
     const uint64_t jsonLength = readU32(bytes, 12);
     if (readU32(bytes, 16) != 0x4E4F534Au) fail("chunk 0: not a JSON chunk");
     if (jsonLength == 0 || 20 + jsonLength > length) fail("chunk 0: length runs past the file");
     GlbChunks chunks;
-    chunks.json.assign(reinterpret_cast<const char*>(bytes.data()) + 20, size_t(jsonLength));
+    chunks.json.assign(reinterpret_cast<const char*>(bytes.data) + 20, size_t(jsonLength));
     const uint64_t binHeader = 20 + jsonLength;
     if (binHeader == length) return chunks;
     if (binHeader + 8 > length) fail("chunk 1: header runs past the file");
@@ -91,20 +97,19 @@ void appendU32(std::vector<uint8_t>& out, uint32_t v) {
 
 // The .glb with its JSON chunk replaced by `json` (padded with spaces to 4 bytes, as the
 // spec asks) and its BIN chunk as it was.
-std::vector<uint8_t> replaceGlbJson(const std::vector<uint8_t>& bytes, const GlbChunks& chunks,
-                                    std::string json) {
+std::vector<uint8_t> replaceGlbJson(const ByteSpan& bytes, const GlbChunks& chunks, std::string json) {
     while (json.size() % 4 != 0) json += ' ';
     const size_t binChunkBytes = chunks.binChunk ? 8 + chunks.binBytes : 0;
     std::vector<uint8_t> out;
     out.reserve(20 + json.size() + binChunkBytes);
-    out.insert(out.end(), bytes.begin(), bytes.begin() + 8);  // magic, version
+    out.insert(out.end(), bytes.data, bytes.data + 8);  // magic, version
     appendU32(out, uint32_t(20 + json.size() + binChunkBytes));
     appendU32(out, uint32_t(json.size()));
     appendU32(out, 0x4E4F534Au);
     out.insert(out.end(), json.begin(), json.end());
     if (chunks.binChunk) {
-        const auto bin = bytes.begin() + std::ptrdiff_t(chunks.binChunk);
-        out.insert(out.end(), bin, bin + std::ptrdiff_t(binChunkBytes));
+        const uint8_t* bin = bytes.data + chunks.binChunk;
+        out.insert(out.end(), bin, bin + binChunkBytes);
     }
     return out;
 }
@@ -158,12 +163,14 @@ GltfDocument loadGltfDocument(const std::string& path) {
     const std::string parent = std::filesystem::path(path).parent_path().string();
     doc.baseDir = parent.empty() ? "." : parent;
 
-    std::vector<uint8_t> bytes = readWholeFile(path, doc.label);
-    const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    readableFileSize(path, doc.label);  // its messages, before the mapping's
+    MappedFile mapped(path, doc.label);
+    const ByteSpan bytes = mapped.bytes();
+    const bool binary = bytes.size >= 4 && std::memcmp(bytes.data, "glTF", 4) == 0;
     std::optional<GlbChunks> glb;
     if (binary) glb = splitGlb(bytes, doc.label);
     std::string jsonText =
-        binary ? glb->json : std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+        binary ? glb->json : std::string(reinterpret_cast<const char*>(bytes.data), bytes.size);
 
     checkJsonDepth(jsonText, doc.label);  // before nlohmann and tinygltf recurse over it
     nlohmann::json root;
@@ -179,33 +186,40 @@ GltfDocument loadGltfDocument(const std::string& path) {
     const std::optional<DetachedGlbBin> detached =
         binary && glb->binChunk != 0 ? detachGlbBin(root) : std::nullopt;
     const std::vector<ExternalBufferFile> external = detachExternalBuffers(root, doc.baseDir);
+    std::vector<uint8_t> rewrittenGlb;  // a .glb whose JSON changed and whose chunk tinygltf reads
     if (adapted || detached || !external.empty()) {
         jsonText = root.dump();
-        if (binary && !detached) bytes = replaceGlbJson(bytes, *glb, jsonText);
+        if (binary && !detached) rewrittenGlb = replaceGlbJson(bytes, *glb, jsonText);
     }
+    const ByteSpan glbForTinygltf =
+        rewrittenGlb.empty() ? bytes : ByteSpan{rewrittenGlb.data(), rewrittenGlb.size()};
 
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&keepEncodedImage, nullptr);
     loader.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readFileForTinygltf,
                            &tinygltf::WriteWholeFile, nullptr});
     std::string err, warn;
-    const bool ok = binary && !detached ? loader.LoadBinaryFromMemory(&doc.model, &err, &warn, bytes.data(),
-                                                                      unsigned(bytes.size()), doc.baseDir)
-                                        : loader.LoadASCIIFromString(&doc.model, &err, &warn, jsonText.data(),
-                                                                     unsigned(jsonText.size()), doc.baseDir);
+    const bool ok = binary && !detached
+                        ? loader.LoadBinaryFromMemory(&doc.model, &err, &warn, glbForTinygltf.data,
+                                                      unsigned(glbForTinygltf.size), doc.baseDir)
+                        : loader.LoadASCIIFromString(&doc.model, &err, &warn, jsonText.data(),
+                                                     unsigned(jsonText.size()), doc.baseDir);
     // tinygltf appends some errors without failing; both are bad input. Its warnings are
     // only about external images, which the texture stage reports per image itself.
     if (!ok || !err.empty()) {
         throw InputError(doc.label + ": " + (err.empty() ? "tinygltf failed" : summarize(err)));
     }
     if (detached) {
-        // The chunk's bytes moved down over the header and the JSON: no second array.
-        bytes.resize(glb->binChunk + 8 + detached->byteLength);  // at most the chunk (checked)
-        bytes.erase(bytes.begin(), bytes.begin() + std::ptrdiff_t(glb->binChunk + 8));
-        attachGlbBin(doc.model, *detached, std::move(bytes));
+        // Buffer 0 is the chunk where it lies in the mapped file (its length checked against
+        // the chunk's).
+        attachGlbBin(doc.model, *detached);
+        doc.mappedBuffers[0] = {bytes.data + glb->binChunk + 8, detached->byteLength};
+        doc.mappedFiles.push_back(std::move(mapped));
     }
-    for (const ExternalBufferFile& file : external)
-        doc.mappedBuffers.emplace(file.buffer, MappedFile(file.path, doc.label));
+    for (const ExternalBufferFile& file : external) {
+        doc.mappedFiles.emplace_back(file.path, doc.label);  // a move keeps the mapping where it is
+        doc.mappedBuffers[file.buffer] = doc.mappedFiles.back().bytes();
+    }
     return doc;
 }
 

@@ -48,10 +48,9 @@ std::optional<DetachedGlbBin> detachGlbBin(nlohmann::json& root) {
     return detached;
 }
 
-void attachGlbBin(tinygltf::Model& model, const DetachedGlbBin& detached, std::vector<uint8_t> bin) {
-    bin.resize(detached.byteLength);
+void attachGlbBin(tinygltf::Model& model, const DetachedGlbBin& detached) {
     tinygltf::Buffer& buffer = model.buffers.at(0);
-    buffer.data = std::move(bin);
+    buffer.data.clear();  // the stand-in's: the import reads the chunk (GltfDocument::mappedBuffers)
     buffer.uri.clear();
     for (const DetachedGlbBin::ImageView& view : detached.imageViews) {
         tinygltf::Image& image = model.images.at(view.image);

@@ -1,11 +1,11 @@
 #pragma once
-// The BIN chunk of a .glb given to tinygltf's model without a copy. tinygltf 2.7 copies the
-// chunk into buffer 0 (a fresh array as large as the file, zeroed, then filled): the 10M-triangle
-// sphere as a .glb loaded in 0.36-0.41 s on a 2-core machine, against 0.28-0.34 s as .gltf and
-// .bin (0.25-0.38 s as a .glb with this). So tinygltf parses the JSON
-// with buffer 0, and every image in a bufferView (whose bytes tinygltf would read at load),
-// standing in as 4-byte data URIs; then the file's own bytes, moved down over the header,
-// become buffer 0 and the images get their bufferViews back.
+// The BIN chunk of a .glb read where it lies in the mapped file, without a copy. tinygltf 2.7
+// copies the chunk into buffer 0 (a fresh array as large as the file, zeroed, then filled): the
+// 10M-triangle sphere as a .glb loaded in 0.36-0.41 s on a 2-core machine, against 0.28-0.34 s
+// as .gltf and .bin. So tinygltf parses the JSON with buffer 0, and every image in a bufferView
+// (whose bytes tinygltf would read at load), standing in as 4-byte data URIs; then buffer 0's
+// bytes are the chunk's in the mapped file (GltfDocument::mappedBuffers) and the images get their
+// bufferViews back.
 // Internal to pt_assets.
 #include <cstddef>
 #include <cstdint>
@@ -35,8 +35,8 @@ struct DetachedGlbBin {
 // buffer 0 is the only buffer without a uri; otherwise nullopt and `root` as it was.
 std::optional<DetachedGlbBin> detachGlbBin(nlohmann::json& root);
 
-// `bin` (at least byteLength bytes: the BIN chunk's) becomes buffer 0's data, and the images
-// are as tinygltf leaves images in bufferViews.
-void attachGlbBin(tinygltf::Model& model, const DetachedGlbBin& detached, std::vector<uint8_t> bin);
+// Buffer 0 without the stand-in's bytes (the caller points GltfDocument::mappedBuffers at the
+// chunk), and the images as tinygltf leaves images in bufferViews.
+void attachGlbBin(tinygltf::Model& model, const DetachedGlbBin& detached);
 
 }  // namespace pt

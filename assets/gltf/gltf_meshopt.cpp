@@ -69,7 +69,7 @@ MeshoptView parse(const GltfContext& ctx, const tinygltf::Value& ext, const std:
 
 std::vector<uint8_t> decode(const GltfContext& ctx, const MeshoptView& m, const std::string& element) {
     gltfElement(ctx, ctx.model().buffers, m.buffer, element + ".buffer", "buffer");
-    const GltfBufferBytes buffer = gltfBufferBytes(ctx.doc, m.buffer);
+    const ByteSpan buffer = gltfBufferBytes(ctx.doc, m.buffer);
     if (m.byteOffset > buffer.size || m.byteLength > buffer.size - m.byteOffset) {
         ctx.fail(element, "bytes [" + std::to_string(m.byteOffset) + ", " +
                               std::to_string(m.byteOffset + m.byteLength) + ") run past the end of buffer " +
