@@ -167,6 +167,46 @@ void flattenGeometry(const Scene& scene, CompiledScene& out) {
     out.stats.blasCount = uint32_t(out.blases.size());
 }
 
+LargeArray<Aabb> primitiveBoundsOf(const CompiledScene& out, const BlasRef& blas) {
+    // Every box is written below, in parallel (a scan of 10M triangles is one mesh): a
+    // std::vector would first fill them all on this thread (a 10M-triangle mesh's 240 MB).
+    LargeArray<Aabb> bounds(blas.primitiveCount);
+    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, blas.primitiveCount, 1u << 14),
+                      [&](const tbb::blocked_range<uint32_t>& r) {
+                          for (uint32_t p = r.begin(); p != r.end(); ++p)
+                              bounds[p] = primitiveBounds(out, blas, p);
+                      });
+    return bounds;
+}
+
+Aabb primitivesBounds(const CompiledScene& out, const BlasRef& blas) {
+    using Range = tbb::blocked_range<uint32_t>;
+    // A triangle's box is the union of its corners, so the union of the boxes is that of every
+    // corner: grown straight from the positions, without a box or a kind test per primitive
+    // (primitiveBounds per primitive was three quarters of a 10M-triangle stand-in's time).
+    const bool triangles = blas.kind != GeometryKind::Spheres;
+    return tbb::parallel_reduce(
+        Range(0, blas.primitiveCount, 1u << 14), Aabb{},
+        [&](const Range& r, Aabb acc) {
+            if (!triangles) {
+                for (uint32_t p = r.begin(); p != r.end(); ++p) acc.grow(primitiveBounds(out, blas, p));
+                return acc;
+            }
+            const TriangleIndices* t = out.triangles.data() + blas.primitiveOffset;
+            const Vec3* positions = out.positions.data();
+            for (uint32_t p = r.begin(); p != r.end(); ++p) {
+                acc.grow(positions[t[p].v0]);
+                acc.grow(positions[t[p].v1]);
+                acc.grow(positions[t[p].v2]);
+            }
+            return acc;
+        },
+        [](Aabb a, const Aabb& b) {
+            a.grow(b);
+            return a;
+        });
+}
+
 void buildBlases(CompiledScene& out, const ProgressFn& progress, uint32_t deferFrom) {
     const size_t meshCount = out.blases.size();  // the meshes', then the merged BLAS
     std::vector<Bvh> bvhs(meshCount);
@@ -187,41 +227,21 @@ void buildBlases(CompiledScene& out, const ProgressFn& progress, uint32_t deferF
     // The merged BLAS (always last where there is one) is never deferred: it is rewritten by
     // every compileInstances, on the host.
     const size_t deferrable = out.merged.active() ? meshCount - 1 : meshCount;
-    std::vector<LargeArray<Aabb>> deferredBounds(meshCount);
+    std::vector<uint8_t> deferred(meshCount, 0);
     // Large meshes parallelise inside the builder; many small meshes parallelise here.
     tbb::parallel_for(size_t(0), meshCount, [&](size_t i) {
         const BlasRef& blas = out.blases[i];
-        // Every box is written below, in parallel: a std::vector would first fill them all on
-        // this thread (a 10M-triangle mesh's 240 MB).
-        LargeArray<Aabb> bounds(blas.primitiveCount);
-        const bool deferred = deferFrom > 0 && i < deferrable && blas.primitiveCount >= deferFrom;
-        // In parallel within a mesh too: a scan of 10M triangles is one mesh. A deferred mesh's
-        // stand-in takes the union on the way, not from a second pass over the boxes.
-        using Range = tbb::blocked_range<uint32_t>;
-        const Aabb all = tbb::parallel_reduce(
-            Range(0, blas.primitiveCount, 1u << 14), Aabb{},
-            [&](const Range& r, Aabb acc) {
-                for (uint32_t p = r.begin(); p != r.end(); ++p) {
-                    bounds[p] = primitiveBounds(out, blas, p);
-                    if (deferred) acc.grow(bounds[p]);
-                }
-                return acc;
-            },
-            [](Aabb a, const Aabb& b) {
-                a.grow(b);
-                return a;
-            });
-        if (deferred) {
-            bvhs[i] = singleLeafStandIn(all, blas.primitiveCount);
-            deferredBounds[i] = std::move(bounds);
+        if (deferFrom > 0 && i < deferrable && blas.primitiveCount >= deferFrom) {
+            bvhs[i] = singleLeafStandIn(primitivesBounds(out, blas), blas.primitiveCount);
+            deferred[i] = 1;
             return;
         }
+        const LargeArray<Aabb> bounds = primitiveBoundsOf(out, blas);
         bvhs[i] = buildBinnedSahBvh(bounds.data(), blas.primitiveCount, options);
     });
     out.deferredBlases.clear();
     for (size_t i = 0; i < meshCount; ++i) {
-        if (!deferredBounds[i].empty())
-            out.deferredBlases.push_back({uint32_t(i), std::move(deferredBounds[i])});
+        if (deferred[i]) out.deferredBlases.push_back({uint32_t(i)});
     }
     // A lone BVH becomes the lists, moved (a 10M-triangle mesh's nodes are 320 MiB, which a copy
     // writes into fresh pages); several are copied into lists reserved once.

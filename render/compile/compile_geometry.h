@@ -3,6 +3,7 @@
 // building one BLAS per mesh. BLAS i belongs to Scene::meshes[i].
 #include "render/bvh/aabb.h"
 #include "render/compile/compile_scene.h"
+#include "render/util/large_array.h"
 
 namespace pt {
 
@@ -17,5 +18,12 @@ void buildBlases(CompiledScene& out, const ProgressFn& progress, uint32_t deferF
 
 // The box of primitive p of `blas` as `out` holds it now (what builds and refits start from).
 Aabb primitiveBounds(const CompiledScene& out, const BlasRef& blas, uint32_t p);
+
+// primitiveBounds of every primitive of `blas`, in parallel: what a build of it takes (a
+// DeferredBlas's caller computes them when it can best afford to).
+LargeArray<Aabb> primitiveBoundsOf(const CompiledScene& out, const BlasRef& blas);
+
+// The union of those boxes, in parallel, without storing them: a deferred BLAS's root box.
+Aabb primitivesBounds(const CompiledScene& out, const BlasRef& blas);
 
 }  // namespace pt

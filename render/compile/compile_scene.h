@@ -12,7 +12,6 @@
 #include "render/lights/emitter_table.h"
 #include "render/lights/environment_distribution.h"
 #include "render/scene/scene.h"
-#include "render/util/large_array.h"
 #include "render/util/progress.h"
 
 namespace pt {
@@ -24,18 +23,19 @@ struct CompileOptions {
     bool compressedWideBvh = false;      // the GPU's compressed 8-wide BLASes too (wide_blases.h)
     uint64_t bruteForceBudget = 100000;  // triangles x instances above which bruteForce is refused
     // Meshes of at least this many primitives get a stand-in BLAS (one leaf over them all) and
-    // their primitives' boxes in CompiledScene::deferredBlases, for the caller to build the
-    // tree elsewhere (the CUDA backend: an LBVH on the GPU now, the SAH tree on a thread
-    // behind it). 0: every BLAS is built here.
+    // a CompiledScene::deferredBlases entry, for the caller to build the tree elsewhere (the
+    // CUDA backend: an LBVH on the GPU now, the SAH tree on a thread behind it). 0: every BLAS
+    // is built here.
     uint32_t deferBlasesFrom = 0;
 };
 
 // A mesh BLAS whose tree compileRenderScene left to its caller (CompileOptions::deferBlasesFrom):
 // its nodes are one leaf over all its primitives (exact, as brute force is), whose box is the
-// tree's root box, and its primitive index list is 0 .. n - 1.
+// tree's root box, and its primitive index list is 0 .. n - 1. The caller's build takes the
+// primitives' boxes from primitiveBoundsOf (compile_geometry.h): the CUDA backend computes them
+// beside its upload, off the way to the first frame.
 struct DeferredBlas {
     uint32_t blas;
-    LargeArray<Aabb> primBounds;  // primitive p's box, as a build takes them
 };
 
 struct CompileStats {

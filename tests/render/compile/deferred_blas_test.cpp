@@ -1,6 +1,6 @@
 // CompileOptions::deferBlasesFrom: a mesh at or over the threshold gets a stand-in BLAS (one
-// leaf over all its primitives: exact, as brute force is) and its primitives' boxes for the
-// caller's own build; smaller meshes and the merged BLAS are built as ever.
+// leaf over all its primitives: exact, as brute force is), whose boxes the caller computes for
+// its own build (primitiveBoundsOf); smaller meshes and the merged BLAS are built as ever.
 #include <gtest/gtest.h>
 
 #include "render/bvh/bvh_test_util.h"
@@ -35,11 +35,13 @@ TEST(DeferredBlas, ALargeMeshGetsAStandInAndItsBoxes) {
     ASSERT_EQ(deferred.deferredBlases.size(), 1u);
     const DeferredBlas& d = deferred.deferredBlases[0];
     EXPECT_EQ(d.blas, 0u);
-    ASSERT_EQ(d.primBounds.size(), 5000u);
+    // The boxes the caller's build takes, computed in parallel: primitive p's at p.
+    const LargeArray<Aabb> boxes = primitiveBoundsOf(deferred, deferred.blases[d.blas]);
+    ASSERT_EQ(boxes.size(), 5000u);
     for (uint32_t p = 0; p < 5000; p += 499) {
         const Aabb expected = primitiveBounds(deferred, deferred.blases[0], p);
-        EXPECT_EQ(d.primBounds[p].lo, expected.lo);
-        EXPECT_EQ(d.primBounds[p].hi, expected.hi);
+        EXPECT_EQ(boxes[p].lo, expected.lo);
+        EXPECT_EQ(boxes[p].hi, expected.hi);
     }
     // The stand-in: one leaf over every primitive, in order, with the built tree's root box.
     const BlasRef& standIn = deferred.blases[0];
