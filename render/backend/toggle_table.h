@@ -54,7 +54,7 @@ struct IntegratorToggles {
     bool gpuFirstBuild = true;
     // The GPU backend's builds (the first frame's above, and rebuilds once refits have degraded a
     // tree) by H-PLOC (render/backend/cuda/gpu_bvh.h; Benthin et al. 2024), whose trees cost
-    // 1.04-1.10x the binned SAH build's on an H200; off: by LBVH, faster to build (1M triangles
+    // 1.04-1.14x the binned SAH build's on an H200; off: by LBVH, faster to build (1M triangles
     // in 0.42 ms against 0.80 ms) but at 1.09-1.21x.
     bool gpuPloc = true;
     // A refitted BLAS is rebuilt once its SAH cost exceeds this times its cost when last built.

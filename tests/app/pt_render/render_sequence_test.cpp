@@ -17,6 +17,7 @@ using test::runCli;
 std::string slide() { return "'" + test::testDataPath("gltf/anim_slide.gltf") + "'"; }
 
 TEST(RenderSequence, EachFrameIsPosedAtItsTimeAndWrittenToItsFile) {
+    PT_REQUIRE_OIIO();  // the frames are EXRs
     const std::string folder = test::tempDir() + "/sequence";
     std::filesystem::create_directories(folder);
     const auto r = runCli("render " + slide() + " --frames 0:24:12 --fps 24 --spp 2 --size 24x24 -o " +
