@@ -182,7 +182,8 @@ GltfDocument loadGltfDocument(const std::string& path) {
     checkGltfJson(root,
                   {doc.label, doc.baseDir, binary ? std::optional<size_t>(glb->binBytes) : std::nullopt});
     const bool adapted = adaptGltfForTinygltf(root);
-    // A .glb's BIN chunk: tinygltf parses the JSON alone, and the file's bytes become buffer 0.
+    // A .glb's BIN chunk: tinygltf parses the JSON alone, and buffer 0 is the chunk where it
+    // lies in the mapped file; a .gltf's buffer files are mapped likewise.
     const std::optional<DetachedGlbBin> detached =
         binary && glb->binChunk != 0 ? detachGlbBin(root) : std::nullopt;
     const std::vector<ExternalBufferFile> external = detachExternalBuffers(root, doc.baseDir);

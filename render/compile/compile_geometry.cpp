@@ -179,7 +179,7 @@ LargeArray<Aabb> primitiveBoundsOf(const CompiledScene& out, const BlasRef& blas
     return bounds;
 }
 
-Aabb primitivesBounds(const CompiledScene& out, const BlasRef& blas) {
+Aabb unionOfPrimitiveBounds(const CompiledScene& out, const BlasRef& blas) {
     using Range = tbb::blocked_range<uint32_t>;
     // A triangle's box is the union of its corners, so the union of the boxes is that of every
     // corner: grown straight from the positions, without a box or a kind test per primitive
@@ -232,7 +232,7 @@ void buildBlases(CompiledScene& out, const ProgressFn& progress, uint32_t deferF
     tbb::parallel_for(size_t(0), meshCount, [&](size_t i) {
         const BlasRef& blas = out.blases[i];
         if (deferFrom > 0 && i < deferrable && blas.primitiveCount >= deferFrom) {
-            bvhs[i] = singleLeafStandIn(primitivesBounds(out, blas), blas.primitiveCount);
+            bvhs[i] = singleLeafStandIn(unionOfPrimitiveBounds(out, blas), blas.primitiveCount);
             deferred[i] = 1;
             return;
         }

@@ -24,6 +24,6 @@ Aabb primitiveBounds(const CompiledScene& out, const BlasRef& blas, uint32_t p);
 LargeArray<Aabb> primitiveBoundsOf(const CompiledScene& out, const BlasRef& blas);
 
 // The union of those boxes, in parallel, without storing them: a deferred BLAS's root box.
-Aabb primitivesBounds(const CompiledScene& out, const BlasRef& blas);
+Aabb unionOfPrimitiveBounds(const CompiledScene& out, const BlasRef& blas);
 
 }  // namespace pt
