@@ -16,7 +16,11 @@ MappedFile::MappedFile(const std::string& path, const std::string& label) {
     struct stat info {};
     if (fd < 0 || ::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
         if (fd >= 0) ::close(fd);
-        throw InputError(label + ": cannot map '" + path + "'");
+        throw InputError(label + ": cannot open '" + path + "'");
+    }
+    if (uint64_t(info.st_size) > UINT32_MAX) {
+        ::close(fd);
+        throw InputError(label + ": file larger than 4 GiB");
     }
     size_ = size_t(info.st_size);
     if (size_ > 0) {

@@ -6,18 +6,16 @@
 #include <cstdint>
 #include <string>
 
-namespace pt {
+#include "render/math/span.h"
 
-// Bytes someone else owns.
-struct ByteSpan {
-    const uint8_t* data = nullptr;
-    size_t size = 0;
-};
+namespace pt {
 
 class MappedFile {
 public:
     MappedFile() = default;
-    // Throws InputError "<label>: cannot map '<path>'" where the file cannot be opened or mapped.
+    // Throws InputError "<label>: cannot open '<path>'" where it is no regular file that opens,
+    // "<label>: file larger than 4 GiB" (what a Span counts, and what tinygltf takes) and
+    // "<label>: cannot map '<path>'".
     MappedFile(const std::string& path, const std::string& label);
     MappedFile(MappedFile&& other) noexcept;
     MappedFile& operator=(MappedFile&& other) noexcept;
@@ -27,7 +25,7 @@ public:
 
     const uint8_t* data() const { return static_cast<const uint8_t*>(data_); }
     size_t size() const { return size_; }
-    ByteSpan bytes() const { return {data(), size_}; }
+    Span<const uint8_t> bytes() const { return {data(), uint32_t(size_)}; }
 
 private:
     void unmap();

@@ -72,8 +72,8 @@ const uint8_t* viewRange(const GltfContext& ctx, int viewIndex, size_t offset, s
     } else {
         gltfElement(ctx, model.buffers, view.buffer, use.element,
                     ("bufferView " + std::to_string(viewIndex) + " buffer").c_str());
-        const ByteSpan buffer = gltfBufferBytes(ctx.doc, view.buffer);
-        const size_t bufferBytes = buffer.size;
+        const Span<const uint8_t> buffer = gltfBufferBytes(ctx.doc, view.buffer);
+        const size_t bufferBytes = buffer.count;
         if (view.byteOffset > bufferBytes || view.byteLength > bufferBytes - view.byteOffset) {
             ctx.fail(use.element, "bufferView " + std::to_string(viewIndex) +
                                       " runs past the end of buffer " + std::to_string(view.buffer) + " (" +

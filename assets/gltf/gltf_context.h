@@ -29,15 +29,15 @@ struct GltfDocument {
     std::vector<MappedFile> mappedFiles;
     // Buffers whose bytes lie in those files (a .glb's BIN chunk: gltf_glb_bin.h; a buffer
     // file: gltf_external_buffers.h); tinygltf's model holds a stand-in for each.
-    std::map<int, ByteSpan> mappedBuffers;
+    std::map<int, Span<const uint8_t>> mappedBuffers;
 };
 
 // Buffer `index`'s bytes (an index the caller checked): in a mapped file, else tinygltf's.
-inline ByteSpan gltfBufferBytes(const GltfDocument& doc, int index) {
+inline Span<const uint8_t> gltfBufferBytes(const GltfDocument& doc, int index) {
     if (const auto mapped = doc.mappedBuffers.find(index); mapped != doc.mappedBuffers.end())
         return mapped->second;
     const std::vector<unsigned char>& data = doc.model.buffers[size_t(index)].data;
-    return {data.data(), data.size()};
+    return {data.data(), uint32_t(data.size())};
 }
 
 // One glTF mesh as it landed in the Scene: the Scene mesh and, per mesh slot, the glTF

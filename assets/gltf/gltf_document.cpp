@@ -24,19 +24,13 @@ namespace {
 // tinygltf takes sizes as unsigned int; nothing larger can be handed to it.
 constexpr uint64_t kMaxFileBytes = std::numeric_limits<uint32_t>::max();
 
-// The size of a regular file tinygltf can be given, or an InputError saying why not.
-size_t readableFileSize(const std::string& path, const std::string& label) {
+std::vector<uint8_t> readWholeFile(const std::string& path, const std::string& label) {
     std::error_code error;
     const auto size = std::filesystem::file_size(path, error);
     if (error || !std::filesystem::is_regular_file(path, error)) {
         throw InputError(label + ": cannot open '" + path + "'");
     }
     if (size > kMaxFileBytes) throw InputError(label + ": file larger than 4 GiB");
-    return size_t(size);
-}
-
-std::vector<uint8_t> readWholeFile(const std::string& path, const std::string& label) {
-    const size_t size = readableFileSize(path, label);
     std::vector<uint8_t> bytes;
     reserveOnHugePages(bytes, size);
     bytes.resize(size);
@@ -47,7 +41,7 @@ std::vector<uint8_t> readWholeFile(const std::string& path, const std::string& l
     return bytes;
 }
 
-uint32_t readU32(const ByteSpan& bytes, size_t offset) {
+uint32_t readU32(const Span<const uint8_t>& bytes, size_t offset) {
     uint32_t v;  // GLB is little-endian, like every machine we build for
     std::memcpy(&v, bytes.data + offset, 4);
     return v;
@@ -61,15 +55,15 @@ struct GlbChunks {
     size_t binChunk = 0;  // where the BIN chunk's header starts (0: no BIN chunk)
 };
 
-GlbChunks splitGlb(const ByteSpan& bytes, const std::string& label) {
+GlbChunks splitGlb(const Span<const uint8_t>& bytes, const std::string& label) {
     auto fail = [&](const std::string& what) { throw InputError(label + ": GLB " + what); };
-    if (bytes.size < 20) fail("header: file too short");
+    if (bytes.count < 20) fail("header: file too short");
     if (readU32(bytes, 4) != 2)
         fail("header: version " + std::to_string(readU32(bytes, 4)) + " is not supported (expected 2)");
     const uint64_t length = readU32(bytes, 8);
-    if (length > bytes.size) {
+    if (length > bytes.count) {
         fail("header: length " + std::to_string(length) + " is past the end of the file (" +
-             std::to_string(bytes.size) + " bytes)");
+             std::to_string(bytes.count) + " bytes)");
     }
     const uint64_t jsonLength = readU32(bytes, 12);
     if (readU32(bytes, 16) != 0x4E4F534Au) fail("chunk 0: not a JSON chunk");
@@ -97,7 +91,8 @@ void appendU32(std::vector<uint8_t>& out, uint32_t v) {
 
 // The .glb with its JSON chunk replaced by `json` (padded with spaces to 4 bytes, as the
 // spec asks) and its BIN chunk as it was.
-std::vector<uint8_t> replaceGlbJson(const ByteSpan& bytes, const GlbChunks& chunks, std::string json) {
+std::vector<uint8_t> replaceGlbJson(const Span<const uint8_t>& bytes, const GlbChunks& chunks,
+                                    std::string json) {
     while (json.size() % 4 != 0) json += ' ';
     const size_t binChunkBytes = chunks.binChunk ? 8 + chunks.binBytes : 0;
     std::vector<uint8_t> out;
@@ -163,14 +158,13 @@ GltfDocument loadGltfDocument(const std::string& path) {
     const std::string parent = std::filesystem::path(path).parent_path().string();
     doc.baseDir = parent.empty() ? "." : parent;
 
-    readableFileSize(path, doc.label);  // its messages, before the mapping's
     MappedFile mapped(path, doc.label);
-    const ByteSpan bytes = mapped.bytes();
-    const bool binary = bytes.size >= 4 && std::memcmp(bytes.data, "glTF", 4) == 0;
+    const Span<const uint8_t> bytes = mapped.bytes();
+    const bool binary = bytes.count >= 4 && std::memcmp(bytes.data, "glTF", 4) == 0;
     std::optional<GlbChunks> glb;
     if (binary) glb = splitGlb(bytes, doc.label);
     std::string jsonText =
-        binary ? glb->json : std::string(reinterpret_cast<const char*>(bytes.data), bytes.size);
+        binary ? glb->json : std::string(reinterpret_cast<const char*>(bytes.data), bytes.count);
 
     checkJsonDepth(jsonText, doc.label);  // before nlohmann and tinygltf recurse over it
     nlohmann::json root;
@@ -192,8 +186,9 @@ GltfDocument loadGltfDocument(const std::string& path) {
         jsonText = root.dump();
         if (binary && !detached) rewrittenGlb = replaceGlbJson(bytes, *glb, jsonText);
     }
-    const ByteSpan glbForTinygltf =
-        rewrittenGlb.empty() ? bytes : ByteSpan{rewrittenGlb.data(), rewrittenGlb.size()};
+    const Span<const uint8_t> glbForTinygltf =
+        rewrittenGlb.empty() ? bytes
+                             : Span<const uint8_t>{rewrittenGlb.data(), uint32_t(rewrittenGlb.size())};
 
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&keepEncodedImage, nullptr);
@@ -202,7 +197,7 @@ GltfDocument loadGltfDocument(const std::string& path) {
     std::string err, warn;
     const bool ok = binary && !detached
                         ? loader.LoadBinaryFromMemory(&doc.model, &err, &warn, glbForTinygltf.data,
-                                                      unsigned(glbForTinygltf.size), doc.baseDir)
+                                                      unsigned(glbForTinygltf.count), doc.baseDir)
                         : loader.LoadASCIIFromString(&doc.model, &err, &warn, jsonText.data(),
                                                      unsigned(jsonText.size()), doc.baseDir);
     // tinygltf appends some errors without failing; both are bad input. Its warnings are
@@ -214,7 +209,7 @@ GltfDocument loadGltfDocument(const std::string& path) {
         // Buffer 0 is the chunk where it lies in the mapped file (its length checked against
         // the chunk's).
         attachGlbBin(doc.model, *detached);
-        doc.mappedBuffers[0] = {bytes.data + glb->binChunk + 8, detached->byteLength};
+        doc.mappedBuffers[0] = {bytes.data + glb->binChunk + 8, uint32_t(detached->byteLength)};
         doc.mappedFiles.push_back(std::move(mapped));
     }
     for (const ExternalBufferFile& file : external) {

@@ -69,11 +69,11 @@ MeshoptView parse(const GltfContext& ctx, const tinygltf::Value& ext, const std:
 
 std::vector<uint8_t> decode(const GltfContext& ctx, const MeshoptView& m, const std::string& element) {
     gltfElement(ctx, ctx.model().buffers, m.buffer, element + ".buffer", "buffer");
-    const ByteSpan buffer = gltfBufferBytes(ctx.doc, m.buffer);
-    if (m.byteOffset > buffer.size || m.byteLength > buffer.size - m.byteOffset) {
+    const Span<const uint8_t> buffer = gltfBufferBytes(ctx.doc, m.buffer);
+    if (m.byteOffset > buffer.count || m.byteLength > buffer.count - m.byteOffset) {
         ctx.fail(element, "bytes [" + std::to_string(m.byteOffset) + ", " +
                               std::to_string(m.byteOffset + m.byteLength) + ") run past the end of buffer " +
-                              std::to_string(m.buffer) + " (" + std::to_string(buffer.size) + " bytes)");
+                              std::to_string(m.buffer) + " (" + std::to_string(buffer.count) + " bytes)");
     }
     const unsigned char* source = buffer.data + m.byteOffset;
     std::vector<uint8_t> out(size_t(m.count * m.byteStride));

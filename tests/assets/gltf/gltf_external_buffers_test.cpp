@@ -57,7 +57,7 @@ TEST(GltfExternalBuffers, AMeshReadThroughTheMappingImportsAsItsGlbTwin) {
 
     const GltfDocument doc = loadGltfDocument(gltf);
     ASSERT_EQ(doc.mappedBuffers.count(0), 1u);
-    EXPECT_EQ(doc.mappedBuffers.at(0).size, bin.size());
+    EXPECT_EQ(doc.mappedBuffers.at(0).count, bin.size());
     EXPECT_EQ(doc.model.buffers[0].data.size(), 4u) << "tinygltf holds the stand-in, not the file";
 
     Scene fromGltf, fromGlb;

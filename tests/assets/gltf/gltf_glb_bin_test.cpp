@@ -134,7 +134,7 @@ TEST(GltfGlbBin, ATexturedGlbImportsAsItsGltfTwin) {
     const GltfDocument doc = loadGltfDocument(glb);
     ASSERT_EQ(doc.mappedBuffers.count(0), 1u);
     EXPECT_EQ(std::string(reinterpret_cast<const char*>(doc.mappedBuffers.at(0).data),
-                          doc.mappedBuffers.at(0).size),
+                          doc.mappedBuffers.at(0).count),
               quad.bin)
         << "buffer 0 is the BIN chunk where it lies in the mapped file";
     Scene fromGltf, fromGlb;
