@@ -86,6 +86,7 @@ constexpr const char* kToggleText =
     R"(TOGGLES: --no-nee --no-mis --no-rr --clamp X --bvh-off (brute force) --no-jitter
   --no-merge (small instances keep a BLAS each, instead of one world-space BLAS)
   --no-wide-bvh (the CPU walks the binary BLASes instead of their 8-wide form)
+  --no-packets (the CPU traces camera rays one at a time, not eight through one walk)
   --megakernel | --wavefront, --regeneration (megakernel: a thread whose path ends starts the
   next at once), --no-compaction, --sort-materials | --no-sort-materials,
   --no-first-hit-cache, --rebuild-ratio R (refit until SAH cost exceeds R x the built one)

@@ -18,6 +18,8 @@ const std::vector<ToggleRow>& toggleTable() {
          "merged instances", "", "--no-merge", &T::mergeInstances, false, S::Integrator},
         {ToggleId::WideBvh, "wide_bvh", "8-wide BVH (CPU traversal)", "8-wide BVH", "", "--no-wide-bvh",
          &T::wideBvh, false, S::Integrator},
+        {ToggleId::RayPackets, "ray_packets", "8-ray packets (CPU camera rays)", "8-ray packets", "",
+         "--no-packets", &T::rayPackets, false, S::Integrator},
         {ToggleId::PixelJitter, "pixel_jitter", "Pixel jitter (antialiasing)", "pixel jitter", "",
          "--no-jitter", &T::pixelJitter, false, S::Integrator},
         // No flag of its own: naming a schedule (--megakernel, --wavefront) turns it off.

@@ -19,6 +19,10 @@ struct IntegratorToggles {
     // The CPU walks 8-wide BLASes collapsed from the binary ones (render/bvh/wide_bvh.h); the
     // GPU walks the binary ones unless gpuWideBvh.
     bool wideBvh = true;
+    // The CPU traces closest hits of neighbouring camera rays eight at a time through one walk
+    // (render/bvh/packet_traversal.h), where the scene's rays meet one triangle BLAS and the
+    // processor runs AVX2; the same hits as one at a time.
+    bool rayPackets = true;
     float clampRadiance = 0.0f;  // firefly clamp on indirect luminance per sample; 0 = off
     // Jitter primary rays inside the pixel (antialiasing). Off: every sample of a pixel starts
     // with the same ray through its centre, which lets the first hit be cached.
@@ -69,6 +73,7 @@ enum class ToggleId {
     Bvh,
     MergeInstances,
     WideBvh,
+    RayPackets,
     PixelJitter,
     AutoSchedule,
     Megakernel,

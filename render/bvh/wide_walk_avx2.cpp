@@ -1,96 +1,20 @@
 // The CPU's 8-wide walk with AVX2 (issue 21; wide_walk_simd.h picks it at run time): a node's
-// eight child boxes in one 256-bit slab test. Everything here is compiled for AVX2 by the target
-// pragma below, after the shared headers, whose inline functions therefore stay SSE2 code in
-// this object as in every other (the linker may keep any one copy of them), and the loop copy
-// this file instantiates lives in namespace pt::avx2, a name no SSE2 code shares. Each lane
-// computes what the SSE2 test computes for that slot, so the walk visits the same nodes.
+// eight child boxes in one 256-bit slab test (wide_walk_avx2.h). Everything from
+// avx2_target_begin.h on is compiled for AVX2, after the shared headers, whose inline functions
+// therefore stay SSE2 code in this object as in every other (the linker may keep any one copy of
+// them), and the loop copy this file instantiates lives in namespace pt::avx2, a name no SSE2
+// code shares.
 #include <immintrin.h>
-
-#include <cstddef>
 
 #include "render/bvh/wide_walk.h"
 #include "render/bvh/wide_walk_simd.h"
 
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
-#else
-#pragma GCC push_options
-#pragma GCC target("avx2")
-#endif
+// clang-format off
+#include "render/bvh/avx2_target_begin.h"
+#include "render/bvh/wide_walk_avx2.h"
+// clang-format on
 
 namespace pt {
-namespace avx2 {
-
-// The ray as the 256-bit test takes it: per axis, which of a node's two planes the ray meets
-// first (its lower one where the inverse direction is positive, else its upper one; the
-// inverse is never 0 or NaN, bvh_walk.h), as a byte offset of that plane array in the node, and
-// the slab origin that plane is measured from. Each lane then computes the entry and exit
-// distances directly, where pt::intersectWideBoxes orders both planes' distances by min and max.
-// For any box with lo <= hi the two agree bit for bit on the hit mask and on the entry: the
-// subtraction and the multiplication are monotonic, so the ordered distances are the same
-// values (their zeros may differ in sign, which the entry's max with +0 and the comparison
-// below ignore).
-struct WideSlabRay {
-    __m256 nearOriginX, nearOriginY, nearOriginZ, farOriginX, farOriginY, farOriginZ, invX, invY, invZ;
-    uint32_t nearX, nearY, nearZ, farX, farY, farZ;
-};
-
-inline WideSlabRay wideSlabRay(const TraversalRay& ray) {
-    constexpr uint32_t kAxisBytes = sizeof(WideBvhNode::loX);
-    uint32_t nearPlane[3], farPlane[3];
-    float nearOrigin[3], farOrigin[3];
-    for (int a = 0; a < 3; ++a) {
-        const bool positive = ray.invDirection[a] > 0.0f;
-        const uint32_t lo = uint32_t(offsetof(WideBvhNode, loX)) + uint32_t(a) * kAxisBytes;
-        const uint32_t hi = uint32_t(offsetof(WideBvhNode, hiX)) + uint32_t(a) * kAxisBytes;
-        nearPlane[a] = positive ? lo : hi;
-        farPlane[a] = positive ? hi : lo;
-        nearOrigin[a] = positive ? ray.slabOriginLo[a] : ray.slabOriginHi[a];
-        farOrigin[a] = positive ? ray.slabOriginHi[a] : ray.slabOriginLo[a];
-    }
-    return {_mm256_set1_ps(nearOrigin[0]),
-            _mm256_set1_ps(nearOrigin[1]),
-            _mm256_set1_ps(nearOrigin[2]),
-            _mm256_set1_ps(farOrigin[0]),
-            _mm256_set1_ps(farOrigin[1]),
-            _mm256_set1_ps(farOrigin[2]),
-            _mm256_set1_ps(ray.invDirection.x),
-            _mm256_set1_ps(ray.invDirection.y),
-            _mm256_set1_ps(ray.invDirection.z),
-            nearPlane[0],
-            nearPlane[1],
-            nearPlane[2],
-            farPlane[0],
-            farPlane[1],
-            farPlane[2]};
-}
-
-// pt::intersectWideBoxes on all eight slots at once, its planes ordered by the ray (above).
-inline int intersectWideNode(const WideSlabRay& r, const WideBvhNode& n, float tMax, float* entry) {
-    const char* node = reinterpret_cast<const char*>(&n);
-    const auto plane = [node](uint32_t offset) {
-        return _mm256_load_ps(reinterpret_cast<const float*>(node + offset));
-    };
-    const __m256 nx = _mm256_mul_ps(_mm256_sub_ps(plane(r.nearX), r.nearOriginX), r.invX);
-    const __m256 fx = _mm256_mul_ps(_mm256_sub_ps(plane(r.farX), r.farOriginX), r.invX);
-    const __m256 ny = _mm256_mul_ps(_mm256_sub_ps(plane(r.nearY), r.nearOriginY), r.invY);
-    const __m256 fy = _mm256_mul_ps(_mm256_sub_ps(plane(r.farY), r.farOriginY), r.invY);
-    const __m256 nz = _mm256_mul_ps(_mm256_sub_ps(plane(r.nearZ), r.nearOriginZ), r.invZ);
-    const __m256 fz = _mm256_mul_ps(_mm256_sub_ps(plane(r.farZ), r.farOriginZ), r.invZ);
-    const __m256 tNear = _mm256_max_ps(_mm256_max_ps(nx, ny), _mm256_max_ps(nz, _mm256_setzero_ps()));
-    const __m256 tFar =
-        _mm256_mul_ps(_mm256_min_ps(fx, _mm256_min_ps(fy, fz)), _mm256_set1_ps(kSlabExitScale));
-    const __m256 limit = _mm256_min_ps(tFar, _mm256_set1_ps(tMax * kSlabExitScale));
-    const __m256i unused = _mm256_cmpeq_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(n.count)),
-                                              _mm256_set1_epi32(int(WideBvhNode::kEmpty)));
-    _mm256_store_ps(entry, tNear);
-    return _mm256_movemask_ps(
-        _mm256_andnot_ps(_mm256_castsi256_ps(unused), _mm256_cmp_ps(tNear, limit, _CMP_LE_OQ)));
-}
-
-#include "render/bvh/wide_walk_loop.inl"
-
-}  // namespace avx2
 
 bool simd_detail::walkTriangleWideBvhAvx2(const WideBvhNode* nodes, uint32_t root,
                                           const TriangleBlock* blocks, const TraversalRay& ray, float& tMax,
@@ -100,8 +24,4 @@ bool simd_detail::walkTriangleWideBvhAvx2(const WideBvhNode* nodes, uint32_t roo
 
 }  // namespace pt
 
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC pop_options
-#endif
+#include "render/bvh/avx2_target_end.h"

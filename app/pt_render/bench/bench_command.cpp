@@ -114,21 +114,53 @@ std::vector<TracedRaySet> benchRays(Backend& backend, const Scene& scene, const 
     return sets;
 }
 
+// The CPU's closest hits one ray at a time against its 8-ray packets (packet_traversal.h), in
+// the same run, where the packets are on: what they buy, and that the hits are the same.
+// Returns each set's single-ray rate: the sets' own where they were traced one by one.
+std::vector<double> benchPackets(Backend& backend, const Scene& scene, const std::vector<TracedRaySet>& sets,
+                                 const BenchSettings& settings, BenchReport& report) {
+    std::vector<double> singleRates;
+    for (const TracedRaySet& set : sets) singleRates.push_back(set.mraysPerSecond);
+    if (backend.name() != "cpu" || !settings.toggles.rayPackets || settings.toggles.bruteForce ||
+        !settings.toggles.wideBvh || supportedSimdLevel() != SimdLevel::Avx2)
+        return singleRates;
+    IntegratorToggles single = settings.toggles;
+    single.rayPackets = false;
+    backend.setToggles(single);
+    syncSettled(backend, scene, SceneChanges::Settings);
+    for (size_t i = 0; i < sets.size(); ++i) {
+        const TracedRaySet& set = sets[i];
+        if (set.anyHit || set.rays->empty() || set.mraysPerSecond <= 0) continue;
+        std::vector<Hit> hits;
+        const double rate = tracedMrays(backend, set, settings.runs, hits);
+        singleRates[i] = rate;
+        report.add({"rays", set.name, "single rays", rate, "Mrays/s", ""});
+        report.add({"rays", set.name, "8-ray packets / single rays", set.mraysPerSecond / rate, "x",
+                    "same run; " + std::to_string(countDifferentHits(hits, set)) + " hits differ"});
+    }
+    backend.setToggles(settings.toggles);
+    syncSettled(backend, scene, SceneChanges::Settings);
+    return singleRates;
+}
+
 // The CPU's 8-wide walk at SSE2 against the level it runs (wide_walk_simd.h), in the same run,
-// where that is AVX2: what the runtime dispatch buys, and that the hits are the same.
-void benchSimdLevels(Backend& backend, const std::vector<TracedRaySet>& sets, const BenchSettings& settings,
+// where that is AVX2: what the runtime dispatch buys, and that the hits are the same. Against
+// the single-ray rates (benchPackets): SSE2 walks no packets.
+void benchSimdLevels(Backend& backend, const std::vector<TracedRaySet>& sets,
+                     const std::vector<double>& singleRates, const BenchSettings& settings,
                      BenchReport& report) {
     if (backend.name() != "cpu" || !settings.toggles.wideBvh || settings.toggles.bruteForce) return;
     const SimdLevel level = wideWalkSimdLevel();
     if (level == SimdLevel::Sse2) return;
     const ScopedSimdLevel sse2(SimdLevel::Sse2);
-    for (const TracedRaySet& set : sets) {
+    for (size_t i = 0; i < sets.size(); ++i) {
+        const TracedRaySet& set = sets[i];
         if (set.rays->empty() || set.mraysPerSecond <= 0) continue;
         std::vector<Hit> hits;
         const double rate = tracedMrays(backend, set, settings.runs, hits);
         report.add({"rays", set.name, "8-wide BVH, SSE2 walk", rate, "Mrays/s", ""});
         report.add({"rays", set.name, std::string(simdLevelName(level)) + " / SSE2 walk",
-                    set.mraysPerSecond / rate, "x",
+                    singleRates[i] / rate, "x",
                     "same run; " + std::to_string(countDifferentHits(hits, set)) + " hits differ"});
     }
 }
@@ -187,7 +219,8 @@ int runBench(const std::vector<std::string>& args) {
     const BenchRays rays =
         makeBenchRays(compiled, scene.render.width, scene.render.height, scene.render.seed);
     const std::vector<TracedRaySet> traced = benchRays(*backend, scene, rays, r.settings, report);
-    benchSimdLevels(*backend, traced, r.settings, report);
+    const std::vector<double> singleRates = benchPackets(*backend, scene, traced, r.settings, report);
+    benchSimdLevels(*backend, traced, singleRates, r.settings, report);
     phase("path tracing");
     benchPathTracing(*backend, scene, r.settings, report);
     phase("BVH builds");

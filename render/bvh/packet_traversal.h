@@ -1,0 +1,47 @@
+#pragma once
+// Closest hits of eight rays at once on the CPU (issue 21): camera rays of neighbouring pixels,
+// which enter the same nodes, walk a triangle BLAS's 8-wide tree together, as Embree's 8-ray
+// packets do (Wald, Slusallek, Benthin and Wagner 2001, "Interactive Rendering with Coherent
+// Ray Tracing"; Embree's hybrid walk: Wald et al. 2014, "Embree: A Kernel Framework for
+// Efficient CPU Ray Tracing", section 5): a node is loaded once for the packet, each child box
+// is tested against the eight rays in one 256-bit slab test, and lanes left alone in a subtree
+// finish it on the single-ray walk. Each ray gets exactly the hit intersectClosest gives it:
+// every (ray, box) test computes what the single-ray test computes for that ray and box, every
+// leaf a ray enters is tested for that ray by the single-ray leaf test, with its state, and
+// the closest hit with ties to the lower primitive does not depend on the order of the leaves.
+#if defined(__CUDACC__)
+#error "packet_traversal.h is CPU code"
+#endif
+#include <cstdint>
+
+#include "render/bvh/bvh_walk.h"
+#include "render/bvh/hit.h"
+#include "render/kernel/render_scene.h"
+#include "render/kernel/triangle_block.h"
+#include "render/kernel/wide_bvh_node.h"
+#include "render/math/ray.h"
+
+namespace pt {
+
+constexpr uint32_t kRayPacketSize = 8;
+
+// Whether intersectClosestPacket walks `scene`'s rays together: the CPU runs AVX2 (the walk's
+// level, wide_walk_simd.h), the scene's rays meet one triangle BLAS (one instance, or instances
+// all merged into the world-space BLAS) in its 8-wide form, and brute force is off. Otherwise it
+// traces the rays one by one.
+bool packetWalkApplies(const RenderScene& scene);
+
+// hits[i] = what intersectClosest(scene, rays[i], hits[i]) gives, bit for bit, for i < count
+// (1 <= count <= kRayPacketSize).
+void intersectClosestPacket(const RenderScene& scene, const Ray* rays, uint32_t count, Hit* hits);
+
+namespace simd_detail {
+// The packet walk at AVX2 (packet_walk_avx2.cpp) of the 8-wide tree `nodes` from `root`, whose
+// leaves index `blocks`, by rays[lane] for the lanes set in `lanes` (all kRayPacketSize rays
+// must be readable): lowers tMax[lane] and fills hits[lane].t/u/v/primitive where a lane finds
+// a hit (as walkTriangleWideBvh does); returns the lanes that found one.
+uint32_t walkTriangleWidePacketAvx2(const WideBvhNode* nodes, uint32_t root, const TriangleBlock* blocks,
+                                    const TraversalRay* rays, uint32_t lanes, float* tMax, Hit* hits);
+}  // namespace simd_detail
+
+}  // namespace pt

@@ -1,0 +1,174 @@
+// The 8-ray packet walk of an 8-wide triangle BLAS with AVX2 (packet_traversal.h): a node is
+// read once for the packet and each of its child boxes tested against all eight rays in one
+// 256-bit slab test; lanes left alone in a subtree finish it on the single-ray walk
+// (wide_walk_avx2.h). Compiled for AVX2 from avx2_target_begin.h on (wide_walk_avx2.cpp says
+// why the shared headers come first).
+#include <immintrin.h>
+
+#include <cassert>
+#include <limits>
+
+#include "render/bvh/packet_traversal.h"
+#include "render/bvh/triangle_block_intersect.h"
+#include "render/bvh/wide_walk.h"
+
+// clang-format off
+#include "render/bvh/avx2_target_begin.h"
+#include "render/bvh/wide_walk_avx2.h"
+// clang-format on
+
+namespace pt {
+namespace avx2 {
+namespace {
+
+// A subtree entered by this many lanes or fewer is walked by each of them alone: testing a box
+// against eight lanes costs eight single-ray tests' arithmetic, which pays only while most
+// lanes use it (Embree's hybrid walk switches the same way).
+constexpr uint32_t kAloneLanes = 2;
+
+// The packet's rays as the box test takes them: per lane, TraversalRay's zero-axis padded
+// origins and inverse direction.
+struct PacketSlabRays {
+    __m256 loX, loY, loZ, hiX, hiY, hiZ, invX, invY, invZ;
+};
+
+PacketSlabRays packetSlabRays(const TraversalRay* rays) {
+    alignas(32) float v[9][kRayPacketSize];
+    for (uint32_t lane = 0; lane < kRayPacketSize; ++lane) {
+        const TraversalRay& r = rays[lane];
+        for (int a = 0; a < 3; ++a) {
+            v[a][lane] = r.slabOriginLo[a];
+            v[3 + a][lane] = r.slabOriginHi[a];
+            v[6 + a][lane] = r.invDirection[a];
+        }
+    }
+    return {_mm256_load_ps(v[0]), _mm256_load_ps(v[1]), _mm256_load_ps(v[2]),
+            _mm256_load_ps(v[3]), _mm256_load_ps(v[4]), _mm256_load_ps(v[5]),
+            _mm256_load_ps(v[6]), _mm256_load_ps(v[7]), _mm256_load_ps(v[8])};
+}
+
+// (plane - origin) * inverse in eight lanes: where each lane's ray meets an axis-aligned plane.
+inline __m256 planeDistance(float plane, __m256 origin, __m256 inverse) {
+    return _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(plane), origin), inverse);
+}
+
+// Slot `slot` of `node` against the eight rays: the lanes whose ray enters the box before its
+// limit (tMax * kSlabExitScale), as a mask vector, and where each enters. Per lane the
+// operations of pt::intersectWideBoxes in its operand order, so the same answer and entry as
+// the single-ray walk's test of that box.
+inline __m256 entersBox(const PacketSlabRays& r, const WideBvhNode& node, uint32_t slot, __m256 limit,
+                        __m256& tNear) {
+    const __m256 x0 = planeDistance(node.loX[slot], r.loX, r.invX),
+                 x1 = planeDistance(node.hiX[slot], r.hiX, r.invX);
+    const __m256 y0 = planeDistance(node.loY[slot], r.loY, r.invY),
+                 y1 = planeDistance(node.hiY[slot], r.hiY, r.invY);
+    const __m256 z0 = planeDistance(node.loZ[slot], r.loZ, r.invZ),
+                 z1 = planeDistance(node.hiZ[slot], r.hiZ, r.invZ);
+    tNear = _mm256_max_ps(_mm256_max_ps(_mm256_min_ps(x0, x1), _mm256_min_ps(y0, y1)),
+                          _mm256_max_ps(_mm256_min_ps(z0, z1), _mm256_setzero_ps()));
+    const __m256 tFar = _mm256_mul_ps(
+        _mm256_min_ps(_mm256_max_ps(x0, x1), _mm256_min_ps(_mm256_max_ps(y0, y1), _mm256_max_ps(z0, z1))),
+        _mm256_set1_ps(kSlabExitScale));
+    return _mm256_cmp_ps(tNear, _mm256_min_ps(tFar, limit), _CMP_LE_OQ);
+}
+
+float smallestLane(__m256 v) {
+    __m128 m = _mm_min_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+    m = _mm_min_ps(m, _mm_movehl_ps(m, m));
+    return _mm_cvtss_f32(_mm_min_ss(m, _mm_shuffle_ps(m, m, 1)));
+}
+
+// An entry of the packet walk: a node (count 0) or a leaf, and per lane where that lane's ray
+// enters it, NaN for lanes that do not (a comparison with NaN is false, so they stay out).
+struct alignas(32) PacketEntry {
+    __m256 entry;
+    uint32_t child, count;
+};
+
+using Leaf = TriangleBlockLeaf<NoTraversalCount>;
+
+uint32_t walkPacket(const WideBvhNode* nodes, uint32_t root, const TraversalRay* rays, uint32_t lanes,
+                    float* tMax, Leaf* leaves) {
+    const PacketSlabRays slab = packetSlabRays(rays);
+    const __m256 nan = _mm256_set1_ps(std::numeric_limits<float>::quiet_NaN());
+    const __m256 inf = _mm256_set1_ps(kInf), exitScale = _mm256_set1_ps(kSlabExitScale);
+    const __m256i laneBits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+    const __m256 rootLanes = _mm256_castsi256_ps(
+        _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(int(lanes)), laneBits), laneBits));
+    PacketEntry stack[kWideStackSize];
+    uint32_t size = 0;
+    PacketEntry current{_mm256_blendv_ps(nan, _mm256_setzero_ps(), rootLanes), root, 0};
+    uint32_t found = 0;
+    for (;;) {
+        // The lanes that still reach the entry: as the single-ray walk drops an entry beyond
+        // tMax * kSlabExitScale, each lane drops it beyond its own.
+        const __m256 limit = _mm256_mul_ps(_mm256_loadu_ps(tMax), exitScale);
+        const __m256 reach = _mm256_cmp_ps(current.entry, limit, _CMP_LE_OQ);
+        uint32_t active = uint32_t(_mm256_movemask_ps(reach));
+        if (active != 0 && current.count > 0) {
+            for (; active != 0; active &= active - 1) {
+                const uint32_t lane = uint32_t(__builtin_ctz(active));
+                if (leaves[lane](current.child, current.count, tMax[lane])) found |= 1u << lane;
+            }
+        } else if (active != 0 && uint32_t(__builtin_popcount(active)) <= kAloneLanes) {
+            for (; active != 0; active &= active - 1) {
+                const uint32_t lane = uint32_t(__builtin_ctz(active));
+                if ((walkWideBvh)(nodes, current.child, rays[lane], tMax[lane], leaves[lane],
+                                  NoTraversalCount{}, false))
+                    found |= 1u << lane;
+            }
+        } else if (active != 0) {
+            const WideBvhNode& node = nodes[current.child];
+            __m256 entries[WideBvhNode::kWidth];
+            float nearest[WideBvhNode::kWidth];
+            uint32_t order[WideBvhNode::kWidth], n = 0;
+            for (uint32_t slot = 0; slot < WideBvhNode::kWidth && node.count[slot] != WideBvhNode::kEmpty;
+                 ++slot) {
+                __m256 tNear;
+                const __m256 enters = _mm256_and_ps(entersBox(slab, node, slot, limit, tNear), reach);
+                if (_mm256_movemask_ps(enters) == 0) continue;
+                entries[slot] = _mm256_blendv_ps(nan, tNear, enters);
+                nearest[slot] = smallestLane(_mm256_blendv_ps(inf, tNear, enters));
+                // Farthest first (insertion sort by the nearest lane's entry), as the single-ray
+                // walk orders its children: all but the nearest go on the stack.
+                uint32_t at = n++;
+                while (at > 0 && nearest[order[at - 1]] < nearest[slot]) {
+                    order[at] = order[at - 1];
+                    --at;
+                }
+                order[at] = slot;
+            }
+            if (n != 0) {
+                assert(size + n - 1 <= kWideStackSize && "BVH deeper than the wide traversal stack");
+                for (uint32_t i = 0; i + 1 < n; ++i) {
+                    const uint32_t slot = order[i];
+                    stack[size++] = {entries[slot], node.child[slot], node.count[slot]};
+                }
+                const uint32_t slot = order[n - 1];
+                current = {entries[slot], node.child[slot], node.count[slot]};
+                continue;
+            }
+        }
+        if (size == 0) return found;
+        current = stack[--size];
+    }
+}
+
+}  // namespace
+}  // namespace avx2
+
+uint32_t simd_detail::walkTriangleWidePacketAvx2(const WideBvhNode* nodes, uint32_t root,
+                                                 const TriangleBlock* blocks, const TraversalRay* rays,
+                                                 uint32_t lanes, float* tMax, Hit* hits) {
+    static_assert(kRayPacketSize == 8, "one leaf functor a lane, listed below");
+    avx2::Leaf leaves[kRayPacketSize] = {
+        {blocks, rays[0], hits[0], {}, false}, {blocks, rays[1], hits[1], {}, false},
+        {blocks, rays[2], hits[2], {}, false}, {blocks, rays[3], hits[3], {}, false},
+        {blocks, rays[4], hits[4], {}, false}, {blocks, rays[5], hits[5], {}, false},
+        {blocks, rays[6], hits[6], {}, false}, {blocks, rays[7], hits[7], {}, false}};
+    return avx2::walkPacket(nodes, root, rays, lanes, tMax, leaves);
+}
+
+}  // namespace pt
+
+#include "render/bvh/avx2_target_end.h"

@@ -1,0 +1,190 @@
+// The CPU's 8-ray packets (render/bvh/packet_traversal.h): each ray of a packet gets exactly the
+// hit intersectClosest gives it alone (t, u, v, primitive and instance bit for bit), on soups
+// that stress the walk differently, for coherent packets (a camera's neighbouring pixels),
+// incoherent ones, packets of fewer than eight rays, finite segments and rays along axes; through
+// an instance's transform and through the merged world-space BLAS; and where the walk does not
+// apply, the rays are traced one by one.
+#include "render/bvh/packet_traversal.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "render/bvh/bvh_test_util.h"
+
+namespace pt {
+namespace {
+
+using test::Rng;
+
+// Eight rays from one point through a small patch of directions, as a camera's neighbouring
+// pixels are: they enter the same nodes, and the walk goes down together.
+std::vector<Ray> coherentPacket(Rng& rng, Vec3 lo, Vec3 hi) {
+    const Vec3 origin = rng.inBox(lo, hi), target = rng.inBox(lo * 0.5f, hi * 0.5f);
+    const float spread = rng.uniform(0.0f, 0.05f);
+    std::vector<Ray> rays;
+    for (uint32_t k = 0; k < kRayPacketSize; ++k) {
+        const Vec3 offset(float(k % 4) * spread, float(k / 4) * spread, 0.0f);
+        rays.push_back({origin, target + offset - origin, kInf});
+    }
+    return rays;
+}
+
+// Eight rays of every kind: hits behind others, misses, finite segments, zero components.
+std::vector<Ray> mixedPacket(Rng& rng, const Mesh& mesh, Vec3 lo, Vec3 hi) {
+    std::vector<Ray> rays;
+    for (uint32_t k = 0; k < kRayPacketSize; ++k) {
+        Ray ray = k % 2 ? test::randomRay(rng, lo, hi) : test::rayAtTriangle(rng, mesh, lo, hi);
+        if (rng.uniform() < 0.2f) ray.tMax = rng.uniform(0.0f, 1.5f);
+        if (rng.uniform() < 0.2f) {
+            const int kept = int(rng.index(3));
+            for (int a = 0; a < 3; ++a) {
+                if (a != kept && rng.uniform() < 0.6f) ray.direction[a] = rng.uniform() < 0.5f ? 0.0f : -0.0f;
+            }
+        }
+        rays.push_back(ray);
+    }
+    return rays;
+}
+
+// The instances' triangles in world space, one mesh.
+Mesh worldMesh(const Mesh& mesh, const std::vector<test::InstanceSpec>& instances) {
+    Mesh world;
+    for (const test::InstanceSpec& instance : instances) {
+        const uint32_t base = uint32_t(world.positions.size());
+        for (const Vec3& p : mesh.positions)
+            world.positions.push_back(instance.objectToWorld.transformPoint(p));
+        for (const uint32_t i : mesh.indices) world.indices.push_back(base + i);
+    }
+    return world;
+}
+
+bool sameHit(const Hit& a, const Hit& b) {
+    return a.t == b.t && a.u == b.u && a.v == b.v && a.primitive == b.primitive && a.instance == b.instance;
+}
+
+// Traces `rays` (the first `count`) as a packet and one by one; returns the rays that differ
+// and adds the valid hits to `hits`.
+uint32_t packetDifferences(const RenderScene& scene, const std::vector<Ray>& rays, uint32_t count,
+                           uint32_t& hits) {
+    Hit packet[kRayPacketSize], single[kRayPacketSize];
+    std::fill(packet, packet + kRayPacketSize, Hit{-1.0f, -1.0f, -1.0f, 7u, 7u});  // all overwritten
+    intersectClosestPacket(scene, rays.data(), count, packet);
+    uint32_t differ = 0;
+    for (uint32_t i = 0; i < count; ++i) {
+        intersectClosest(scene, rays[i], single[i]);
+        differ += !sameHit(packet[i], single[i]);
+        hits += single[i].valid();
+    }
+    return differ;
+}
+
+// What packetDifferences finds over `packets` packets, coherent and mixed by turns, from the
+// cube [-extent, extent]^3; the mixed ones aim at `targets`' triangles. Every fifth packet holds
+// fewer than eight rays where `partial`.
+struct PacketCheck {
+    uint32_t differ = 0, hits = 0;
+};
+PacketCheck checkPackets(const RenderScene& scene, const Mesh& targets, Rng& rng, int packets, float extent,
+                         bool partial = false) {
+    PacketCheck check;
+    const Vec3 lo(-extent), hi(extent);
+    for (int p = 0; p < packets; ++p) {
+        const std::vector<Ray> rays = p % 2 ? coherentPacket(rng, lo, hi) : mixedPacket(rng, targets, lo, hi);
+        const uint32_t count = partial && p % 5 == 0 ? 1 + rng.index(kRayPacketSize) : kRayPacketSize;
+        check.differ += packetDifferences(scene, rays, count, check.hits);
+    }
+    return check;
+}
+
+TEST(PacketTraversal, EveryRayOfAPacketGetsItsOwnClosestHit) {
+    if (supportedSimdLevel() != SimdLevel::Avx2) GTEST_SKIP() << "this processor runs no AVX2";
+    Rng rng(31);
+    for (const test::SoupKind kind :
+         {test::SoupKind::Uniform, test::SoupKind::Clustered, test::SoupKind::Needles}) {
+        SCOPED_TRACE(test::soupName(kind));
+        const Mesh mesh = test::makeSoup(kind, 20000, rng);
+        const CompiledScene compiled = test::compileSingleMesh(mesh, test::Layout::Wide);
+        const RenderScene scene = compiled.view();
+        ASSERT_TRUE(packetWalkApplies(scene));
+        const PacketCheck check = checkPackets(scene, mesh, rng, 3000, 1.2f, true);
+        EXPECT_EQ(check.differ, 0u);
+        EXPECT_GT(check.hits, 4000u) << "the rays should hit often enough to test something";
+    }
+}
+
+// Coincident triangles: ties in t go to the lower primitive whichever leaf a lane meets first,
+// and lanes that leave the packet to finish a subtree alone keep the hit they already have (it
+// decides their ties there). Each of a few hundred triangles is repeated 24 times, so its copies
+// fill several leaves in different subtrees, the copies' indices interleaved with the others'.
+TEST(PacketTraversal, TiesGoToTheLowerPrimitiveAsOneRayAtATime) {
+    if (supportedSimdLevel() != SimdLevel::Avx2) GTEST_SKIP() << "this processor runs no AVX2";
+    Rng rng(32);
+    Mesh mesh = test::makeSoup(test::SoupKind::Uniform, 300, rng);
+    const size_t original = mesh.indices.size();
+    for (int copy = 1; copy < 24; ++copy) {
+        for (size_t i = 0; i < original; ++i) mesh.indices.push_back(mesh.indices[i]);
+    }
+    const CompiledScene compiled = test::compileSingleMesh(mesh, test::Layout::Wide);
+    const PacketCheck check = checkPackets(compiled.view(), mesh, rng, 4000, 1.2f);
+    EXPECT_EQ(check.differ, 0u);
+    EXPECT_GT(check.hits, 4000u);
+}
+
+// One instance with a transform (object-space rays) and instances all merged into the world-space
+// BLAS (hits reported as the instance triangles they copy).
+TEST(PacketTraversal, InstancesThroughTheirTransformAndTheMergedBlas) {
+    if (supportedSimdLevel() != SimdLevel::Avx2) GTEST_SKIP() << "this processor runs no AVX2";
+    Rng rng(33);
+    const Mesh mesh = test::makeSoup(test::SoupKind::Clustered, 4000, rng);
+    const float half = 0.35f;  // a turn of 0.7 radians about (0, 1, 1) / sqrt(2)
+    const Vec4 turn(0.0f, std::sin(half) * 0.70710678f, std::sin(half) * 0.70710678f, std::cos(half));
+    const Affine3 turned =
+        translationTransform(Vec3(0.3f, -0.2f, 0.1f)) * rotationTransform(turn) * scaleTransform(Vec3(0.8f));
+    CompileOptions wide = test::layoutOptions(test::Layout::Wide);
+    const CompiledScene one = test::compileTestScene({mesh}, {{0, turned}}, wide);
+    std::vector<test::InstanceSpec> specs;
+    for (int i = 0; i < 4; ++i) {
+        specs.push_back(
+            {0, translationTransform(Vec3(float(i) * 0.7f - 1.0f, 0.0f, 0.0f)) * scaleTransform(Vec3(0.4f))});
+    }
+    const CompiledScene merged = test::compileTestScene({mesh}, specs, wide);
+    ASSERT_TRUE(merged.merged.active());
+    ASSERT_EQ(merged.tlasInstanceIndices.size(), 1u)
+        << "every instance merged: the TLAS holds the merged BLAS";
+    for (const CompiledScene* compiled : {&one, &merged}) {
+        const std::vector<test::InstanceSpec> placed =
+            compiled == &one ? std::vector<test::InstanceSpec>{{0, turned}} : specs;
+        const Mesh world = worldMesh(mesh, placed);  // the rays aim at the instances' triangles
+        const RenderScene scene = compiled->view();
+        ASSERT_TRUE(packetWalkApplies(scene));
+        const PacketCheck check = checkPackets(scene, world, rng, 2000, 1.5f);
+        EXPECT_EQ(check.differ, 0u);
+        EXPECT_GT(check.hits, 2000u);
+    }
+}
+
+// Where the walk does not apply (SSE2, the binary layout, brute force) the packet's rays are
+// traced one by one, with the same hits.
+TEST(PacketTraversal, ScenesTheWalkDoesNotTakeAreTracedRayByRay) {
+    Rng rng(34);
+    const Mesh mesh = test::makeSoup(test::SoupKind::Uniform, 2000, rng);
+    const CompiledScene binary = test::compileSingleMesh(mesh, test::Layout::Binary);
+    EXPECT_FALSE(packetWalkApplies(binary.view()));
+    RenderScene bruteForce = binary.view();
+    bruteForce.bruteForce = 1;
+    EXPECT_FALSE(packetWalkApplies(bruteForce));
+    const CompiledScene wide = test::compileSingleMesh(mesh, test::Layout::Wide);
+    const ScopedSimdLevel sse2(SimdLevel::Sse2);
+    EXPECT_FALSE(packetWalkApplies(wide.view()));
+    for (const RenderScene& scene : {binary.view(), bruteForce, wide.view()}) {
+        const PacketCheck check = checkPackets(scene, mesh, rng, 200, 1.2f, true);
+        EXPECT_EQ(check.differ, 0u);
+        EXPECT_GT(check.hits, 200u);
+    }
+}
+
+}  // namespace
+}  // namespace pt
