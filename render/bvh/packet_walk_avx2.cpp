@@ -5,7 +5,9 @@
 // why the shared headers come first).
 #include <immintrin.h>
 
+#include <algorithm>
 #include <cassert>
+#include <cstddef>
 #include <limits>
 
 #include "render/bvh/packet_traversal.h"
@@ -25,6 +27,7 @@ namespace {
 // against eight lanes costs eight single-ray tests' arithmetic, which pays only while most
 // lanes use it (Embree's hybrid walk switches the same way).
 constexpr uint32_t kAloneLanes = 2;
+constexpr uint32_t kAllSlots = (1u << WideBvhNode::kWidth) - 1u;
 
 // The packet's rays as the box test takes them: per lane, TraversalRay's zero-axis padded
 // origins and inverse direction.
@@ -72,6 +75,78 @@ inline __m256 entersBox(const PacketSlabRays& r, const WideBvhNode& node, uint32
     return _mm256_cmp_ps(tNear, _mm256_min_ps(tFar, limit), _CMP_LE_OQ);
 }
 
+// A box test for the whole packet at once, where along each axis every ray's direction has the
+// same sign (camera rays, say): the eight children of a node in one slab test of interval
+// bounds, which no ray of the packet can enter where it says none does, so only the children it
+// lets through are tested lane by lane (Reshetov, Soupikov and Hurley 2005, "Multi-Level Ray
+// Tracing Algorithm", and Embree's frustum culling of coherent rays, Wald et al. 2014). Along an
+// axis where the directions are positive a lane's near distance is (lo - originLo) * inverse
+// (bvh_walk.h: padded origins, lo <= hi): at least d * inverse, d = lo - (the largest originLo),
+// for the inverse nearest to zero or farthest from it, whichever gives less; its far distance
+// (hi - originHi) * inverse at most the larger of e * inverse, e = hi - (the smallest originHi).
+// Negative directions swap the planes. Every rounding on the way is monotonic in each operand,
+// so the bounds hold for the rounded distances each lane computes.
+struct PacketFrustum {
+    bool valid = false;                  // false: some axis has directions of both signs
+    uint32_t nearPlane[3], farPlane[3];  // byte offsets of the plane arrays in WideBvhNode
+    __m256 nearOrigin[3], farOrigin[3], inverseSmall[3], inverseLarge[3];
+};
+
+PacketFrustum packetFrustum(const TraversalRay* rays, uint32_t lanes) {
+    constexpr uint32_t kAxisBytes = sizeof(WideBvhNode::loX);
+    PacketFrustum f;
+    for (int a = 0; a < 3; ++a) {
+        float inverseMin = kInf, inverseMax = -kInf, loMin = kInf, loMax = -kInf, hiMin = kInf, hiMax = -kInf;
+        for (uint32_t bits = lanes; bits != 0; bits &= bits - 1) {
+            const TraversalRay& r = rays[__builtin_ctz(bits)];
+            inverseMin = std::min(inverseMin, r.invDirection[a]),
+            inverseMax = std::max(inverseMax, r.invDirection[a]);
+            loMin = std::min(loMin, r.slabOriginLo[a]), loMax = std::max(loMax, r.slabOriginLo[a]);
+            hiMin = std::min(hiMin, r.slabOriginHi[a]), hiMax = std::max(hiMax, r.slabOriginHi[a]);
+        }
+        const bool positive = inverseMin > 0.0f;
+        if (!positive && !(inverseMax < 0.0f)) return f;
+        const uint32_t lo = uint32_t(offsetof(WideBvhNode, loX)) + uint32_t(a) * kAxisBytes;
+        const uint32_t hi = uint32_t(offsetof(WideBvhNode, hiX)) + uint32_t(a) * kAxisBytes;
+        f.nearPlane[a] = positive ? lo : hi;
+        f.farPlane[a] = positive ? hi : lo;
+        f.nearOrigin[a] = _mm256_set1_ps(positive ? loMax : hiMin);
+        f.farOrigin[a] = _mm256_set1_ps(positive ? hiMin : loMax);
+        f.inverseSmall[a] = _mm256_set1_ps(inverseMin);
+        f.inverseLarge[a] = _mm256_set1_ps(inverseMax);
+    }
+    f.valid = true;
+    return f;
+}
+
+// The slots of `node` some ray of the packet may enter before `limit` (the largest lane's).
+inline uint32_t frustumSlots(const PacketFrustum& f, const WideBvhNode& node, __m256 limit) {
+    const char* bytes = reinterpret_cast<const char*>(&node);
+    __m256 nearest[3], farthest[3];
+    for (int a = 0; a < 3; ++a) {
+        const __m256 d = _mm256_sub_ps(_mm256_load_ps(reinterpret_cast<const float*>(bytes + f.nearPlane[a])),
+                                       f.nearOrigin[a]);
+        const __m256 e = _mm256_sub_ps(_mm256_load_ps(reinterpret_cast<const float*>(bytes + f.farPlane[a])),
+                                       f.farOrigin[a]);
+        nearest[a] = _mm256_min_ps(_mm256_mul_ps(d, f.inverseSmall[a]), _mm256_mul_ps(d, f.inverseLarge[a]));
+        farthest[a] = _mm256_max_ps(_mm256_mul_ps(e, f.inverseSmall[a]), _mm256_mul_ps(e, f.inverseLarge[a]));
+    }
+    const __m256 tNear =
+        _mm256_max_ps(_mm256_max_ps(nearest[0], nearest[1]), _mm256_max_ps(nearest[2], _mm256_setzero_ps()));
+    const __m256 tFar = _mm256_mul_ps(_mm256_min_ps(farthest[0], _mm256_min_ps(farthest[1], farthest[2])),
+                                      _mm256_set1_ps(kSlabExitScale));
+    const __m256i unused = _mm256_cmpeq_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.count)),
+                                              _mm256_set1_epi32(int(WideBvhNode::kEmpty)));
+    return uint32_t(_mm256_movemask_ps(_mm256_andnot_ps(
+        _mm256_castsi256_ps(unused), _mm256_cmp_ps(tNear, _mm256_min_ps(tFar, limit), _CMP_LE_OQ))));
+}
+
+float largestLane(__m256 v) {
+    __m128 m = _mm_max_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+    m = _mm_max_ps(m, _mm_movehl_ps(m, m));
+    return _mm_cvtss_f32(_mm_max_ss(m, _mm_shuffle_ps(m, m, 1)));
+}
+
 float smallestLane(__m256 v) {
     __m128 m = _mm_min_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
     m = _mm_min_ps(m, _mm_movehl_ps(m, m));
@@ -87,9 +162,21 @@ struct alignas(32) PacketEntry {
 
 using Leaf = TriangleBlockLeaf<NoTraversalCount>;
 
+// Asks for an entry's bytes ahead of their use: a node's four cache lines, or a leaf's blocks.
+inline void prefetchEntry(const WideBvhNode* nodes, const TriangleBlock* blocks, uint32_t child,
+                          uint32_t count) {
+    const char* bytes = count == 0 ? reinterpret_cast<const char*>(nodes + child)
+                                   : reinterpret_cast<const char*>(blocks + child);
+    const uint32_t size = count == 0 ? uint32_t(sizeof(WideBvhNode))
+                                     : (count + TriangleBlock::kWidth - 1) / TriangleBlock::kWidth *
+                                           uint32_t(sizeof(TriangleBlock));
+    for (uint32_t offset = 0; offset < size; offset += 64) _mm_prefetch(bytes + offset, _MM_HINT_T0);
+}
+
 uint32_t walkPacket(const WideBvhNode* nodes, uint32_t root, const TraversalRay* rays, uint32_t lanes,
                     float* tMax, Leaf* leaves) {
     const PacketSlabRays slab = packetSlabRays(rays);
+    const PacketFrustum frustum = packetFrustum(rays, lanes);
     const __m256 nan = _mm256_set1_ps(std::numeric_limits<float>::quiet_NaN());
     const __m256 inf = _mm256_set1_ps(kInf), exitScale = _mm256_set1_ps(kSlabExitScale);
     const __m256i laneBits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
@@ -122,11 +209,15 @@ uint32_t walkPacket(const WideBvhNode* nodes, uint32_t root, const TraversalRay*
             __m256 entries[WideBvhNode::kWidth];
             float nearest[WideBvhNode::kWidth];
             uint32_t order[WideBvhNode::kWidth], n = 0;
-            for (uint32_t slot = 0; slot < WideBvhNode::kWidth && node.count[slot] != WideBvhNode::kEmpty;
-                 ++slot) {
+            uint32_t slots =
+                frustum.valid ? frustumSlots(frustum, node, _mm256_set1_ps(largestLane(limit))) : kAllSlots;
+            for (; slots != 0; slots &= slots - 1) {
+                const uint32_t slot = uint32_t(__builtin_ctz(slots));
+                if (node.count[slot] == WideBvhNode::kEmpty) break;
                 __m256 tNear;
                 const __m256 enters = _mm256_and_ps(entersBox(slab, node, slot, limit, tNear), reach);
                 if (_mm256_movemask_ps(enters) == 0) continue;
+                prefetchEntry(nodes, leaves[0].blocks, node.child[slot], node.count[slot]);
                 entries[slot] = _mm256_blendv_ps(nan, tNear, enters);
                 nearest[slot] = smallestLane(_mm256_blendv_ps(inf, tNear, enters));
                 // Farthest first (insertion sort by the nearest lane's entry), as the single-ray

@@ -252,6 +252,24 @@ PT_HD Vec3 finishedRadiance(const PathState& state, PathCounters& counters) {
     return Vec3(0.0f);
 }
 
+// The rest of tracePath's fused schedule for a path whose camera ray was traced elsewhere (the
+// CPU's 8-ray packets, render/bvh/packet_traversal.h): `hit` is that ray's closest hit as
+// intersectClosest gives it. The same rays, order and sums as tracePath<false>, so the same
+// radiance bit for bit.
+template <FeatureSet kF = kAllFeatures>
+PT_HD Vec3 finishPathFromCameraHit(const RenderScene& scene, PathState& state, const Hit& hit,
+                                   PathCounters& counters) {
+    ShadowRay shadow{};
+    ++counters.rays;
+    if (hit.valid()) {
+        shadow = shadeSurface<kF>(scene, state, hit);
+    } else {
+        shadeMiss<kF>(scene, state);  // ends the path
+    }
+    while (!fusedPathDone(state, shadow)) traceFusedStep<kF>(scene, state, shadow, counters);
+    return finishedRadiance(state, counters);
+}
+
 // One sample of pixel (x, y): the megakernel schedule of the stages above. With kAovs, `aov`
 // receives the sample's AOVs, the camera segment's traversal work included; without, it is
 // ignored and the loop is compiled with no AOV code at all (the choice is the caller's, once).

@@ -66,6 +66,10 @@ std::vector<Variant> variantsOf(const Backend& backend, const IntegratorToggles&
             t.firstHitCache = true;
         });
     }
+    if (!gpu) {
+        flip(base.rayPackets ? "packets off" : "packets on",
+             [](IntegratorToggles& t) { t.rayPackets = !t.rayPackets; });
+    }
     flip(base.russianRoulette ? "roulette off" : "roulette on",
          [](IntegratorToggles& t) { t.russianRoulette = !t.russianRoulette; });
     flip(base.nextEventEstimation ? "NEE off" : "NEE on",

@@ -173,17 +173,20 @@ void CpuBackend::render(uint32_t passes) {
     tbb::combinable<PathCounters> counters;
     constexpr size_t kTile = 16;
     const bool pathAovs = (aovs_.mask & kPathAovs) != 0;
+    const bool packets = !pathAovs && toggles_.rayPackets && packetWalkApplies(scene);
     std::atomic<bool> torn{false};
-    tbb::parallel_for(tbb::blocked_range2d<uint32_t>(0, height_, kTile, 0, width_, kTile),
-                      [&](const tbb::blocked_range2d<uint32_t>& tile) {
-                          const auto rows = tile.rows(), cols = tile.cols();
-                          const bool done =
-                              pathAovs ? renderTile<true>(scene, rows.begin(), rows.end(), cols.begin(),
-                                                          cols.end(), firstSample, passes, counters.local())
-                                       : renderTile<false>(scene, rows.begin(), rows.end(), cols.begin(),
-                                                           cols.end(), firstSample, passes, counters.local());
-                          if (!done) torn = true;
-                      });
+    tbb::parallel_for(
+        tbb::blocked_range2d<uint32_t>(0, height_, kTile, 0, width_, kTile),
+        [&](const tbb::blocked_range2d<uint32_t>& tile) {
+            const auto rows = tile.rows(), cols = tile.cols();
+            const uint32_t y0 = rows.begin(), y1 = rows.end(), x0 = cols.begin(), x1 = cols.end();
+            PathCounters& c = counters.local();
+            const bool done =
+                pathAovs  ? renderTile<true, false>(scene, y0, y1, x0, x1, firstSample, passes, c)
+                : packets ? renderTile<false, true>(scene, y0, y1, x0, x1, firstSample, passes, c)
+                          : renderTile<false, false>(scene, y0, y1, x0, x1, firstSample, passes, c);
+            if (!done) torn = true;
+        });
     if (torn) {
         resetAccumulation();
         return;
@@ -197,30 +200,52 @@ void CpuBackend::render(uint32_t passes) {
 }
 
 // Each pixel's samples in order, by one thread: the sums (and Welford's variance) need no atomics.
-// kAovs: the path records AOVs (kPathAovs); without, tracePath has no AOV code. Returns false
-// where the interrupt flag stopped it (checked before every sample: a call may ask for many
-// samples a pixel, and one relaxed load is nothing beside a path).
-template <bool kAovs>
+// kAovs: the path records AOVs (kPathAovs); without, tracePath has no AOV code. kPackets: a
+// row's pixels go eight at a time, each sample's eight camera rays through one packet walk,
+// each pixel still taking its samples in order. Returns false where the interrupt flag stopped
+// it (checked before every sample: a call may ask for many samples a pixel, and one relaxed
+// load is nothing beside a path).
+template <bool kAovs, bool kPackets>
 bool CpuBackend::renderTile(const RenderScene& scene, uint32_t y0, uint32_t y1, uint32_t x0, uint32_t x1,
                             uint32_t firstSample, uint32_t passes, PathCounters& counters) {
+    static_assert(!(kAovs && kPackets), "packets trace paths without AOVs");
+    constexpr uint32_t kGroup = kPackets ? kRayPacketSize : 1;
     const AovBuffers aovs = aovBuffersIn(aovSums_.data(), aovs_, size_t(width_) * height_);
     const bool variance = aovs.has(Aov::Variance);
     for (uint32_t y = y0; y < y1; ++y) {
-        for (uint32_t x = x0; x < x1; ++x) {
-            const uint32_t pixel = y * width_ + x;
-            double* sum = &sum_[size_t(pixel) * 3];
+        for (uint32_t x = x0; x < x1; x += kGroup) {
+            const uint32_t n = std::min(kGroup, x1 - x);
             for (uint32_t s = 0; s < passes; ++s) {
                 if (interruptRequested()) return false;
+                const uint32_t sample = firstSample + s;
+                Vec3 L[kGroup];
                 AovSample aov;
-                const Vec3 L = tracePath<kAovs>(scene, x, y, firstSample + s, counters, &aov);
-                sum[0] += L.x;
-                sum[1] += L.y;
-                sum[2] += L.z;
-                if (kAovs) {
-                    addAovSample(aovs, pixel, firstSample + s, aov);
-                    addAovCost(aovs, pixel, aov.cost);
+                if constexpr (kPackets) {
+                    PathState states[kGroup];
+                    Ray rays[kGroup];
+                    Hit hits[kGroup];
+                    for (uint32_t k = 0; k < n; ++k) {
+                        states[k] = generatePath(scene, x + k, y, sample);
+                        rays[k] = states[k].ray;
+                    }
+                    intersectClosestPacket(scene, rays, n, hits);
+                    for (uint32_t k = 0; k < n; ++k)
+                        L[k] = finishPathFromCameraHit(scene, states[k], hits[k], counters);
+                } else {
+                    L[0] = tracePath<kAovs>(scene, x, y, sample, counters, &aov);
                 }
-                if (variance) addVarianceSample(aovs, pixel, firstSample + s, L);
+                for (uint32_t k = 0; k < n; ++k) {
+                    const uint32_t pixel = y * width_ + x + k;
+                    double* sum = &sum_[size_t(pixel) * 3];
+                    sum[0] += L[k].x;
+                    sum[1] += L[k].y;
+                    sum[2] += L[k].z;
+                    if (kAovs) {
+                        addAovSample(aovs, pixel, sample, aov);
+                        addAovCost(aovs, pixel, aov.cost);
+                    }
+                    if (variance) addVarianceSample(aovs, pixel, sample, L[k]);
+                }
             }
         }
     }
