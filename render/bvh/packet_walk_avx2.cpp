@@ -75,6 +75,18 @@ inline __m256 entersBox(const PacketSlabRays& r, const WideBvhNode& node, uint32
     return _mm256_cmp_ps(tNear, _mm256_min_ps(tFar, limit), _CMP_LE_OQ);
 }
 
+float smallestLane(__m256 v) {
+    __m128 m = _mm_min_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+    m = _mm_min_ps(m, _mm_movehl_ps(m, m));
+    return _mm_cvtss_f32(_mm_min_ss(m, _mm_shuffle_ps(m, m, 1)));
+}
+
+float largestLane(__m256 v) {
+    __m128 m = _mm_max_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+    m = _mm_max_ps(m, _mm_movehl_ps(m, m));
+    return _mm_cvtss_f32(_mm_max_ss(m, _mm_shuffle_ps(m, m, 1)));
+}
+
 // A box test for the whole packet at once, where along each axis every ray's direction has the
 // same sign (camera rays, say): the eight children of a node in one slab test of interval
 // bounds, which no ray of the packet can enter where it says none does, so only the children it
@@ -92,20 +104,24 @@ struct PacketFrustum {
     __m256 nearOrigin[3], farOrigin[3], inverseSmall[3], inverseLarge[3];
 };
 
-PacketFrustum packetFrustum(const TraversalRay* rays, uint32_t lanes) {
+// Over the lanes set in `lanes` (a mask vector) only.
+float smallestOf(__m256 v, __m256 lanes) {
+    return smallestLane(_mm256_blendv_ps(_mm256_set1_ps(kInf), v, lanes));
+}
+float largestOf(__m256 v, __m256 lanes) {
+    return largestLane(_mm256_blendv_ps(_mm256_set1_ps(-kInf), v, lanes));
+}
+
+PacketFrustum packetFrustum(const PacketSlabRays& r, __m256 lanes) {
     constexpr uint32_t kAxisBytes = sizeof(WideBvhNode::loX);
+    const __m256 originsLo[3] = {r.loX, r.loY, r.loZ}, originsHi[3] = {r.hiX, r.hiY, r.hiZ};
+    const __m256 inverses[3] = {r.invX, r.invY, r.invZ};
     PacketFrustum f;
     for (int a = 0; a < 3; ++a) {
-        float inverseMin = kInf, inverseMax = -kInf, loMin = kInf, loMax = -kInf, hiMin = kInf, hiMax = -kInf;
-        for (uint32_t bits = lanes; bits != 0; bits &= bits - 1) {
-            const TraversalRay& r = rays[__builtin_ctz(bits)];
-            inverseMin = std::min(inverseMin, r.invDirection[a]),
-            inverseMax = std::max(inverseMax, r.invDirection[a]);
-            loMin = std::min(loMin, r.slabOriginLo[a]), loMax = std::max(loMax, r.slabOriginLo[a]);
-            hiMin = std::min(hiMin, r.slabOriginHi[a]), hiMax = std::max(hiMax, r.slabOriginHi[a]);
-        }
+        const float inverseMin = smallestOf(inverses[a], lanes), inverseMax = largestOf(inverses[a], lanes);
         const bool positive = inverseMin > 0.0f;
         if (!positive && !(inverseMax < 0.0f)) return f;
+        const float loMax = largestOf(originsLo[a], lanes), hiMin = smallestOf(originsHi[a], lanes);
         const uint32_t lo = uint32_t(offsetof(WideBvhNode, loX)) + uint32_t(a) * kAxisBytes;
         const uint32_t hi = uint32_t(offsetof(WideBvhNode, hiX)) + uint32_t(a) * kAxisBytes;
         f.nearPlane[a] = positive ? lo : hi;
@@ -141,18 +157,6 @@ inline uint32_t frustumSlots(const PacketFrustum& f, const WideBvhNode& node, __
         _mm256_castsi256_ps(unused), _mm256_cmp_ps(tNear, _mm256_min_ps(tFar, limit), _CMP_LE_OQ))));
 }
 
-float largestLane(__m256 v) {
-    __m128 m = _mm_max_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
-    m = _mm_max_ps(m, _mm_movehl_ps(m, m));
-    return _mm_cvtss_f32(_mm_max_ss(m, _mm_shuffle_ps(m, m, 1)));
-}
-
-float smallestLane(__m256 v) {
-    __m128 m = _mm_min_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
-    m = _mm_min_ps(m, _mm_movehl_ps(m, m));
-    return _mm_cvtss_f32(_mm_min_ss(m, _mm_shuffle_ps(m, m, 1)));
-}
-
 // An entry of the packet walk: a node (count 0) or a leaf, and per lane where that lane's ray
 // enters it, NaN for lanes that do not (a comparison with NaN is false, so they stay out).
 struct alignas(32) PacketEntry {
@@ -176,12 +180,12 @@ inline void prefetchEntry(const WideBvhNode* nodes, const TriangleBlock* blocks,
 uint32_t walkPacket(const WideBvhNode* nodes, uint32_t root, const TraversalRay* rays, uint32_t lanes,
                     float* tMax, Leaf* leaves) {
     const PacketSlabRays slab = packetSlabRays(rays);
-    const PacketFrustum frustum = packetFrustum(rays, lanes);
     const __m256 nan = _mm256_set1_ps(std::numeric_limits<float>::quiet_NaN());
     const __m256 inf = _mm256_set1_ps(kInf), exitScale = _mm256_set1_ps(kSlabExitScale);
     const __m256i laneBits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
     const __m256 rootLanes = _mm256_castsi256_ps(
         _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(int(lanes)), laneBits), laneBits));
+    const PacketFrustum frustum = packetFrustum(slab, rootLanes);
     PacketEntry stack[kWideStackSize];
     uint32_t size = 0;
     PacketEntry current{_mm256_blendv_ps(nan, _mm256_setzero_ps(), rootLanes), root, 0};

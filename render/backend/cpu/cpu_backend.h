@@ -37,8 +37,8 @@ public:
     double readDenoised(std::vector<float>& rgba) const override { return denoiser_.run(*this, rgba); }
 
 private:
-    // kPackets: each sample's camera rays of eight neighbouring pixels in a row go through one
-    // packet walk (packet_traversal.h), the rest of each path as tracePath's; not with kAovs.
+    // kPackets: each sample's camera rays of a 4 x 2 block of pixels go through one packet walk
+    // (packet_traversal.h), the rest of each path as tracePath's; not with kAovs.
     template <bool kAovs, bool kPackets>
     bool renderTile(const RenderScene& scene, uint32_t y0, uint32_t y1, uint32_t x0, uint32_t x1,
                     uint32_t firstSample, uint32_t passes, PathCounters& counters);
