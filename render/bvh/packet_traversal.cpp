@@ -6,78 +6,193 @@
 #include "render/bvh/traversal.h"
 #include "render/bvh/wide_walk_simd.h"
 
+// Sections: which scenes the packets take / one BLAS / through the TLAS / entry points.
+
 namespace pt {
 
 namespace {
 
-// The one triangle BLAS every ray of the scene meets, as traverseTlas reaches it: the only
-// instance's, in its object space, or the merged BLAS where the TLAS holds nothing else, in
-// world space. Null where there is none, or where the packet walk does not apply.
-struct PacketTarget {
-    const BlasRef* blas = nullptr;
-    bool merged = false;  // the merged BLAS: world-space rays, hits mapped to their instances
-};
+// ---- which scenes the packets take -----------------------------------------------------------
 
-PacketTarget packetTarget(const RenderScene& scene) {
+// How a packet reaches the scene's triangles, as traverseTlas does: the only instance's BLAS in
+// its object space, the merged BLAS alone in world space (the TLAS holds nothing else), or the
+// TLAS.
+enum class PacketRoute { None, OneInstance, MergedOnly, Tlas };
+
+PacketRoute packetRoute(const RenderScene& scene) {
     if (scene.bruteForce || scene.blasWideRoots.empty() || scene.instances.empty() ||
         wideWalkSimdLevel() != SimdLevel::Avx2)
-        return {};
-    PacketTarget target;
+        return PacketRoute::None;
     if (scene.instances.count == 1) {
-        target.blas = &scene.blases[scene.instances[0].blas];
-    } else if (scene.mergedBlas != kNoMergedBlas && scene.tlasInstanceIndices.count == 1 &&
-               scene.tlasInstanceIndices[0] == scene.instances.count) {
-        target.blas = &scene.blases[scene.mergedBlas];
-        target.merged = true;
+        return scene.blases[scene.instances[0].blas].kind == GeometryKind::Triangles
+                   ? PacketRoute::OneInstance
+                   : PacketRoute::None;
     }
-    if (!target.blas || target.blas->kind != GeometryKind::Triangles) return {};
-    return target;
+    if (scene.tlasNodes.empty()) return PacketRoute::None;
+    if (scene.mergedBlas != kNoMergedBlas && scene.tlasInstanceIndices.count == 1 &&
+        scene.tlasInstanceIndices[0] == scene.instances.count)
+        return PacketRoute::MergedOnly;
+    return PacketRoute::Tlas;
+}
+
+// intersectClosest's start: no hit, at the ray's tMax.
+Hit noHit(const Ray& ray) { return {ray.tMax, 0.0f, 0.0f, 0u, Hit::kNoHit}; }
+
+// ---- one BLAS --------------------------------------------------------------------------------
+
+// A hit of `blas` as traverseInstance or traverseMerged reports it: the instance, and for the
+// merged BLAS the instance triangle it copies.
+void reportHit(const RenderScene& scene, uint32_t entry, Hit& hit) {
+    if (entry == scene.instances.count) {
+        const MergedTriangle copied = scene.mergedTriangles[hit.primitive];
+        hit.instance = copied.instance;
+        hit.primitive = copied.primitive;
+    } else {
+        hit.instance = entry;
+    }
+}
+
+// The closest hits of the lanes in `lanes` in TLAS entry `entry` (an instance, or
+// instances.count for the merged BLAS) below tMax[lane], each as a fresh traverseBlas gives it
+// (ties in t to the lower primitive): rays[lane] are world rays, world[lane] their traversal
+// form. Returns the lanes that hit, their hits (not yet reported) in found[lane].
+uint32_t traceEntry(const RenderScene& scene, uint32_t entry, const Ray* rays, const TraversalRay* world,
+                    uint32_t lanes, float* tMax, Hit* found) {
+    const bool merged = entry == scene.instances.count;
+    const uint32_t index = merged ? scene.mergedBlas : scene.instances[entry].blas;
+    const BlasRef& blas = scene.blases[index];
+    if (blas.primitiveCount == 0 || blas.nodeCount == 0) return 0;  // traverseBlas: no hit
+    TraversalRay local[kRayPacketSize];
+    const uint32_t some = uint32_t(__builtin_ctz(lanes));
+    for (uint32_t lane = 0; lane < kRayPacketSize; ++lane) {
+        const uint32_t from = lanes & (1u << lane) ? lane : some;  // lanes left out copy one taken
+        local[lane] = merged ? world[from] : objectSpaceRay(scene.instances[entry], rays[from]);
+        found[lane] = {tMax[lane], 0.0f, 0.0f, 0u, Hit::kNoHit};
+    }
+    if (blas.kind == GeometryKind::Triangles) {
+        return simd_detail::walkTriangleWidePacketAvx2(scene.blasWideNodes.data, scene.blasWideRoots[index],
+                                                       scene.blasTriangleBlocks.data, local, lanes, tMax,
+                                                       found);
+    }
+    uint32_t hit = 0;
+    for (uint32_t bits = lanes; bits != 0; bits &= bits - 1) {
+        const uint32_t lane = uint32_t(__builtin_ctz(bits));
+        if (traverseBlas(scene, blas, local[lane], tMax[lane], found[lane], NoTraversalCount{}, false))
+            hit |= 1u << lane;
+    }
+    return hit;
+}
+
+// ---- through the TLAS ------------------------------------------------------------------------
+
+// Whether traverseTlas meets TLAS entry `a` before entry `b` on `ray` (both hit at one t: the
+// walk keeps the first it met, each BLAS walk taking only nearer hits than the one it has).
+// The order is the walk's without culling, as culling never drops an entry holding a hit at or
+// before tMax: walkBvh itself finds it, stopping at the first of the two.
+bool metBefore(const RenderScene& scene, const Ray& ray, uint32_t a, uint32_t b) {
+    struct FirstOfTwo {
+        const RenderScene& scene;
+        uint32_t a, b, met;
+        bool operator()(uint32_t first, uint32_t count, float&) {
+            for (uint32_t i = first; i < first + count; ++i) {
+                const uint32_t entry = scene.tlasInstanceIndices[i];
+                if (entry == a || entry == b) {
+                    met = entry;
+                    return true;
+                }
+            }
+            return false;
+        }
+    };
+    FirstOfTwo leaf{scene, a, b, b};
+    const TraversalRay traversal = makeTraversalRay(ray.origin, ray.direction);
+    float tMax = ray.tMax;
+    walkBvh(scene.tlasNodes.data, traversal, tMax, leaf, NoTraversalCount{}, true);
+    return leaf.met == a;
+}
+
+// The packet's state through the TLAS: per lane the hit so far (intersectClosest's), its tMax
+// and the TLAS entry that gave it.
+struct TlasPacket {
+    const RenderScene& scene;
+    const Ray* rays;
+    const TraversalRay* world;
+    float tMax[kRayPacketSize];
+    Hit* hits;
+    uint32_t hitEntry[kRayPacketSize];
+};
+
+// A TLAS leaf's entries in order, as TlasLeaf takes them. A lane with a hit asks each entry for
+// hits up to its t inclusive (the next float up): a nearer one replaces it, one at the same t
+// only where the single-ray walk would have met that entry first (metBefore), as its strict
+// comparison keeps the first of equal hits. So each lane ends with its single-ray hit whatever
+// order the packet meets the entries in.
+void visitTlasLeaf(void* context, uint32_t first, uint32_t count, uint32_t lanes) {
+    TlasPacket& p = *static_cast<TlasPacket*>(context);
+    for (uint32_t i = first; i < first + count; ++i) {
+        const uint32_t entry = p.scene.tlasInstanceIndices[i];
+        float limit[kRayPacketSize];
+        for (uint32_t lane = 0; lane < kRayPacketSize; ++lane) {
+            limit[lane] = p.hits[lane].valid() ? intAsFloat(floatAsInt(p.tMax[lane]) + 1) : p.tMax[lane];
+        }
+        Hit found[kRayPacketSize];
+        const uint32_t hit = traceEntry(p.scene, entry, p.rays, p.world, lanes, limit, found);
+        for (uint32_t bits = hit; bits != 0; bits &= bits - 1) {
+            const uint32_t lane = uint32_t(__builtin_ctz(bits));
+            const bool nearer = found[lane].t < p.tMax[lane] || !p.hits[lane].valid();
+            if (!nearer && !metBefore(p.scene, p.rays[lane], entry, p.hitEntry[lane])) continue;
+            reportHit(p.scene, entry, found[lane]);
+            p.hits[lane] = found[lane];
+            p.tMax[lane] = found[lane].t;
+            p.hitEntry[lane] = entry;
+        }
+    }
 }
 
 }  // namespace
 
-bool packetWalkApplies(const RenderScene& scene) { return packetTarget(scene).blas != nullptr; }
+// ---- entry points ----------------------------------------------------------------------------
+
+bool packetWalkApplies(const RenderScene& scene) { return packetRoute(scene) != PacketRoute::None; }
 
 void intersectClosestPacket(const RenderScene& scene, const Ray* rays, uint32_t count, Hit* hits) {
     assert(count >= 1 && count <= kRayPacketSize && "a packet holds 1 to 8 rays");
-    const PacketTarget target = packetTarget(scene);
-    if (!target.blas) {
+    const PacketRoute route = packetRoute(scene);
+    if (route == PacketRoute::None) {
         for (uint32_t i = 0; i < count; ++i) intersectClosest(scene, rays[i], hits[i]);
         return;
     }
-    // intersectClosest's start: no hit, at the ray's tMax. Lanes past `count` repeat the last
-    // ray and are left out of the walk.
-    TraversalRay traversal[kRayPacketSize];
-    float tMax[kRayPacketSize];
+    // Lanes past `count` repeat the last ray and are left out of the walks.
+    Ray laneRays[kRayPacketSize];
+    TraversalRay world[kRayPacketSize];
     Hit laneHits[kRayPacketSize];
     for (uint32_t lane = 0; lane < kRayPacketSize; ++lane) {
-        const Ray& ray = rays[std::min(lane, count - 1)];
-        traversal[lane] = target.merged ? makeTraversalRay(ray.origin, ray.direction)
-                                        : objectSpaceRay(scene.instances[0], ray);
-        tMax[lane] = ray.tMax;
-        laneHits[lane] = {ray.tMax, 0.0f, 0.0f, 0u, Hit::kNoHit};
-    }
-    const BlasRef& blas = *target.blas;
-    uint32_t found = 0;
-    if (blas.primitiveCount != 0 && blas.nodeCount != 0) {  // traverseBlas: an empty BLAS hits nothing
-        const uint32_t index = uint32_t(&blas - scene.blases.data);
-        found = simd_detail::walkTriangleWidePacketAvx2(scene.blasWideNodes.data, scene.blasWideRoots[index],
-                                                        scene.blasTriangleBlocks.data, traversal,
-                                                        (1u << count) - 1u, tMax, laneHits);
-    }
-    for (uint32_t lane = 0; lane < count; ++lane) {
-        Hit& hit = laneHits[lane];
-        if (found & (1u << lane)) {
-            if (target.merged) {  // as traverseMerged reports it
-                const MergedTriangle copied = scene.mergedTriangles[hit.primitive];
-                hit.instance = copied.instance;
-                hit.primitive = copied.primitive;
-            } else {
-                hit.instance = 0;
-            }
+        laneRays[lane] = rays[std::min(lane, count - 1)];
+        // One instance's rays are taken into its object space alone (traceEntry).
+        if (route != PacketRoute::OneInstance) {
+            world[lane] = makeTraversalRay(laneRays[lane].origin, laneRays[lane].direction);
         }
-        hits[lane] = hit;
+        laneHits[lane] = noHit(laneRays[lane]);
     }
+    const uint32_t lanes = (1u << count) - 1u;
+    if (route == PacketRoute::Tlas) {
+        TlasPacket packet{scene, laneRays, world, {}, laneHits, {}};
+        for (uint32_t lane = 0; lane < kRayPacketSize; ++lane) packet.tMax[lane] = laneRays[lane].tMax;
+        simd_detail::walkTlasPacketAvx2(scene.tlasNodes.data, world, lanes, packet.tMax, visitTlasLeaf,
+                                        &packet);
+    } else {
+        const uint32_t entry = route == PacketRoute::MergedOnly ? scene.instances.count : 0u;
+        float tMax[kRayPacketSize];
+        Hit found[kRayPacketSize];
+        for (uint32_t lane = 0; lane < kRayPacketSize; ++lane) tMax[lane] = laneRays[lane].tMax;
+        for (uint32_t bits = traceEntry(scene, entry, laneRays, world, lanes, tMax, found); bits != 0;
+             bits &= bits - 1) {
+            const uint32_t lane = uint32_t(__builtin_ctz(bits));
+            reportHit(scene, entry, found[lane]);
+            laneHits[lane] = found[lane];
+        }
+    }
+    std::copy(laneHits, laneHits + count, hits);
 }
 
 }  // namespace pt

@@ -16,6 +16,7 @@
 
 #include "render/bvh/bvh_walk.h"
 #include "render/bvh/hit.h"
+#include "render/kernel/bvh_node.h"
 #include "render/kernel/render_scene.h"
 #include "render/kernel/triangle_block.h"
 #include "render/kernel/wide_bvh_node.h"
@@ -42,6 +43,13 @@ namespace simd_detail {
 // a hit (as walkTriangleWideBvh does); returns the lanes that found one.
 uint32_t walkTriangleWidePacketAvx2(const WideBvhNode* nodes, uint32_t root, const TriangleBlock* blocks,
                                     const TraversalRay* rays, uint32_t lanes, float* tMax, Hit* hits);
+// What a TLAS leaf does with the packet: visit(context, first, count, lanes) for its entries
+// [first, first + count) of RenderScene::tlasInstanceIndices and the lanes that reach it.
+using TlasLeafVisit = void (*)(void* context, uint32_t first, uint32_t count, uint32_t lanes);
+// The packet walk at AVX2 of the binary TLAS `nodes` by the world rays rays[lane], lanes in
+// `lanes` (all kRayPacketSize readable); tMax (per lane) is read again after every leaf.
+void walkTlasPacketAvx2(const BvhNode* nodes, const TraversalRay* rays, uint32_t lanes, const float* tMax,
+                        TlasLeafVisit visit, void* context);
 }  // namespace simd_detail
 
 }  // namespace pt

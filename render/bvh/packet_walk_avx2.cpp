@@ -50,29 +50,47 @@ PacketSlabRays packetSlabRays(const TraversalRay* rays) {
             _mm256_load_ps(v[6]), _mm256_load_ps(v[7]), _mm256_load_ps(v[8])};
 }
 
+// The lanes set in `lanes` as a mask vector.
+__m256 laneMask(uint32_t lanes) {
+    const __m256i bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+    return _mm256_castsi256_ps(
+        _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(int(lanes)), bits), bits));
+}
+
 // (plane - origin) * inverse in eight lanes: where each lane's ray meets an axis-aligned plane.
 inline __m256 planeDistance(float plane, __m256 origin, __m256 inverse) {
     return _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(plane), origin), inverse);
 }
 
-// Slot `slot` of `node` against the eight rays: the lanes whose ray enters the box before its
-// limit (tMax * kSlabExitScale), as a mask vector, and where each enters. Per lane the
-// operations of pt::intersectWideBoxes in its operand order, so the same answer and entry as
-// the single-ray walk's test of that box.
-inline __m256 entersBox(const PacketSlabRays& r, const WideBvhNode& node, uint32_t slot, __m256 limit,
+// The box [lo, hi] against the eight rays: the lanes whose ray enters it before its limit
+// (tMax * kSlabExitScale), as a mask vector, and where each enters. Per lane the operations of
+// intersectBox (bvh_walk.h) and pt::intersectWideBoxes in their operand order, so the same
+// answer and entry as the single-ray walks' test of that box.
+inline __m256 entersBox(const PacketSlabRays& r, const float* lo, const float* hi, __m256 limit,
                         __m256& tNear) {
-    const __m256 x0 = planeDistance(node.loX[slot], r.loX, r.invX),
-                 x1 = planeDistance(node.hiX[slot], r.hiX, r.invX);
-    const __m256 y0 = planeDistance(node.loY[slot], r.loY, r.invY),
-                 y1 = planeDistance(node.hiY[slot], r.hiY, r.invY);
-    const __m256 z0 = planeDistance(node.loZ[slot], r.loZ, r.invZ),
-                 z1 = planeDistance(node.hiZ[slot], r.hiZ, r.invZ);
+    const __m256 x0 = planeDistance(lo[0], r.loX, r.invX), x1 = planeDistance(hi[0], r.hiX, r.invX);
+    const __m256 y0 = planeDistance(lo[1], r.loY, r.invY), y1 = planeDistance(hi[1], r.hiY, r.invY);
+    const __m256 z0 = planeDistance(lo[2], r.loZ, r.invZ), z1 = planeDistance(hi[2], r.hiZ, r.invZ);
     tNear = _mm256_max_ps(_mm256_max_ps(_mm256_min_ps(x0, x1), _mm256_min_ps(y0, y1)),
                           _mm256_max_ps(_mm256_min_ps(z0, z1), _mm256_setzero_ps()));
     const __m256 tFar = _mm256_mul_ps(
         _mm256_min_ps(_mm256_max_ps(x0, x1), _mm256_min_ps(_mm256_max_ps(y0, y1), _mm256_max_ps(z0, z1))),
         _mm256_set1_ps(kSlabExitScale));
     return _mm256_cmp_ps(tNear, _mm256_min_ps(tFar, limit), _CMP_LE_OQ);
+}
+
+// Slot `slot` of a wide node as entersBox takes it.
+inline __m256 entersSlot(const PacketSlabRays& r, const WideBvhNode& node, uint32_t slot, __m256 limit,
+                         __m256& tNear) {
+    const float lo[3] = {node.loX[slot], node.loY[slot], node.loZ[slot]};
+    const float hi[3] = {node.hiX[slot], node.hiY[slot], node.hiZ[slot]};
+    return entersBox(r, lo, hi, limit, tNear);
+}
+
+// A binary node's box as entersBox takes it.
+inline __m256 entersNode(const PacketSlabRays& r, const BvhNode& node, __m256 limit, __m256& tNear) {
+    const float lo[3] = {node.lo.x, node.lo.y, node.lo.z}, hi[3] = {node.hi.x, node.hi.y, node.hi.z};
+    return entersBox(r, lo, hi, limit, tNear);
 }
 
 float smallestLane(__m256 v) {
@@ -182,9 +200,7 @@ uint32_t walkPacket(const WideBvhNode* nodes, uint32_t root, const TraversalRay*
     const PacketSlabRays slab = packetSlabRays(rays);
     const __m256 nan = _mm256_set1_ps(std::numeric_limits<float>::quiet_NaN());
     const __m256 inf = _mm256_set1_ps(kInf), exitScale = _mm256_set1_ps(kSlabExitScale);
-    const __m256i laneBits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-    const __m256 rootLanes = _mm256_castsi256_ps(
-        _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(int(lanes)), laneBits), laneBits));
+    const __m256 rootLanes = laneMask(lanes);
     const PacketFrustum frustum = packetFrustum(slab, rootLanes);
     PacketEntry stack[kWideStackSize];
     uint32_t size = 0;
@@ -219,7 +235,7 @@ uint32_t walkPacket(const WideBvhNode* nodes, uint32_t root, const TraversalRay*
                 const uint32_t slot = uint32_t(__builtin_ctz(slots));
                 if (node.count[slot] == WideBvhNode::kEmpty) break;
                 __m256 tNear;
-                const __m256 enters = _mm256_and_ps(entersBox(slab, node, slot, limit, tNear), reach);
+                const __m256 enters = _mm256_and_ps(entersSlot(slab, node, slot, limit, tNear), reach);
                 if (_mm256_movemask_ps(enters) == 0) continue;
                 prefetchEntry(nodes, leaves[0].blocks, node.child[slot], node.count[slot]);
                 entries[slot] = _mm256_blendv_ps(nan, tNear, enters);
@@ -249,8 +265,66 @@ uint32_t walkPacket(const WideBvhNode* nodes, uint32_t root, const TraversalRay*
     }
 }
 
+// The binary TLAS walked by the packet: a node's two boxes against the eight rays, the child
+// whose nearest lane enters first taken first; each leaf goes to `visit` with the lanes that
+// reach it, and tMax is read again after it.
+void walkTlasPacket(const BvhNode* nodes, const TraversalRay* rays, uint32_t lanes, const float* tMax,
+                    simd_detail::TlasLeafVisit visit, void* context) {
+    struct alignas(32) Entry {
+        __m256 entry;  // per lane, NaN where the lane does not enter
+        uint32_t node;
+    };
+    const PacketSlabRays slab = packetSlabRays(rays);
+    const __m256 nan = _mm256_set1_ps(std::numeric_limits<float>::quiet_NaN());
+    const __m256 inf = _mm256_set1_ps(kInf), exitScale = _mm256_set1_ps(kSlabExitScale);
+    Entry stack[kBvhStackSize];
+    uint32_t size = 0;
+    __m256 tNear;
+    const __m256 rootEnters = _mm256_and_ps(
+        entersNode(slab, nodes[0], _mm256_mul_ps(_mm256_loadu_ps(tMax), exitScale), tNear), laneMask(lanes));
+    Entry current{_mm256_blendv_ps(nan, tNear, rootEnters), 0};
+    for (;;) {
+        const __m256 limit = _mm256_mul_ps(_mm256_loadu_ps(tMax), exitScale);
+        const __m256 reach = _mm256_cmp_ps(current.entry, limit, _CMP_LE_OQ);
+        const uint32_t active = uint32_t(_mm256_movemask_ps(reach));
+        const BvhNode& node = nodes[current.node];
+        if (active != 0 && node.isLeaf()) {
+            visit(context, node.leftOrFirst, node.count, active);
+        } else if (active != 0) {
+            __m256 nearLeft, nearRight;
+            const uint32_t left = node.leftOrFirst;
+            const __m256 entersLeft = _mm256_and_ps(entersNode(slab, nodes[left], limit, nearLeft), reach);
+            const __m256 entersRight =
+                _mm256_and_ps(entersNode(slab, nodes[left + 1], limit, nearRight), reach);
+            const bool hitLeft = _mm256_movemask_ps(entersLeft) != 0,
+                       hitRight = _mm256_movemask_ps(entersRight) != 0;
+            const Entry leftEntry{_mm256_blendv_ps(nan, nearLeft, entersLeft), left};
+            const Entry rightEntry{_mm256_blendv_ps(nan, nearRight, entersRight), left + 1};
+            if (hitLeft && hitRight) {
+                assert(size < kBvhStackSize && "TLAS deeper than the traversal stack");
+                const bool leftFirst = smallestLane(_mm256_blendv_ps(inf, nearLeft, entersLeft)) <=
+                                       smallestLane(_mm256_blendv_ps(inf, nearRight, entersRight));
+                stack[size++] = leftFirst ? rightEntry : leftEntry;
+                current = leftFirst ? leftEntry : rightEntry;
+                continue;
+            }
+            if (hitLeft || hitRight) {
+                current = hitLeft ? leftEntry : rightEntry;
+                continue;
+            }
+        }
+        if (size == 0) return;
+        current = stack[--size];
+    }
+}
+
 }  // namespace
 }  // namespace avx2
+
+void simd_detail::walkTlasPacketAvx2(const BvhNode* nodes, const TraversalRay* rays, uint32_t lanes,
+                                     const float* tMax, TlasLeafVisit visit, void* context) {
+    avx2::walkTlasPacket(nodes, rays, lanes, tMax, visit, context);
+}
 
 uint32_t simd_detail::walkTriangleWidePacketAvx2(const WideBvhNode* nodes, uint32_t root,
                                                  const TriangleBlock* blocks, const TraversalRay* rays,

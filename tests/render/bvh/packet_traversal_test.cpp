@@ -166,6 +166,54 @@ TEST(PacketTraversal, InstancesThroughTheirTransformAndTheMergedBlas) {
     }
 }
 
+// Instances under a TLAS, each with its own BLAS (merging off), among them a BLAS of spheres
+// (tested lane by lane), and two instances that share triangles at one place: the clustered
+// soup, and a mesh of the same triangles plus others beyond them, whose box differs, so the
+// TLAS holds them apart. Every hit on a shared triangle ties in t between the two; the
+// single-ray walk gives it to the instance it meets first, and so must the packet, whatever
+// order it meets them in.
+TEST(PacketTraversal, InstancesUnderATlasIncludingTwoThatTieEverywhere) {
+    if (supportedSimdLevel() != SimdLevel::Avx2) GTEST_SKIP() << "this processor runs no AVX2";
+    Rng rng(35);
+    const Mesh shared = test::makeSoup(test::SoupKind::Clustered, 3000, rng);
+    Mesh wider = shared;  // the same triangles, and as many again shifted along x
+    const uint32_t base = uint32_t(wider.positions.size());
+    for (const Vec3& p : shared.positions) wider.positions.push_back(p + Vec3(1.2f, 0.3f, 0.0f));
+    for (const uint32_t i : shared.indices) wider.indices.push_back(base + i);
+    std::vector<Vec4> spheres;
+    for (int i = 0; i < 200; ++i) {
+        const Vec3 c = rng.inBox(Vec3(-1.0f), Vec3(1.0f));
+        spheres.push_back(Vec4(c.x, c.y, c.z, rng.uniform(0.01f, 0.08f)));
+    }
+    const std::vector<Mesh> meshes = {shared, wider, test::makeSoup(test::SoupKind::Uniform, 2000, rng),
+                                      test::makeSphereMesh(spheres)};
+    const std::vector<test::InstanceSpec> specs = {
+        {0, Affine3{}},
+        {2, translationTransform(Vec3(-0.5f, 0.3f, 0.2f)) * scaleTransform(Vec3(0.5f))},
+        {1, Affine3{}},  // shares instance 0's triangles
+        {3, scaleTransform(Vec3(0.9f))},
+        {2, translationTransform(Vec3(0.6f, -0.6f, 0.0f)) * scaleTransform(Vec3(0.3f))},
+    };
+    CompileOptions options = test::layoutOptions(test::Layout::Wide);
+    options.mergeSmallInstances = false;
+    const CompiledScene compiled = test::compileTestScene(meshes, specs, options);
+    const RenderScene scene = compiled.view();
+    ASSERT_TRUE(packetWalkApplies(scene));
+    ASSERT_GT(compiled.tlasInstanceIndices.size(), 1u);
+    const PacketCheck check = checkPackets(scene, shared, rng, 4000, 1.3f, true);
+    EXPECT_EQ(check.differ, 0u);
+    EXPECT_GT(check.hits, 6000u);
+    // Both instances do take such ties: rays at the shared triangles hit either.
+    uint32_t taken[2] = {0, 0};
+    for (int i = 0; i < 4000; ++i) {
+        Hit hit;
+        intersectClosest(scene, test::rayAtTriangle(rng, shared, Vec3(-1.3f), Vec3(1.3f)), hit);
+        if (hit.valid() && (hit.instance == 0 || hit.instance == 2)) ++taken[hit.instance / 2];
+    }
+    EXPECT_GT(taken[0], 100u);
+    EXPECT_GT(taken[1], 100u);
+}
+
 // Where the walk does not apply (SSE2, the binary layout, brute force) the packet's rays are
 // traced one by one, with the same hits.
 TEST(PacketTraversal, ScenesTheWalkDoesNotTakeAreTracedRayByRay) {

@@ -1,8 +1,8 @@
 // The CPU backend's 8-ray packets of camera rays (IntegratorToggles::rayPackets,
 // render/bvh/packet_traversal.h): the image, its variance and the rays counted are those of
 // one ray at a time, bit for bit, on a scene whose instances all merge into the world-space
-// BLAS and on one mesh through its instance transform, at a width that leaves tiles' rows with
-// partial packets.
+// BLAS, on the same instances under a TLAS, and on one mesh through its instance transform, at
+// a size that leaves tiles with partial packets.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -23,9 +23,10 @@ struct Rendered {
     uint64_t rays = 0;
 };
 
-Rendered render(const Scene& scene, bool packets) {
+Rendered render(const Scene& scene, bool packets, bool merge) {
     IntegratorToggles toggles;
     toggles.rayPackets = packets;
+    toggles.mergeInstances = merge;
     CpuBackend backend;
     backend.setToggles(toggles);
     backend.setAovs(aovBit(Aov::Variance));  // per-sample bookkeeping, not a path AOV
@@ -60,12 +61,12 @@ Scene roomCorner() {
     return scene;
 }
 
-void expectPacketsChangeNothing(const Scene& scene) {
+void expectPacketsChangeNothing(const Scene& scene, bool merge = true) {
     CompileOptions options;
     options.wideBvh = true;
-    options.mergeSmallInstances = true;
+    options.mergeSmallInstances = merge;
     ASSERT_TRUE(packetWalkApplies(compileRenderScene(scene, options).view())) << "the packets should apply";
-    const Rendered packets = render(scene, true), single = render(scene, false);
+    const Rendered packets = render(scene, true, merge), single = render(scene, false, merge);
     EXPECT_EQ(packets.beauty, single.beauty);
     EXPECT_EQ(packets.variance, single.variance);
     EXPECT_EQ(packets.rays, single.rays);
@@ -75,6 +76,11 @@ void expectPacketsChangeNothing(const Scene& scene) {
 TEST(CpuRayPackets, MergedInstancesRenderBitForBitAsOneRayAtATime) {
     if (supportedSimdLevel() != SimdLevel::Avx2) GTEST_SKIP() << "this processor runs no AVX2";
     expectPacketsChangeNothing(roomCorner());
+}
+
+TEST(CpuRayPackets, InstancesUnderATlasRenderBitForBitAsOneRayAtATime) {
+    if (supportedSimdLevel() != SimdLevel::Avx2) GTEST_SKIP() << "this processor runs no AVX2";
+    expectPacketsChangeNothing(roomCorner(), false);
 }
 
 TEST(CpuRayPackets, OneTransformedMeshRendersBitForBitAsOneRayAtATime) {
