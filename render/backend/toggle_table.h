@@ -20,8 +20,8 @@ struct IntegratorToggles {
     // GPU walks the binary ones unless gpuWideBvh.
     bool wideBvh = true;
     // The CPU traces closest hits of neighbouring camera rays eight at a time through one walk
-    // (render/bvh/packet_traversal.h), where the scene's rays meet one triangle BLAS and the
-    // processor runs AVX2; the same hits as one at a time.
+    // (render/bvh/packet_traversal.h), where the processor runs AVX2; the same hits as one at
+    // a time.
     bool rayPackets = true;
     float clampRadiance = 0.0f;  // firefly clamp on indirect luminance per sample; 0 = off
     // Jitter primary rays inside the pixel (antialiasing). Off: every sample of a pixel starts

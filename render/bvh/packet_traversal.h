@@ -5,10 +5,12 @@
 // Ray Tracing"; Embree's hybrid walk: Wald et al. 2014, "Embree: A Kernel Framework for
 // Efficient CPU Ray Tracing", section 5): a node is loaded once for the packet, each child box
 // is tested against the eight rays in one 256-bit slab test, and lanes left alone in a subtree
-// finish it on the single-ray walk. Each ray gets exactly the hit intersectClosest gives it:
-// every (ray, box) test computes what the single-ray test computes for that ray and box, every
-// leaf a ray enters is tested for that ray by the single-ray leaf test, with its state, and
-// the closest hit with ties to the lower primitive does not depend on the order of the leaves.
+// finish it on the single-ray walk; over several instances the packet walks the TLAS first.
+// Each ray gets exactly the hit intersectClosest gives it: every (ray, box) test computes what
+// the single-ray test computes for that ray and box, every leaf a ray enters is tested for that
+// ray by the single-ray leaf test, with its state, the closest hit with ties to the lower
+// primitive does not depend on the order of a BLAS's leaves, and a tie between two instances
+// goes to the one the single-ray walk meets first (packet_traversal.cpp).
 #if defined(__CUDACC__)
 #error "packet_traversal.h is CPU code"
 #endif
@@ -27,9 +29,8 @@ namespace pt {
 constexpr uint32_t kRayPacketSize = 8;
 
 // Whether intersectClosestPacket walks `scene`'s rays together: the CPU runs AVX2 (the walk's
-// level, wide_walk_simd.h), the scene's rays meet one triangle BLAS (one instance, or instances
-// all merged into the world-space BLAS) in its 8-wide form, and brute force is off. Otherwise it
-// traces the rays one by one.
+// level, wide_walk_simd.h), the scene has the 8-wide BLASes, and brute force is off. Otherwise
+// it traces the rays one by one.
 bool packetWalkApplies(const RenderScene& scene);
 
 // hits[i] = what intersectClosest(scene, rays[i], hits[i]) gives, bit for bit, for i < count
