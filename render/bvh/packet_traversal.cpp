@@ -5,6 +5,7 @@
 
 #include "render/bvh/traversal.h"
 #include "render/bvh/wide_walk_simd.h"
+#include "render/math/float_error.h"
 
 // Sections: which scenes the packets take / one BLAS / through the TLAS / entry points.
 
@@ -16,7 +17,9 @@ namespace {
 
 // How a packet reaches the scene's triangles, as traverseTlas does: the only instance's BLAS in
 // its object space, the merged BLAS alone in world space (the TLAS holds nothing else), or the
-// TLAS.
+// TLAS. A BLAS's wide form is walked even where the scene also has compressed BLASes (the CPU
+// backend never builds those; tests do), whose walk traverseBlas would take: the hits are the
+// same, as every walk's are.
 enum class PacketRoute { None, OneInstance, MergedOnly, Tlas };
 
 PacketRoute packetRoute(const RenderScene& scene) {
@@ -133,7 +136,7 @@ void visitTlasLeaf(void* context, uint32_t first, uint32_t count, uint32_t lanes
         const uint32_t entry = p.scene.tlasInstanceIndices[i];
         float limit[kRayPacketSize];
         for (uint32_t lane = 0; lane < kRayPacketSize; ++lane) {
-            limit[lane] = p.hits[lane].valid() ? intAsFloat(floatAsInt(p.tMax[lane]) + 1) : p.tMax[lane];
+            limit[lane] = p.hits[lane].valid() ? nextFloatUp(p.tMax[lane]) : p.tMax[lane];
         }
         Hit found[kRayPacketSize];
         const uint32_t hit = traceEntry(p.scene, entry, p.rays, p.world, lanes, limit, found);
@@ -164,7 +167,7 @@ void intersectClosestPacket(const RenderScene& scene, const Ray* rays, uint32_t 
     }
     // Lanes past `count` repeat the last ray and are left out of the walks.
     Ray laneRays[kRayPacketSize];
-    TraversalRay world[kRayPacketSize];
+    TraversalRay world[kRayPacketSize] = {};
     Hit laneHits[kRayPacketSize];
     for (uint32_t lane = 0; lane < kRayPacketSize; ++lane) {
         laneRays[lane] = rays[std::min(lane, count - 1)];

@@ -29,8 +29,9 @@ namespace pt {
 constexpr uint32_t kRayPacketSize = 8;
 
 // Whether intersectClosestPacket walks `scene`'s rays together: the CPU runs AVX2 (the walk's
-// level, wide_walk_simd.h), the scene has the 8-wide BLASes, and brute force is off. Otherwise
-// it traces the rays one by one.
+// level, wide_walk_simd.h), the scene has the 8-wide BLASes and instances, brute force is off,
+// and its one instance (where it has one) is of triangles; with several, a TLAS. Otherwise it
+// traces the rays one by one.
 bool packetWalkApplies(const RenderScene& scene);
 
 // hits[i] = what intersectClosest(scene, rays[i], hits[i]) gives, bit for bit, for i < count

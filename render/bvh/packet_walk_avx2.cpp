@@ -134,7 +134,7 @@ PacketFrustum packetFrustum(const PacketSlabRays& r, __m256 lanes) {
     constexpr uint32_t kAxisBytes = sizeof(WideBvhNode::loX);
     const __m256 originsLo[3] = {r.loX, r.loY, r.loZ}, originsHi[3] = {r.hiX, r.hiY, r.hiZ};
     const __m256 inverses[3] = {r.invX, r.invY, r.invZ};
-    PacketFrustum f;
+    PacketFrustum f{};
     for (int a = 0; a < 3; ++a) {
         const float inverseMin = smallestOf(inverses[a], lanes), inverseMax = largestOf(inverses[a], lanes);
         const bool positive = inverseMin > 0.0f;

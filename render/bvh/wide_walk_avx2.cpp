@@ -6,6 +6,8 @@
 // code shares.
 #include <immintrin.h>
 
+#include <cstddef>
+
 #include "render/bvh/wide_walk.h"
 #include "render/bvh/wide_walk_simd.h"
 

@@ -9,6 +9,8 @@
 #if !defined(__AVX2__) && !defined(PT_AVX2_TARGET_PRAGMA)
 #error "wide_walk_avx2.h: include it under the AVX2 target pragma (define PT_AVX2_TARGET_PRAGMA there)"
 #endif
+// Its includes must already have come before the pragma (the .cpp includes them first); these
+// only state what it uses.
 #include <immintrin.h>
 
 #include <cstddef>

@@ -1,6 +1,7 @@
 // The CPU's 8-wide walk loop (issue 21), included twice on purpose, so no include guard: by
-// wide_walk.h into namespace pt, where the node test is SSE's, and by wide_walk_avx2.cpp into
-// namespace pt::avx2 under an AVX2 target pragma, where it is one 256-bit test. Each copy calls
+// wide_walk.h into namespace pt, where the node test is SSE's, and by wide_walk_avx2.h into
+// namespace pt::avx2 under an AVX2 target pragma (in wide_walk_avx2.cpp and
+// packet_walk_avx2.cpp), where it is one 256-bit test. Each copy calls
 // the WideSlabRay, wideSlabRay and intersectWideNode of the namespace it is included in, and
 // its code is compiled for that namespace's instruction set; everything else comes from pt.
 // Included after those three are declared, inside the namespace; it includes nothing itself.

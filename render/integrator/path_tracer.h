@@ -220,6 +220,15 @@ PT_HD bool fusedPathDone(const PathState& state, const ShadowRay& shadow) {
     return !shadow.valid && !state.alive;
 }
 
+// Where the path's segment ended: shaded at its hit (the shadow ray it queues, if any), or at
+// the miss, which ends the path (no shadow ray).
+template <FeatureSet kF>
+PT_HD ShadowRay shadeSegmentEnd(const RenderScene& scene, PathState& state, bool found, const Hit& hit) {
+    if (found) return shadeSurface<kF>(scene, state, hit);
+    shadeMiss<kF>(scene, state);
+    return ShadowRay{};
+}
+
 template <FeatureSet kF>
 PT_HD void traceFusedStep(const RenderScene& scene, PathState& state, ShadowRay& shadow,
                           PathCounters& counters) {
@@ -232,10 +241,8 @@ PT_HD void traceFusedStep(const RenderScene& scene, PathState& state, ShadowRay&
             state.radiance += shadow.contribution;
         }
         shadow.valid = false;
-    } else if (!found) {
-        shadeMiss<kF>(scene, state);  // ends the path
     } else {
-        shadow = shadeSurface<kF>(scene, state, hit);
+        shadow = shadeSegmentEnd<kF>(scene, state, found, hit);
     }
 }
 
@@ -259,13 +266,8 @@ PT_HD Vec3 finishedRadiance(const PathState& state, PathCounters& counters) {
 template <FeatureSet kF = kAllFeatures>
 PT_HD Vec3 finishPathFromCameraHit(const RenderScene& scene, PathState& state, const Hit& hit,
                                    PathCounters& counters) {
-    ShadowRay shadow{};
     ++counters.rays;
-    if (hit.valid()) {
-        shadow = shadeSurface<kF>(scene, state, hit);
-    } else {
-        shadeMiss<kF>(scene, state);  // ends the path
-    }
+    ShadowRay shadow = shadeSegmentEnd<kF>(scene, state, hit.valid(), hit);
     while (!fusedPathDone(state, shadow)) traceFusedStep<kF>(scene, state, shadow, counters);
     return finishedRadiance(state, counters);
 }

@@ -2,6 +2,7 @@
 // with the toggles on and off, each the median of several runs after a warm-up.
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 
@@ -121,9 +122,11 @@ std::vector<double> benchPackets(Backend& backend, const Scene& scene, const std
                                  const BenchSettings& settings, BenchReport& report) {
     std::vector<double> singleRates;
     for (const TracedRaySet& set : sets) singleRates.push_back(set.mraysPerSecond);
-    if (backend.name() != "cpu" || !settings.toggles.rayPackets || settings.toggles.bruteForce ||
-        !settings.toggles.wideBvh || supportedSimdLevel() != SimdLevel::Avx2)
-        return singleRates;
+    const std::vector<ToggleState> states = backend.toggleStates();
+    const bool packets = std::any_of(states.begin(), states.end(), [](const ToggleState& s) {
+        return s.id == ToggleId::RayPackets && s.active;
+    });
+    if (backend.name() != "cpu" || !packets) return singleRates;
     IntegratorToggles single = settings.toggles;
     single.rayPackets = false;
     backend.setToggles(single);

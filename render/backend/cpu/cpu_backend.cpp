@@ -12,6 +12,7 @@
 #include "render/backend/sync_steps.h"
 #include "render/backend/toggle_states.h"
 #include "render/bvh/packet_traversal.h"
+#include "render/bvh/wide_walk_simd.h"
 #include "render/compile/host_refit.h"
 #include "render/compile/scene_features.h"
 #include "render/compile/wide_blases.h"
@@ -131,12 +132,28 @@ void CpuBackend::setToggles(const IntegratorToggles& toggles) {
     }
 }
 
+bool CpuBackend::packetsApply(std::string* why) const {
+    const auto refuse = [&](const char* reason) {
+        if (why) *why = reason;
+        return false;
+    };
+    if (!toggles_.rayPackets) return refuse("");
+    if ((aovs_.mask & kPathAovs) != 0) return refuse("path AOVs record each camera ray's traversal");
+    if (compiled_ && !packetWalkApplies(view_)) {
+        return refuse(wideWalkSimdLevel() != SimdLevel::Avx2 ? "the processor runs no AVX2"
+                                                             : "needs the 8-wide BVH and no brute force");
+    }
+    return true;
+}
+
 std::vector<ToggleState> CpuBackend::toggleStates() const {
     std::vector<ToggleState> states = integratorToggleStates(toggles_);
     for (ToggleState& s : states) {
         if (toggleRow(s.id).scope == ToggleScope::GpuScheduling) {
             s.active = false;
             s.note = "CUDA only: the CPU backend runs one path per thread";
+        } else if (s.id == ToggleId::RayPackets && s.requested) {
+            s.active = packetsApply(&s.note);
         }
     }
     return states;
@@ -173,7 +190,7 @@ void CpuBackend::render(uint32_t passes) {
     tbb::combinable<PathCounters> counters;
     constexpr size_t kTile = 16;
     const bool pathAovs = (aovs_.mask & kPathAovs) != 0;
-    const bool packets = !pathAovs && toggles_.rayPackets && packetWalkApplies(scene);
+    const bool packets = packetsApply(nullptr);
     std::atomic<bool> torn{false};
     tbb::parallel_for(
         tbb::blocked_range2d<uint32_t>(0, height_, kTile, 0, width_, kTile),

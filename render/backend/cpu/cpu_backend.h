@@ -39,6 +39,8 @@ public:
 private:
     // kPackets: each sample's camera rays of a 4 x 2 block of pixels go through one packet walk
     // (packet_traversal.h), the rest of each path as tracePath's; not with kAovs.
+    // Whether render() traces camera rays in packets now; else `why` (where not null) says why.
+    bool packetsApply(std::string* why) const;
     template <bool kAovs, bool kPackets>
     bool renderTile(const RenderScene& scene, uint32_t y0, uint32_t y1, uint32_t x0, uint32_t x1,
                     uint32_t firstSample, uint32_t passes, PathCounters& counters);

@@ -738,6 +738,9 @@ std::vector<ToggleState> CudaBackend::toggleStates() const {
         } else if (s.id == ToggleId::WideBvh) {
             s.active = false;
             s.note = "CPU only: the GPU's wide BVH is gpu_wide_bvh";
+        } else if (s.id == ToggleId::RayPackets) {
+            s.active = false;
+            s.note = "CPU only: a warp already walks 32 rays together";
         } else if (s.id == ToggleId::PathRegeneration && (aovsRequested_ & kPathAovs) != 0) {
             s.active = false;
             s.note = "path AOVs run one path a thread";

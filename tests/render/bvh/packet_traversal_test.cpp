@@ -92,7 +92,12 @@ PacketCheck checkPackets(const RenderScene& scene, const Mesh& targets, Rng& rng
     PacketCheck check;
     const Vec3 lo(-extent), hi(extent);
     for (int p = 0; p < packets; ++p) {
-        const std::vector<Ray> rays = p % 2 ? coherentPacket(rng, lo, hi) : mixedPacket(rng, targets, lo, hi);
+        std::vector<Ray> rays = p % 2 ? coherentPacket(rng, lo, hi) : mixedPacket(rng, targets, lo, hi);
+        if (p % 6 == 1) {
+            // A camera along an axis: every direction's z exactly zero (of one sign), so the
+            // interval test measures from padded origins (bvh_walk.h).
+            for (Ray& ray : rays) ray.direction.z = p % 12 == 1 ? 0.0f : -0.0f;
+        }
         const uint32_t count = partial && p % 5 == 0 ? 1 + rng.index(kRayPacketSize) : kRayPacketSize;
         check.differ += packetDifferences(scene, rays, count, check.hits);
     }
@@ -128,6 +133,7 @@ TEST(PacketTraversal, TiesGoToTheLowerPrimitiveAsOneRayAtATime) {
         for (size_t i = 0; i < original; ++i) mesh.indices.push_back(mesh.indices[i]);
     }
     const CompiledScene compiled = test::compileSingleMesh(mesh, test::Layout::Wide);
+    ASSERT_TRUE(packetWalkApplies(compiled.view()));
     const PacketCheck check = checkPackets(compiled.view(), mesh, rng, 4000, 1.2f);
     EXPECT_EQ(check.differ, 0u);
     EXPECT_GT(check.hits, 4000u);
@@ -212,6 +218,33 @@ TEST(PacketTraversal, InstancesUnderATlasIncludingTwoThatTieEverywhere) {
     }
     EXPECT_GT(taken[0], 100u);
     EXPECT_GT(taken[1], 100u);
+}
+
+// The merged BLAS beside instances of their own under one TLAS: small instances merge (the
+// soup's copies), the large one keeps its BLAS, and the soup's copies coincide with triangles
+// of that large mesh, so hits tie between the merged BLAS and the instance.
+TEST(PacketTraversal, TheMergedBlasBesideInstancesUnderATlas) {
+    if (supportedSimdLevel() != SimdLevel::Avx2) GTEST_SKIP() << "this processor runs no AVX2";
+    Rng rng(36);
+    const Mesh small = test::makeSoup(test::SoupKind::Clustered, 500, rng);
+    Mesh large = test::makeSoup(test::SoupKind::Uniform, 70000, rng);  // too large to merge
+    const uint32_t base = uint32_t(large.positions.size());
+    large.positions.insert(large.positions.end(), small.positions.begin(), small.positions.end());
+    for (const uint32_t i : small.indices) large.indices.push_back(base + i);
+    const std::vector<test::InstanceSpec> specs = {
+        {0, Affine3{}},  // its triangles are also the large mesh's
+        {0, translationTransform(Vec3(0.5f, 0.2f, 0.0f)) * scaleTransform(Vec3(0.5f))},
+        {1, Affine3{}},
+    };
+    const CompiledScene compiled =
+        test::compileTestScene({small, large}, specs, test::layoutOptions(test::Layout::Wide));
+    ASSERT_TRUE(compiled.merged.active());
+    ASSERT_GT(compiled.tlasInstanceIndices.size(), 1u) << "the merged BLAS and the large instance";
+    const RenderScene scene = compiled.view();
+    ASSERT_TRUE(packetWalkApplies(scene));
+    const PacketCheck check = checkPackets(scene, small, rng, 3000, 1.3f, true);
+    EXPECT_EQ(check.differ, 0u);
+    EXPECT_GT(check.hits, 6000u);
 }
 
 // Where the walk does not apply (SSE2, the binary layout, brute force) the packet's rays are

@@ -36,8 +36,8 @@ Rendered render(const Scene& scene, bool packets, bool merge) {
     return {test::beautyOf(backend), test::aovOf(backend, Aov::Variance), backend.stats().rays};
 }
 
-// A room corner: floor, back wall, a mirror box and a glossy box under a lamp, at a width that
-// leaves the 16-pixel tiles' rows 5 pixels at the right edge (a partial packet).
+// A room corner: floor, back wall, a mirror box and a glossy box under a lamp, at 53 x 21:
+// tiles of 13-14 by 10-11 pixels, so 4 x 2 blocks at their edges hold fewer than eight.
 Scene roomCorner() {
     Scene scene;
     scene.render = {53, 21, 4, 1, 0};
