@@ -49,14 +49,19 @@ std::vector<Ray> mixedPacket(Rng& rng, const Mesh& mesh, Vec3 lo, Vec3 hi) {
     return rays;
 }
 
+// Appends `from`'s triangles to `to`, each corner moved by `place` (a Vec3 -> Vec3 function).
+template <class Place>
+void appendTriangles(Mesh& to, const Mesh& from, Place&& place) {
+    const uint32_t base = uint32_t(to.positions.size());
+    for (const Vec3& p : from.positions) to.positions.push_back(place(p));
+    for (const uint32_t i : from.indices) to.indices.push_back(base + i);
+}
+
 // The instances' triangles in world space, one mesh.
 Mesh worldMesh(const Mesh& mesh, const std::vector<test::InstanceSpec>& instances) {
     Mesh world;
     for (const test::InstanceSpec& instance : instances) {
-        const uint32_t base = uint32_t(world.positions.size());
-        for (const Vec3& p : mesh.positions)
-            world.positions.push_back(instance.objectToWorld.transformPoint(p));
-        for (const uint32_t i : mesh.indices) world.indices.push_back(base + i);
+        appendTriangles(world, mesh, [&](Vec3 p) { return instance.objectToWorld.transformPoint(p); });
     }
     return world;
 }
@@ -183,9 +188,7 @@ TEST(PacketTraversal, InstancesUnderATlasIncludingTwoThatTieEverywhere) {
     Rng rng(35);
     const Mesh shared = test::makeSoup(test::SoupKind::Clustered, 3000, rng);
     Mesh wider = shared;  // the same triangles, and as many again shifted along x
-    const uint32_t base = uint32_t(wider.positions.size());
-    for (const Vec3& p : shared.positions) wider.positions.push_back(p + Vec3(1.2f, 0.3f, 0.0f));
-    for (const uint32_t i : shared.indices) wider.indices.push_back(base + i);
+    appendTriangles(wider, shared, [](Vec3 p) { return p + Vec3(1.2f, 0.3f, 0.0f); });
     std::vector<Vec4> spheres;
     for (int i = 0; i < 200; ++i) {
         const Vec3 c = rng.inBox(Vec3(-1.0f), Vec3(1.0f));
@@ -228,9 +231,7 @@ TEST(PacketTraversal, TheMergedBlasBesideInstancesUnderATlas) {
     Rng rng(36);
     const Mesh small = test::makeSoup(test::SoupKind::Clustered, 500, rng);
     Mesh large = test::makeSoup(test::SoupKind::Uniform, 70000, rng);  // too large to merge
-    const uint32_t base = uint32_t(large.positions.size());
-    large.positions.insert(large.positions.end(), small.positions.begin(), small.positions.end());
-    for (const uint32_t i : small.indices) large.indices.push_back(base + i);
+    appendTriangles(large, small, [](Vec3 p) { return p; });
     const std::vector<test::InstanceSpec> specs = {
         {0, Affine3{}},  // its triangles are also the large mesh's
         {0, translationTransform(Vec3(0.5f, 0.2f, 0.0f)) * scaleTransform(Vec3(0.5f))},
