@@ -259,22 +259,13 @@ protected:
 
     // Starts the editor on `scene` (its window found, focused and measured) and returns the layout.
     Layout launch(const fs::path& scene, uint32_t renderSize) {
-        // Once in a CI run of the whole suite, the editor found the fresh Xvfb unusable (GLFW
-        // could not open the display it reported) and the same test passed alone: such a
-        // start is retried once, on a new server, and said so.
-        for (int attempt = 0; attempt < 2; ++attempt) {
-            std::string error;
-            x = X11Session::start((dir / "xvfb.log").string(), 20.0, error);
-            if (!x) {
-                ADD_FAILURE() << error;
-                return Layout(0, 0, renderSize, renderSize);
-            }
-            startEditor(scene, renderSize);
-            if (!window.empty() || editorOutput().find("cannot initialise GLFW") == std::string::npos) break;
-            std::cout << "[ note     ] the editor could not open the fresh Xvfb; retrying once"
-                      << editorOutput() << "\n";
-            editor.reset();
+        std::string error;
+        x = X11Session::start((dir / "xvfb.log").string(), 20.0, error);
+        if (!x) {
+            ADD_FAILURE() << error;
+            return Layout(0, 0, renderSize, renderSize);
         }
+        startEditor(scene, renderSize);
         if (window.empty()) {
             ADD_FAILURE() << "no pathtracer window within 30 s" << editorOutput();
             return Layout(0, 0, renderSize, renderSize);

@@ -177,6 +177,10 @@ std::unique_ptr<X11Session> X11Session::start(const std::string& logPath, double
                                               std::string& error, const std::string& screen) {
     // Xvfb picks a free display number itself and writes it to descriptor 3 once it accepts
     // connections (-displayfd), so neither a guessed number nor a polling loop is needed.
+    // -noreset: by default an X server resets when its last client disconnects, and a client
+    // that connects during that reset is dropped. The tests poll with short-lived xdotool
+    // clients while the editor starts, so without it the editor's GLFW now and then could not
+    // open the display (once in CI; 10 of 200 xdpyinfo runs beside an xdotool loop here).
     int ready[2];
     if (::pipe2(ready, O_CLOEXEC) != 0) {
         error = std::string("pipe: ") + std::strerror(errno);
@@ -187,9 +191,10 @@ std::unique_ptr<X11Session> X11Session::start(const std::string& logPath, double
     ::close(ready[1]);
     std::unique_ptr<ChildProcess> server;
     try {
-        server = std::make_unique<ChildProcess>(
-            std::vector<std::string>{"Xvfb", "-displayfd", "3", "-screen", "0", screen, "-nolisten", "tcp"},
-            std::vector<std::string>{}, logPath, writeEnd);
+        server =
+            std::make_unique<ChildProcess>(std::vector<std::string>{"Xvfb", "-displayfd", "3", "-screen", "0",
+                                                                    screen, "-nolisten", "tcp", "-noreset"},
+                                           std::vector<std::string>{}, logPath, writeEnd);
     } catch (const std::exception& e) {
         error = e.what();
     }
