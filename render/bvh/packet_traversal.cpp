@@ -88,48 +88,20 @@ uint32_t traceEntry(const RenderScene& scene, uint32_t entry, const Ray* rays, c
 
 // ---- through the TLAS ------------------------------------------------------------------------
 
-// Whether traverseTlas meets TLAS entry `a` before entry `b` on `ray` (both hit at one t: the
-// walk keeps the first it met, each BLAS walk taking only nearer hits than the one it has).
-// The order is the walk's without culling, as culling never drops an entry holding a hit at or
-// before tMax: walkBvh itself finds it, stopping at the first of the two.
-bool metBefore(const RenderScene& scene, const Ray& ray, uint32_t a, uint32_t b) {
-    struct FirstOfTwo {
-        const RenderScene& scene;
-        uint32_t a, b, met;
-        bool operator()(uint32_t first, uint32_t count, float&) {
-            for (uint32_t i = first; i < first + count; ++i) {
-                const uint32_t entry = scene.tlasInstanceIndices[i];
-                if (entry == a || entry == b) {
-                    met = entry;
-                    return true;
-                }
-            }
-            return false;
-        }
-    };
-    FirstOfTwo leaf{scene, a, b, b};
-    const TraversalRay traversal = makeTraversalRay(ray.origin, ray.direction);
-    float tMax = ray.tMax;
-    walkBvh(scene.tlasNodes.data, traversal, tMax, leaf, NoTraversalCount{}, true);
-    return leaf.met == a;
-}
-
-// The packet's state through the TLAS: per lane the hit so far (intersectClosest's), its tMax
-// and the TLAS entry that gave it.
+// The packet's state through the TLAS: per lane the hit so far (intersectClosest's) and its
+// tMax.
 struct TlasPacket {
     const RenderScene& scene;
     const Ray* rays;
     const TraversalRay* world;
     float tMax[kRayPacketSize];
     Hit* hits;
-    uint32_t hitEntry[kRayPacketSize];
 };
 
 // A TLAS leaf's entries in order, as TlasLeaf takes them. A lane with a hit asks each entry for
 // hits up to its t inclusive (the next float up): a nearer one replaces it, one at the same t
-// only where the single-ray walk would have met that entry first (metBefore), as its strict
-// comparison keeps the first of equal hits. So each lane ends with its single-ray hit whatever
-// order the packet meets the entries in.
+// where its instance is the lower (TlasLeaf's tie rule). So each lane ends with its single-ray
+// hit whatever order the packet meets the entries in.
 void visitTlasLeaf(void* context, uint32_t first, uint32_t count, uint32_t lanes) {
     TlasPacket& p = *static_cast<TlasPacket*>(context);
     for (uint32_t i = first; i < first + count; ++i) {
@@ -142,12 +114,11 @@ void visitTlasLeaf(void* context, uint32_t first, uint32_t count, uint32_t lanes
         const uint32_t hit = traceEntry(p.scene, entry, p.rays, p.world, lanes, limit, found);
         for (uint32_t bits = hit; bits != 0; bits &= bits - 1) {
             const uint32_t lane = uint32_t(__builtin_ctz(bits));
-            const bool nearer = found[lane].t < p.tMax[lane] || !p.hits[lane].valid();
-            if (!nearer && !metBefore(p.scene, p.rays[lane], entry, p.hitEntry[lane])) continue;
             reportHit(p.scene, entry, found[lane]);
+            const bool nearer = found[lane].t < p.tMax[lane] || !p.hits[lane].valid();
+            if (!nearer && found[lane].instance > p.hits[lane].instance) continue;
             p.hits[lane] = found[lane];
             p.tMax[lane] = found[lane].t;
-            p.hitEntry[lane] = entry;
         }
     }
 }
@@ -179,7 +150,7 @@ void intersectClosestPacket(const RenderScene& scene, const Ray* rays, uint32_t 
     }
     const uint32_t lanes = (1u << count) - 1u;
     if (route == PacketRoute::Tlas) {
-        TlasPacket packet{scene, laneRays, world, {}, laneHits, {}};
+        TlasPacket packet{scene, laneRays, world, {}, laneHits};
         for (uint32_t lane = 0; lane < kRayPacketSize; ++lane) packet.tMax[lane] = laneRays[lane].tMax;
         simd_detail::walkTlasPacketAvx2(scene.tlasNodes.data, world, lanes, packet.tMax, visitTlasLeaf,
                                         &packet);

@@ -9,8 +9,8 @@
 // Each ray gets exactly the hit intersectClosest gives it: every (ray, box) test computes what
 // the single-ray test computes for that ray and box, every leaf a ray enters is tested for that
 // ray by the single-ray leaf test, with its state, the closest hit with ties to the lower
-// primitive does not depend on the order of a BLAS's leaves, and a tie between two instances
-// goes to the one the single-ray walk meets first (packet_traversal.cpp).
+// primitive does not depend on the order of a BLAS's leaves, nor with ties to the lower
+// instance on the order of the TLAS's (tlas_traversal.h).
 #if defined(__CUDACC__)
 #error "packet_traversal.h is CPU code"
 #endif

@@ -5,6 +5,7 @@
 // the same point in both spaces and hits compare across instances.
 #include "render/bvh/blas_traversal.h"
 #include "render/bvh/instance_space.h"
+#include "render/math/float_error.h"
 
 namespace pt {
 
@@ -39,8 +40,16 @@ PT_HD bool traverseMerged(const RenderScene& scene, const TraversalRay& worldRay
     return true;
 }
 
-// Leaf functor of walkBvh for the TLAS: each entry of a leaf is an instance, or (numbered
-// instances.count) the merged BLAS.
+// Leaf functor of walkBvh (and, on the CPU, walkWideBvh) for the TLAS: each entry of a leaf is
+// an instance, or (numbered instances.count) the merged BLAS.
+//
+// Ties in t between instances go to the lower instance index, as brute force's in-order test
+// keeps them (and within a BLAS to the lower primitive, BlasLeaf), so the hit does not depend on
+// the order a walk meets the TLAS's leaves in: the CPU's binary and 8-wide TLAS walks, its ray
+// packets and the GPU's own TLAS (an LBVH) agree on coincident instances, where a rule of "first
+// met" would shade different surfaces on each. An entry that may win such a tie is walked up to
+// tMax inclusive (its next float up); the merged BLAS, whose hits may belong to any of its
+// instances, gives its hit back where it ties and loses.
 template <FeatureSet kF, class Count>
 struct TlasLeaf {
     const RenderScene& scene;
@@ -53,17 +62,33 @@ struct TlasLeaf {
     PT_HD bool operator()(uint32_t first, uint32_t count, float& tMax) {
         bool found = false;
         for (uint32_t i = first; i < first + count; ++i) {
-            const uint32_t entry = scene.tlasInstanceIndices[i];
-            const bool hitHere =
-                entry == scene.instances.count
-                    ? traverseMerged<kF>(scene, worldTraversalRay, tMax, hit, counter, anyHit)
-                    : traverseInstance<kF>(scene, entry, worldRay, tMax, hit, counter, anyHit);
-            if (hitHere) {
+            if (traceEntry(scene.tlasInstanceIndices[i], tMax)) {
                 found = true;
                 if (anyHit) return true;
             }
         }
         return found;
+    }
+
+    // Whether entry `entry` has the closest hit so far (by t, then instance), lowering tMax.
+    PT_HD bool traceEntry(uint32_t entry, float& tMax) {
+        const bool mayTie = !anyHit && hit.valid();
+        if (entry != scene.instances.count) {
+            float limit = mayTie && entry < hit.instance ? nextFloatUp(tMax) : tMax;
+            if (!traverseInstance<kF>(scene, entry, worldRay, limit, hit, counter, anyHit)) return false;
+            tMax = limit;
+            return true;
+        }
+        if (!mayTie) return traverseMerged<kF>(scene, worldTraversalRay, tMax, hit, counter, anyHit);
+        const Hit before = hit;
+        float limit = nextFloatUp(tMax);
+        if (!traverseMerged<kF>(scene, worldTraversalRay, limit, hit, counter, anyHit)) return false;
+        if (!(limit < tMax) && hit.instance > before.instance) {
+            hit = before;
+            return false;
+        }
+        tMax = limit;
+        return true;
     }
 };
 
@@ -80,6 +105,13 @@ PT_HD bool traverseTlas(const RenderScene& scene, const Ray& worldRay, float& tM
     if (scene.tlasNodes.empty()) return false;
     const TraversalRay ray = makeTraversalRay(worldRay.origin, worldRay.direction);
     TlasLeaf<kF, Count> leaf{scene, worldRay, ray, hit, count, anyHit};
+#if !defined(__CUDACC__)
+    // The CPU's 8-wide TLAS where the compiler made one: 64 instances are two levels of it
+    // instead of six binary ones, each node's boxes in one SIMD test. The tie rule (TlasLeaf)
+    // keeps its hits the binary walk's.
+    if (!scene.tlasWideNodes.empty())
+        return walkWideBvh(scene.tlasWideNodes.data, 0, ray, tMax, leaf, count, anyHit);
+#endif
     return walkBvh(scene.tlasNodes.data, ray, tMax, leaf, count, anyHit);
 }
 

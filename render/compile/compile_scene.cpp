@@ -6,6 +6,7 @@
 
 #include "render/bvh/binned_sah_builder.h"
 #include "render/bvh/instance_bounds.h"
+#include "render/bvh/wide_bvh.h"
 #include "render/compile/compile_geometry.h"
 #include "render/compile/scene_features.h"
 #include "render/compile/wide_blases.h"
@@ -129,6 +130,11 @@ void buildTlas(CompiledScene& out) {
     out.tlasNodes = std::move(tlas.nodes);
     out.tlasInstanceIndices = std::move(tlas.primIndices);
     for (uint32_t& index : out.tlasInstanceIndices) index = entries[index];
+    // Beside 8-wide BLASes, the CPU walks an 8-wide TLAS too (wide_bvh.h), its leaves the
+    // binary ones.
+    out.tlasWideNodes.clear();
+    if (!out.blasWideRoots.empty())
+        out.tlasWideNodes = collapseToWide(out.tlasNodes.data(), uint32_t(out.tlasNodes.size())).nodes;
 }
 
 std::vector<Material> compileMaterials(const Scene& scene) {

@@ -55,6 +55,9 @@ PT_SCENE_ARRAY(LeafTriangle, blasCompressedTriangles, "BLAS compressed leaf tria
 PT_SCENE_ARRAY(uint32_t, blasCompressedRoots, "BLAS compressed roots")
 PT_SCENE_ARRAY(RenderInstance, instances, "instances")
 PT_SCENE_ARRAY(BvhNode, tlasNodes, "TLAS nodes")
+// The CPU's 8-wide form of the TLAS, made beside the 8-wide BLASes (empty without them, and on
+// the GPU): its leaves index tlasInstanceIndices as the binary ones do.
+PT_SCENE_ARRAY(WideBvhNode, tlasWideNodes, "TLAS wide nodes (CPU)")
 // TLAS leaf entries are instance indices, and instances.count for the merged BLAS: small
 // instances' triangles copied into world space (merged_geometry.h), traced with no instance
 // transform; each of its hits maps back through mergedTriangles.

@@ -66,6 +66,60 @@ TEST_P(TwoLevelLayouts, MatchesBruteForceOverInstances) {
     EXPECT_GT(hits, 4000u);
 }
 
+// Coincident instances: a soup placed three times at one place (instances 2, 3 and 4), and a
+// wider mesh that holds the same triangles too, there (1) and elsewhere (0). Every hit on the
+// soup ties in t between 1 to 4; it goes to the lowest instance holding it (tlas_traversal.h),
+// as brute force's in-order test has it, in every layout, whatever order the walk meets the
+// instances in; and with the merged BLAS (copies of 2 to 4 in world space), which must give
+// its hit back to 1.
+TEST_P(TwoLevelLayouts, TiesBetweenInstancesGoToTheLowerInstance) {
+    Rng rng(43);
+    const Mesh soup = test::makeSoup(SoupKind::Clustered, 300, rng);
+    // The soup's triangles, and beyond the rays' reach enough more that it is not merged.
+    Mesh wider = soup;
+    const Mesh filler = test::makeSoup(SoupKind::Uniform, 1u << 16, rng);
+    const uint32_t base = uint32_t(wider.positions.size());
+    for (const Vec3& p : filler.positions) wider.positions.push_back(p * 0.5f + Vec3(20.0f, 0.0f, 0.0f));
+    for (const uint32_t index : filler.indices) wider.indices.push_back(base + index);
+    const std::vector<test::InstanceSpec> specs = {
+        {1, translationTransform(Vec3(3.0f, 0.0f, 0.0f))},  // the soup's triangles at x + 3
+        {1, Affine3{}},  // the lowest to hold the soup's triangles; never merged
+        {0, Affine3{}},  // 2 to 4: merged where merging is on, so the merged BLAS ties with 1
+        {0, Affine3{}},
+        {0, Affine3{}},
+    };
+    for (const bool merge : {false, true}) {
+        CompileOptions options = test::layoutOptions(GetParam());
+        options.mergeSmallInstances = merge;
+        const CompiledScene compiled = test::compileTestScene({soup, wider}, specs, options);
+        const RenderScene scene = compiled.view();
+        ASSERT_GT(compiled.tlasInstanceIndices.size(), 1u);
+        ASSERT_EQ(compiled.merged.active(), merge);
+        RenderScene bruteForce = scene;
+        bruteForce.bruteForce = 1;
+        uint32_t hits = 0, onLowest = 0, differ = 0;
+        for (int i = 0; i < 1000; ++i) {
+            const Ray ray = test::rayAtTriangle(rng, soup, Vec3(-1.3f), Vec3(1.3f));
+            Hit hit;
+            const bool found = intersectClosest(scene, ray, hit);
+            hits += found;
+            onLowest += found && hit.instance == 1;
+            if (i % 10 != 0) continue;  // brute force tests all 66,000 triangles: one ray in ten
+            Hit expected;
+            intersectClosest(bruteForce, ray, expected);
+            differ += found != expected.valid() ||
+                      (found &&
+                       (hit.t != expected.t || hit.instance != expected.instance ||
+                        hit.primitive != expected.primitive || hit.u != expected.u || hit.v != expected.v));
+        }
+        EXPECT_EQ(differ, 0u) << (merge ? "merged" : "instances");
+        // A ray at a triangle of the soup meets the soup first (that triangle or one before it),
+        // which instances 1 to 4 all hold (the soup's triangles are the wider mesh's first).
+        EXPECT_GT(hits, 900u);
+        EXPECT_EQ(onLowest, hits) << (merge ? "merged" : "instances");
+    }
+}
+
 // The unit-sphere instances: world hit point o + t d lies on the transformed sphere, whatever
 // the length of d (t is not renormalised at the instance).
 TEST(TwoLevelTraversal, HitDistanceIsInWorldUnits) {
