@@ -68,9 +68,12 @@ uint32_t traceEntry(const RenderScene& scene, uint32_t entry, const Ray* rays, c
     TraversalRay local[kRayPacketSize];
     const uint32_t some = uint32_t(__builtin_ctz(lanes));
     for (uint32_t lane = 0; lane < kRayPacketSize; ++lane) {
-        const uint32_t from = lanes & (1u << lane) ? lane : some;  // lanes left out copy one taken
-        local[lane] = merged ? world[from] : objectSpaceRay(scene.instances[entry], rays[from]);
         found[lane] = {tMax[lane], 0.0f, 0.0f, 0u, Hit::kNoHit};
+        if (lanes & (1u << lane))
+            local[lane] = merged ? world[lane] : objectSpaceRay(scene.instances[entry], rays[lane]);
+    }
+    for (uint32_t lane = 0; lane < kRayPacketSize; ++lane) {
+        if (!(lanes & (1u << lane))) local[lane] = local[some];  // lanes left out copy one taken
     }
     if (blas.kind == GeometryKind::Triangles) {
         return simd_detail::walkTriangleWidePacketAvx2(scene.blasWideNodes.data, scene.blasWideRoots[index],
