@@ -1,8 +1,9 @@
 #pragma once
 // Brute force: every primitive of every instance, no BVH. The validation path
 // (RenderScene::bruteForce) and the reference the BVH tests compare against. It uses the same
-// object-space ray preparation and primitive test as the BVH path, so hits agree bit for bit;
-// only the order of exact ties in t can differ.
+// object-space ray preparation and primitive test as the BVH path, and its in-order test keeps
+// the lowest instance and primitive of equal t, as every walk does (tlas_traversal.h), so hits
+// agree bit for bit.
 #include "render/bvh/tlas_traversal.h"
 
 namespace pt {

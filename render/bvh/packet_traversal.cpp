@@ -118,8 +118,8 @@ void visitTlasLeaf(void* context, uint32_t first, uint32_t count, uint32_t lanes
         for (uint32_t bits = hit; bits != 0; bits &= bits - 1) {
             const uint32_t lane = uint32_t(__builtin_ctz(bits));
             reportHit(p.scene, entry, found[lane]);
-            const bool nearer = found[lane].t < p.tMax[lane] || !p.hits[lane].valid();
-            if (!nearer && found[lane].instance > p.hits[lane].instance) continue;
+            // A lane without a hit was walked up to its tMax exclusive: its hit is nearer.
+            if (found[lane].t == p.tMax[lane] && found[lane].instance > p.hits[lane].instance) continue;
             p.hits[lane] = found[lane];
             p.tMax[lane] = found[lane].t;
         }

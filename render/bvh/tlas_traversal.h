@@ -49,7 +49,9 @@ PT_HD bool traverseMerged(const RenderScene& scene, const TraversalRay& worldRay
 // packets and the GPU's own TLAS (an LBVH) agree on coincident instances, where a rule of "first
 // met" would shade different surfaces on each. An entry that may win such a tie is walked up to
 // tMax inclusive (its next float up); the merged BLAS, whose hits may belong to any of its
-// instances, gives its hit back where it ties and loses.
+// instances, gives its hit back where it ties and loses. Within the merged BLAS a tie goes to
+// its lower primitive, which is the lower instance because its pieces are laid out in instance
+// order (planMergedGeometry).
 template <FeatureSet kF, class Count>
 struct TlasLeaf {
     const RenderScene& scene;
@@ -83,7 +85,7 @@ struct TlasLeaf {
         const Hit before = hit;
         float limit = nextFloatUp(tMax);
         if (!traverseMerged<kF>(scene, worldTraversalRay, limit, hit, counter, anyHit)) return false;
-        if (!(limit < tMax) && hit.instance > before.instance) {
+        if (limit == tMax && hit.instance > before.instance) {
             hit = before;
             return false;
         }

@@ -48,7 +48,9 @@ struct MergedGeometry {
 };
 
 // Chooses the instances to merge and appends the merged BLAS's triangles (its vertices left
-// for bakeMergedGeometry). After flattenGeometry, before compileInstances.
+// for bakeMergedGeometry). After flattenGeometry, before compileInstances. The pieces are in
+// instance order: a tie in t inside the merged BLAS goes to its lower primitive, and so to
+// the lower instance, as between instances (tlas_traversal.h).
 void planMergedGeometry(const Scene& scene, CompiledScene& out);
 
 // Whether the plan still fits the scene: the same instance list, each piece's instance still

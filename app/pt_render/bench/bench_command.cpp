@@ -56,13 +56,15 @@ double tracedMrays(Backend& backend, const TracedRaySet& set, uint32_t runs, std
 }
 
 // How many of `hits` differ from what the default layout found for `set`: whether a ray hit,
-// and for closest hits where and which primitive (ties go to the lower one on every layout). Any
-// hit: which one a walk finds first is its own business; only whether.
+// and for closest hits where, which instance and which primitive (ties go to the lower instance,
+// then primitive, on every layout). Any hit: which one a walk finds first is its own business;
+// only whether.
 size_t countDifferentHits(const std::vector<Hit>& hits, const TracedRaySet& set) {
     size_t differ = 0;
     for (size_t i = 0; i < hits.size() && i < set.hits.size(); ++i) {
         differ += hits[i].valid() != set.hits[i].valid() ||
-                  (!set.anyHit && (hits[i].t != set.hits[i].t || hits[i].primitive != set.hits[i].primitive));
+                  (!set.anyHit && (hits[i].t != set.hits[i].t || hits[i].instance != set.hits[i].instance ||
+                                   hits[i].primitive != set.hits[i].primitive));
     }
     return differ;
 }

@@ -218,16 +218,11 @@ inline bool expectBvhMatchesBruteForce(const RenderScene& bvhScene, const Ray& r
     const bool b = intersectClosest(bf, ray, bfHit);
     const bool any = intersectAny(bvhScene, ray);
     bool ok = a == b && any == a;
+    // Ties in t go to the lower instance, then the lower primitive, in every walk as in brute
+    // force's in-order test (tlas_traversal.h, blas_traversal.h): the same hit, bit for bit.
     if (ok && a) {
-        ok = bvhHit.t == bfHit.t;
-        if (ok && (bvhHit.primitive != bfHit.primitive || bvhHit.instance != bfHit.instance)) {
-            // A tie: the BVH's primitive, tested alone, must hit at the same t.
-            const RenderInstance& inst = bvhScene.instances[bvhHit.instance];
-            Hit tie;
-            ok = intersectBlasPrimitive(bvhScene, bvhScene.blases[inst.blas], bvhHit.primitive,
-                                        objectSpaceRay(inst, ray), kInf, tie) &&
-                 tie.t == bvhHit.t;
-        }
+        ok = bvhHit.t == bfHit.t && bvhHit.instance == bfHit.instance &&
+             bvhHit.primitive == bfHit.primitive && bvhHit.u == bfHit.u && bvhHit.v == bfHit.v;
     }
     if (!ok && ++failures <= 10) {
         ADD_FAILURE() << "ray o=(" << ray.origin.x << "," << ray.origin.y << "," << ray.origin.z << ") d=("

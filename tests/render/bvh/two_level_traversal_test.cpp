@@ -75,9 +75,10 @@ TEST_P(TwoLevelLayouts, MatchesBruteForceOverInstances) {
 TEST_P(TwoLevelLayouts, TiesBetweenInstancesGoToTheLowerInstance) {
     Rng rng(43);
     const Mesh soup = test::makeSoup(SoupKind::Clustered, 300, rng);
-    // The soup's triangles, and beyond the rays' reach enough more that it is not merged.
+    // The soup's triangles, and beyond the rays' reach enough more that its two instances are
+    // not merged (2 x 33,068 copies would pass merged_geometry.h's limit).
     Mesh wider = soup;
-    const Mesh filler = test::makeSoup(SoupKind::Uniform, 1u << 16, rng);
+    const Mesh filler = test::makeSoup(SoupKind::Uniform, 1u << 15, rng);
     const uint32_t base = uint32_t(wider.positions.size());
     for (const Vec3& p : filler.positions) wider.positions.push_back(p * 0.5f + Vec3(20.0f, 0.0f, 0.0f));
     for (const uint32_t index : filler.indices) wider.indices.push_back(base + index);
@@ -95,6 +96,11 @@ TEST_P(TwoLevelLayouts, TiesBetweenInstancesGoToTheLowerInstance) {
         const RenderScene scene = compiled.view();
         ASSERT_GT(compiled.tlasInstanceIndices.size(), 1u);
         ASSERT_EQ(compiled.merged.active(), merge);
+        ASSERT_FALSE(compiled.instances[1].tracedInWorldSpace);
+        // The merged BLAS's triangles in instance order, which its tie rule needs
+        // (merged_geometry.h): its lower primitive is then the lower instance.
+        for (size_t t = 1; t < compiled.mergedTriangles.size(); ++t)
+            ASSERT_LE(compiled.mergedTriangles[t - 1].instance, compiled.mergedTriangles[t].instance);
         RenderScene bruteForce = scene;
         bruteForce.bruteForce = 1;
         uint32_t hits = 0, onLowest = 0, differ = 0;
@@ -104,7 +110,7 @@ TEST_P(TwoLevelLayouts, TiesBetweenInstancesGoToTheLowerInstance) {
             const bool found = intersectClosest(scene, ray, hit);
             hits += found;
             onLowest += found && hit.instance == 1;
-            if (i % 10 != 0) continue;  // brute force tests all 66,000 triangles: one ray in ten
+            if (i % 10 != 0) continue;  // brute force tests all 67,000 triangles: one ray in ten
             Hit expected;
             intersectClosest(bruteForce, ray, expected);
             differ += found != expected.valid() ||
