@@ -79,9 +79,10 @@ std::vector<Ray> randomRays(uint32_t count, uint32_t seed) {
 }
 
 // Hits must agree exactly: both backends run the same float operations without contraction.
-// Where two surfaces meet at exactly the same t (a box's faces at an edge), whichever the
-// tree visits first wins, and trees built by other builders may differ there: such ties
-// count as agreement when they are rare.
+// Where two surfaces meet at exactly the same t (a box's faces at an edge), every walk gives
+// the hit to the lower instance, then the lower primitive (tlas_traversal.h), so trees built by
+// other builders should agree there too; such ties still count as agreement while rare, until
+// a device run shows that none is left.
 void expectSameHits(const std::vector<Hit>& a, const std::vector<Hit>& b, const char* what) {
     ASSERT_EQ(a.size(), b.size());
     size_t mismatches = 0, hits = 0, ties = 0;
