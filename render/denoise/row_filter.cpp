@@ -37,7 +37,7 @@ constexpr int kTapDistanceIndex[3][3] = {{-1, 0, 1}, {0, 2, 3}, {1, 3, 4}};  // 
 
 // A row's sums through pointers taken once (SampleData says why).
 struct RowSumsData {
-    float *r, *g, *b, *weight, *variance, *centerLuminance, *inverseLuminance;
+    float *r, *g, *b, *weight, *variance, *centerLuminance, *inverseLuminance, *outlierLimit;
     float* inverseDepth[kTapDistances];  // the centre's depth scales, by tap distance
 
     explicit RowSumsData(RowSums& s)
@@ -47,7 +47,8 @@ struct RowSumsData {
           weight(s.weight.data()),
           variance(s.variance.data()),
           centerLuminance(s.centerLuminance.data()),
-          inverseLuminance(s.inverseLuminance.data()) {
+          inverseLuminance(s.inverseLuminance.data()),
+          outlierLimit(s.outlierLimit.data()) {
         for (int k = 0; k < kTapDistances; ++k)
             inverseDepth[k] = s.inverseDepth.data() + size_t(k) * s.r.size();
     }
@@ -110,15 +111,15 @@ PT_ALWAYS_INLINE void addTapRow(const SampleInput& in, const SurfaceData& surfac
     PT_INDEPENDENT_ITERATIONS
     for (uint32_t x = 0; x < layout.width; ++x) {
         const EdgeStops edges = edgeStopsAt(surfaces, row + x);
+        const TapScales scales{sums.centerLuminance[x], sums.inverseLuminance[x], sums.outlierLimit[x]};
         AtrousSums s = sums.atrousAt(x);
         PT_UNROLL
         for (int i = -2; i <= 2; ++i) {
             if (kCentreRow && i == 0) continue;
             const size_t q = tapStart[i + 2] + x;
-            const float w = atrousTapWeight(edges, surfaces.surfaceAt(q),
-                                            sums.inverseDepth[kTapDistanceIndex[absJ][i < 0 ? -i : i]][x],
-                                            in.luminance[q], in.deviation[q], sums.centerLuminance[x],
-                                            sums.inverseLuminance[x], splineWeight(i) * splineWeight(j));
+            const float w = atrousTapWeight(
+                edges, surfaces.surfaceAt(q), sums.inverseDepth[kTapDistanceIndex[absJ][i < 0 ? -i : i]][x],
+                in.luminance[q], in.deviation[q], scales, splineWeight(i) * splineWeight(j));
             s.add(w, {in.r[q], in.g[q], in.b[q]}, in.deviation[q] * in.deviation[q]);
         }
         sums.setAtrous(x, s);
@@ -159,7 +160,7 @@ void atrousRow(const SamplePlanes& inPlanes, const SurfacePlanes& surfaces, cons
                                      in.deviation + row + layout.stride()};  // rows y - 1 .. y + 1
     float distance[kTapDistances];
     for (int k = 0; k < kTapDistances; ++k) distance[k] = float(step) * kTapDistance[k];
-    // The centre: its depth scales and luminance stop, and its own sample added first
+    // The centre: its depth scales, luminance stop and outlier limit, and its own sample added first
     // (atrousAt's `if` as a weight of 0: a left-out sample's values are zeros).
     PT_INDEPENDENT_ITERATIONS
     for (uint32_t x = 0; x < layout.width; ++x) {
@@ -170,13 +171,15 @@ void atrousRow(const SamplePlanes& inPlanes, const SurfacePlanes& surfaces, cons
             sums.inverseDepth[k][x] = edges.inverseDepthScale(distance[k]);
         const float deviation = in.deviation[c];
         const bool valid = deviation >= 0.0f;
+        const NeighbourhoodVariance around =
+            neighbourhoodVarianceAt([&](int dx, int dy) { return deviationRows[dy + 1][ptrdiff_t(x) + dx]; });
         sums.centerLuminance[x] = in.luminance[c];
-        sums.inverseLuminance[x] = inverseLuminanceScale(valid, blurredVarianceAt([&](int dx, int dy) {
-                                                             return deviationRows[dy + 1][ptrdiff_t(x) + dx];
-                                                         }));
+        sums.inverseLuminance[x] = inverseLuminanceScale(valid, around.blurred);
+        sums.outlierLimit[x] = around.outlierLimit;
+        const float variance = deviation * deviation;
         AtrousSums s;
-        s.add(valid ? splineWeight(0) * splineWeight(0) : 0.0f, {in.r[c], in.g[c], in.b[c]},
-              deviation * deviation);
+        s.add(valid ? splineWeight(0) * splineWeight(0) * outlierWeight(variance, around.outlierLimit) : 0.0f,
+              {in.r[c], in.g[c], in.b[c]}, variance);
         sums.setAtrous(x, s);
     }
     for (int j = -2; j <= 2; ++j) {

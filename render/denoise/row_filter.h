@@ -16,7 +16,7 @@ constexpr int kTapDistances = 5;
 
 // Per-row working memory, one a thread.
 struct RowSums {
-    std::vector<float> r, g, b, weight, variance, centerLuminance, inverseLuminance;
+    std::vector<float> r, g, b, weight, variance, centerLuminance, inverseLuminance, outlierLimit;
     std::vector<float> inverseDepth;  // kTapDistances planes: the centre's depth scale for each
     explicit RowSums(uint32_t width)
         : r(width),
@@ -26,6 +26,7 @@ struct RowSums {
           variance(width),
           centerLuminance(width),
           inverseLuminance(width),
+          outlierLimit(width),
           inverseDepth(kTapDistances * size_t(width)) {}
 };
 

@@ -33,6 +33,13 @@ struct Frame {
           variance(4 * w * h, 0.0f) {
         for (size_t i = 0; i < size_t(w) * h; ++i) normal[4 * i + 2] = 1.0f;  // a wall facing the camera
     }
+    // Calls perPixel(x, y) for every pixel, row by row.
+    template <class PerPixel>
+    void forEachPixel(const PerPixel& perPixel) const {
+        for (uint32_t y = 0; y < height; ++y) {
+            for (uint32_t x = 0; x < width; ++x) perPixel(x, y);
+        }
+    }
     void set(std::vector<float>& plane, uint32_t x, uint32_t y, Vec3 v) const {
         float* p = &plane[4 * (size_t(y) * width + x)];
         p[0] = v.x;
@@ -110,15 +117,13 @@ TEST(Denoiser, AlbedoChannelsNearZeroKeepTheirScale) {
     std::normal_distribution<float> noise(0.0f, 0.3f);
     const float light = 0.5f;
     std::vector<float> truth(f.beauty.size(), 1.0f);
-    for (uint32_t y = 0; y < f.height; ++y) {
-        for (uint32_t x = 0; x < f.width; ++x) {
-            const Vec3 albedo(0.3f, 0.6f, (x / 3) % 2 ? 0.03f : 0.005f), exact = albedo * light;
-            f.set(f.albedo, x, y, albedo);
-            f.set(truth, x, y, exact);
-            f.set(f.beauty, x, y, exact * (Vec3(1.0f) + Vec3(noise(rng), noise(rng), noise(rng))));
-            f.set(f.variance, x, y, Vec3(0.09f * luminance(exact * exact)));
-        }
-    }
+    f.forEachPixel([&](uint32_t x, uint32_t y) {
+        const Vec3 albedo(0.3f, 0.6f, (x / 3) % 2 ? 0.03f : 0.005f), exact = albedo * light;
+        f.set(f.albedo, x, y, albedo);
+        f.set(truth, x, y, exact);
+        f.set(f.beauty, x, y, exact * (Vec3(1.0f) + Vec3(noise(rng), noise(rng), noise(rng))));
+        f.set(f.variance, x, y, Vec3(0.09f * luminance(exact * exact)));
+    });
     const std::vector<float> out = f.denoised();
     const double raw = imageError(f.beauty, truth).relMse, denoised = imageError(out, truth).relMse;
     std::cout << "[ figures  ] blue albedo 0.005 / 0.03 stripes: relMSE raw " << raw << ", denoised "
@@ -138,15 +143,13 @@ TEST(Denoiser, AGeometricEdgeStopsTheFilter) {
     f.samples = 16;
     std::mt19937 rng(2);
     std::normal_distribution<float> noise(0.0f, 0.02f);
-    for (uint32_t y = 0; y < f.height; ++y) {
-        for (uint32_t x = 0; x < f.width; ++x) {
-            const bool near = x < 20;
-            f.set(f.beauty, x, y, Vec3((near ? 1.0f : 0.1f) + noise(rng)));
-            f.set(f.depth, x, y, Vec3(near ? 2.0f : 6.0f));
-            f.set(f.normal, x, y, near ? Vec3(0, 0, 1) : Vec3(1, 0, 0));
-            f.set(f.variance, x, y, Vec3(0.02f * 0.02f));
-        }
-    }
+    f.forEachPixel([&](uint32_t x, uint32_t y) {
+        const bool near = x < 20;
+        f.set(f.beauty, x, y, Vec3((near ? 1.0f : 0.1f) + noise(rng)));
+        f.set(f.depth, x, y, Vec3(near ? 2.0f : 6.0f));
+        f.set(f.normal, x, y, near ? Vec3(0, 0, 1) : Vec3(1, 0, 0));
+        f.set(f.variance, x, y, Vec3(0.02f * 0.02f));
+    });
     const std::vector<float> out = f.denoised();
     for (uint32_t y = 0; y < f.height; ++y) {
         EXPECT_NEAR(f.at(out, 19, y).x, 1.0f, 0.03f) << "row " << y;
@@ -178,6 +181,35 @@ TEST(Denoiser, AKeptWorkspaceGivesWhatAFreshOneGives) {
         std::vector<float> reused;
         kept.run(f.input(), reused);
         EXPECT_EQ(reused, f.denoised()) << f.width << "x" << f.height << ", " << f.samples << " spp";
+    }
+}
+
+// A firefly: one of a pixel's 16 samples found a path 1000x as bright as the rest, so its mean
+// is 63x the truth and its own variance estimate is huge. Its neighbours must replace it, and it
+// must not spread into them (without outlierWeight it came out at 1.37 here).
+TEST(Denoiser, AFireflyIsReplacedByItsNeighboursAndDoesNotSpread) {
+    Frame f(32, 32);
+    f.samples = 16;
+    std::mt19937 rng(5);
+    std::normal_distribution<float> noise(0.0f, 0.1f);
+    f.forEachPixel([&](uint32_t x, uint32_t y) {
+        f.set(f.beauty, x, y, Vec3(1.0f + noise(rng)));
+        f.set(f.variance, x, y, Vec3(0.01f));
+    });
+    const float sampleValue = 1000.0f, mean = (15.0f + sampleValue) / 16.0f;
+    const float sampleVariance =
+        (15.0f * (1.0f - mean) * (1.0f - mean) + (sampleValue - mean) * (sampleValue - mean)) / 15.0f;
+    f.set(f.beauty, 16, 16, Vec3(mean));
+    f.set(f.variance, 16, 16, Vec3(sampleVariance / 16.0f));
+    const std::vector<float> out = f.denoised();
+    std::cout << "[ figures  ] firefly of " << mean << " on a wall of 1: denoised " << f.at(out, 16, 16).x
+              << ", its neighbour " << f.at(out, 17, 16).x << "\n";
+    EXPECT_NEAR(f.at(out, 16, 16).x, 1.0f, 0.2f);
+    for (int dy = -2; dy <= 2; ++dy) {
+        for (int dx = -2; dx <= 2; ++dx) {
+            if (dx == 0 && dy == 0) continue;
+            EXPECT_NEAR(f.at(out, 16 + dx, 16 + dy).x, 1.0f, 0.1f) << "neighbour " << dx << ", " << dy;
+        }
     }
 }
 

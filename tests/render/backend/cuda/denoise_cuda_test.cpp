@@ -1,6 +1,6 @@
 // The denoiser on the GPU: the same image as the CPU filter from the same accumulation, and
-// error against a reference at few and at many samples, on the Cornell box and a shared asset
-// with textures and normal maps (GolfBall).
+// error against a reference at few and at many samples, on the Cornell box and two shared
+// assets with normal maps (GolfBall; DepthOfFieldExample, with textures too).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -53,9 +53,11 @@ TEST(GpuDenoiser, MatchesTheCpuFilterOnTheSameAccumulation) {
 }
 
 // relMSE against a 65536-spp reference, raw and denoised, at 1 (the first frame after an edit),
-// 4, 16 and 4096 spp: at most `fewSamplesRatio` of the raw error up to 16, and no more than
-// 1.05x at 4096 (it fades out).
-void expectDenoisingPays(const std::string& name, const Scene& scene, double fewSamplesRatio) {
+// 4, 16 and 4096 spp: at most `fewSamplesRatio` of the raw error at 4 and 16, and at 1 unless
+// `checkFirstSample` is false (then the figure is printed), and no more than 1.05x at 4096 (it
+// fades out).
+void expectDenoisingPays(const std::string& name, const Scene& scene, double fewSamplesRatio,
+                         bool checkFirstSample = true) {
     cuda::CudaBackend backend;
     backend.sync(scene, SceneChanges::All, {});
     backend.render(65536);
@@ -72,6 +74,7 @@ void expectDenoisingPays(const std::string& name, const Scene& scene, double few
                   << ", " << spp << " spp: relMSE raw " << rawError << ", denoised " << denoisedError << " ("
                   << rawError / denoisedError << "x less), filter " << ms << " ms\n";
         EXPECT_TRUE(allFinite(denoised));
+        if (spp == 1 && !checkFirstSample) continue;
         EXPECT_LE(denoisedError, (spp < 1024 ? fewSamplesRatio : 1.05) * rawError)
             << name << ", " << spp << " spp";
     }
@@ -95,6 +98,21 @@ TEST(GpuDenoiser, TexturedAssetErrorFallsAtFewSamplesAndNotAtMany) {
     // value and the output after each pass reaches only 0.225, so this filter cannot get there.
     expectDenoisingPays(
         "GolfBall", sized(test::loadSceneOrFail(test::sharedAsset("GolfBall/GolfBall.glb")), 160, 120), 0.5);
+}
+
+// Textures and normal maps, a green lawn whose blue albedo lies near 0.01, depth of field, and
+// punctual lights whose paths make fireflies, which hold most of its error at few samples: one
+// pixel can hold 80% of it, so the ratio swings from seed to seed (CPU backend, four seeds, 4 spp:
+// 0.01, 0.28, 0.35 and 0.41; the H200 at this test's seed 0.27). Not yet the quarter at 4 spp,
+// and at 1 spp (0.33-1.07 over the CPU's seeds) the figure is printed, not held.
+TEST(GpuDenoiser, DepthOfFieldAssetErrorFallsAtFewSamplesAndNotAtMany) {
+    PT_REQUIRE_CUDA_DEVICE();
+    PT_REQUIRE_SHARED_ASSET("DepthOfFieldExample/DepthOfFieldExample.glb");
+    expectDenoisingPays(
+        "DepthOfFieldExample",
+        sized(test::loadSceneOrFail(test::sharedAsset("DepthOfFieldExample/DepthOfFieldExample.glb")), 160,
+              120),
+        0.5, false);
 }
 
 }  // namespace
