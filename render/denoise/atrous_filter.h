@@ -17,6 +17,12 @@
 // back after filtering and keep their detail; the variance carried along is that of each
 // pixel's mean luminance, filtered with the squared weights (SVGF, eq. 4).
 // Images are row-major RGBA floats (what Backend::readBeauty and readAov return).
+//
+// Sections: the guides and the edge-stop constants; demodulation (demodulator,
+// coverageFreeVariance, fewSamplesVariance, demodulatedSample, boundedByNoise, remodulated);
+// the surface each pixel's edge stops compare (surfaceOf, depthSlopeAt, EdgeStops); the
+// neighbours' variance estimate of the first samples (spatialVarianceAt); outliers
+// (outlierWeight, neighbourhoodVarianceAt); one a-trous pass (atrousTapWeight, atrousAt).
 #include <cstdint>
 
 #include "render/denoise/denoise_planes.h"
@@ -63,8 +69,9 @@ constexpr float kDepthSigma = 1.0f;
 constexpr float kLuminanceSigma = 2.0f;
 // Albedo channels are divided out as no less than this (black or missing surfaces, whose
 // radiance is not the albedo's to scale). Below it a channel is no longer demodulated, and
-// takes in its neighbours' values of that channel unscaled: at 0.01, stripes of blue albedo
-// 0.005 beside 0.03 came out 1.5x as blue as they are (the test of that name); at 0.001 a black
+// takes in its neighbours' values of that channel unscaled: with a floor of 0.01, stripes of
+// blue albedo 0.005 beside 0.03 came out 1.5x as blue as they are (the test
+// Denoiser.AlbedoChannelsNearZeroKeepTheirScale); at 0.001 a black
 // surface's demodulated radiance reaches half's largest value, 65504, at radiance 65 (past it,
 // filteredRadiance gives the pixel its own excess back).
 constexpr float kMinAlbedo = 0.001f;
@@ -96,7 +103,7 @@ PT_HD PixelGuides guidesAt(const DenoiseGuides& g, uint32_t i) {
 // surface's halved albedo. Channels of albedo below kMinAlbedo are divided by kMinAlbedo: the
 // divisor must not jump where the albedo crosses it. It was 1 below it, so a pixel whose blue
 // albedo was 0.007 beside one at 0.011 took in that neighbour's blue divided by 0.011 and
-// multiplied it by 1, 90x too bright: on DepthOfFieldExample's green ground (blue albedo near
+// multiplied it by 1, 143x too bright: on DepthOfFieldExample's green ground (blue albedo near
 // 0.01; 160x120, CPU backend, against 8192 spp, the mean over four seeds) the denoised image had
 // 31.6x the raw relMSE at 16 spp and 4.4x at 4, and has 0.46x and 0.63x with the divisor
 // continuous (before the outlier weight below).
@@ -113,10 +120,14 @@ PT_HD Vec3 demodulator(Vec3 a) { return vmax(a, Vec3(kMinAlbedo)); }  // a NaN c
 // so leaving Var(sky) >= 0 out bounds Var(surface) from above; the pixel's mean holds a times
 // the mean of its a n surface samples. `surfaceLight`, `skyLight`: the luminances of what the
 // two kinds add to the pixel's mean (beauty less the emission guide, and the emission guide).
+// A pixel that is all sky (alpha 0) has none left: what it filters, beauty less emission, is 0
+// (left in, its sky's variance, divided by the albedo floor squared, reached the luminance stops
+// of the surfaces beside it through blurredVariance).
 PT_HD float coverageFreeVariance(float varianceOfMean, float alpha, float surfaceLight, float skyLight,
                                  uint32_t samples) {
+    if (!(alpha > 0.0f)) return 0.0f;  // all sky: demodulatedSample takes out all of it, exactly
     const float hits = alpha * float(samples);
-    if (!(alpha > 0.0f && alpha < 1.0f) || !(hits >= 2.0f)) return varianceOfMean;  // nothing to take out
+    if (!(alpha < 1.0f) || !(hits >= 2.0f)) return varianceOfMean;  // nothing to take out
     const float gap = surfaceLight / alpha - skyLight / (1.0f - alpha);
     const float surfaceSpread = varianceOfMean * float(samples - 1) - alpha * (1.0f - alpha) * gap * gap;
     return maxf(surfaceSpread, 0.0f) * alpha / (hits - 1.0f);
@@ -339,11 +350,15 @@ struct NeighbourhoodVariance {
 // and widened by its own variance, kept (a firefly on DepthOfFieldExample went from 1540 to
 // 720 against a truth of 11, 70% of that image's error after denoising at 16 spp). Such a
 // sample's weight, its own and as a tap, is scaled by limit / variance: where the variances
-// are alike (most pixels, and all as samples grow) no weight changes; a firefly whose variance is
-// 1000x its neighbours' weighs a 500th of what it did, so its neighbours replace it and it does
-// not spread into them. The variance carried along is still that of the weighted mean (SVGF
-// eq. 4), now with the smaller weights. Denoised over raw relMSE, CPU backend, the mean over four
-// seeds against 8192 spp (Cornell box 4096 spp, 128x128; the others 160x120), at 1 / 4 / 16 spp:
+// are alike (most pixels) no weight changes; a firefly whose variance is 1000x its neighbours'
+// weighs a 500th of what it did as a centre, so its neighbours replace it. Its immediate
+// neighbours, whose yardstick includes it, cut it less as a tap (about 4x in the first pass; the
+// passes after thin out what it left). The ratio of variances does not fall as samples grow: a
+// pixel whose true variance is more than twice its neighbours' (a penumbra, a caustic) stays
+// weighed down, and there only the noise bound (boundedByNoise) makes the filter fade out. The
+// variance carried along is still that of the weighted mean (SVGF eq. 4), with the new weights. Denoised over
+// raw relMSE, CPU backend, the mean over four seeds against 8192 spp (Cornell box 4096 spp, 128x128; the
+// others 160x120), at 1 / 4 / 16 spp:
 //                       Cornell            DepthOfField       BarnLamp           GolfBall
 //   no outlier weight   .028 .052 .107     1.42 .627 .462     .547 .387 .642     .164 .230 .356
 //   ratio 1.5           .023 .063 .107     .657 .249 .118     .413 .269 .388     .148 .249 .356
@@ -356,16 +371,24 @@ struct NeighbourhoodVariance {
 // costs 11% of a 1080p denoise (0.915 against 0.823 ms, medians of three alternated runs).
 constexpr float kOutlierVarianceRatio = 2.0f;
 constexpr float kNoOutlierLimit = 3.4e38f;  // no neighbours to compare with
+constexpr float kMinOutlierWeight = 1e-4f;
 
 // On the GPU the division is the approximate one (a reciprocal and a multiply, 2 ulp), a tap's
 // weight needing no more; IEEE division there is a call-like sequence a tap.
+// A sample never weighs less than kMinOutlierWeight: where every neighbour's variance is 0 (a
+// constant sky around a one-pixel object) the limit is 0.
 PT_HD float outlierWeight(float variance, float outlierLimit) {
 #if defined(__CUDA_ARCH__)
     const float ratio = __fdividef(outlierLimit, variance);
 #else
     const float ratio = outlierLimit / variance;
 #endif
-    return variance > outlierLimit ? ratio : 1.0f;
+    return variance > outlierLimit ? maxf(ratio, kMinOutlierWeight) : 1.0f;
+}
+
+// The centre's own weight in an a-trous pass (the same on both backends, bit for bit).
+PT_HD float centerWeight(float variance, float outlierLimit) {
+    return splineWeight(0) * splineWeight(0) * outlierWeight(variance, outlierLimit);
 }
 
 // `deviationAt(dx, dy)`: the deviation of the pixel (dx, dy) from p, negative where it is left
@@ -460,8 +483,7 @@ PT_HD PackedSample atrousAt(const PackedSample* in, const DenoiseSurface* surfac
                            around.outlierLimit};
     AtrousSums sums;
     if (center.valid()) {
-        sums.add(splineWeight(0) * splineWeight(0) * outlierWeight(center.variance, around.outlierLimit),
-                 center.radiance, center.variance);
+        sums.add(centerWeight(center.variance, around.outlierLimit), center.radiance, center.variance);
     }
     const auto tap = [&](int i, int j, uint32_t q) {
         const PackedSample packed = in[q];

@@ -178,8 +178,8 @@ void atrousRow(const SamplePlanes& inPlanes, const SurfacePlanes& surfaces, cons
         sums.outlierLimit[x] = around.outlierLimit;
         const float variance = deviation * deviation;
         AtrousSums s;
-        s.add(valid ? splineWeight(0) * splineWeight(0) * outlierWeight(variance, around.outlierLimit) : 0.0f,
-              {in.r[c], in.g[c], in.b[c]}, variance);
+        s.add(valid ? centerWeight(variance, around.outlierLimit) : 0.0f, {in.r[c], in.g[c], in.b[c]},
+              variance);
         sums.setAtrous(x, s);
     }
     for (int j = -2; j <= 2; ++j) {

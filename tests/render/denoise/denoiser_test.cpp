@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -134,6 +135,85 @@ TEST(Denoiser, AlbedoChannelsNearZeroKeepTheirScale) {
         for (uint32_t y = 0; y < f.height; ++y) blue += f.at(out, x, y).z / float(f.height);
         EXPECT_NEAR(blue, f.at(truth, x, 0).z, 0.1f * f.at(truth, x, 0).z) << "column " << x;
     }
+}
+
+// A one-pixel black line (albedo 0) with a 4% sheen that no albedo scales, on a white wall, at
+// the noise of 16 samples: the line's demodulated radiance is its sheen over the albedo floor,
+// and with its variance it must not open the wall's luminance stops to it, nor the wall's noise
+// the line's (before the outlier weight and the albedo floor the wall beside the line came out
+// at 0.74, and the line at 0.089).
+TEST(Denoiser, ABlackLineDoesNotBleedIntoAWhiteWall) {
+    Frame f(40, 16);
+    f.samples = 16;
+    std::mt19937 rng(6);
+    std::normal_distribution<float> noise(0.0f, 1.0f);
+    f.forEachPixel([&](uint32_t x, uint32_t y) {
+        const bool line = x == 20;
+        const float truth = line ? 0.04f : 1.0f, sigma = 0.3f * truth;
+        f.set(f.albedo, x, y, Vec3(line ? 0.0f : 1.0f));
+        f.set(f.beauty, x, y, Vec3(truth + sigma * noise(rng)));
+        f.set(f.variance, x, y, Vec3(sigma * sigma));
+    });
+    const std::vector<float> out = f.denoised();
+    float wall = 0.0f, line = 0.0f;  // the largest errors beside the line and on it
+    for (uint32_t y = 0; y < f.height; ++y) {
+        for (const uint32_t x : {18u, 19u, 21u, 22u})
+            wall = std::max(wall, std::fabs(f.at(out, x, y).x - 1.0f));
+        line = std::max(line, std::fabs(f.at(out, 20, y).x - 0.04f));
+    }
+    std::cout << "[ figures  ] black line on a white wall: largest error beside it " << wall << ", on it "
+              << line << "\n";
+    EXPECT_LE(wall, 0.15f);
+    EXPECT_LE(line, 0.06f);
+}
+
+// A one-pixel object against a constant sky: every tap is on the sky, whose variance is 0, so
+// the object's variance is outlying beside its neighbours'; it must still keep its own value
+// (with no floor under outlierWeight it weighed nothing and was pulled towards 0).
+TEST(Denoiser, AOnePixelObjectAgainstAConstantSkyKeepsItsValue) {
+    Frame f(9, 9);
+    f.samples = 16;
+    f.forEachPixel([&](uint32_t x, uint32_t y) {
+        const bool object = x == 4 && y == 4;
+        f.set(f.albedo, x, y, Vec3(object ? 0.5f : 0.0f));
+        f.set(f.normal, x, y, object ? Vec3(0, 0, 1) : Vec3(0.0f));
+        f.set(f.depth, x, y, Vec3(object ? 5.0f : 0.0f));
+        f.set(f.alpha, x, y, Vec3(object ? 1.0f : 0.0f));
+        f.set(f.emission, x, y, Vec3(object ? 0.0f : 1.0f));
+        f.set(f.beauty, x, y, Vec3(object ? 0.4f : 1.0f));
+        f.set(f.variance, x, y, Vec3(object ? 0.05f : 0.0f));
+    });
+    EXPECT_NEAR(f.at(f.denoised(), 4, 4).x, 0.4f, 1e-3f);
+}
+
+// A shadow edge no guide shows (one wall, bright left, dark right) below a row of sky whose
+// pixels vary (an environment image): a sky pixel's variance is none of the wall's business.
+// (When it was kept, divided by the albedo floor squared, it opened the luminance stops of the
+// wall's top row, which then smoothed the edge away.)
+TEST(Denoiser, ASkysVarianceDoesNotOpenTheLuminanceStopsBelowIt) {
+    Frame f(40, 16);
+    f.samples = 16;
+    std::mt19937 rng(7);
+    std::normal_distribution<float> noise(0.0f, 1.0f);
+    f.forEachPixel([&](uint32_t x, uint32_t y) {
+        const bool sky = y == 0;
+        const float truth = x < 20 ? 1.0f : 0.1f, sigma = 0.02f;
+        f.set(f.albedo, x, y, Vec3(sky ? 0.0f : 1.0f));
+        f.set(f.normal, x, y, sky ? Vec3(0.0f) : Vec3(0, 0, 1));
+        f.set(f.depth, x, y, Vec3(sky ? 0.0f : 5.0f));
+        f.set(f.alpha, x, y, Vec3(sky ? 0.0f : 1.0f));
+        const float skyValue = 2.0f + noise(rng);
+        f.set(f.emission, x, y, Vec3(sky ? skyValue : 0.0f));
+        f.set(f.beauty, x, y, Vec3(sky ? skyValue : truth + sigma * noise(rng)));
+        f.set(f.variance, x, y, Vec3(sky ? 0.5f : sigma * sigma));
+    });
+    const std::vector<float> out = f.denoised();
+    float worst = 0.0f;  // on the top row, next to the sky, within 3 pixels of the edge
+    for (uint32_t x = 17; x < 23; ++x)
+        worst = std::max(worst, std::fabs(f.at(out, x, 1).x - (x < 20 ? 1.0f : 0.1f)));
+    std::cout << "[ figures  ] shadow edge below a varying sky: largest error on the row below it " << worst
+              << "\n";
+    EXPECT_LE(worst, 0.03f);
 }
 
 // A geometric edge (a step in depth and a turn of the normal) between a bright and a dark

@@ -39,8 +39,11 @@ struct RandomImage {
             surfaces[i] = {sky ? Vec3(0.0f) : normal, sky ? 0.0f : 2.0f + float(patch) + 0.01f * u(rng)};
             stops[i].normalPower = kNormalPower / (1.0f + 10.0f * u(rng));
             const Vec3 radiance(u(rng), u(rng) * 2.0f, u(rng) * 0.5f);
+            // Left out, noiseless (a constant sky: outlier limits of 0), a firefly (far past its
+            // neighbours' variance) or ordinary.
+            const float variance = kind < 0.15f ? 0.0f : (kind < 0.2f ? 50.0f * u(rng) : 0.1f * u(rng));
             samples[i] =
-                kind < 0.05f ? DenoiseSample{Vec3(0.0f), kInvalid} : DenoiseSample{radiance, 0.1f * u(rng)};
+                kind < 0.05f ? DenoiseSample{Vec3(0.0f), kInvalid} : DenoiseSample{radiance, variance};
         }
         for (uint32_t y = 0; y < h; ++y) {
             for (uint32_t x = 0; x < w; ++x) {

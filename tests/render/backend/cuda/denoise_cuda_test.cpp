@@ -52,12 +52,14 @@ TEST(GpuDenoiser, MatchesTheCpuFilterOnTheSameAccumulation) {
     }
 }
 
+// Whether expectDenoisingPays holds the first sample to its ratio, or prints its figure only.
+enum class FirstSample { Checked, Printed };
+
 // relMSE against a 65536-spp reference, raw and denoised, at 1 (the first frame after an edit),
-// 4, 16 and 4096 spp: at most `fewSamplesRatio` of the raw error at 4 and 16, and at 1 unless
-// `checkFirstSample` is false (then the figure is printed), and no more than 1.05x at 4096 (it
-// fades out).
+// 4, 16 and 4096 spp: at most `fewSamplesRatio` of the raw error at 4 and 16 (and at 1 where
+// `firstSample` is Checked), and no more than 1.05x at 4096 (it fades out).
 void expectDenoisingPays(const std::string& name, const Scene& scene, double fewSamplesRatio,
-                         bool checkFirstSample = true) {
+                         FirstSample firstSample = FirstSample::Checked) {
     cuda::CudaBackend backend;
     backend.sync(scene, SceneChanges::All, {});
     backend.render(65536);
@@ -74,7 +76,7 @@ void expectDenoisingPays(const std::string& name, const Scene& scene, double few
                   << ", " << spp << " spp: relMSE raw " << rawError << ", denoised " << denoisedError << " ("
                   << rawError / denoisedError << "x less), filter " << ms << " ms\n";
         EXPECT_TRUE(allFinite(denoised));
-        if (spp == 1 && !checkFirstSample) continue;
+        if (spp == 1 && firstSample == FirstSample::Printed) continue;
         EXPECT_LE(denoisedError, (spp < 1024 ? fewSamplesRatio : 1.05) * rawError)
             << name << ", " << spp << " spp";
     }
@@ -112,7 +114,7 @@ TEST(GpuDenoiser, DepthOfFieldAssetErrorFallsAtFewSamplesAndNotAtMany) {
         "DepthOfFieldExample",
         sized(test::loadSceneOrFail(test::sharedAsset("DepthOfFieldExample/DepthOfFieldExample.glb")), 160,
               120),
-        0.5, false);
+        0.5, FirstSample::Printed);
 }
 
 }  // namespace
