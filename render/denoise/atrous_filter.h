@@ -344,39 +344,39 @@ struct NeighbourhoodVariance {
     float blurred, outlierLimit;
 };
 
-// A sample whose variance is more than this many times the mean of the centre's neighbours' is
-// an outlier: a firefly, a pixel whose few samples found a rare bright path, which holds most
-// of a noisy image's error and which the luminance stop, centred on the firefly's own value
-// and widened by its own variance, kept (a firefly on DepthOfFieldExample went from 1540 to
-// 720 against a truth of 11, 70% of that image's error after denoising at 16 spp). Such a
-// sample's weight, its own and as a tap, is scaled by limit / variance: where the variances
-// are alike (most pixels) no weight changes; a firefly whose variance is 1000x its neighbours'
-// weighs a 500th of what it did as a centre, so its neighbours replace it. Its immediate
-// neighbours, whose yardstick includes it, cut it less as a tap (about 4x in the first pass; the
-// passes after thin out what it left). The ratio of variances does not fall as samples grow: a
-// pixel whose true variance is more than twice its neighbours' (a penumbra, a caustic) stays
-// weighed down, and there only the noise bound (boundedByNoise) makes the filter fade out. The
-// variance carried along is still that of the weighted mean (SVGF eq. 4), with the new weights. Denoised over
-// raw relMSE, CPU backend, the mean over four seeds against 8192 spp (Cornell box 4096 spp, 128x128; the
-// others 160x120), at 1 / 4 / 16 spp:
+// A sample whose variance is more than this many times the mean of the centre's neighbours' is an
+// outlier: a firefly, a pixel whose few samples found a rare bright path, which holds most of a
+// noisy image's error and which the luminance stop, centred on the firefly's own value and widened
+// by its own variance, kept (a firefly on DepthOfFieldExample went from 1540 to 720 against a truth
+// of 11, 70% of that image's error after denoising at 16 spp). Such a sample's weight, its own and
+// as a tap, is scaled by limit / variance: where the variances are alike (most pixels) no weight
+// changes; a firefly whose variance is 1000x its neighbours' weighs a 500th of what it did as a
+// centre, so its neighbours replace it. Its immediate neighbours, whose yardstick includes it, cut
+// it less as a tap (about 4x in the first pass; the passes after thin out what it left). The ratio
+// of variances does not fall as samples grow: a pixel whose true variance is more than twice its
+// neighbours' (a penumbra, a caustic) stays weighed down, and there only the noise bound
+// (boundedByNoise) makes the filter fade out. The variance carried along is still that of the
+// weighted mean (SVGF eq. 4), with the new weights. Denoised over raw relMSE, CPU backend, the mean
+// over four seeds against 8192 spp (Cornell box 4096 spp, 128x128; the others 160x120), at 1 / 4 /
+// 16 spp:
 //                       Cornell            DepthOfField       BarnLamp           GolfBall
 //   no outlier weight   .028 .052 .107     1.42 .627 .462     .547 .387 .642     .164 .230 .356
 //   ratio 1.5           .023 .063 .107     .657 .249 .118     .413 .269 .388     .148 .249 .356
 //   ratio 2             .024 .059 .101     .731 .262 .127     .443 .269 .379     .152 .240 .342
 //   ratio 3             .026 .054 .097     .843 .286 .134     .491 .284 .425     .155 .232 .337
 //   2, first pass only  .025 .063 .107     .677 .258 .123     .422 .268 .401     .148 .245 .357
-// Weights of limit / (variance + limit) instead (inverse-variance weighting, softened) gave
-// .025 .079 .142 on the Cornell box and .141 .267 .388 on GolfBall: weighing every pixel by its
-// own noisy variance favours those whose few samples missed the light. On the H200 the weight
-// costs 11% of a 1080p denoise (0.915 against 0.823 ms, medians of three alternated runs).
+// Weights of limit / (variance + limit) instead (inverse-variance weighting, softened) gave .025
+// .079 .142 on the Cornell box and .141 .267 .388 on GolfBall: weighing every pixel by its own
+// noisy variance favours those whose few samples missed the light. On the H200 the weight costs 11%
+// of a 1080p denoise (0.915 against 0.823 ms, medians of three alternated runs).
 constexpr float kOutlierVarianceRatio = 2.0f;
 constexpr float kNoOutlierLimit = 3.4e38f;  // no neighbours to compare with
 constexpr float kMinOutlierWeight = 1e-4f;
 
-// On the GPU the division is the approximate one (a reciprocal and a multiply, 2 ulp), a tap's
-// weight needing no more; IEEE division there is a call-like sequence a tap.
-// A sample never weighs less than kMinOutlierWeight: where every neighbour's variance is 0 (a
-// constant sky around a one-pixel object) the limit is 0.
+// A sample's weight factor, limit / variance past the limit. Never below kMinOutlierWeight:
+// where every neighbour's variance is 0 (a constant sky around a one-pixel object) the limit is
+// 0. On the GPU the division is the approximate one (a reciprocal and a multiply, 2 ulp), a
+// tap's weight needing no more; IEEE division there is a call-like sequence a tap.
 PT_HD float outlierWeight(float variance, float outlierLimit) {
 #if defined(__CUDA_ARCH__)
     const float ratio = __fdividef(outlierLimit, variance);
