@@ -120,9 +120,11 @@ PT_HD Vec3 demodulator(Vec3 a) { return vmax(a, Vec3(kMinAlbedo)); }  // a NaN c
 // so leaving Var(sky) >= 0 out bounds Var(surface) from above; the pixel's mean holds a times
 // the mean of its a n surface samples. `surfaceLight`, `skyLight`: the luminances of what the
 // two kinds add to the pixel's mean (beauty less the emission guide, and the emission guide).
-// A pixel that is all sky (alpha 0) has none left: what it filters, beauty less emission, is 0
-// (left in, its sky's variance, divided by the albedo floor squared, reached the luminance stops
-// of the surfaces beside it through blurredVariance).
+// A pixel that is all sky (alpha 0) has none left: what it filters, beauty less emission, is 0.
+// Left in, its sky's variance, divided by the albedo floor squared, reached the luminance stops
+// of the surfaces beside it through the 3x3 blur (GolfBall under venice_sunset_1k.hdr, 160x120,
+// CPU, four seeds against 4096 spp, 16 spp: 0.264 of the raw relMSE with it, 0.243 without, the
+// rim's pixels 1.02 and 0.77; the filter before the albedo floor: 0.254 and 0.83).
 PT_HD float coverageFreeVariance(float varianceOfMean, float alpha, float surfaceLight, float skyLight,
                                  uint32_t samples) {
     if (!(alpha > 0.0f)) return 0.0f;  // all sky: demodulatedSample takes out all of it, exactly
