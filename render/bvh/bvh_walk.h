@@ -105,11 +105,13 @@ PT_HD TraversalRay makeTraversalRay(Vec3 origin, Vec3 direction) {
     r.watertight = makeWatertightRay(origin, direction);
     r.direction = direction;
     for (int a = 0; a < 3; ++a) {
+        // Selects, not branches (makeWatertightRay says why); maxf, not fmaxf, which GCC calls
+        // in libm. Both give 1 for a NaN origin.
         const bool zero = !(fabsf(direction[a]) >= kMinDirection);
         r.invDirection[a] = 1.0f / (zero ? copysignf(kMinDirection, direction[a]) : direction[a]);
-        const float pad = zero ? fmaxf(fabsf(origin[a]), 1.0f) * kZeroAxisPad : 0.0f;
-        r.slabOriginLo[a] = origin[a] + pad;
-        r.slabOriginHi[a] = origin[a] - pad;
+        const float pad = maxf(fabsf(origin[a]), 1.0f) * kZeroAxisPad;
+        r.slabOriginLo[a] = origin[a] + (zero ? pad : 0.0f);
+        r.slabOriginHi[a] = origin[a] - (zero ? pad : 0.0f);
     }
     return r;
 }

@@ -16,15 +16,17 @@ struct WatertightRay {
     float sx, sy, sz;
 };
 
+// Made once per ray and instance without branches on the direction: a diffuse bounce's largest
+// axis is a coin toss, and its branches mispredicted (with the slab set-up's, makeTraversalRay
+// was 7.4% of the CPU's samples on the 1M sphere's diffuse rays).
 PT_HD WatertightRay makeWatertightRay(Vec3 origin, Vec3 direction) {
-    const int kz = maxDimension(vabs(direction));
-    int kx = kz == 2 ? 0 : kz + 1;
-    int ky = kx == 2 ? 0 : kx + 1;
-    if (direction[kz] < 0.0f) {
-        const int swap = kx;
-        kx = ky;
-        ky = swap;
-    }
+    const Vec3 a = vabs(direction);
+    const bool xOverY = a.x > a.y, xOverZ = a.x > a.z, yOverZ = a.y > a.z;
+    // maxDimension(a), as integer arithmetic on the comparisons.
+    const int kz = 2 - 2 * int(xOverY & xOverZ) - int(!xOverY & yOverZ);
+    const int next = kz + 1 - 3 * int(kz == 2), afterNext = next + 1 - 3 * int(next == 2);
+    const bool negative = direction[kz] < 0.0f;
+    const int kx = negative ? afterNext : next, ky = negative ? next : afterNext;
     const float sz = 1.0f / direction[kz];
     return {origin, kx, ky, kz, direction[kx] * sz, direction[ky] * sz, sz};
 }
