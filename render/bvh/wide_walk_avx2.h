@@ -87,6 +87,26 @@ inline int intersectWideNode(const WideSlabRay& r, const WideBvhNode& n, float t
         _mm256_andnot_ps(_mm256_castsi256_ps(unused), _mm256_cmp_ps(tNear, limit, _CMP_LE_OQ)));
 }
 
+// triangle_lanes.inl's operations at AVX2: two blocks a test, eight lanes, each comparison
+// the predicate of its SSE2 twin (triangle_block_intersect.h), so every lane computes the same.
+namespace lane_ops {
+using Vector = __m256;
+constexpr uint32_t kCount = 8;
+PT_LANE_ARITHMETIC(_mm256)
+inline Vector equal(Vector a, Vector b) { return _mm256_cmp_ps(a, b, _CMP_EQ_OQ); }
+inline Vector notEqual(Vector a, Vector b) { return _mm256_cmp_ps(a, b, _CMP_NEQ_UQ); }
+inline Vector less(Vector a, Vector b) { return _mm256_cmp_ps(a, b, _CMP_LT_OS); }
+inline Vector lessEqual(Vector a, Vector b) { return _mm256_cmp_ps(a, b, _CMP_LE_OS); }
+inline Vector greater(Vector a, Vector b) { return _mm256_cmp_ps(a, b, _CMP_GT_OS); }
+// Corner c's coordinate `axis` of the lanes: block `low`'s four in lanes 0..3, `high`'s in 4..7.
+inline Vector loadCorner(const TriangleBlock& low, const TriangleBlock& high, int c, int axis) {
+    return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_load_ps(low.corner[c][axis])),
+                                _mm_load_ps(high.corner[c][axis]), 1);
+}
+}  // namespace lane_ops
+
+// The leaf functor over two blocks a test, which the walk below takes for triangle BLASes.
+#include "render/bvh/triangle_lanes.inl"
 #include "render/bvh/wide_walk_loop.inl"
 
 }  // namespace avx2
