@@ -3,7 +3,8 @@
 // triangle_block_intersect.h into namespace pt, where a test takes one block (SSE, four lanes),
 // and by wide_walk_avx2.h into namespace pt::avx2 under the AVX2 target pragma, where it takes
 // two blocks at once (eight lanes: the eight triangles of a full wide leaf in one pass, where
-// SSE takes two). Each includer first declares namespace `lane_ops`: Vector, kCount, the
+// SSE takes two). Per-namespace calls are written (f)(args), as in wide_walk_loop.inl, so that
+// argument-dependent lookup never finds the other namespace's copy. Each includer first declares namespace `lane_ops`: Vector, kCount, the
 // operations below and loadCorner. Included inside the namespace; it includes nothing itself.
 //
 // Each lane performs the scalar test's operations in the scalar test's order (no FMA: the host
@@ -23,8 +24,9 @@ inline void exactEdgesOfLane(float (&e)[3][lane_ops::kCount], const float (&x)[3
     e[2][lane] = float(bx * ay - by * ax);
 }
 
-// edgeFunction(a, b, c, d) = a * b - c * d in every lane, each product rounded on its own. (A
-// function, not a lambda: GCC compiles lambdas without the AVX2 region's target.)
+// edgeFunction(a, b, c, d) = a * b - c * d in every lane, each product rounded on its own. A
+// function, not a lambda: as a lambda GCC 12 refused it in the AVX2 region (-Wpsabi, "AVX
+// vector return without AVX enabled changes the ABI").
 inline lane_ops::Vector edgeLanes(lane_ops::Vector a, lane_ops::Vector b, lane_ops::Vector c,
                                   lane_ops::Vector d) {
     return lane_ops::sub(lane_ops::mul(a, b), lane_ops::mul(c, d));
@@ -64,10 +66,11 @@ inline int intersectTriangleLanes(const WatertightRay& ray, float tMax, const Tr
         e0 = lane_ops::load(e[0]), e1 = lane_ops::load(e[1]), e2 = lane_ops::load(e[2]);
     }
     // Mixed signs: the ray passes outside an edge.
-    const Vector negative = lane_ops::bitOr(lane_ops::bitOr(lane_ops::less(e0, zero), lane_ops::less(e1, zero)),
-                                         lane_ops::less(e2, zero));
-    const Vector positive = lane_ops::bitOr(lane_ops::bitOr(lane_ops::greater(e0, zero), lane_ops::greater(e1, zero)),
-                                         lane_ops::greater(e2, zero));
+    const Vector negative = lane_ops::bitOr(
+        lane_ops::bitOr(lane_ops::less(e0, zero), lane_ops::less(e1, zero)), lane_ops::less(e2, zero));
+    const Vector positive =
+        lane_ops::bitOr(lane_ops::bitOr(lane_ops::greater(e0, zero), lane_ops::greater(e1, zero)),
+                        lane_ops::greater(e2, zero));
     const Vector det = lane_ops::add(lane_ops::add(e0, e1), e2);
     Vector valid = lane_ops::bitAndNot(lane_ops::bitAnd(negative, positive), lane_ops::notEqual(det, zero));
     if (lane_ops::mask(valid) == 0) return 0;
@@ -78,13 +81,15 @@ inline int intersectTriangleLanes(const WatertightRay& ray, float tMax, const Tr
     const Vector sign = lane_ops::set1(-0.0f);
     const Vector signedT = lane_ops::bitXor(scaledT, lane_ops::bitAnd(det, sign));
     const Vector absDet = lane_ops::bitAndNot(sign, det);
-    const Vector range = lane_ops::mul(lane_ops::mul(lane_ops::set1(tMax), absDet), lane_ops::set1(1.0f + 0x1p-20f));
-    valid = lane_ops::bitAnd(valid,
-                          lane_ops::bitAnd(lane_ops::greater(signedT, zero), lane_ops::lessEqual(signedT, range)));
+    const Vector range =
+        lane_ops::mul(lane_ops::mul(lane_ops::set1(tMax), absDet), lane_ops::set1(1.0f + 0x1p-20f));
+    valid = lane_ops::bitAnd(
+        valid, lane_ops::bitAnd(lane_ops::greater(signedT, zero), lane_ops::lessEqual(signedT, range)));
     if (lane_ops::mask(valid) == 0) return 0;
     const Vector invDet = lane_ops::div(lane_ops::set1(1.0f), det);
     t = lane_ops::mul(scaledT, invDet);
-    valid = lane_ops::bitAnd(valid, lane_ops::bitAnd(lane_ops::greater(t, zero), lane_ops::less(t, lane_ops::set1(tMax))));
+    valid = lane_ops::bitAnd(
+        valid, lane_ops::bitAnd(lane_ops::greater(t, zero), lane_ops::less(t, lane_ops::set1(tMax))));
     u = lane_ops::mul(e1, invDet);
     v = lane_ops::mul(e2, invDet);
     return lane_ops::mask(valid);
@@ -131,7 +136,7 @@ struct TriangleBlockLeaf {
         for (uint32_t i = 0; i < count && i < lane_ops::kCount; ++i) counter.primitive();
         const float limit = hitHere ? intAsFloat(floatAsInt(tMax) + 1) : tMax;  // t == tMax too
         lane_ops::Vector t, u, v;
-        int hits = intersectTriangleLanes(ray.watertight, limit, low, high, t, u, v);
+        int hits = (intersectTriangleLanes)(ray.watertight, limit, low, high, t, u, v);
         if (hits == 0) return false;
         alignas(32) float ts[lane_ops::kCount], us[lane_ops::kCount], vs[lane_ops::kCount];
         lane_ops::store(ts, t), lane_ops::store(us, u), lane_ops::store(vs, v);

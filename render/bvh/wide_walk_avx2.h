@@ -1,4 +1,5 @@
-// The CPU's 8-wide walk at AVX2 (issue 21), for the files compiled under an AVX2 target pragma:
+// The CPU's 8-wide walk at AVX2 (issue 21) and its leaf functor, which tests a leaf's eight
+// triangles (two blocks) in one pass, for the files compiled under an AVX2 target pragma:
 // wide_walk_avx2.cpp (one ray) and packet_walk_avx2.cpp (eight rays, whose lanes finish alone
 // on this walk). Include it only after that pragma, inside no namespace: its functions live in
 // pt::avx2, a name no SSE2 code shares, so the linker never takes an AVX2 copy for an SSE2 one
@@ -15,6 +16,8 @@
 
 #include <cstddef>
 
+#include "render/bvh/lane_ops.h"
+#include "render/bvh/triangle_block_intersect.h"
 #include "render/bvh/wide_walk.h"
 
 namespace pt {

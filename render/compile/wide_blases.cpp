@@ -26,8 +26,9 @@ std::pair<uint32_t, uint32_t> nodeRange(const std::vector<uint32_t>& roots, size
 // less than they cost to test. Measured with the 8-wide AVX2 walk on a 1M-triangle sphere
 // (bench at 640x480, 2 threads), primary, diffuse and shadow Mrays/s, by this limit: 2: 10.2,
 // 5.8, 5.0; 4: 12.7-12.9, 7.5-7.6, 6.5-6.6; 8: 15.0-15.1, 8.6-8.7, 7.3; 12: 14.7-15.0,
-// 8.2-8.4, 7.1-7.2; 16: 15.0, 8.4, 7.1. With AVX2's eight lanes a pass (triangle_lanes.inl),
-// 12 against 8 on one thread: 1-3% slower on each kind (medians of three alternated runs).
+// 8.2-8.4, 7.1-7.2; 16: 15.0, 8.4, 7.1. Since AVX2 tests eight a pass (triangle_lanes.inl), a
+// limit of 12 was 1-3% slower than 8 on each kind on one thread (medians of three alternated
+// runs), so 8 stays.
 constexpr uint32_t kLeafTriangles = 2 * TriangleBlock::kWidth;
 
 // Lane `lane` of `block`: the corners of mesh-local triangle `local` of `blas`.
