@@ -4,8 +4,9 @@
 // and by wide_walk_avx2.h into namespace pt::avx2 under the AVX2 target pragma, where it takes
 // two blocks at once (eight lanes: the eight triangles of a full wide leaf in one pass, where
 // SSE takes two). Per-namespace calls are written (f)(args), as in wide_walk_loop.inl, so that
-// argument-dependent lookup never finds the other namespace's copy. Each includer first declares namespace `lane_ops`: Vector, kCount, the
-// operations below and loadCorner. Included inside the namespace; it includes nothing itself.
+// argument-dependent lookup never finds the other namespace's copy. Each includer first
+// declares namespace `lane_ops`: Vector, kCount, the operations below and loadCorner. Included
+// inside the namespace; it includes nothing itself.
 //
 // Each lane performs the scalar test's operations in the scalar test's order (no FMA: the host
 // builds with -ffp-contract=off, and the products are separate multiplies), so every lane's t,

@@ -1,8 +1,8 @@
 #pragma once
 // Four triangles of a CPU BVH leaf stored side by side (issue 21), so one SSE pass runs the
 // watertight test (render/bvh/triangle_lanes.inl) on all four, and one AVX2 pass on two
-// consecutive blocks: their corners as
-// structure of arrays, and which mesh-local primitive each lane is. A leaf of fewer triangles
+// consecutive blocks: their corners as structure of arrays, and which mesh-local primitive
+// each lane is. A leaf of fewer triangles
 // repeats its first in the lanes it leaves unused: a repeated triangle gives the same hit at
 // the same t, which the walk's tie rule (lower primitive wins) turns into the same answer, so
 // no lane mask is needed. Copies of the mesh's positions: a refit refreshes them
