@@ -157,7 +157,11 @@ SyncReport EditorSession::sync(const ProgressFn& progress) {
     // display change) until an edit restarts the accumulation anyway.
     if (changes.mask != SceneChanges::None || doc_.viewer.denoise) keepDenoiseGuides_ = doc_.viewer.denoise;
     const AovMask guides = keepDenoiseGuides_ ? kDenoiseGuideAovs : 0u;
-    const AovMask wanted = shown | (doc_.viewer.exportAovs & kAllAovs) | guides;
+    const AovMask layers = shown | (doc_.viewer.exportAovs & kAllAovs);
+    const AovMask wanted = layers | guides;
+    // Guides alone settle and stop (kSettledGuideSamples); what the user looks at or exports
+    // accumulates in full.
+    backend_->setAovSampleCap(settledGuideCap(layers));
     if (backend_->aovs() != wanted) {
         if (changes.mask == SceneChanges::None && !needsFreshGuides(wanted)) {
             backend_->changeAovs(wanted);  // a display change: the beauty keeps its samples

@@ -11,10 +11,12 @@
 #include "assets/image/exr_layers.h"
 #include "assets/image/image_metadata.h"
 #include "assets/image/image_write.h"
+#include "assets/image/pfm_file.h"
 #include "assets/input_error.h"
 #include "cli/cli_options.h"
 #include "cli/display_options.h"
 #include "cli/frame_sequence.h"
+#include "cli/guide_samples.h"
 #include "cli/interrupt.h"
 #include "cli/progress_bar.h"
 #include "cli/render_setup.h"
@@ -40,8 +42,10 @@ struct RenderRequest {
     AovMask aovs = 0;   // --aov: EXR layers beside the beauty (only these are accumulated)
     bool half = false;  // --half: 16-bit EXR channels (exr_layers.h says which stay float)
     // --denoise: the EXR gains a denoised layer beside the raw beauty, the PNG shows the
-    // denoised image; the denoiser's guides are accumulated for it.
+    // denoised image; the denoiser's guides are accumulated for it, up to --guide-samples
+    // (0: with every sample).
     bool denoise = false;
+    uint32_t guideSamples = kSettledGuideSamples;
     DisplayRequest display;  // --png: how linear becomes display pixels (display_options.h)
     // --frames A:B[:STEP]: a sequence, frame f posed at f / fps seconds of --animation (a name
     // or an index; the first where not given), each frame to the outputs with #### replaced.
@@ -60,7 +64,8 @@ void parseExrOptions(const Options& o, RenderRequest& r) {
         }
     }
     r.half = o.has("--half");
-    if (r.exrPath.empty() && (o.has("--aov") || r.half)) throw UsageError("--aov and --half need -o OUT.exr");
+    if ((r.exrPath.empty() || isPfmPath(r.exrPath)) && (o.has("--aov") || r.half))
+        throw UsageError("--aov and --half need -o OUT.exr");
 }
 
 void parseSequenceOptions(const Options& o, RenderRequest& r) {
@@ -79,7 +84,7 @@ void parseSequenceOptions(const Options& o, RenderRequest& r) {
 RenderRequest parseRequest(const std::vector<std::string>& args) {
     const Options o(args,
                     joined(joined({"-o", "--png", "--spp", "--time", "--stats", "--aov", "--frames", "--fps",
-                                   "--animation"},
+                                   "--animation", "--guide-samples"},
                                   renderSetupValuedFlags()),
                            joined(toggleValuedFlags(), displayValuedFlags())),
                     joined(joined(joined({"--half", "--denoise", "--skip-existing"}, renderSetupSwitches()),
@@ -103,6 +108,10 @@ RenderRequest parseRequest(const std::vector<std::string>& args) {
     if (r.display.anyGiven && r.pngPath.empty())
         throw UsageError("display flags apply to --png OUT.png; give one");
     r.denoise = o.has("--denoise");
+    if (const std::optional<std::string> guides = o.value("--guide-samples")) {
+        if (!r.denoise) throw UsageError("--guide-samples applies to --denoise; give it");
+        r.guideSamples = parseGuideSamples("--guide-samples", *guides);
+    }
     parseSequenceOptions(o, r);
     return r;
 }
@@ -222,7 +231,14 @@ void writeOutputs(const RenderRequest& fr, const FrameContext& c, const SyncRepo
             const ImageMetadata view = displayMetadata(*c.display, fr.display.dither);
             exrMetadata.insert(exrMetadata.end(), view.begin(), view.end());
         }
-        writeRenderExr(fr, backend, c.scene.camera, exrMetadata, fr.denoise ? shown : std::vector<float>{});
+        if (isPfmPath(fr.exrPath)) {
+            // PFM where EXR cannot be written (the GPU machine's build): one RGB image, what
+            // the PNG shows, without layers or metadata.
+            writePfm(fr.exrPath, backend.width(), backend.height(), shown);
+        } else {
+            writeRenderExr(fr, backend, c.scene.camera, exrMetadata,
+                           fr.denoise ? shown : std::vector<float>{});
+        }
         std::printf("%s\n", fr.exrPath.c_str());
     }
     if (!fr.pngPath.empty()) {
@@ -322,6 +338,7 @@ int runRender(const std::vector<std::string>& args) {
     backend->setToggles(r.toggles);
     backend->setAovs(r.aovs |
                      (r.denoise ? kDenoiseGuideAovs : 0u));  // before the sync, whose reset allocates them
+    if (r.denoise) backend->setAovSampleCap(settledGuideCap(r.aovs, r.guideSamples));  // --aov layers in full
     const SyncReport sync = backend->sync(scene, SceneChanges::All, bar.callback());
     bar.finish();
     const FrameContext context{*backend, scene, display, input.loadSeconds};

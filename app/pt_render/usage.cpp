@@ -15,14 +15,19 @@ struct CommandUsage {
 constexpr CommandUsage kCommands[] = {
     {"render", R"(  render SCENE -o OUT.exr [--png OUT.png] [--spp N | --time SECONDS] [--size WxH]
                 [--seed N] [--threads N] [--backend cpu|cuda] [--stats STATS.json] [--quiet]
-                [--max-depth N] [--aov NAME,...|all] [--half] [--denoise] [TOGGLES] [DISPLAY]
+                [--max-depth N] [--aov NAME,...|all] [--half] [--denoise [--guide-samples N|all]]
+                [TOGGLES] [DISPLAY]
       Render SCENE (.json, .gltf, .glb or .obj) progressively; write a linear EXR and/or a
-      display-referred PNG (or .jpg, .tif; DISPLAY says how). Prints the paths it wrote. --aov adds AOV layers to the EXR
+      display-referred PNG (or .jpg, .tif; DISPLAY says how); -o OUT.pfm writes what the PNG
+      would show, linear, as a PFM (no layers or metadata; builds without OpenImageIO write
+      that). Prints the paths it wrote. --aov adds AOV layers to the EXR
       (albedo, shading_normal, geometric_normal, depth, position, uv, roughness, metallic,
       emission, instance_id, material_id, bvh_cost, sample_count, variance, alpha; only these
       are accumulated); --half writes 16-bit channels (ids, sample_count, depth, position stay
       float). --denoise: the EXR gains denoised.R/G/B beside the raw beauty and the PNG shows
-      the denoised image (an a-trous filter guided by albedo, normal, depth, alpha and variance).
+      the denoised image (an a-trous filter guided by albedo, normal, depth, alpha and variance);
+      its guides stop accumulating after --guide-samples (default 256; all: every sample), as
+      the editor's do, so the scene's specialised kernels run from then on.
       Sequences: --frames A:B[:STEP] [--fps F] [--animation NAME|INDEX] [--skip-existing]
       renders frames A to B of the scene's animation (the first unless named; 24 fps unless
       given), frame f at f / F seconds, each to the outputs with their #### replaced by the
@@ -52,8 +57,8 @@ constexpr CommandUsage kCommands[] = {
       10), measuring relMSE, RMSE and MAPE against the reference at log-spaced times; print the
       errors at equal time and flag variants whose error stops falling. Keys: nee, mis, rr, bvh,
       pixel_jitter, megakernel, path_regeneration, compaction, material_sort, first_hit_cache,
-      denoise (on|off: the error of the denoised image), clamp,
-      rebuild_ratio (a number).
+      denoise (on|off: the error of the denoised image), clamp, rebuild_ratio (a number),
+      guide_samples (N|all, with denoise=on: as render --guide-samples).
 )",
      kNone},
     {"stress", R"(  stress [--backend cpu|cuda|all] [--quick] [--only NAME,...] [--csv OUT.csv]

@@ -37,19 +37,56 @@ size_t aovPlaneOffset(AovMask mask, Aov aov, size_t pixels) {
     return aovDoublesPerPixel(mask & (aovBit(aov) - 1u)) * pixels;
 }
 
+AovSampleCounts AovSet::samplesAt(uint32_t samplesPerPixel) const {
+    AovSampleCounts counts{};
+    for (uint32_t i = 0; i < kAovCount; ++i) {
+        if (mask & aovBit(Aov(i))) counts.of[i] = samples(Aov(i), samplesPerPixel);
+    }
+    return counts;
+}
+
+AovMask AovSet::recording(const AovSampleCap& cap, uint32_t samplesPerPixel) const {
+    AovMask full = 0;
+    for (uint32_t i = 0; i < kAovCount; ++i) {
+        if (cap.covers(Aov(i)) && samples(Aov(i), samplesPerPixel) >= cap.samples) full |= aovBit(Aov(i));
+    }
+    return mask & ~full;
+}
+
+void AovSet::skip(AovMask recorded, uint32_t passes) {
+    for (uint32_t i = 0; i < kAovCount; ++i) {
+        if ((mask & ~recorded) & aovBit(Aov(i))) skipped[i] += passes;
+    }
+}
+
 AovSet AovSet::changedTo(AovMask next, uint32_t samplesPerPixel) const {
     AovSet changed;
     changed.mask = next;
     for (uint32_t i = 0; i < kAovCount; ++i) {
         const AovMask bit = aovBit(Aov(i));
-        if (next & bit) changed.firstSample[i] = (mask & bit) ? firstSample[i] : samplesPerPixel;
+        if (!(next & bit)) continue;
+        const bool kept = (mask & bit) != 0;
+        changed.firstSample[i] = kept ? firstSample[i] : samplesPerPixel;
+        changed.skipped[i] = kept ? skipped[i] : 0;
     }
     return changed;
 }
 
-AovBuffers aovBuffersIn(double* base, const AovSet& set, size_t pixels) {
+void checkAovSampleCap(const AovSampleCap& cap) {
+    const AovMask notPath = cap.aovs & ~kPathAovs;
+    for (uint32_t i = 0; i < kAovCount; ++i) {
+        if (notPath & aovBit(Aov(i))) {
+            throw std::invalid_argument(std::string("AOV \"") + aovName(Aov(i)) +
+                                        "\" follows the beauty's samples and cannot be capped");
+        }
+    }
+    if (cap.aovs != 0 && cap.samples == 0)
+        throw std::invalid_argument("an AOV sample cap must be at least 1");
+}
+
+AovBuffers aovBuffersIn(double* base, const AovSet& set, size_t pixels, AovMask recording) {
     AovBuffers b{};
-    b.mask = set.mask;
+    b.mask = set.mask & recording;
     for (uint32_t i = 0; i < kAovCount; ++i) {
         const Aov a = Aov(i);
         b.firstSample[i] = set.firstSample[i];

@@ -20,23 +20,52 @@ bool parseAov(const std::string& name, Aov& out);  // false for an unknown name
 size_t aovDoublesPerPixel(AovMask mask);
 // Where AOV `aov`'s plane starts in the array of `mask`'s AOVs, in doubles.
 size_t aovPlaneOffset(AovMask mask, Aov aov, size_t pixels);
+// A bound on the samples some path AOVs accumulate (Backend::setAovSampleCap): the denoiser's
+// guides settle within a few hundred samples, and every pass that records them runs the generic
+// AOV kernel instead of the scene's specialised one.
+struct AovSampleCap {
+    AovMask aovs = 0;      // path AOVs only (kPathAovs): variance follows the beauty
+    uint32_t samples = 0;  // at least 1 where aovs is not 0
+
+    bool covers(Aov a) const { return (aovs & aovBit(a)) != 0; }
+};
+
+// Each AOV's sample count, for the kernels that average the sums (the GPU denoiser).
+struct AovSampleCounts {
+    uint32_t of[kAovCount];
+
+    PT_HD uint32_t operator[](Aov a) const { return of[uint32_t(a)]; }
+};
+
 // The AOVs a backend accumulates and the sample each started at: with the beauty (0) after a
-// reset, or later where Backend::changeAovs added it.
+// reset, or later where Backend::changeAovs added it; and the beauty's samples each left out
+// while an AovSampleCap held it.
 struct AovSet {
     AovMask mask = 0;
     std::array<uint32_t, kAovCount> firstSample{};
+    std::array<uint32_t, kAovCount> skipped{};
 
     // The samples AOV `a` holds when the beauty holds `samplesPerPixel`.
     uint32_t samples(Aov a, uint32_t samplesPerPixel) const {
-        return samplesPerPixel - firstSample[size_t(a)];
+        return samplesPerPixel - firstSample[size_t(a)] - skipped[size_t(a)];
     }
+    AovSampleCounts samplesAt(uint32_t samplesPerPixel) const;
+    // The AOVs the next pass records at `samplesPerPixel`: all but those `cap` holds full.
+    AovMask recording(const AovSampleCap& cap, uint32_t samplesPerPixel) const;
+    // After a pass of `passes` samples that recorded only `recorded`: the others skipped them.
+    void skip(AovMask recorded, uint32_t passes);
     // `mask` from the next pass on, at `samplesPerPixel`: the AOVs kept keep their first
-    // sample, new ones start at the next.
+    // sample and skips, new ones start at the next.
     AovSet changedTo(AovMask next, uint32_t samplesPerPixel) const;
 };
 
-// The kernels' view of an array of aovDoublesPerPixel(set.mask) x pixels doubles at `base`.
-AovBuffers aovBuffersIn(double* base, const AovSet& set, size_t pixels);
+// Throws std::invalid_argument where `cap` names an AOV that is not a path AOV (variance and
+// sample_count follow the beauty) or caps at 0 samples.
+void checkAovSampleCap(const AovSampleCap& cap);
+
+// The kernels' view of an array of aovDoublesPerPixel(set.mask) x pixels doubles at `base`,
+// recording only the AOVs in `recording` (AovSet::recording; each of set.mask has its plane).
+AovBuffers aovBuffersIn(double* base, const AovSet& set, size_t pixels, AovMask recording = kAllAovs);
 
 // The planes the AOVs in both `before` and `after` have in an array laid out for each, for
 // carrying their sums over when the AOVs change (Backend::changeAovs): doubles from `from`

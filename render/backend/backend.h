@@ -164,8 +164,17 @@ public:
     // last changeAovs.
     virtual AovMask aovs() const = 0;
     // The samples AOV `aov` holds: stats().samplesPerPixel, less the samples taken before
-    // changeAovs added it.
+    // changeAovs added it and those it skipped under the sample cap.
     virtual uint32_t aovSamples(Aov aov) const = 0;
+    // From the next pass on, the path AOVs in `cap.aovs` stop accumulating once they hold
+    // `cap.samples` samples, keeping their average (an AOV the cap no longer holds goes on); it
+    // outlives resets. For the denoiser's guides (kSettledGuideSamples); throws
+    // std::invalid_argument as checkAovSampleCap does.
+    void setAovSampleCap(const AovSampleCap& cap) {
+        checkAovSampleCap(cap);
+        aovSampleCap_ = cap;
+    }
+    const AovSampleCap& aovSampleCap() const { return aovSampleCap_; }
     // Per-pixel value of an AOV, RGBA float, row-major top row first, same size as the beauty.
     // Throws std::invalid_argument when that AOV is not enabled (not in aovs()).
     virtual void readAov(Aov aov, std::vector<float>& rgba) const = 0;
@@ -174,8 +183,9 @@ public:
 
     // The beauty denoised (render/denoise/), RGBA float like readBeauty; returns the seconds the
     // filter took (on a GPU its kernels, without the copy to the host). Needs the guides
-    // (kDenoiseGuideAovs) among aovs(), holding every sample of the beauty (since a reset);
-    // throws std::invalid_argument naming one missing. This default reads them back and
+    // (kDenoiseGuideAovs) among aovs(), each holding every sample of the beauty (since a reset)
+    // or, where the sample cap holds it, the cap's samples; throws std::invalid_argument naming
+    // one missing. This default reads them back and
     // filters on the CPU.
     virtual double readDenoised(std::vector<float>& rgba) const;
     // The same into device memory (CUDA-GL interop), the filter's seconds in *seconds; false
@@ -190,6 +200,7 @@ protected:
 
 private:
     const std::atomic<bool>* interrupt_ = nullptr;
+    AovSampleCap aovSampleCap_;
 };
 
 // The AOVs the denoiser reads: first-hit albedo, shading normal, depth and emission, and the
@@ -203,9 +214,17 @@ constexpr AovMask aovMaskOf(const Aov (&aovs)[N]) {
     return mask;
 }
 constexpr AovMask kDenoiseGuideAovs = aovMaskOf(kDenoiseGuides);
+// How many samples the denoiser's guides need (their cap in the editor and pt-render): past it
+// their averages no longer change what the filter does, while recording them keeps the path
+// tracer on its generic AOV kernel. Measured with `pt-render converge` (README, Denoiser).
+constexpr uint32_t kSettledGuideSamples = 256;
+// The cap a front end sets: the guides the path records (all but the variance, which follows
+// the beauty) at `samples`, less those `kept` names (an AOV the user views or exports
+// accumulates in full); `samples` 0: no cap.
+AovSampleCap settledGuideCap(AovMask kept = 0, uint32_t samples = kSettledGuideSamples);
 // readDenoised's condition: `backend` accumulates every guide, each holding all the beauty's
-// samples (none added later by changeAovs). requireDenoiseGuides throws std::invalid_argument
-// naming the guide that fails it.
+// samples (none added later by changeAovs) or, capped, at least the cap's samples. requireDenoiseGuides
+// throws std::invalid_argument naming the guide that fails it.
 bool denoiseGuidesComplete(const Backend& backend);
 void requireDenoiseGuides(const Backend& backend);
 

@@ -10,11 +10,19 @@ namespace pt {
 
 namespace {
 
+// Every sample of the beauty, or as many as the cap that stopped it.
 bool guideComplete(const Backend& backend, Aov guide) {
-    return (backend.aovs() & aovBit(guide)) && backend.aovSamples(guide) == backend.stats().samplesPerPixel;
+    if (!(backend.aovs() & aovBit(guide))) return false;
+    const uint32_t held = backend.aovSamples(guide);
+    const AovSampleCap& cap = backend.aovSampleCap();
+    return held == backend.stats().samplesPerPixel || (cap.covers(guide) && held >= cap.samples);
 }
 
 }  // namespace
+
+AovSampleCap settledGuideCap(AovMask kept, uint32_t samples) {
+    return samples == 0 ? AovSampleCap{} : AovSampleCap{kDenoiseGuideAovs & kPathAovs & ~kept, samples};
+}
 
 bool denoiseGuidesComplete(const Backend& backend) {
     for (const Aov guide : kDenoiseGuides) {

@@ -115,7 +115,10 @@ int runConverge(const std::vector<std::string>& args) {
         if (interrupt.interrupted()) break;
         const auto backend = syncedBackend(r.setup, variant.toggles, input.scene, bar);
         backend->render(1);  // warm-up (thread pools, first-touch pages), not charged to the variant
-        if (variant.denoise) backend->setAovs(kDenoiseGuideAovs);  // from the reset on
+        if (variant.denoise) {
+            backend->setAovs(kDenoiseGuideAovs);  // from the reset on
+            backend->setAovSampleCap(settledGuideCap(0, variant.guideSamples));
+        }
         backend->resetAccumulation();
         const ProgressFn progress = [&](const std::string&, double f) { bar.update(variant.name, f); };
         std::vector<ErrorPoint> points =

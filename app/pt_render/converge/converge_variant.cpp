@@ -4,6 +4,7 @@
 #include <map>
 
 #include "cli/cli_options.h"
+#include "cli/guide_samples.h"
 #include "cli/toggle_options.h"
 
 namespace pt::cli {
@@ -28,8 +29,8 @@ const std::map<std::string, SwitchFlags>& switchKeys() {
 }
 
 const std::map<std::string, std::string>& valuedKeys() {
-    static const std::map<std::string, std::string> keys = {{"clamp", "--clamp"},
-                                                            {"rebuild_ratio", "--rebuild-ratio"}};
+    static const std::map<std::string, std::string> keys = {
+        {"clamp", "--clamp"}, {"rebuild_ratio", "--rebuild-ratio"}, {"guide_samples", "--guide-samples"}};
     return keys;
 }
 
@@ -78,10 +79,16 @@ ConvergeVariant parseVariant(const std::string& spec) {
                 if (end > begin) appendFlags(settings.substr(begin, end - begin), flags);
             }
         }
-        // --denoise is the render command's, not a toggle.
+        // --denoise and --guide-samples are the render command's, not toggles.
         const auto denoise = std::find(flags.begin(), flags.end(), "--denoise");
         variant.denoise = denoise != flags.end();
         if (variant.denoise) flags.erase(denoise);
+        const auto guides = std::find(flags.begin(), flags.end(), "--guide-samples");
+        if (guides != flags.end()) {
+            if (!variant.denoise) throw UsageError("guide_samples applies to denoise=on; give it");
+            variant.guideSamples = parseGuideSamples("guide_samples", *(guides + 1));
+            flags.erase(guides, guides + 2);
+        }
         variant.toggles = parseToggles(Options(flags, toggleValuedFlags(), toggleSwitches()));
     } catch (const UsageError& e) {
         throw UsageError("--variant " + spec + ": " + e.what());

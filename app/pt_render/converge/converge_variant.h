@@ -5,7 +5,8 @@
 // material_sort, first_hit_cache take on/off; clamp and rebuild_ratio take a number. Each
 // key is turned into the render command's flag and read by parseToggles, so a variant means
 // exactly what the same flags mean to `pt-render render`. denoise=on measures the error of
-// the denoised image (render --denoise) instead of the raw one.
+// the denoised image (render --denoise) instead of the raw one; with it, guide_samples=N|all
+// (render --guide-samples) caps its guides.
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@ struct ConvergeVariant {
     std::string spec;  // as given, for reports
     IntegratorToggles toggles;
     bool denoise = false;
+    uint32_t guideSamples = kSettledGuideSamples;  // 0: the guides take every sample
 };
 
 // Throws UsageError naming the spec and the bad key or value.

@@ -138,7 +138,7 @@ bool CpuBackend::packetsApply(std::string* why) const {
         return false;
     };
     if (!toggles_.rayPackets) return refuse("");
-    if ((aovs_.mask & kPathAovs) != 0) return refuse("path AOVs record each camera ray's traversal");
+    if ((recordingAovs() & kPathAovs) != 0) return refuse("path AOVs record each camera ray's traversal");
     if (compiled_ && !packetWalkApplies(view_)) {
         return refuse(wideWalkSimdLevel() != SimdLevel::Avx2 ? "the processor runs no AVX2"
                                                              : "needs the 8-wide BVH and no brute force");
@@ -189,7 +189,9 @@ void CpuBackend::render(uint32_t passes) {
     const RenderScene& scene = view_;
     tbb::combinable<PathCounters> counters;
     constexpr size_t kTile = 16;
-    const bool pathAovs = (aovs_.mask & kPathAovs) != 0;
+    const AovMask recording = recordingAovs();
+    const AovBuffers aovs = aovBuffersIn(aovSums_.data(), aovs_, size_t(width_) * height_, recording);
+    const bool pathAovs = (recording & kPathAovs) != 0;
     const bool packets = packetsApply(nullptr);
     std::atomic<bool> torn{false};
     tbb::parallel_for(
@@ -199,9 +201,9 @@ void CpuBackend::render(uint32_t passes) {
             const uint32_t y0 = rows.begin(), y1 = rows.end(), x0 = cols.begin(), x1 = cols.end();
             PathCounters& c = counters.local();
             const bool done =
-                pathAovs  ? renderTile<true, false>(scene, y0, y1, x0, x1, firstSample, passes, c)
-                : packets ? renderTile<false, true>(scene, y0, y1, x0, x1, firstSample, passes, c)
-                          : renderTile<false, false>(scene, y0, y1, x0, x1, firstSample, passes, c);
+                pathAovs  ? renderTile<true, false>(scene, aovs, y0, y1, x0, x1, firstSample, passes, c)
+                : packets ? renderTile<false, true>(scene, aovs, y0, y1, x0, x1, firstSample, passes, c)
+                          : renderTile<false, false>(scene, aovs, y0, y1, x0, x1, firstSample, passes, c);
             if (!done) torn = true;
         });
     if (torn) {
@@ -212,6 +214,7 @@ void CpuBackend::render(uint32_t passes) {
         stats_.rays += c.rays;
         stats_.nonfiniteSamples += c.nonfiniteSamples;
     });
+    aovs_.skip(recording, passes);
     stats_.samplesPerPixel += passes;
     stats_.renderSeconds += secondsSince(start);
 }
@@ -224,13 +227,13 @@ void CpuBackend::render(uint32_t passes) {
 // it (checked before every sample: a call may ask for many samples a pixel, and one relaxed
 // load is nothing beside a path).
 template <bool kAovs, bool kPackets>
-bool CpuBackend::renderTile(const RenderScene& scene, uint32_t y0, uint32_t y1, uint32_t x0, uint32_t x1,
-                            uint32_t firstSample, uint32_t passes, PathCounters& counters) {
+bool CpuBackend::renderTile(const RenderScene& scene, const AovBuffers& aovs, uint32_t y0, uint32_t y1,
+                            uint32_t x0, uint32_t x1, uint32_t firstSample, uint32_t passes,
+                            PathCounters& counters) {
     static_assert(!(kAovs && kPackets), "packets trace paths without AOVs");
     constexpr uint32_t kBlockWidth = kPackets ? 4 : 1, kBlockHeight = kPackets ? 2 : 1;
     constexpr uint32_t kBlock = kBlockWidth * kBlockHeight;
     static_assert(kBlock <= kRayPacketSize, "a block's camera rays fill one packet");
-    const AovBuffers aovs = aovBuffersIn(aovSums_.data(), aovs_, size_t(width_) * height_);
     const bool variance = aovs.has(Aov::Variance);
     for (uint32_t by = y0; by < y1; by += kBlockHeight) {
         for (uint32_t bx = x0; bx < x1; bx += kBlockWidth) {

@@ -42,8 +42,10 @@ private:
     // Whether render() traces camera rays in packets now; else `why` (where not null) says why.
     bool packetsApply(std::string* why) const;
     template <bool kAovs, bool kPackets>
-    bool renderTile(const RenderScene& scene, uint32_t y0, uint32_t y1, uint32_t x0, uint32_t x1,
-                    uint32_t firstSample, uint32_t passes, PathCounters& counters);
+    bool renderTile(const RenderScene& scene, const AovBuffers& aovs, uint32_t y0, uint32_t y1, uint32_t x0,
+                    uint32_t x1, uint32_t firstSample, uint32_t passes, PathCounters& counters);
+    // The AOVs the next pass records: those accumulated, less those the sample cap holds full.
+    AovMask recordingAovs() const { return aovs_.recording(aovSampleCap(), stats_.samplesPerPixel); }
     // The sync plan's steps (sync_steps.h), on the host: a host refit, materials and
     // instances compiled in place, the binned-SAH TLAS; the light table after every move (so an
     // edited scene renders bit for bit what a fresh compile of it renders).

@@ -556,6 +556,8 @@ FeatureSet CudaBackend::renderFeatures() const {
     return view_.features | (aovs_.mask != 0 ? feature::kAovs : 0u);
 }
 
+AovMask CudaBackend::recordingAovs() const { return aovs_.recording(aovSampleCap(), stats_.samplesPerPixel); }
+
 bool CudaBackend::runsMegakernel() const {
     return toggles_.autoSchedule ? scheduleChooser_.nextIsMegakernel() : toggles_.megakernel;
 }
@@ -569,6 +571,7 @@ uint64_t CudaBackend::scheduleKey(uint32_t samplesPerWave) const {
     while ((samplesPerWave >> (waveClass + 1)) != 0) ++waveClass;
     const FeatureSet features = renderFeatures();
     const uint32_t words[] = {uint32_t(features),
+                              (recordingAovs() & kPathAovs) != 0,  // the generic AOV kernel or not
                               uint32_t(features >> 32),
                               waveClass,
                               s.width,
@@ -591,7 +594,6 @@ void CudaBackend::render(uint32_t passes) {
     if (!compiled_ || passes == 0) return;
     if (!pendingSahTrees_.empty() || !staleSahTrees_.empty()) landSahTrees(false);
     const auto start = Clock::now();
-    const AovBuffers aovs = aovBuffersIn(aovSums_.data(), aovs_, size_t(width_) * height_);
     const uint32_t wave = scheduler_.samplesPerWave(width_ * height_, passes);
     // The trial runs waves of the size this call runs, alternating the schedules, until both
     // have run theirs.
@@ -604,10 +606,15 @@ void CudaBackend::render(uint32_t passes) {
         const bool trial = toggles_.autoSchedule && !scheduleChooser_.decided();
         const bool megakernel = runsMegakernel();
         const uint32_t n = std::min(wave, passes);
+        // Per wave: a capped AOV stops at the first wave that finds it full, and from then on
+        // the scene's specialised kernels run where no other path AOV is recorded.
+        const AovMask recording = recordingAovs();
+        const AovBuffers aovs = aovBuffersIn(aovSums_.data(), aovs_, size_t(width_) * height_, recording);
         const auto waveStart = Clock::now();
         scheduler_.render(view_, stats_.samplesPerPixel, n, scheduleOptions(), sum_.data(), aovs, stream_);
         PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
         if (trial) scheduleChooser_.record(megakernel, secondsSince(waveStart) / n);
+        aovs_.skip(recording, n);
         stats_.samplesPerPixel += n;
         passes -= n;
     }
@@ -682,8 +689,8 @@ bool CudaBackend::copyDenoisedToDevice(void* deviceRgba, double* seconds) const 
     const AovBuffers aovs = aovBuffersIn(aovSums_.data(), aovs_, size_t(width_) * height_);
     StreamTimer timer;
     const double s = timer.time(stream_, [&] {
-        denoiser_.run(sum_.data(), aovs, width_, height_, stats_.samplesPerPixel,
-                      static_cast<float*>(deviceRgba), stream_);
+        denoiser_.run(sum_.data(), aovs, aovs_.samplesAt(stats_.samplesPerPixel), width_, height_,
+                      stats_.samplesPerPixel, static_cast<float*>(deviceRgba), stream_);
     });
     if (seconds) *seconds = s;
     return true;

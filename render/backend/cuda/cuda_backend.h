@@ -126,6 +126,8 @@ private:
     bool runsMegakernel() const;
     // The scene's features with the AOVs accumulated now: what picks the kernel variant.
     FeatureSet renderFeatures() const;
+    // The AOVs the next wave records: those accumulated, less those the sample cap holds full.
+    AovMask recordingAovs() const;
     uint64_t scheduleKey(uint32_t samplesPerWave) const;
     bool firstHitCacheApplies(std::string* why) const;
 

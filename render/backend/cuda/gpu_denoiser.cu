@@ -40,19 +40,18 @@ __device__ Vec3 aovValue(const AovBuffers& aovs, Aov aov, uint32_t i, uint32_t s
 // Each pixel's guides from the sums (the albedo and emission kept for the last pass), its
 // surface and normal stop, and the demodulated sample of its mean beauty (as readBeauty gives
 // it). Only the depth slopes wait for the neighbours' surfaces (packKernel).
-__global__ void prepareKernel(const double* sum, AovBuffers aovs, uint32_t samples, Planes p,
-                              denoise::DenoiseSurface* surfaces, denoise::SurfaceStops* stops,
-                              DenoiseSample* out) {
+__global__ void prepareKernel(const double* sum, AovBuffers aovs, AovSampleCounts guideSamples,
+                              uint32_t samples, Planes p, denoise::DenoiseSurface* surfaces,
+                              denoise::SurfaceStops* stops, DenoiseSample* out) {
     uint32_t x, y;
     if (!pixelOf(p.width, p.height, x, y)) return;
     const uint32_t i = y * p.width + x;
     const double scale = samples ? 1.0 / samples : 0.0;
     const Vec3 beauty(float(sum[3 * i] * scale), float(sum[3 * i + 1] * scale),
                       float(sum[3 * i + 2] * scale));
-    const denoise::PixelGuides pixel{
-        aovValue(aovs, Aov::Albedo, i, samples), aovValue(aovs, Aov::ShadingNormal, i, samples),
-        aovValue(aovs, Aov::Emission, i, samples), aovValue(aovs, Aov::Depth, i, samples).x,
-        aovValue(aovs, Aov::Alpha, i, samples).x};
+    const auto guide = [&](Aov aov) { return aovValue(aovs, aov, i, guideSamples[aov]); };
+    const denoise::PixelGuides pixel{guide(Aov::Albedo), guide(Aov::ShadingNormal), guide(Aov::Emission),
+                                     guide(Aov::Depth).x, guide(Aov::Alpha).x};
     reinterpret_cast<float4*>(p.at(kAlbedo))[i] =
         make_float4(pixel.albedo.x, pixel.albedo.y, pixel.albedo.z, 1.0f);
     reinterpret_cast<float4*>(p.at(kEmission))[i] =
@@ -115,8 +114,8 @@ static_assert(std::size(kAtrousPasses) == kDenoiseIterations, "one kernel a pass
 
 }  // namespace
 
-void GpuDenoiser::run(const double* sum, const AovBuffers& aovs, uint32_t width, uint32_t height,
-                      uint32_t samples, float* rgba, cudaStream_t stream) {
+void GpuDenoiser::run(const double* sum, const AovBuffers& aovs, const AovSampleCounts& guideSamples,
+                      uint32_t width, uint32_t height, uint32_t samples, float* rgba, cudaStream_t stream) {
     for (const Aov guide : kDenoiseGuides) requireAov(aovs.mask, guide);
     const size_t pixels = size_t(width) * height;
     if (pixels == 0) return;
@@ -141,7 +140,7 @@ void GpuDenoiser::run(const double* sum, const AovBuffers& aovs, uint32_t width,
     DenoiseSample* demodulated = ownVariance ? nullptr : demodulated_.data();
     denoise::DenoiseSurface* surfaces = surfaces_.data();
     denoise::SurfaceStops* stops = stops_.data();
-    prepareKernel<<<grid, block, 0, stream>>>(sum, aovs, samples, p, surfaces, stops,
+    prepareKernel<<<grid, block, 0, stream>>>(sum, aovs, guideSamples, samples, p, surfaces, stops,
                                               ownVariance ? input : demodulated);
     PT_CUDA_CHECK_LAUNCH("prepareKernel");
     packKernel<<<grid, block, 0, stream>>>(demodulated, surfaces, stops, width, height, samples, input, a);

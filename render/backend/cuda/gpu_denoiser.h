@@ -6,9 +6,9 @@
 
 #include <cstdint>
 
+#include "render/backend/aov.h"
 #include "render/backend/cuda/device_buffer.h"
 #include "render/denoise/atrous_filter.h"
-#include "render/integrator/aov.h"
 
 namespace pt::cuda {
 
@@ -16,9 +16,9 @@ class GpuDenoiser {
 public:
     // The mean of `sum` (RGB doubles a pixel over `samples`) denoised into `rgba` (device, RGBA
     // float a pixel), guided by the AOV sums of `aovs`, which must hold kDenoiseGuideAovs
-    // (backend.h).
-    void run(const double* sum, const AovBuffers& aovs, uint32_t width, uint32_t height, uint32_t samples,
-             float* rgba, cudaStream_t stream);
+    // (backend.h), each over its `guideSamples` (fewer than `samples` where capped).
+    void run(const double* sum, const AovBuffers& aovs, const AovSampleCounts& guideSamples, uint32_t width,
+             uint32_t height, uint32_t samples, float* rgba, cudaStream_t stream);
     uint64_t bytes() const {
         return planes_.bytes() + surfaces_.bytes() + stops_.bytes() + input_.bytes() + demodulated_.bytes() +
                a_.bytes() + b_.bytes();

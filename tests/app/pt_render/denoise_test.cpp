@@ -9,6 +9,7 @@
 
 #include "app/cli_runner.h"
 #include "assets/image/exr_layers.h"
+#include "assets/image/pfm_file.h"
 #include "render/backend/cpu/cpu_backend.h"
 #include "render/util/image_error.h"
 #include "support/load_scene.h"
@@ -85,6 +86,51 @@ TEST(DenoisedRender, TheCliAddsADenoisedLayerAndKeepsTheRawBeauty) {
     }
     EXPECT_GT(differing, 0.5 * double(raw->values.size()));
     EXPECT_NEAR(sumDenoised / sumRaw, 1.0, 0.25);
+}
+
+// -o OUT.pfm holds what the PNG would show: the raw beauty, or with --denoise the denoised one
+// (the GPU machine's build, without OpenImageIO, writes its 4-spp crops so). The raw PFM is the
+// backend's beauty at the same samples; AOV layers need an EXR.
+TEST(DenoisedRender, APfmHoldsTheDenoisedImageWithDenoise) {
+    const std::string dir = test::tempDir();
+    const std::string cornellPath = "'" + test::projectPath("scenes/cornell.json") + "'";
+    const std::string args = " --spp 4 --size 24x16 --quiet";
+    const auto raw = test::runCli("render " + cornellPath + " -o " + dir + "/raw.pfm" + args);
+    ASSERT_EQ(raw.exitCode, 0) << raw.err;
+    const auto denoised =
+        test::runCli("render " + cornellPath + " -o " + dir + "/denoised.pfm" + args + " --denoise");
+    ASSERT_EQ(denoised.exitCode, 0) << denoised.err;
+    uint32_t w = 0, h = 0;
+    const std::vector<float> rawImage = readPfm(dir + "/raw.pfm", w, h);
+    ASSERT_EQ(w, 24u);
+    ASSERT_EQ(h, 16u);
+    const std::vector<float> denoisedImage = readPfm(dir + "/denoised.pfm", w, h);
+    ASSERT_EQ(denoisedImage.size(), rawImage.size());
+
+    Scene scene = cornell(24);
+    scene.render.height = 16;
+    CpuBackend backend;
+    backend.sync(scene, SceneChanges::All, {});
+    backend.render(4);
+    std::vector<float> beauty;
+    backend.readBeauty(beauty);
+    ASSERT_EQ(beauty.size(), rawImage.size());
+    double differing = 0.0, sumRaw = 0.0, sumDenoised = 0.0;
+    for (size_t i = 0; i < beauty.size(); i += 4) {
+        for (size_t c = 0; c < 3; ++c) {
+            EXPECT_EQ(rawImage[i + c], beauty[i + c]) << "pixel " << i / 4;
+            differing += rawImage[i + c] != denoisedImage[i + c] ? 1.0 : 0.0;
+            sumRaw += rawImage[i + c];
+            sumDenoised += denoisedImage[i + c];
+        }
+    }
+    EXPECT_GT(differing, 0.5 * 3.0 * double(beauty.size() / 4)) << "the PFM of --denoise is denoised";
+    EXPECT_NEAR(sumDenoised / sumRaw, 1.0, 0.25);
+
+    const auto layers =
+        test::runCli("render " + cornellPath + " -o " + dir + "/x.pfm" + args + " --aov depth");
+    EXPECT_EQ(layers.exitCode, 2);
+    EXPECT_NE(layers.err.find("-o OUT.exr"), std::string::npos) << layers.err;
 }
 
 }  // namespace
