@@ -17,6 +17,7 @@ namespace {
 struct Variant {
     std::string name;
     IntegratorToggles toggles;
+    AovMask aovs = 0;  // accumulated beside the beauty
 };
 
 // The base toggles, then each toggle the backend has flipped on its own.
@@ -77,6 +78,19 @@ std::vector<Variant> variantsOf(const Backend& backend, const IntegratorToggles&
     flip(base.mergeInstances ? "merge off" : "merge on",
          [](IntegratorToggles& t) { t.mergeInstances = !t.mergeInstances; });
     flip("BVH off", [](IntegratorToggles& t) { t.bruteForce = true; });
+    // What the denoiser's guides cost while they accumulate (their first kSettledGuideSamples
+    // samples after every edit): the path AOVs, recorded by the generic AOV kernel on the GPU,
+    // and one ray at a time on the CPU.
+    v.push_back({"denoiser guides", base, kDenoiseGuideAovs});
+    if (gpu) {
+        for (const bool megakernel : {true, false}) {
+            IntegratorToggles t = base;
+            t.autoSchedule = false;
+            t.megakernel = megakernel;
+            v.push_back({megakernel ? "denoiser guides, megakernel" : "denoiser guides, wavefront", t,
+                         kDenoiseGuideAovs});
+        }
+    }
     return v;
 }
 
@@ -87,6 +101,7 @@ void benchPathTracing(Backend& backend, const Scene& scene, const BenchSettings&
     const double pixels = double(scene.render.width) * scene.render.height;
     for (const Variant& v : variantsOf(backend, settings.toggles)) {
         backend.setToggles(v.toggles);
+        backend.setAovs(v.aovs);  // from the reset the sync makes
         try {
             syncSettled(backend, scene, SceneChanges::Settings);
         } catch (const std::invalid_argument& e) {
@@ -125,6 +140,7 @@ void benchPathTracing(Backend& backend, const Scene& scene, const BenchSettings&
         report.add({"path tracing", "rays", v.name, median(rayRates), "Mrays/s", ""});
     }
     backend.setToggles(settings.toggles);
+    backend.setAovs(0);
     syncSettled(backend, scene, SceneChanges::Settings);
 }
 
