@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "render/bvh/compressed_wide_quantize.h"
+#include "render/bvh/sah_collapse.h"
 #include "render/bvh/wide_bvh.h"
 #include "render/util/check.h"
 
@@ -12,6 +13,16 @@ namespace pt {
 namespace {
 
 using Slots = std::array<uint32_t, CompressedWideNode::kWidth>;
+
+// The SAH costs the collapse weighs (sah_collapse.h): the walk tests a leaf's triangles one at a
+// time, each about 0.3 of a wide node's test (Ylitie et al. 2017 weigh them so), and a leaf
+// holds at most what a slot's 3 bits of count allow. Against the greedy collapse
+// (openLargestChildren) on the H200, `pt-render bench --size 1280x720 --gpu-wide-bvh`, two
+// alternated rounds, Mrays/s: 1M-triangle sphere primary 1946 / 1955 -> 1918 / 1894, diffuse
+// 1203 / 1184 -> 1290 / 1264, shadow 968 / 948 -> 980 / 990, wavefront path tracing 1023 / 1016
+// -> 1046 / 1043 spp/s; Balloon primary 3416 / 3489 -> 3698 / 3769, diffuse 159 / 162 -> 173 /
+// 174, shadow 155 / 156 -> 161 / 161, wavefront 737 / 740 -> 806 / 798 spp/s.
+constexpr WideCollapseCosts kCollapseCosts{1.0f, 0.3f, 1, CompressedWideNode::kMaxLeafSize};
 
 // Slot s points along -axis a where bit a of s is set: the slot of the child lying farthest
 // that way, so a ray whose direction has the opposite signs meets it first.
@@ -53,16 +64,16 @@ Slots assignSlots(const BvhNode* nodes, uint32_t parent, const WideChildren& kid
 class Compressor {
 public:
     Compressor(const BvhNode* nodes, uint32_t count, const uint32_t* primIndices)
-        : nodes_(nodes), count_(count), primIndices_(primIndices) {}
+        : nodes_(nodes), count_(count), primIndices_(primIndices), sah_(nodes, count, kCollapseCosts) {}
 
     CompressedWideBvh run() {
         out_.nodes.push_back(CompressedWideNode{});
         out_.sourceNodes.assign(CompressedWideNode::kWidth, kNoSourceNode);
-        if (count_ == 0 || nodes_[0].isLeaf() || nodes_[0].leftOrFirst + 1 >= count_) {
+        if (count_ == 0 || isLeaf(0) || nodes_[0].leftOrFirst + 1 >= count_) {
             // A lone leaf (or the empty root) in slot 0 of the root.
             Slots slots;
             slots.fill(kNoSourceNode);
-            if (count_ > 0 && nodes_[0].isLeaf()) slots[0] = 0;
+            if (count_ > 0 && isLeaf(0)) slots[0] = 0;
             fill(0, slots);
             return std::move(out_);
         }
@@ -70,13 +81,14 @@ public:
         while (!pending_.empty()) {
             const auto [wide, binary] = pending_.back();
             pending_.pop_back();
-            fill(wide, assignSlots(nodes_, binary,
-                                   openLargestChildren(nodes_, binary, CompressedWideNode::kWidth)));
+            fill(wide, assignSlots(nodes_, binary, sah_.childrenOf(binary)));
         }
         return std::move(out_);
     }
 
 private:
+    bool isLeaf(uint32_t binary) const { return sah_.isLeaf(binary); }
+
     // Wide node `wide` over the binary nodes in `slots`: its interior children are appended
     // as new nodes (to be filled in turn), its leaves' primitives to the primitive list.
     void fill(uint32_t wide, const Slots& slots) {
@@ -86,19 +98,19 @@ private:
         for (uint32_t s = 0; s < CompressedWideNode::kWidth; ++s) {
             out_.sourceNodes[size_t(wide) * CompressedWideNode::kWidth + s] = slots[s];
             if (slots[s] == kNoSourceNode) continue;
-            const BvhNode& kid = nodes_[slots[s]];
-            if (!kid.isLeaf()) {
+            if (!isLeaf(slots[s])) {
                 node.interiorMask |= uint8_t(1u << s);
                 pending_.push_back({uint32_t(out_.nodes.size()), slots[s]});
                 out_.nodes.push_back(CompressedWideNode{});
                 out_.sourceNodes.resize(out_.sourceNodes.size() + CompressedWideNode::kWidth, kNoSourceNode);
                 continue;
             }
-            PT_CHECK(kid.count <= CompressedWideNode::kMaxLeafSize);
+            const uint32_t count = sah_.leafCount(slots[s]), first = sah_.leafFirst(slots[s]);
+            PT_CHECK(count <= CompressedWideNode::kMaxLeafSize);
             const uint32_t offset = uint32_t(out_.primIndices.size()) - node.primBase;
-            node.leafMeta[s] = uint8_t(kid.count << 5 | offset);
-            out_.primIndices.insert(out_.primIndices.end(), primIndices_ + kid.leftOrFirst,
-                                    primIndices_ + kid.leftOrFirst + kid.count);
+            node.leafMeta[s] = uint8_t(count << 5 | offset);
+            out_.primIndices.insert(out_.primIndices.end(), primIndices_ + first,
+                                    primIndices_ + first + count);
         }
         quantizeWideBoxes(node, nodes_, slots.data());
         out_.nodes[wide] = node;
@@ -107,6 +119,7 @@ private:
     const BvhNode* nodes_;
     uint32_t count_;
     const uint32_t* primIndices_;
+    SahCollapse sah_;
     // (wide node, binary node) to fill, taken last first: depth first, so the binary nodes are
     // read about in their (depth-first) memory order (1M triangles: 104 ms, breadth first 118).
     std::vector<std::pair<uint32_t, uint32_t>> pending_;

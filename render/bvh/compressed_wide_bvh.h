@@ -1,13 +1,14 @@
 #pragma once
 // Collapsing a binary BVH into the compressed 8-wide form the CUDA traversal walks
-// (render/kernel/compressed_wide_node.h; Ylitie, Karras and Laine 2017). Each wide node takes a
-// binary node's children and opens the largest interior one until it holds eight
-// (openLargestChildren, as the CPU's 8-wide collapse; the paper's SAH-optimal collapse is a
-// later refinement). A node's interior children are made together, so they are consecutive; its leaves'
-// primitives are copied next to each other into a primitive list of the compressed tree's own. Children are
-// placed in slots by the direction they lie in from the node's centre (the paper's section 3.1), a greedy
-// assignment of the best (child, slot) pair first. Each slot remembers its binary node, so a refit of the
-// binary tree is requantised in one pass instead of collapsed again.
+// (render/kernel/compressed_wide_node.h; Ylitie, Karras and Laine 2017). Which binary nodes
+// become wide nodes, which leaves (a leaf may gather a subtree of up to kMaxLeafSize
+// primitives) and which fill each wide node's slots is the paper's SAH-optimal choice
+// (sah_collapse.h). A node's interior children are made together, so they are consecutive; its
+// leaves' primitives are copied next to each other into a primitive list of the compressed
+// tree's own. Children are placed in slots by the direction they lie in from the node's centre
+// (the paper's section 3.1), a greedy assignment of the best (child, slot) pair first. Each slot
+// remembers its binary node, so a refit of the binary tree is requantised in one pass instead
+// of collapsed again.
 #include <cstdint>
 #include <vector>
 

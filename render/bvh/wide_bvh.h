@@ -22,10 +22,10 @@ struct WideBvh {
     std::vector<uint32_t> sourceNodes;  // per slot (node * 4 + slot): its binary node, or kEmpty
 };
 
-// The up to `width` binary nodes under binary interior node `binary` that one wide node holds:
-// its two children, the largest interior one (by surface area) opened while there is room.
-// Shared by the CPU's 8-wide collapse and the compressed 8-wide one (compressed_wide_bvh.h).
-// Held in place: collapses run it once per wide node, hundreds of thousands of times.
+// The up to eight binary nodes one wide node holds: openLargestChildren's greedy choice in the
+// CPU's 8-wide collapse, SahCollapse::childrenOf's in the compressed GPU tree (sah_collapse.h
+// says why the CPU keeps the greedy one). Held in place: collapses make one per wide node,
+// hundreds of thousands of times.
 struct WideChildren {
     static constexpr uint32_t kMaxWidth = 8;
     uint32_t node[kMaxWidth];
@@ -34,8 +34,10 @@ struct WideChildren {
     uint32_t size() const { return count; }
     uint32_t operator[](uint32_t i) const { return node[i]; }
 };
-// With `leafCounts` (per binary node: its primitives where the wide tree makes it a leaf,
-// else 0), nodes it makes leaves are never opened; without, the binary leaves alone.
+// Those under binary interior node `binary`: its two children, the largest interior one (by
+// surface area) opened while there is room for `width`. With `leafCounts` (per binary node:
+// its primitives where the wide tree makes it a leaf, else 0), nodes it makes leaves are never
+// opened; without, the binary leaves alone.
 WideChildren openLargestChildren(const BvhNode* nodes, uint32_t binary, uint32_t width,
                                  const uint32_t* leafCounts = nullptr);
 

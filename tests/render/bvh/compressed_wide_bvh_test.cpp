@@ -1,10 +1,10 @@
 // The GPU's compressed 8-wide BVH (render/bvh/compressed_wide_bvh.h), on the host: the collapse
-// keeps every primitive once, interior children consecutive and leaves within the walk's 32
-// primitive bits; every quantised box holds its binary box with a grid step of margin; slots
-// face the direction their child lies in; the walk visits fewer nodes than the binary one for
-// the same hits; a host refit reaches the quantised boxes. (Its hits against brute force are
-// the Layouts/ suites of traversal_test.cpp, two_level_traversal_test.cpp and
-// watertight_test.cpp, which walk it on the CPU with the code the CUDA kernels run.)
+// keeps every primitive once, interior children consecutive, leaves (binary subtrees of a few
+// primitives) within the walk's 32 primitive bits; every quantised box holds its binary box with a grid step
+// of margin; slots face the direction their child lies in; the walk visits fewer nodes than the binary one
+// for the same hits; a host refit reaches the quantised boxes. (Its hits against brute force are the Layouts/
+// suites of traversal_test.cpp, two_level_traversal_test.cpp and watertight_test.cpp, which walk it on the
+// CPU with the code the CUDA kernels run.)
 #include "render/bvh/compressed_wide_bvh.h"
 
 #include <gtest/gtest.h>
@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include "render/bvh/binned_sah_builder.h"
 #include "render/bvh/bvh_test_util.h"
@@ -31,6 +32,19 @@ Bvh buildSoupBvh(test::SoupKind kind, uint32_t triangles, Rng& rng, Vec3 offset 
     for (Vec3& p : mesh.positions) p = p * scale + offset;
     const std::vector<Aabb> boxes = test::triangleBounds(mesh);
     return buildBinnedSahBvh(boxes.data(), uint32_t(boxes.size()));
+}
+
+// The primitive-index entries under binary node `n`, left to right.
+std::vector<uint32_t> subtreeEntries(const Bvh& bvh, uint32_t n) {
+    const BvhNode& node = bvh.nodes[n];
+    if (node.isLeaf()) {
+        return {bvh.primIndices.begin() + node.leftOrFirst,
+                bvh.primIndices.begin() + node.leftOrFirst + node.count};
+    }
+    std::vector<uint32_t> entries = subtreeEntries(bvh, node.leftOrFirst);
+    const std::vector<uint32_t> right = subtreeEntries(bvh, node.leftOrFirst + 1);
+    entries.insert(entries.end(), right.begin(), right.end());
+    return entries;
 }
 
 // A plane q steps from the origin, in double: exact for the float origin and power-of-two step.
@@ -64,7 +78,7 @@ TEST(CompressedWideBvh, TheCollapseKeepsEveryPrimitiveOnceInConsecutiveChildren)
                         continue;
                     }
                     const BvhNode& from = bvh.nodes.at(source);
-                    EXPECT_EQ(isInterior, !from.isLeaf());
+                    EXPECT_FALSE(from.isLeaf() && isInterior) << "a binary leaf stays a leaf";
                     if (isInterior) {
                         // Its node is the next of the consecutive children, collapsed from
                         // `from`: its slots' boxes make up exactly from's box.
@@ -79,16 +93,19 @@ TEST(CompressedWideBvh, TheCollapseKeepsEveryPrimitiveOnceInConsecutiveChildren)
                         EXPECT_TRUE(covered.lo == from.lo && covered.hi == from.hi) << "child " << child;
                         continue;
                     }
-                    EXPECT_EQ(node.leafCount(s), from.count);
-                    const uint32_t mask = ((1u << from.count) - 1u) << node.leafOffset(s);
+                    // A leaf holds its binary subtree's entries, in their order (a subtree of
+                    // few primitives may be one leaf).
+                    const std::vector<uint32_t> entries = subtreeEntries(bvh, source);
+                    ASSERT_EQ(node.leafCount(s), entries.size());
+                    EXPECT_LE(entries.size(), CompressedWideNode::kMaxLeafSize);
+                    const uint32_t mask = ((1u << node.leafCount(s)) - 1u) << node.leafOffset(s);
                     EXPECT_EQ(bits & mask, 0u) << "two leaves share primitive bits";
                     bits |= mask;
-                    EXPECT_LE(node.leafOffset(s) + from.count, 32u);
-                    for (uint32_t i = 0; i < from.count; ++i) {
-                        EXPECT_EQ(wide.primIndices.at(node.primBase + node.leafOffset(s) + i),
-                                  bvh.primIndices[from.leftOrFirst + i]);
+                    EXPECT_LE(node.leafOffset(s) + node.leafCount(s), 32u);
+                    for (uint32_t i = 0; i < entries.size(); ++i) {
+                        EXPECT_EQ(wide.primIndices.at(node.primBase + node.leafOffset(s) + i), entries[i]);
                     }
-                    nodePrims += from.count;
+                    nodePrims += node.leafCount(s);
                 }
                 children += interior;
                 leafPrims += nodePrims;
@@ -203,11 +220,16 @@ TEST(CompressedWideBvh, TheWalkVisitsFewerNodesForTheSameHits) {
     std::cout << "[ figures  ] nodes visited: binary " << binaryStats.nodesVisited << ", compressed "
               << wideStats.nodesVisited << "; primitives tested: binary " << binaryStats.primitivesTested
               << ", compressed " << wideStats.primitivesTested << "\n";
-    // Nodes visited (the binary count has its leaves too; measured 2.5x fewer): at least 2x.
+    // Nodes visited (the binary count has its leaves too; measured 2.8x fewer): at least 2x.
     EXPECT_LT(wideStats.nodesVisited * 2, binaryStats.nodesVisited);
-    // Quantised boxes are a little larger and the octant order is not the exact distance order
-    // (measured: 14% more primitive tests).
-    EXPECT_LT(wideStats.primitivesTested, binaryStats.primitivesTested * 1.3);
+    // The SAH-optimal collapse trades node tests for primitive tests at 0.3 of a node each
+    // (leaves of up to four gathered from small subtrees: measured 2.0x the binary walk's tests,
+    // 1.14x with the greedy collapse), so the work they weigh together is what falls: measured
+    // 0.40 of the binary walk's (the greedy collapse 0.43).
+    const auto work = [](const TraversalStats& s) {
+        return double(s.nodesVisited) + 0.3 * s.primitivesTested;
+    };
+    EXPECT_LT(work(wideStats), 0.5 * work(binaryStats));
 }
 
 // Axis-aligned rays (exact zeros in the direction) walk the binary nodes: their inverse of 1e30
