@@ -170,11 +170,12 @@ public:
     // `cap.samples` samples, keeping their average (an AOV the cap no longer holds goes on); it
     // outlives resets. For the denoiser's guides (kSettledGuideSamples); throws
     // std::invalid_argument as checkAovSampleCap does.
-    void setAovSampleCap(const AovSampleCap& cap) {
+    // Virtual so that a backend wrapping another hands both on.
+    virtual void setAovSampleCap(const AovSampleCap& cap) {
         checkAovSampleCap(cap);
         aovSampleCap_ = cap;
     }
-    const AovSampleCap& aovSampleCap() const { return aovSampleCap_; }
+    virtual AovSampleCap aovSampleCap() const { return aovSampleCap_; }
     // Per-pixel value of an AOV, RGBA float, row-major top row first, same size as the beauty.
     // Throws std::invalid_argument when that AOV is not enabled (not in aovs()).
     virtual void readAov(Aov aov, std::vector<float>& rgba) const = 0;

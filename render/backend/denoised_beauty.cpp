@@ -14,7 +14,7 @@ namespace {
 bool guideComplete(const Backend& backend, Aov guide) {
     if (!(backend.aovs() & aovBit(guide))) return false;
     const uint32_t held = backend.aovSamples(guide);
-    const AovSampleCap& cap = backend.aovSampleCap();
+    const AovSampleCap cap = backend.aovSampleCap();
     return held == backend.stats().samplesPerPixel || (cap.covers(guide) && held >= cap.samples);
 }
 

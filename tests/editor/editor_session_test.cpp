@@ -74,6 +74,8 @@ public:
     void changeAovs(AovMask aovs) override { cpu_->changeAovs(aovs); }
     AovMask aovs() const override { return cpu_->aovs(); }
     uint32_t aovSamples(Aov aov) const override { return cpu_->aovSamples(aov); }
+    void setAovSampleCap(const AovSampleCap& cap) override { cpu_->setAovSampleCap(cap); }
+    AovSampleCap aovSampleCap() const override { return cpu_->aovSampleCap(); }
     void readAov(Aov aov, std::vector<float>& rgba) const override { cpu_->readAov(aov, rgba); }
     uint64_t aovBytes() const override { return cpu_->aovBytes(); }
 
@@ -274,16 +276,22 @@ TEST(EditorSession, SwitchingTheAovKeepsTheAccumulation) {
     EXPECT_EQ(session.backend().stats().samplesPerPixel, 6u);
 }
 
+// Turns the viewer's Denoise switch on or off and syncs.
+SyncReport setDenoise(EditorSession& session, bool on) {
+    ViewerSettings viewer = session.document().viewer;
+    viewer.denoise = on;
+    session.execute(setViewer(session.document(), viewer));
+    return session.sync();
+}
+
 // Denoise: turning it on restarts the accumulation once (its guides accumulate from there);
 // the viewport and the export's display image show the denoised beauty, the EXR keeps the raw
 // one with the denoised beside it; turning it off is a display change that keeps the samples.
 TEST(EditorSession, DenoiseShowsTheFilteredBeautyAndTurnsOffWithoutARestart) {
     Fixture f = startSession(2);
     EditorSession& session = *f.session;
-    ViewerSettings viewer = session.document().viewer;
-    viewer.denoise = true;
-    session.execute(setViewer(session.document(), viewer));
-    EXPECT_NE(session.sync().action, "nothing") << "the guides need a fresh accumulation";
+    EXPECT_NE(setDenoise(session, true).action, "nothing") << "the guides need a fresh accumulation";
+    const ViewerSettings viewer = session.document().viewer;
     EXPECT_EQ(session.backend().aovs() & kDenoiseGuideAovs, kDenoiseGuideAovs);
     session.render(4);
     std::vector<float> shown, denoised, raw;
@@ -306,12 +314,40 @@ TEST(EditorSession, DenoiseShowsTheFilteredBeautyAndTurnsOffWithoutARestart) {
         }
     }
 
-    viewer.denoise = false;
-    session.execute(setViewer(session.document(), viewer));
-    EXPECT_EQ(session.sync().action, "nothing");
+    EXPECT_EQ(setDenoise(session, false).action, "nothing");
     EXPECT_EQ(session.backend().stats().samplesPerPixel, 4u);
     session.readDisplayed(-1, false, shown);
     EXPECT_EQ(shown, raw);
+}
+
+// The guides stop at kSettledGuideSamples while the denoiser goes on using them, the variance
+// follows the beauty, and an AOV the user looks at goes on in full: viewing the albedo lifts its
+// cap (a display change, no restart).
+TEST(EditorSession, DenoiseGuidesSettleButAViewedAovGoesOn) {
+    Fixture f = startSession(1);
+    EditorSession& session = *f.session;
+    setDenoise(session, true);
+    const uint32_t settled = kSettledGuideSamples;
+    session.render(settled);
+    session.render(20);  // the guides are full from the start of this call
+    const Backend& backend = session.backend();
+    EXPECT_EQ(backend.stats().samplesPerPixel, settled + 20);
+    EXPECT_EQ(backend.aovSamples(Aov::Albedo), settled);
+    EXPECT_EQ(backend.aovSamples(Aov::Depth), settled);
+    EXPECT_EQ(backend.aovSamples(Aov::Variance), settled + 20);
+    std::vector<float> shown, denoised;
+    session.readDisplayed(-1, true, shown);
+    backend.readDenoised(denoised);
+    EXPECT_EQ(shown, denoised) << "settled guides still guide";
+
+    ViewerSettings viewer = session.document().viewer;
+    viewer.aov = int32_t(Aov::Albedo);
+    session.execute(setViewer(session.document(), viewer));
+    EXPECT_EQ(session.sync().action, "nothing");
+    session.render(5);
+    EXPECT_EQ(backend.aovSamples(Aov::Albedo), settled + 5) << "the viewed AOV goes on";
+    EXPECT_EQ(backend.aovSamples(Aov::Depth), settled);
+    EXPECT_EQ(backend.stats().samplesPerPixel, settled + 25);
 }
 
 // An edit that restarts the accumulation stops the pass in flight on the render thread (its
