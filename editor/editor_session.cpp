@@ -192,8 +192,8 @@ SyncReport EditorSession::sync(const ProgressFn& progress) {
     return report;
 }
 
-// The denoiser's guides must hold every sample of the beauty (requireDenoiseGuides): turning it
-// on restarts the accumulation once, unless they happen to be there from the start already.
+// The denoiser's guides must hold every sample of the beauty or the cap's (requireDenoiseGuides):
+// turning it on restarts the accumulation once, unless they happen to be there already.
 bool EditorSession::needsFreshGuides(AovMask wanted) const {
     return (wanted & kDenoiseGuideAovs) == kDenoiseGuideAovs && !denoiseGuidesComplete(*backend_);
 }

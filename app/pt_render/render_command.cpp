@@ -232,8 +232,8 @@ void writeOutputs(const RenderRequest& fr, const FrameContext& c, const SyncRepo
             exrMetadata.insert(exrMetadata.end(), view.begin(), view.end());
         }
         if (isPfmPath(fr.exrPath)) {
-            // PFM where EXR cannot be written (the GPU machine's build): one RGB image, what
-            // the PNG shows, without layers or metadata.
+            // PFM where EXR cannot be written (the GPU machine's build): one linear RGB image,
+            // what the PNG shows before its display transform, without layers or metadata.
             writePfm(fr.exrPath, backend.width(), backend.height(), shown);
         } else {
             writeRenderExr(fr, backend, c.scene.camera, exrMetadata,

@@ -1,5 +1,7 @@
 #include "render/backend/aov.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 
 namespace pt {
@@ -51,6 +53,16 @@ AovMask AovSet::recording(const AovSampleCap& cap, uint32_t samplesPerPixel) con
         if (cap.covers(Aov(i)) && samples(Aov(i), samplesPerPixel) >= cap.samples) full |= aovBit(Aov(i));
     }
     return mask & ~full;
+}
+
+uint32_t AovSet::samplesUntilFull(const AovSampleCap& cap, uint32_t samplesPerPixel) const {
+    uint32_t until = UINT32_MAX;
+    for (uint32_t i = 0; i < kAovCount; ++i) {
+        if (!(mask & aovBit(Aov(i))) || !cap.covers(Aov(i))) continue;
+        const uint32_t held = samples(Aov(i), samplesPerPixel);
+        if (held < cap.samples) until = std::min(until, cap.samples - held);
+    }
+    return until;
 }
 
 void AovSet::skip(AovMask recorded, uint32_t passes) {

@@ -52,6 +52,10 @@ struct AovSet {
     AovSampleCounts samplesAt(uint32_t samplesPerPixel) const;
     // The AOVs the next pass records at `samplesPerPixel`: all but those `cap` holds full.
     AovMask recording(const AovSampleCap& cap, uint32_t samplesPerPixel) const;
+    // The samples until the first AOV that `cap` holds and that still records fills up (no
+    // limit: UINT32_MAX): backends end a call's passes or waves there, so that it stops at its
+    // cap exactly.
+    uint32_t samplesUntilFull(const AovSampleCap& cap, uint32_t samplesPerPixel) const;
     // After a pass of `passes` samples that recorded only `recorded`: the others skipped them.
     void skip(AovMask recorded, uint32_t passes);
     // `mask` from the next pass on, at `samplesPerPixel`: the AOVs kept keep their first

@@ -10,12 +10,14 @@ namespace pt {
 
 namespace {
 
-// Every sample of the beauty, or as many as the cap that stopped it.
+// Every sample of the beauty, or as many as the cap's: settled. Whether the cap still covers
+// the guide does not matter: one it stopped and the user then views or exports goes on from
+// there, and is no less settled.
 bool guideComplete(const Backend& backend, Aov guide) {
     if (!(backend.aovs() & aovBit(guide))) return false;
     const uint32_t held = backend.aovSamples(guide);
     const AovSampleCap cap = backend.aovSampleCap();
-    return held == backend.stats().samplesPerPixel || (cap.covers(guide) && held >= cap.samples);
+    return held == backend.stats().samplesPerPixel || (cap.samples > 0 && held >= cap.samples);
 }
 
 }  // namespace

@@ -16,12 +16,12 @@ using Slots = std::array<uint32_t, CompressedWideNode::kWidth>;
 
 // The SAH costs the collapse weighs (sah_collapse.h): the walk tests a leaf's triangles one at a
 // time, each about 0.3 of a wide node's test (Ylitie et al. 2017 weigh them so), and a leaf
-// holds at most what a slot's 3 bits of count allow. Against the greedy collapse
-// (openLargestChildren) on the H200, `pt-render bench --size 1280x720 --gpu-wide-bvh`, two
-// alternated rounds, Mrays/s: 1M-triangle sphere primary 1946 / 1955 -> 1918 / 1894, diffuse
-// 1203 / 1184 -> 1290 / 1264, shadow 968 / 948 -> 980 / 990, wavefront path tracing 1023 / 1016
-// -> 1046 / 1043 spp/s; Balloon primary 3416 / 3489 -> 3698 / 3769, diffuse 159 / 162 -> 173 /
-// 174, shadow 155 / 156 -> 161 / 161, wavefront 737 / 740 -> 806 / 798 spp/s.
+// holds at most kMaxLeafSize, so that a node's eight leaves fit its 32 primitive bits. Against
+// the greedy collapse (openLargestChildren) on the H200, `pt-render bench --size 1280x720
+// --gpu-wide-bvh`, two alternated rounds, Mrays/s: 1M-triangle sphere primary 1946 / 1955 ->
+// 1918 / 1894, diffuse 1203 / 1184 -> 1290 / 1264, shadow 968 / 948 -> 980 / 990, wavefront path
+// tracing 1023 / 1016 -> 1046 / 1043 spp/s; Balloon primary 3416 / 3489 -> 3698 / 3769, diffuse
+// 159 / 162 -> 173 / 174, shadow 155 / 156 -> 161 / 161, wavefront 737 / 740 -> 806 / 798 spp/s.
 constexpr WideCollapseCosts kCollapseCosts{1.0f, 0.3f, 1, CompressedWideNode::kMaxLeafSize};
 
 // Slot s points along -axis a where bit a of s is set: the slot of the child lying farthest

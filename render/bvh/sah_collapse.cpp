@@ -13,8 +13,8 @@ constexpr float kNever = std::numeric_limits<float>::infinity();
 
 float halfArea(const BvhNode& n) {
     const Vec3 d = n.hi - n.lo;
-    const float area = d.x * d.y + d.y * d.z + d.z * d.x;
-    return area > 0.0f ? area : 0.0f;  // a point or an empty box
+    if (!(d.x >= 0.0f && d.y >= 0.0f && d.z >= 0.0f)) return 0.0f;  // the empty root's inverted box
+    return d.x * d.y + d.y * d.z + d.z * d.x;
 }
 
 }  // namespace
@@ -79,7 +79,9 @@ void SahCollapse::solve(uint32_t n, float area) {
     cost(n, 1) = std::min(asLeaf, asWideNode);
     choice(n, 1) = asLeaf <= asWideNode ? kLeaf : kWideNode;
     for (uint32_t i = 2; i <= kSlots; ++i) {
-        const bool split = shared[i] < cost(n, i - 1);
+        // Ties take the slots: under boxes of no area every way costs 0, and fewer slots would
+        // make chains of two-wide nodes.
+        const bool split = shared[i] <= cost(n, i - 1);
         cost(n, i) = split ? shared[i] : cost(n, i - 1);
         choice(n, i) = split ? leftSlots[i] : kFewerSlots;
     }
@@ -97,7 +99,7 @@ void SahCollapse::collect(uint32_t n, uint32_t slots, WideChildren& out) const {
 }
 
 WideChildren SahCollapse::childrenOf(uint32_t n) const {
-    PT_CHECK(n < count_ && !nodes_[n].isLeaf());
+    PT_CHECK(n < count_ && !nodes_[n].isLeaf() && nodes_[n].leftOrFirst + 1 < count_);
     // The best way for n's children to share all eight slots (not choice(n, 8), which may
     // make n itself one slot).
     const uint32_t left = nodes_[n].leftOrFirst, right = left + 1;
@@ -112,10 +114,9 @@ WideChildren SahCollapse::childrenOf(uint32_t n) const {
 }
 
 float SahCollapse::rootCost() const {
-    if (count_ == 0) return 0.0f;
-    const float area = halfArea(nodes_[0]);
-    if (!(area > 0.0f)) return 0.0f;
-    if (nodes_[0].isLeaf() || isLeaf(0)) return cost(0, 1) / area;
+    const float area = count_ > 0 ? halfArea(nodes_[0]) : 0.0f;
+    if (!(area > 0.0f)) return 0.0f;  // no tree, or the empty root
+    if (nodes_[0].isLeaf() || isLeaf(0) || nodes_[0].leftOrFirst + 1 >= count_) return cost(0, 1) / area;
     const WideChildren kids = childrenOf(0);
     float total = area * costs_.node;
     for (uint32_t s = 0; s < kids.size(); ++s) total += cost(kids[s], 1);

@@ -6,9 +6,10 @@
 // above it: one slot as a leaf (its primitives, if few enough), one slot as a wide node of its
 // own, or its two children sharing the i slots. The greedy collapse (openLargestChildren) opens
 // the largest subtrees first whatever they cost below, so where subtrees are small its wide
-// nodes keep slots empty (half of them on a 1M-triangle sphere), and its leaves are whatever
+// nodes keep slots empty (a third of them on a 1M-triangle sphere), and its leaves are whatever
 // size a subtree under the limit happens to have. The GPU's compressed tree is collapsed so
-// (compressed_wide_bvh.cpp has the figures: 3-8% more rays a second on most kinds). The CPU's
+// (compressed_wide_bvh.cpp has the figures: 3-8% more rays a second but on the 1M sphere's
+// camera rays, 1.5-3% fewer). The CPU's
 // 8-wide tree keeps the greedy collapse: there this one filled the nodes (6213 empty slots of
 // 281088 against 107083 of 307728, 1M-triangle sphere) but traced diffuse rays no faster (one
 // thread, three alternated runs: 4.56 / 4.57 / 4.59 Mrays/s greedy, 4.58 / 4.46 / 4.86 with
@@ -24,11 +25,12 @@ namespace pt {
 
 // The SAH costs the programme weighs, per unit of surface area (the chance that a ray which
 // reaches the parent also reaches the box).
+// The defaults are the GPU's compressed walk's (compressed_wide_bvh.cpp).
 struct WideCollapseCosts {
     float node = 1.0f;       // one wide node's test (all its boxes at once)
-    float leafPass = 1.0f;   // one pass over a leaf's primitives, `passWidth` at a time
-    uint32_t passWidth = 4;  // primitives a pass tests together (TriangleBlock::kWidth)
-    uint32_t maxLeaf = 8;    // the most primitives a leaf gathers from a subtree (one contiguous range)
+    float leafPass = 0.3f;   // one pass over a leaf's primitives, `passWidth` at a time
+    uint32_t passWidth = 1;  // primitives a pass tests together
+    uint32_t maxLeaf = 4;    // the most primitives a leaf gathers from a subtree (one contiguous range)
 };
 
 class SahCollapse {

@@ -5,7 +5,8 @@
 // bit-identical with AOVs on or off; backends add samples into per-pixel double sums
 // (AovBuffers) that exist only for the AOVs asked for.
 //
-// What each AOV holds, per sample, averaged over the pixel's samples like the beauty (the
+// What each AOV holds, per sample, averaged over the samples it took (the beauty's, less any
+// before changeAovs added it or after a sample cap stopped it: Backend::setAovSampleCap; the
 // averages are not renormalised or re-quantised):
 //   albedo            base color with its texture, for every material (metal and glass too)
 //   shading_normal    unit world-space normal after vertex normals and normal maps (xyz)
@@ -92,7 +93,8 @@ static_assert(sizeof(AovSample) == 96, "AovSample: 96 bytes");
 
 // Where a backend accumulates AOVs: per enabled AOV, aovChannels() doubles per pixel, holding
 // the samples from firstSample on (an AOV added while the beauty accumulates starts there:
-// Backend::changeAovs).
+// Backend::changeAovs) that recorded it: `mask` holds the AOVs this pass records (a capped
+// AOV that is full keeps its sums but is left out of it).
 struct AovBuffers {
     double* sums[kAovCount];  // nullptr where the AOV is off or stores nothing
     AovMask mask;
@@ -168,7 +170,8 @@ PT_HD void addAovCost(const AovBuffers& b, uint32_t pixel, TraversalStats cost) 
 // Welford's update (Knuth, TAOCP vol. 2, 4.2.2) of the running mean and sum of squared
 // deviations of a pixel's beauty luminance: a constant gives exactly 0, and no sum of squares
 // grows to swallow the deviations. Not atomic: one writer per pixel, in sample order (this is
-// sample `sampleIndex` of the accumulation; the AOV's own count starts at its first sample).
+// sample `sampleIndex` of the accumulation; the AOV's own count starts at its first sample and
+// has no gaps: a sample cap never holds the variance, checkAovSampleCap refuses it).
 PT_HD void addVarianceSample(const AovBuffers& b, uint32_t pixel, uint32_t sampleIndex, Vec3 radiance) {
     double* w = b.at(Aov::Variance, pixel);
     const double y = double(luminance(radiance));

@@ -348,6 +348,22 @@ TEST(EditorSession, DenoiseGuidesSettleButAViewedAovGoesOn) {
     EXPECT_EQ(backend.aovSamples(Aov::Albedo), settled + 5) << "the viewed AOV goes on";
     EXPECT_EQ(backend.aovSamples(Aov::Depth), settled);
     EXPECT_EQ(backend.stats().samplesPerPixel, settled + 25);
+    session.readDisplayed(-1, true, shown);
+    backend.readDenoised(denoised);
+    EXPECT_EQ(shown, denoised) << "a settled guide the user views still guides";
+
+    // An export layer that is a guide goes on in full too, and the denoiser keeps going.
+    viewer.aov = -1;
+    viewer.exportAovs = aovBit(Aov::Depth);
+    session.execute(setViewer(session.document(), viewer));
+    EXPECT_EQ(session.sync().action, "nothing");
+    session.render(5);
+    EXPECT_EQ(backend.aovSamples(Aov::Depth), settled + 5);
+    EXPECT_EQ(backend.aovSamples(Aov::Albedo), settled + 5) << "stopped again only by a full cap";
+    EXPECT_TRUE(denoiseGuidesComplete(backend));
+    session.readDisplayed(-1, true, shown);
+    backend.readDenoised(denoised);
+    EXPECT_EQ(shown, denoised);
 }
 
 // An edit that restarts the accumulation stops the pass in flight on the render thread (its

@@ -182,8 +182,17 @@ void CpuBackend::updateStatsFeatures() {
     if (toggles_.bruteForce) stats_.features |= feature::kBruteForce;
 }
 
+// In segments that end where a capped AOV fills up, so that it stops exactly at its cap.
 void CpuBackend::render(uint32_t passes) {
-    if (!compiled_ || passes == 0) return;
+    if (!compiled_) return;
+    while (passes > 0) {
+        const uint32_t n = std::min(passes, aovs_.samplesUntilFull(aovSampleCap(), stats_.samplesPerPixel));
+        if (!renderSegment(n)) return;
+        passes -= n;
+    }
+}
+
+bool CpuBackend::renderSegment(uint32_t passes) {
     const auto start = Clock::now();
     const uint32_t firstSample = stats_.samplesPerPixel;
     const RenderScene& scene = view_;
@@ -208,7 +217,7 @@ void CpuBackend::render(uint32_t passes) {
         });
     if (torn) {
         resetAccumulation();
-        return;
+        return false;
     }
     counters.combine_each([&](const PathCounters& c) {
         stats_.rays += c.rays;
@@ -217,6 +226,7 @@ void CpuBackend::render(uint32_t passes) {
     aovs_.skip(recording, passes);
     stats_.samplesPerPixel += passes;
     stats_.renderSeconds += secondsSince(start);
+    return true;
 }
 
 // Each pixel's samples in order, by one thread: the sums (and Welford's variance) need no atomics.

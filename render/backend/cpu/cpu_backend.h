@@ -41,6 +41,9 @@ private:
     // (packet_traversal.h), the rest of each path as tracePath's; not with kAovs.
     // Whether render() traces camera rays in packets now; else `why` (where not null) says why.
     bool packetsApply(std::string* why) const;
+    // `passes` samples of every pixel, all with the same AOVs recording; false where the
+    // interrupt flag tore them (the accumulation is reset).
+    bool renderSegment(uint32_t passes);
     template <bool kAovs, bool kPackets>
     bool renderTile(const RenderScene& scene, const AovBuffers& aovs, uint32_t y0, uint32_t y1, uint32_t x0,
                     uint32_t x1, uint32_t firstSample, uint32_t passes, PathCounters& counters);

@@ -597,17 +597,19 @@ void CudaBackend::render(uint32_t passes) {
     const uint32_t wave = scheduler_.samplesPerWave(width_ * height_, passes);
     // The trial runs waves of the size this call runs, alternating the schedules, until both
     // have run theirs.
-    if (toggles_.autoSchedule) scheduleChooser_.setKey(scheduleKey(wave));
     while (passes > 0) {
         if (interruptRequested()) {
             resetAccumulation();
             return;
         }
+        // Per wave (its key says whether path AOVs record): a capped AOV stops where a wave
+        // ends at its cap, and from then on the scene's specialised kernels run where no other
+        // path AOV records.
+        if (toggles_.autoSchedule) scheduleChooser_.setKey(scheduleKey(wave));
         const bool trial = toggles_.autoSchedule && !scheduleChooser_.decided();
         const bool megakernel = runsMegakernel();
-        const uint32_t n = std::min(wave, passes);
-        // Per wave: a capped AOV stops at the first wave that finds it full, and from then on
-        // the scene's specialised kernels run where no other path AOV is recorded.
+        const uint32_t n =
+            std::min({wave, passes, aovs_.samplesUntilFull(aovSampleCap(), stats_.samplesPerPixel)});
         const AovMask recording = recordingAovs();
         const AovBuffers aovs = aovBuffersIn(aovSums_.data(), aovs_, size_t(width_) * height_, recording);
         const auto waveStart = Clock::now();
@@ -748,7 +750,7 @@ std::vector<ToggleState> CudaBackend::toggleStates() const {
         } else if (s.id == ToggleId::RayPackets) {
             s.active = false;
             s.note = "CPU only: a warp already walks 32 rays together";
-        } else if (s.id == ToggleId::PathRegeneration && (aovsRequested_ & kPathAovs) != 0) {
+        } else if (s.id == ToggleId::PathRegeneration && (recordingAovs() & kPathAovs) != 0) {
             s.active = false;
             s.note = "path AOVs run one path a thread";
         }
