@@ -232,7 +232,7 @@ int runBench(const std::vector<std::string>& args) {
     benchBvhBuilds(compiled, *backend, r.settings.runs, report);
     if (!backend->capabilities().gpuScheduling) {
         phase("Embree baseline");  // the CPU's traversal and build against Embree's, same rays and triangles
-        benchEmbree(compiled, traced, r.settings.runs, report);
+        benchEmbree(compiled, traced, singleRates, r.settings.runs, report);
     }
     phase("edits");
     benchEdits(r.setup.backend, scene, r.settings, report);

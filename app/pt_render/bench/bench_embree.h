@@ -3,7 +3,8 @@
 // ray sets traced by Embree over the same triangles and spheres (one Embree scene per BLAS,
 // instanced as the TLAS instances them; the merged BLAS as it is; spheres as Embree's point
 // spheres), single rays and, for closest hits, its
-// 8-ray packets where the CPU runs them natively; our rate over Embree's best; the share of
+// 8-ray packets where the CPU runs them natively; our best rate (single rays or packets) over
+// Embree's best; the share of
 // rays whose hits agree; and Embree's medium-quality build of the largest mesh beside our
 // binned SAH build. Built where CMake finds Embree (Debian's libembree-dev: PT_HAVE_EMBREE);
 // elsewhere one row says it was left out.
@@ -25,7 +26,9 @@ struct TracedRaySet {
     std::vector<Hit> hits;        // ours, the last run
 };
 
-void benchEmbree(const CompiledScene& compiled, const std::vector<TracedRaySet>& sets, uint32_t runs,
-                 BenchReport& report);
+// `singleRates`: each set's single-ray rate (benchPackets); ours is the faster of it and the
+// set's own.
+void benchEmbree(const CompiledScene& compiled, const std::vector<TracedRaySet>& sets,
+                 const std::vector<double>& singleRates, uint32_t runs, BenchReport& report);
 
 }  // namespace pt::cli
