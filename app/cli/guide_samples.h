@@ -5,12 +5,13 @@
 #include <cstdint>
 #include <string>
 
+#include "cli/cli_options.h"
 #include "render/backend/backend.h"
 
 namespace pt::cli {
 
-// 0 for "all" (settledGuideCap's "no cap"); throws UsageError (naming `flag`) unless `value` is "all" or a
-// positive integer.
-uint32_t parseGuideSamples(const std::string& flag, const std::string& value);
+// The value of --guide-samples in `o`: kSettledGuideSamples where it is absent, 0 (settledGuideCap's
+// "no cap") for "all"; throws UsageError unless it is "all" or a positive integer.
+uint32_t guideSamplesOption(const Options& o);
 
 }  // namespace pt::cli

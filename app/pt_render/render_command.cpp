@@ -108,10 +108,9 @@ RenderRequest parseRequest(const std::vector<std::string>& args) {
     if (r.display.anyGiven && r.pngPath.empty())
         throw UsageError("display flags apply to --png OUT.png; give one");
     r.denoise = o.has("--denoise");
-    if (const std::optional<std::string> guides = o.value("--guide-samples")) {
-        if (!r.denoise) throw UsageError("--guide-samples applies to --denoise; give it");
-        r.guideSamples = parseGuideSamples("--guide-samples", *guides);
-    }
+    if (o.value("--guide-samples") && !r.denoise)
+        throw UsageError("--guide-samples applies to --denoise; give it");
+    r.guideSamples = guideSamplesOption(o);
     parseSequenceOptions(o, r);
     return r;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "render/bvh/aabb.h"
 #include "render/util/check.h"
 
 namespace pt {
@@ -11,11 +12,8 @@ namespace {
 
 constexpr float kNever = std::numeric_limits<float>::infinity();
 
-float halfArea(const BvhNode& n) {
-    const Vec3 d = n.hi - n.lo;
-    if (!(d.x >= 0.0f && d.y >= 0.0f && d.z >= 0.0f)) return 0.0f;  // the empty root's inverted box
-    return d.x * d.y + d.y * d.z + d.z * d.x;
-}
+// 0 for the empty root's inverted box.
+float boxArea(const BvhNode& n) { return Aabb{n.lo, n.hi}.surfaceArea(); }
 
 }  // namespace
 
@@ -43,7 +41,7 @@ SahCollapse::SahCollapse(const BvhNode* nodes, uint32_t count, const WideCollaps
             stack.push_back(node.leftOrFirst + 1);
         }
     }
-    for (auto it = order.rbegin(); it != order.rend(); ++it) solve(*it, halfArea(nodes[*it]));
+    for (auto it = order.rbegin(); it != order.rend(); ++it) solve(*it, boxArea(nodes[*it]));
 }
 
 void SahCollapse::solve(uint32_t n, float area) {
@@ -114,7 +112,7 @@ WideChildren SahCollapse::childrenOf(uint32_t n) const {
 }
 
 float SahCollapse::rootCost() const {
-    const float area = count_ > 0 ? halfArea(nodes_[0]) : 0.0f;
+    const float area = count_ > 0 ? boxArea(nodes_[0]) : 0.0f;
     if (!(area > 0.0f)) return 0.0f;  // no tree, or the empty root
     if (nodes_[0].isLeaf() || isLeaf(0) || nodes_[0].leftOrFirst + 1 >= count_) return cost(0, 1) / area;
     const WideChildren kids = childrenOf(0);

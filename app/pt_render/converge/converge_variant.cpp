@@ -1,6 +1,5 @@
 #include "pt_render/converge/converge_variant.h"
 
-#include <algorithm>
 #include <map>
 
 #include "cli/cli_options.h"
@@ -79,17 +78,14 @@ ConvergeVariant parseVariant(const std::string& spec) {
                 if (end > begin) appendFlags(settings.substr(begin, end - begin), flags);
             }
         }
-        // --denoise and --guide-samples are the render command's, not toggles.
-        const auto denoise = std::find(flags.begin(), flags.end(), "--denoise");
-        variant.denoise = denoise != flags.end();
-        if (variant.denoise) flags.erase(denoise);
-        const auto guides = std::find(flags.begin(), flags.end(), "--guide-samples");
-        if (guides != flags.end()) {
-            if (!variant.denoise) throw UsageError("guide_samples applies to denoise=on; give it");
-            variant.guideSamples = parseGuideSamples("guide_samples", *(guides + 1));
-            flags.erase(guides, guides + 2);
-        }
-        variant.toggles = parseToggles(Options(flags, toggleValuedFlags(), toggleSwitches()));
+        // --denoise and --guide-samples are the render command's, beside the toggles.
+        const Options o(flags, joined(toggleValuedFlags(), {"--guide-samples"}),
+                        joined(toggleSwitches(), {"--denoise"}));
+        variant.denoise = o.has("--denoise");
+        if (o.value("--guide-samples") && !variant.denoise)
+            throw UsageError("guide_samples applies to denoise=on; give it");
+        variant.guideSamples = guideSamplesOption(o);
+        variant.toggles = parseToggles(o);
     } catch (const UsageError& e) {
         throw UsageError("--variant " + spec + ": " + e.what());
     }

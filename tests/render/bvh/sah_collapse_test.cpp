@@ -34,10 +34,7 @@ Bvh soupBvh(test::SoupKind kind, uint32_t triangles, uint32_t maxLeafSize, Rng& 
     return buildBinnedSahBvh(boxes.data(), uint32_t(boxes.size()), options);
 }
 
-float halfArea(const BvhNode& n) {
-    const Vec3 d = n.hi - n.lo;
-    return std::max(d.x * d.y + d.y * d.z + d.z * d.x, 0.0f);
-}
+float boxArea(const BvhNode& n) { return Aabb{n.lo, n.hi}.surfaceArea(); }
 
 uint32_t primitivesUnder(const Bvh& bvh, uint32_t n) {
     const BvhNode& node = bvh.nodes[n];
@@ -47,7 +44,7 @@ uint32_t primitivesUnder(const Bvh& bvh, uint32_t n) {
 }
 
 double leafCost(const Bvh& bvh, uint32_t n, uint32_t primitives, const WideCollapseCosts& costs = kCosts) {
-    return double(halfArea(bvh.nodes[n])) * costs.leafPass *
+    return double(boxArea(bvh.nodes[n])) * costs.leafPass *
            double((primitives + costs.passWidth - 1) / costs.passWidth);
 }
 
@@ -68,7 +65,7 @@ public:
             for (const std::vector<uint32_t>& left : covers(node.leftOrFirst)) {
                 for (const std::vector<uint32_t>& right : covers(node.leftOrFirst + 1)) {
                     if (left.size() + right.size() > 8) continue;
-                    double sum = double(halfArea(node)) * costs_.node;
+                    double sum = double(boxArea(node)) * costs_.node;
                     for (const uint32_t s : left) sum += bestSlot(s);
                     for (const uint32_t s : right) sum += bestSlot(s);
                     best = std::min(best, sum);
@@ -116,7 +113,7 @@ double describedCost(const Bvh& bvh, const SahCollapse& collapse, uint32_t n,
     const WideChildren kids = collapse.childrenOf(n);
     EXPECT_GE(kids.size(), 2u);
     EXPECT_LE(kids.size(), 8u);
-    double sum = double(halfArea(bvh.nodes[n])) * costs.node;
+    double sum = double(boxArea(bvh.nodes[n])) * costs.node;
     uint32_t primitives = 0;
     for (uint32_t s = 0; s < kids.size(); ++s) {
         sum += describedCost(bvh, collapse, kids[s], costs);
@@ -131,7 +128,7 @@ double greedyCost(const Bvh& bvh, uint32_t n) {
     const BvhNode& node = bvh.nodes[n];
     if (node.isLeaf()) return leafCost(bvh, n, node.count);
     const WideChildren kids = openLargestChildren(bvh.nodes.data(), n, 8);
-    double sum = double(halfArea(node)) * kCosts.node;
+    double sum = double(boxArea(node)) * kCosts.node;
     for (uint32_t s = 0; s < kids.size(); ++s) sum += greedyCost(bvh, kids[s]);
     return sum;
 }
@@ -143,7 +140,7 @@ TEST(SahCollapse, SmallTreesGetTheOptimumThatTryingEveryCollapseFinds) {
         for (uint32_t triangles = 2; triangles <= 14; triangles += 3) {
             SCOPED_TRACE(std::to_string(triangles) + " triangles, " + test::soupName(kind));
             const Bvh bvh = soupBvh(kind, triangles, 1, rng);  // leaves of one: the collapse makes the leaves
-            const double area = halfArea(bvh.nodes[0]);
+            const double area = boxArea(bvh.nodes[0]);
             for (const WideCollapseCosts& costs : {kCosts, kBlockCosts}) {
                 const SahCollapse collapse(bvh.nodes.data(), uint32_t(bvh.nodes.size()), costs);
                 const double optimum = Exhaustive(bvh, costs).bestSlot(0) / area;
@@ -160,7 +157,7 @@ TEST(SahCollapse, LargeTreesCostNoMoreThanTheGreedyCollapse) {
                                       test::SoupKind::Needles, test::SoupKind::CoincidentCentroids}) {
         const Bvh bvh = soupBvh(kind, 20000, 4, rng);
         const SahCollapse collapse(bvh.nodes.data(), uint32_t(bvh.nodes.size()), kCosts);
-        const double area = halfArea(bvh.nodes[0]);
+        const double area = boxArea(bvh.nodes[0]);
         const double greedy = greedyCost(bvh, 0) / area, optimal = collapse.rootCost();
         std::cout << "[ figures  ] " << test::soupName(kind) << ", 20000 triangles: SAH cost greedy "
                   << greedy << ", optimal " << optimal << " (" << optimal / greedy << "x)\n";
