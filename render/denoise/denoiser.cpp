@@ -42,10 +42,11 @@ struct CpuDenoiser::Workspace {
     std::vector<denoise::SurfaceStops> stops;
     denoise::SurfacePlanes surfacePlanes;
     denoise::SamplePlanes a, b;
-    // Below kMinSamplesForOwnVariance only: the luminances its neighbours' variance is
-    // estimated from, and that variance (made at the first call that needs them).
+    // Below kMinSamplesForOwnVariance only: each pixel's firefly limit, the luminances its
+    // neighbours' variance is estimated from, and that variance (made at the first call that
+    // needs them).
     std::unique_ptr<denoise::LuminancePlanes> luminance;
-    std::vector<float> spread;
+    std::vector<float> fireflyLimit, spread;
 
     explicit Workspace(const denoise::PlaneLayout& l)
         : layout(l),
@@ -82,20 +83,29 @@ void CpuDenoiser::run(const DenoiseInput& in, std::vector<float>& rgba) {
         w.surfacePlanes.store(layout.at(x, y), w.surfaces[i], w.stops[i]);
     });
     if (in.samples < kMinSamplesForOwnVariance) {
-        // Too few samples for each pixel's own variance: its neighbours estimate it.
+        // Too few samples for each pixel's own variance to stand alone: fireflies are held to
+        // their neighbours, which then estimate it with it.
         if (!w.luminance) {
             w.luminance = std::make_unique<denoise::LuminancePlanes>(layout);
+            w.fireflyLimit.resize(pixels);
             w.spread.resize(pixels);
         }
         forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
-            w.luminance->store(layout.at(x, y), w.input[y * g.width + x]);
+            w.fireflyLimit[y * g.width + x] =
+                denoise::fireflyLimitAt(w.input.data(), w.surfaces.data(), g.width, g.height, x, y);
+        });
+        forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
+            const uint32_t i = y * g.width + x;
+            w.input[i] = denoise::withoutFirefly(w.input[i], w.fireflyLimit[i]);
+            w.luminance->store(layout.at(x, y), w.input[i]);
         });
         forEachRow(g.width, g.height, [&](uint32_t y, denoise::RowSums& sums) {
             float* spread = &w.spread[size_t(y) * g.width];
             denoise::spatialVarianceRow(*w.luminance, w.surfacePlanes, layout, y, sums, spread);
             DenoiseSample* row = &w.input[size_t(y) * g.width];
             for (uint32_t x = 0; x < g.width; ++x)
-                row[x].variance = denoise::fewSamplesVariance(spread[x], in.samples);
+                row[x].variance = denoise::firstSamplesVariance(
+                    row[x].variance, denoise::fewSamplesVariance(spread[x], in.samples), in.samples);
         });
     }
     const denoise::SampleOutput first(w.a);

@@ -7,6 +7,7 @@
 #include "pt_render/bench/bench_sync.h"
 #include "render/backend/toggle_states.h"
 #include "render/bvh/hit.h"
+#include "render/denoise/denoiser.h"  // kMinSamplesForOwnVariance
 #include "render/integrator/path_state.h"
 #include "render/util/stopwatch.h"
 
@@ -177,17 +178,24 @@ void benchWavefrontOverhead(Backend& backend, Scene scene, const BenchSettings& 
 void benchDenoise(Backend& backend, const Scene& scene, const BenchSettings& settings, BenchReport& report) {
     backend.setToggles(settings.toggles);
     backend.setAovs(kDenoiseGuideAovs);  // from the reset this sync makes
-    syncSettled(backend, scene, SceneChanges::Settings);
-    backend.render(settings.spp);
-    std::vector<float> denoised;
-    backend.readDenoised(denoised);  // warm-up: working memory allocated
-    std::vector<double> seconds;
-    for (uint32_t r = 0; r < std::max(settings.runs, 3u); ++r)
-        seconds.push_back(backend.readDenoised(denoised));
     const std::string size = std::to_string(scene.render.width) + "x" + std::to_string(scene.render.height);
-    report.add(
-        {"denoise", "a-trous filter (SVGF spatial), 5 passes", size, median(seconds) * 1e3, "ms",
-         backend.capabilities().gpuScheduling ? "GPU kernels, without the copy to the host" : "CPU threads"});
+    const std::string where =
+        backend.capabilities().gpuScheduling ? "GPU kernels, without the copy to the host" : "CPU threads";
+    // The first frames after an edit (below kMinSamplesForOwnVariance) add two passes: each
+    // pixel's firefly limit and its neighbours' variance.
+    for (const uint32_t spp : {1u, std::max(settings.spp, kMinSamplesForOwnVariance)}) {
+        syncSettled(backend, scene, SceneChanges::Settings);
+        backend.render(spp);
+        std::vector<float> denoised;
+        backend.readDenoised(denoised);  // warm-up: working memory allocated
+        std::vector<double> seconds;
+        for (uint32_t r = 0; r < std::max(settings.runs, 3u); ++r)
+            seconds.push_back(backend.readDenoised(denoised));
+        const bool first = spp < kMinSamplesForOwnVariance;
+        report.add({"denoise", "a-trous filter (SVGF spatial), " + std::to_string(spp) + " spp", size,
+                    median(seconds) * 1e3, "ms",
+                    where + (first ? "; with the firefly and neighbour-variance passes" : "")});
+    }
     backend.setAovs(0);
     syncSettled(backend, scene, SceneChanges::Settings);
 }

@@ -61,9 +61,19 @@ __global__ void prepareKernel(const double* sum, AovBuffers aovs, AovSampleCount
     out[i] = denoise::demodulatedSample(beauty, variance, samples, pixel);
 }
 
+// Where each pixel's own variance has too few samples: prepareKernel's samples (`in`) held to
+// their firefly limits, into `out`.
+__global__ void fireflyKernel(const DenoiseSample* in, const denoise::DenoiseSurface* surfaces,
+                              uint32_t width, uint32_t height, DenoiseSample* out) {
+    uint32_t x, y;
+    if (!pixelOf(width, height, x, y)) return;
+    const uint32_t i = y * width + x;
+    out[i] = denoise::withoutFirefly(in[i], denoise::fireflyLimitAt(in, surfaces, width, height, x, y));
+}
+
 // The depth slopes, and the first pass's input, packed; before it, where each pixel's own
-// variance has too few samples (`samples`), the variance its neighbours estimate
-// (`demodulated`: prepareKernel's output).
+// variance has too few samples (`samples`) to stand alone, the variance its neighbours estimate
+// with it (`demodulated`: fireflyKernel's output).
 __global__ void packKernel(const DenoiseSample* demodulated, const denoise::DenoiseSurface* surfaces,
                            denoise::SurfaceStops* stops, uint32_t width, uint32_t height, uint32_t samples,
                            DenoiseSample* input, denoise::PackedSample* packed) {
@@ -72,10 +82,10 @@ __global__ void packKernel(const DenoiseSample* demodulated, const denoise::Deno
     const uint32_t i = y * width + x;
     stops[i].depthSlope = denoise::depthSlopeAt(surfaces, width, height, x, y);
     if (demodulated) {
-        input[i] = {
-            demodulated[i].radiance,
-            denoise::fewSamplesVariance(
-                denoise::spatialVarianceAt(demodulated, surfaces, stops, width, height, x, y), samples)};
+        const float neighbours = denoise::fewSamplesVariance(
+            denoise::spatialVarianceAt(demodulated, surfaces, stops, width, height, x, y), samples);
+        input[i] = {demodulated[i].radiance,
+                    denoise::firstSamplesVariance(demodulated[i].variance, neighbours, samples)};
     }
     packed[i] = denoise::packSample(input[i]);
 }
@@ -140,9 +150,12 @@ void GpuDenoiser::run(const double* sum, const AovBuffers& aovs, const AovSample
     DenoiseSample* demodulated = ownVariance ? nullptr : demodulated_.data();
     denoise::DenoiseSurface* surfaces = surfaces_.data();
     denoise::SurfaceStops* stops = stops_.data();
-    prepareKernel<<<grid, block, 0, stream>>>(sum, aovs, guideSamples, samples, p, surfaces, stops,
-                                              ownVariance ? input : demodulated);
+    prepareKernel<<<grid, block, 0, stream>>>(sum, aovs, guideSamples, samples, p, surfaces, stops, input);
     PT_CUDA_CHECK_LAUNCH("prepareKernel");
+    if (!ownVariance) {
+        fireflyKernel<<<grid, block, 0, stream>>>(input, surfaces, width, height, demodulated);
+        PT_CUDA_CHECK_LAUNCH("fireflyKernel");
+    }
     packKernel<<<grid, block, 0, stream>>>(demodulated, surfaces, stops, width, height, samples, input, a);
     PT_CUDA_CHECK_LAUNCH("packKernel");
     const denoise::PackedSample* from = a;

@@ -28,8 +28,8 @@ private:
     DeviceBuffer<float> planes_;  // the guides the last pass reads back, albedo and emission: RGBA
     DeviceBuffer<denoise::DenoiseSurface> surfaces_;  // each pixel's surface for the edge stops
     DeviceBuffer<denoise::SurfaceStops> stops_;       // and what only its own stops read
-    // The demodulated input (its variance the neighbours' estimate at few samples, from
-    // `demodulated_`), and the passes' two packed planes.
+    // The demodulated input (at few samples, its fireflies held down in `demodulated_`, whose
+    // neighbours then estimate its variance), and the passes' two packed planes.
     DeviceBuffer<DenoiseSample> input_, demodulated_;
     DeviceBuffer<denoise::PackedSample> a_, b_;
 };
