@@ -322,6 +322,28 @@ TEST(Denoiser, AFireflyInAFirstSampleIsHeldToItsNeighbours) {
     EXPECT_NEAR(f.at(f.denoised(), 16, 16).x, 60.0f, 1e-3f) << "a bright pixel of no variance";
 }
 
+// A shadow edge no guide shows (one wall, lit left, unlit right) at 2 spp. The neighbours' spread
+// across the edge is the light's, so the variance they estimate for an unlit pixel beside it
+// opened its luminance stop to the lit side (it came out at 0.95 here); its own variance, 0 (both
+// its samples found no light), must have its say (firstSamplesVariance).
+TEST(Denoiser, AShadowEdgeAtTwoSamplesKeepsItsDarkSide) {
+    Frame f(32, 32);
+    f.samples = 2;
+    std::mt19937 rng(4);
+    std::normal_distribution<float> noise(0.0f, 1.0f);
+    f.forEachPixel([&](uint32_t x, uint32_t y) {
+        const bool lit = x < 16;
+        f.set(f.beauty, x, y, Vec3(lit ? 4.0f + noise(rng) : 0.0f));
+        f.set(f.variance, x, y, Vec3(lit ? 0.5f : 0.0f));
+    });
+    const std::vector<float> out = f.denoised();
+    std::cout << "[ figures  ] 2-spp shadow edge of 4 against 0: denoised beside it " << f.at(out, 16, 16).x
+              << " and " << f.at(out, 15, 16).x << "\n";
+    for (uint32_t y = 0; y < 32; ++y) {
+        for (uint32_t x = 16; x < 32; ++x) EXPECT_LT(f.at(out, x, y).x, 0.05f) << x << ", " << y;
+    }
+}
+
 TEST(Denoiser, NanAndInfinityNeverReachTheOutput) {
     Frame f(24, 24);
     f.samples = 2;
