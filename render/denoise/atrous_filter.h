@@ -315,28 +315,55 @@ PT_HD float spreadWeight(const EdgeStops& edges, const DenoiseSurface& q, float 
 // The variance of a pixel's mean estimated from its neighbours (a 7x7 window on the same
 // surface), for the first samples, where each pixel's own estimate has too few samples to
 // speak (SVGF section 4.2 does the same while a pixel's history is short): where the true
-// image is smooth, neighbouring means differ by the noise of a mean.
+// image is smooth, neighbouring means differ by the noise of a mean. `neighbourAt(dx, dy,
+// surface, luminance)` says whether the pixel (dx, dy) from the centre takes part (inside the
+// image, not left out) and, where it does, gives its surface and luminance; the centre weighs
+// 1. spatialVarianceAt reads the window from the images; the GPU from a tile in shared memory.
 constexpr int kSpreadRadius = 3;
+template <class NeighbourAt>
+PT_HD float windowVariance(const EdgeStops& edges, const NeighbourAt& neighbourAt) {
+    // The depth scale of each tap distance, by |dy| and |dx| (one division each, not one a tap;
+    // [0][0], the centre's, is never read).
+    float inverseDepth[kSpreadRadius + 1][kSpreadRadius + 1];
+    PT_UNROLL
+    for (int j = 0; j <= kSpreadRadius; ++j) {
+        PT_UNROLL
+        for (int i = 0; i <= kSpreadRadius; ++i)
+            inverseDepth[j][i] = edges.inverseDepthScale(sqrtf(float(i * i + j * j)));
+    }
+    SpreadSums sums;
+    PT_UNROLL
+    for (int dy = -kSpreadRadius; dy <= kSpreadRadius; ++dy) {
+        PT_UNROLL
+        for (int dx = -kSpreadRadius; dx <= kSpreadRadius; ++dx) {
+            DenoiseSurface q;
+            float l;
+            if (!neighbourAt(dx, dy, q, l)) continue;
+            const float w =
+                dx == 0 && dy == 0
+                    ? 1.0f
+                    : fastExp(edges.logWeight(q, inverseDepth[dy < 0 ? -dy : dy][dx < 0 ? -dx : dx]));
+            sums.add(w, l);
+        }
+    }
+    return sums.variance();
+}
+
 PT_HD float spatialVarianceAt(const DenoiseSample* in, const DenoiseSurface* surfaces,
                               const SurfaceStops* stops, uint32_t width, uint32_t height, uint32_t x,
                               uint32_t y) {
     const uint32_t p = y * width + x;
     if (!in[p].valid()) return kInvalid;
-    const EdgeStops edges{surfaces[p], stops[p]};
-    SpreadSums sums;
-    for (int dy = -kSpreadRadius; dy <= kSpreadRadius; ++dy) {
-        for (int dx = -kSpreadRadius; dx <= kSpreadRadius; ++dx) {
-            const int qx = int(x) + dx, qy = int(y) + dy;
-            if (qx < 0 || qy < 0 || qx >= int(width) || qy >= int(height)) continue;
-            const uint32_t q = uint32_t(qy) * width + uint32_t(qx);
-            if (!in[q].valid()) continue;
-            const float w =
-                q == p ? 1.0f
-                       : spreadWeight(edges, loadSurface(surfaces, q), sqrtf(float(dx * dx + dy * dy)));
-            sums.add(w, luminance(in[q].radiance));
-        }
-    }
-    return sums.variance();
+    return windowVariance(EdgeStops{surfaces[p], stops[p]},
+                          [&](int dx, int dy, DenoiseSurface& surface, float& l) {
+                              const int qx = int(x) + dx, qy = int(y) + dy;
+                              if (qx < 0 || qy < 0 || qx >= int(width) || qy >= int(height)) return false;
+                              const uint32_t q = uint32_t(qy) * width + uint32_t(qx);
+                              if (!in[q].valid()) return false;
+                              surface = loadSurface(surfaces, q);
+                              l = luminance(in[q].radiance);
+                              return true;
+                          });
 }
 
 // The variance of a pixel's mean below kMinSamplesForOwnVariance samples, from its own
