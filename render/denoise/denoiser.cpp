@@ -3,6 +3,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "render/denoise/firefly_limits.h"
 #include "render/denoise/row_filter.h"
 
 namespace pt {
@@ -46,6 +47,7 @@ struct CpuDenoiser::Workspace {
     // neighbours' variance is estimated from, and that variance (made at the first call that
     // needs them).
     std::unique_ptr<denoise::LuminancePlanes> luminance;
+    denoise::FireflyRowSums fireflyRowSums;
     std::vector<float> fireflyLimit, spread;
 
     explicit Workspace(const denoise::PlaneLayout& l)
@@ -90,10 +92,8 @@ void CpuDenoiser::run(const DenoiseInput& in, std::vector<float>& rgba) {
             w.fireflyLimit.resize(pixels);
             w.spread.resize(pixels);
         }
-        forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
-            w.fireflyLimit[y * g.width + x] =
-                denoise::fireflyLimitAt(w.input.data(), w.surfaces.data(), g.width, g.height, x, y);
-        });
+        denoise::fireflyLimits(w.input.data(), w.surfaces.data(), g.width, g.height, w.fireflyRowSums,
+                               w.fireflyLimit.data());
         forEachPixel(g.width, g.height, [&](uint32_t x, uint32_t y) {
             const uint32_t i = y * g.width + x;
             w.input[i] = denoise::withoutFirefly(w.input[i], w.fireflyLimit[i]);

@@ -1,16 +1,19 @@
 // The CPU's row form of the denoiser's neighbourhood steps against the per-pixel steps the GPU
 // runs (atrous_filter.h), bit for bit: a random image with every kind of pixel (sky beside
 // surfaces, left-out pixels, creases, depth cliffs) through each pass's step, image edges
-// included, at sizes that are not a multiple of a SIMD vector.
+// included, at sizes that are not a multiple of a SIMD vector; and the firefly pass's box sums
+// (firefly_limits.h) against its per-pixel form, to float rounding.
 #include "render/denoise/row_filter.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <random>
 #include <vector>
 
 #include "render/denoise/atrous_filter.h"
+#include "render/denoise/firefly_limits.h"
 
 namespace pt::denoise {
 namespace {
@@ -83,6 +86,34 @@ TEST(RowFilter, AtrousRowsMatchThePerPixelStepBitForBit) {
                 }
             }
             EXPECT_EQ(mismatches, 0u) << w << "x" << h << ", step " << step;
+        }
+    }
+}
+
+// The box sums of fireflyLimits against fireflyLimitAt's 48 taps: equal to float rounding
+// (doubles summed in another order), with and without a firefly that dominates its windows.
+TEST(RowFilter, FireflyLimitsMatchThePerPixelStep) {
+    for (const auto& [w, h] : {std::pair{67u, 45u}, std::pair{4u, 3u}, std::pair{1u, 9u}}) {
+        RandomImage image(w, h, w + 7 * h);
+        for (const bool firefly : {false, true}) {
+            if (firefly) image.samples[(h / 2) * w + w / 2] = {Vec3(3.0e4f, 2.0e4f, 1.0e4f), 1.0f};
+            FireflyRowSums rowSums;
+            std::vector<float> limits(size_t(w) * h);
+            fireflyLimits(image.samples.data(), image.surfaces.data(), w, h, rowSums, limits.data());
+            size_t mismatches = 0, limited = 0;
+            for (uint32_t y = 0; y < h; ++y) {
+                for (uint32_t x = 0; x < w; ++x) {
+                    const float expected =
+                        fireflyLimitAt(image.samples.data(), image.surfaces.data(), w, h, x, y);
+                    const float got = limits[y * w + x];
+                    mismatches += !(std::fabs(got - expected) <= 1e-5f * std::fabs(expected) + 1e-6f);
+                    limited += expected < kNoLuminanceLimit;
+                }
+            }
+            EXPECT_EQ(mismatches, 0u) << w << "x" << h << (firefly ? ", with a firefly" : "");
+            if (w * h > 100) {
+                EXPECT_GT(limited, w * h / 2) << "most pixels have neighbours enough for a limit";
+            }
         }
     }
 }
