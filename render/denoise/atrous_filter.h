@@ -372,7 +372,9 @@ PT_HD float spatialVarianceAt(const DenoiseSample* in, const DenoiseSurface* sur
 // two. The neighbours' alone opened the luminance stops of a shadowed pixel beside a lit one (a
 // shadow edge no guide shows is noise to the window), which took in its neighbours' light:
 // DepthOfFieldExample at 640x480, 2 spp, had 3.1x the raw relMSE after denoising, 0.019x with
-// the geometric mean. Its own alone underestimates a pixel whose few samples agreed by chance.
+// the geometric mean (CPU backend, one seed; on the H200, three seeds: 1.9-11x above the raw
+// error before, 10-34x below it after). Its own alone underestimates a pixel whose few samples
+// agreed by chance.
 // Denoised over raw relMSE, CPU backend, the mean over four seeds against 8192 spp
 // (DepthOfFieldExample and GolfBall 160x120, Cornell box 128x128), at 2 / 3 spp:
 //                        DepthOfField     GolfBall        Cornell
@@ -415,30 +417,42 @@ constexpr float kFireflyDeviations = 1.5f;
 constexpr float kFireflyMinNeighbours = 8.0f;
 constexpr float kNoLuminanceLimit = 3.4e38f;
 
-// The luminance pixel (x, y) is held to (kNoLuminanceLimit: none).
+// The luminance pixel (x, y) is held to (kNoLuminanceLimit: none). Two passes over the window,
+// the mean and then the deviations from it: one pass of sums and sums of squares in floats
+// lost three digits of a low-noise surface's spread (a spread of 1e-4 of the mean left the limit
+// 1.3e-3 off, as far from the CPU's double box sums, firefly_limits.h).
 PT_HD float fireflyLimitAt(const DenoiseSample* in, const DenoiseSurface* surfaces, uint32_t width,
                            uint32_t height, uint32_t x, uint32_t y) {
     const uint32_t p = y * width + x;
     if (!in[p].valid() || !(surfaces[p].depth > 0.0f)) return kNoLuminanceLimit;
-    float count = 0.0f, sum = 0.0f, squares = 0.0f;
-    for (int dy = -kFireflyRadius; dy <= kFireflyRadius; ++dy) {
-        for (int dx = -kFireflyRadius; dx <= kFireflyRadius; ++dx) {
-            const int qx = int(x) + dx, qy = int(y) + dy;
-            if ((dx == 0 && dy == 0) || qx < 0 || qy < 0 || qx >= int(width) || qy >= int(height)) continue;
-            const uint32_t q = uint32_t(qy) * width + uint32_t(qx);
-            if (!in[q].valid() || !(surfaces[q].depth > 0.0f)) continue;
-            const float l = luminance(in[q].radiance);
-            count += 1.0f;
-            sum += l;
-            squares += l * l;
+    // Calls f(luminance) for each neighbour on a surface.
+    const auto forEachNeighbour = [&](const auto& f) {
+        for (int dy = -kFireflyRadius; dy <= kFireflyRadius; ++dy) {
+            for (int dx = -kFireflyRadius; dx <= kFireflyRadius; ++dx) {
+                const int qx = int(x) + dx, qy = int(y) + dy;
+                if ((dx == 0 && dy == 0) || qx < 0 || qy < 0 || qx >= int(width) || qy >= int(height))
+                    continue;
+                const uint32_t q = uint32_t(qy) * width + uint32_t(qx);
+                if (in[q].valid() && surfaces[q].depth > 0.0f) f(luminance(in[q].radiance));
+            }
         }
-    }
+    };
+    float count = 0.0f, sum = 0.0f;
+    forEachNeighbour([&](float l) {
+        count += 1.0f;
+        sum += l;
+    });
     if (count < kFireflyMinNeighbours) return kNoLuminanceLimit;
     const float mean = sum / count;
-    return mean + kFireflyDeviations * sqrtf(maxf(squares / count - mean * mean, 0.0f));
+    float squares = 0.0f;
+    forEachNeighbour([&](float l) { squares += (l - mean) * (l - mean); });
+    return mean + kFireflyDeviations * sqrtf(squares / count);
 }
 
-// A sample held to a luminance limit, scaled as a whole (it keeps its colour).
+// A sample held to a luminance limit, scaled as a whole (it keeps its colour). Its variance
+// stays: spatialVarianceAt replaces it below kMinSamplesForOwnVariance, and firstSamplesVariance
+// takes it in from 2 spp, where keeping a clamped pixel's larger variance changed nothing
+// measurable (a reviewer's 2-spp runs).
 PT_HD DenoiseSample withoutFirefly(const DenoiseSample& s, float limit) {
     const float l = luminance(s.radiance);
     if (!s.valid() || !(l > limit) || !(l > 0.0f)) return s;

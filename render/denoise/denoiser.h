@@ -12,8 +12,10 @@ namespace pt {
 
 // Five a-trous passes (taps 1 to 16 pixels apart): a 125-pixel-wide footprint at 1080p.
 constexpr uint32_t kDenoiseIterations = 5;
-// Below this many samples a pixel, the variance of each pixel's mean comes from its neighbours
-// (spatialVarianceAt), its own estimate having too few samples.
+// Below this many samples a pixel, each pixel's own variance estimate has too few samples to
+// stand alone: fireflies are first held to their neighbours (fireflyLimitAt), whose spread then
+// gives the variance (spatialVarianceAt), alone at 1 spp and in a geometric mean with the
+// pixel's own from 2 (firstSamplesVariance).
 constexpr uint32_t kMinSamplesForOwnVariance = 4;
 
 struct DenoiseInput {

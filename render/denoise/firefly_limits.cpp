@@ -12,10 +12,35 @@ namespace pt::denoise {
 
 namespace {
 
-// Whether pixel i takes part in its neighbours' windows, as fireflyLimitAt has it: a sample
-// that is not left out, on a surface.
-bool takesPart(const DenoiseSample* in, const DenoiseSurface* surfaces, size_t i) {
-    return in[i].valid() && surfaces[i].depth > 0.0f;
+// A window's count of pixels on a surface, their luminance sum and sum of squares.
+struct WindowSums {
+    double count = 0.0, luminance = 0.0, squares = 0.0;
+
+    void add(double l) {
+        count += 1.0;
+        luminance += l;
+        squares += l * l;
+    }
+    void add(const WindowSums& s) {
+        count += s.count;
+        luminance += s.luminance;
+        squares += s.squares;
+    }
+};
+
+// The taps of row `y` within kFireflyRadius of column x, all but column `skip`, that take part
+// as fireflyLimitAt has it: a sample not left out, on a surface.
+WindowSums rowTaps(const DenoiseSample* in, const DenoiseSurface* surfaces, uint32_t width, uint32_t y,
+                   uint32_t x, uint32_t skip) {
+    WindowSums sums;
+    const size_t row = size_t(y) * width;
+    const uint32_t from = uint32_t(std::max(int(x) - kFireflyRadius, 0));
+    const uint32_t to = std::min(x + uint32_t(kFireflyRadius), width - 1);
+    for (uint32_t qx = from; qx <= to; ++qx) {
+        const size_t q = row + qx;
+        if (qx != skip && in[q].valid() && surfaces[q].depth > 0.0f) sums.add(luminance(in[q].radiance));
+    }
+    return sums;
 }
 
 template <class PerRow>
@@ -33,51 +58,40 @@ void fireflyLimits(const DenoiseSample* in, const DenoiseSurface* surfaces, uint
     rowSums.count.resize(pixels);
     rowSums.luminance.resize(pixels);
     rowSums.squares.resize(pixels);
-    const int r = kFireflyRadius;
+    constexpr uint32_t kNone = ~0u;  // a column no pixel has
     forEachRow(height, [&](uint32_t y) {
-        const size_t row = size_t(y) * width;
         for (uint32_t x = 0; x < width; ++x) {
-            double count = 0.0, sum = 0.0, squares = 0.0;
-            const uint32_t from = uint32_t(std::max(int(x) - r, 0)),
-                           to = std::min(x + uint32_t(r), width - 1);
-            for (uint32_t qx = from; qx <= to; ++qx) {
-                if (!takesPart(in, surfaces, row + qx)) continue;
-                const double l = luminance(in[row + qx].radiance);
-                count += 1.0;
-                sum += l;
-                squares += l * l;
-            }
-            rowSums.count[row + x] = count;
-            rowSums.luminance[row + x] = sum;
-            rowSums.squares[row + x] = squares;
+            const WindowSums s = rowTaps(in, surfaces, width, y, x, kNone);
+            const size_t i = size_t(y) * width + x;
+            rowSums.count[i] = s.count;
+            rowSums.luminance[i] = s.luminance;
+            rowSums.squares[i] = s.squares;
         }
     });
     forEachRow(height, [&](uint32_t y) {
-        const uint32_t from = uint32_t(std::max(int(y) - r, 0)), to = std::min(y + uint32_t(r), height - 1);
+        const uint32_t from = uint32_t(std::max(int(y) - kFireflyRadius, 0));
+        const uint32_t to = std::min(y + uint32_t(kFireflyRadius), height - 1);
         for (uint32_t x = 0; x < width; ++x) {
             const size_t i = size_t(y) * width + x;
-            if (!takesPart(in, surfaces, i)) {
+            if (!in[i].valid() || !(surfaces[i].depth > 0.0f)) {
                 limits[i] = kNoLuminanceLimit;
                 continue;
             }
-            double count = 0.0, sum = 0.0, squares = 0.0;
+            // The centre's own row is summed anew without it: taking a firefly's share out of its
+            // row sum by subtraction cancelled its neighbours' away (at 1e7x their luminance,
+            // 1e-2 of its limit).
+            WindowSums s = rowTaps(in, surfaces, width, y, x, x);
             for (uint32_t qy = from; qy <= to; ++qy) {
                 const size_t q = size_t(qy) * width + x;
-                count += rowSums.count[q];
-                sum += rowSums.luminance[q];
-                squares += rowSums.squares[q];
+                if (qy != y) s.add({rowSums.count[q], rowSums.luminance[q], rowSums.squares[q]});
             }
-            const double own = luminance(in[i].radiance);  // the centre takes part: out of its window
-            count -= 1.0;
-            sum -= own;
-            squares -= own * own;
-            if (count < double(kFireflyMinNeighbours)) {
+            if (s.count < double(kFireflyMinNeighbours)) {
                 limits[i] = kNoLuminanceLimit;
                 continue;
             }
-            const double mean = sum / count;
-            limits[i] = float(mean + double(kFireflyDeviations) *
-                                         std::sqrt(std::max(squares / count - mean * mean, 0.0)));
+            const double mean = s.luminance / s.count;
+            const double spread = std::sqrt(std::max(s.squares / s.count - mean * mean, 0.0));
+            limits[i] = float(mean + double(kFireflyDeviations) * spread);
         }
     });
 }
