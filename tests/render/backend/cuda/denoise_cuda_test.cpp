@@ -33,18 +33,22 @@ void renderWithGuides(cuda::CudaBackend& backend, const Scene& scene, uint32_t s
     backend.render(spp);
 }
 
-// At 2 spp the neighbours' variance, at 8 each pixel's own; and guides capped at 3 samples
-// (setAovSampleCap) under a beauty of 8, each averaged over its own samples.
+// Below 4 spp the firefly clamp and the neighbours' variance (at 1 spp alone, at 2 and 3 with
+// each pixel's own), at 8 each pixel's own; guides capped at 3 samples (setAovSampleCap) under a
+// beauty of 8, each averaged over its own samples; and 67x45, which the GPU's 16x16 blocks (and
+// the first samples' shared-memory tiles) do not divide.
 TEST(GpuDenoiser, MatchesTheCpuFilterOnTheSameAccumulation) {
     PT_REQUIRE_CUDA_DEVICE();
     struct Case {
         uint32_t spp, guideSamples;  // 0: the guides take every sample
+        uint32_t width, height;
     };
-    for (const Case c : {Case{2, 0}, Case{8, 0}, Case{8, 3}}) {
+    for (const Case c : {Case{1, 0, 67, 45}, Case{2, 0, 64, 64}, Case{3, 0, 67, 45}, Case{8, 0, 64, 64},
+                         Case{8, 3, 64, 64}}) {
         const uint32_t spp = c.spp;
         cuda::CudaBackend backend;
         backend.setAovSampleCap(settledGuideCap(0, c.guideSamples));
-        renderWithGuides(backend, cornell(64), 1);
+        renderWithGuides(backend, sized(cornell(64), c.width, c.height), 1);
         for (uint32_t s = 1; s < spp; ++s) backend.render(1);  // a sample a call: the cap stops at 3
         ASSERT_EQ(backend.aovSamples(Aov::Albedo), c.guideSamples ? c.guideSamples : spp);
         std::vector<float> gpu, cpu;
@@ -55,8 +59,9 @@ TEST(GpuDenoiser, MatchesTheCpuFilterOnTheSameAccumulation) {
         for (size_t i = 0; i < gpu.size(); ++i) {
             worst = std::max(worst, std::fabs(gpu[i] - cpu[i]) / std::max(1.0f, std::fabs(cpu[i])));
         }
-        std::cout << "[ figures  ] " << spp << " spp, guides of " << backend.aovSamples(Aov::Albedo)
-                  << ": largest relative difference GPU vs CPU denoiser " << worst << "\n";
+        std::cout << "[ figures  ] " << c.width << "x" << c.height << ", " << spp << " spp, guides of "
+                  << backend.aovSamples(Aov::Albedo) << ": largest relative difference GPU vs CPU denoiser "
+                  << worst << "\n";
         EXPECT_LE(worst, 1e-3f) << spp << " spp, guides of " << c.guideSamples;
     }
 }
