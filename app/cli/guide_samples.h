@@ -3,7 +3,6 @@
 // the denoiser's guides accumulate before they stop (Backend::setAovSampleCap); by default
 // kSettledGuideSamples, "all" to record them with every sample of the beauty.
 #include <cstdint>
-#include <string>
 
 #include "cli/cli_options.h"
 #include "render/backend/backend.h"

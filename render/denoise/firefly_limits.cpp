@@ -28,8 +28,12 @@ struct WindowSums {
     }
 };
 
-// The taps of row `y` within kFireflyRadius of column x, all but column `skip`, that take part
-// as fireflyLimitAt has it: a sample not left out, on a surface.
+// Whether pixel i takes part, as fireflyLimitAt has it: a sample not left out, on a surface.
+bool takesPart(const DenoiseSample* in, const DenoiseSurface* surfaces, size_t i) {
+    return in[i].valid() && surfaces[i].depth > 0.0f;
+}
+
+// The taps of row `y` within kFireflyRadius of column x, all but column `skip`, that take part.
 WindowSums rowTaps(const DenoiseSample* in, const DenoiseSurface* surfaces, uint32_t width, uint32_t y,
                    uint32_t x, uint32_t skip) {
     WindowSums sums;
@@ -38,7 +42,7 @@ WindowSums rowTaps(const DenoiseSample* in, const DenoiseSurface* surfaces, uint
     const uint32_t to = std::min(x + uint32_t(kFireflyRadius), width - 1);
     for (uint32_t qx = from; qx <= to; ++qx) {
         const size_t q = row + qx;
-        if (qx != skip && in[q].valid() && surfaces[q].depth > 0.0f) sums.add(luminance(in[q].radiance));
+        if (qx != skip && takesPart(in, surfaces, q)) sums.add(luminance(in[q].radiance));
     }
     return sums;
 }
@@ -73,7 +77,7 @@ void fireflyLimits(const DenoiseSample* in, const DenoiseSurface* surfaces, uint
         const uint32_t to = std::min(y + uint32_t(kFireflyRadius), height - 1);
         for (uint32_t x = 0; x < width; ++x) {
             const size_t i = size_t(y) * width + x;
-            if (!in[i].valid() || !(surfaces[i].depth > 0.0f)) {
+            if (!takesPart(in, surfaces, i)) {
                 limits[i] = kNoLuminanceLimit;
                 continue;
             }
