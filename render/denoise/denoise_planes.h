@@ -5,6 +5,7 @@
 // the memory system's throughput), so a tap reads a sample of halves (8 bytes) and a surface
 // of 16, and what only the centre needs lives apart. Both backends pack with the same code,
 // so they filter the same numbers.
+#include <cstddef>
 #include <cstdint>
 
 #include "render/math/half_float.h"
@@ -35,7 +36,8 @@ struct alignas(16) DenoiseSurface {
 };
 
 // Pixel q's surface: on the GPU one 16-byte load (nvcc copies the struct member by member).
-PT_HD DenoiseSurface loadSurface(const DenoiseSurface* surfaces, uint32_t q) {
+// Signed: a tap's offset from its row's pointer may be negative.
+PT_HD DenoiseSurface loadSurface(const DenoiseSurface* surfaces, ptrdiff_t q) {
 #if defined(__CUDA_ARCH__)
     const float4 v = __ldg(reinterpret_cast<const float4*>(surfaces) + q);
     return {{v.x, v.y, v.z}, v.w};
@@ -58,6 +60,16 @@ struct SurfaceStops {
 struct alignas(8) PackedSample {
     uint16_t r, g, b, deviation;
 };
+
+// Sample q: on the GPU one 8-byte load (a copy of the struct became four 2-byte loads).
+PT_HD PackedSample loadPacked(const PackedSample* samples, ptrdiff_t q) {
+#if defined(__CUDA_ARCH__)
+    const uint2 v = __ldg(reinterpret_cast<const uint2*>(samples) + q);
+    return {uint16_t(v.x), uint16_t(v.x >> 16), uint16_t(v.y), uint16_t(v.y >> 16)};
+#else
+    return samples[q];
+#endif
+}
 
 PT_HD PackedSample packSample(const DenoiseSample& s) {
     const float deviation = s.valid() ? sqrtf(s.variance) : kInvalid;

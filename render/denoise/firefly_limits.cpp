@@ -28,9 +28,8 @@ struct WindowSums {
     }
 };
 
-// Whether pixel i takes part, as fireflyLimitAt has it: a sample not left out, on a surface.
 bool takesPart(const DenoiseSample* in, const DenoiseSurface* surfaces, size_t i) {
-    return in[i].valid() && surfaces[i].depth > 0.0f;
+    return inFireflyWindow(in[i], surfaces[i]);
 }
 
 // The taps of row `y` within kFireflyRadius of column x, all but column `skip`, that take part.

@@ -61,55 +61,86 @@ __global__ void prepareKernel(const double* sum, AovBuffers aovs, AovSampleCount
     out[i] = denoise::demodulatedSample(beauty, variance, samples, pixel);
 }
 
-// Where each pixel's own variance has too few samples: prepareKernel's samples (`in`) held to
-// their firefly limits, into `out`.
-__global__ void fireflyKernel(const DenoiseSample* in, const denoise::DenoiseSurface* surfaces,
-                              uint32_t width, uint32_t height, DenoiseSample* out) {
-    uint32_t x, y;
-    if (!pixelOf(width, height, x, y)) return;
-    const uint32_t i = y * width + x;
-    out[i] = denoise::withoutFirefly(in[i], denoise::fireflyLimitAt(in, surfaces, width, height, x, y));
-}
-
-// The window of spatialVarianceAt around a block of pixels, in shared memory: each pixel's
-// 48 taps read it there, not through the L1 cache. At 1080p on the H200 (ncu, 1 spp): read
-// through L1, the window's loads held memory throughput at 91% and packKernel took 388 us at 45
-// registers and 52% achieved occupancy; from the tile, 195 us at 31 registers and 94%, bound by
-// the taps' arithmetic (87% of the SMs' throughput). The whole 1-spp denoise went from 1.27 to
-// 1.12 ms (`pt-render bench`).
+// The 7x7 windows around a block of pixels, in shared memory: the firefly limits' (fireflyLimit)
+// and the neighbours' variance's (windowVariance) 48 taps a pixel read them there, not through
+// the L1 cache. At 1080p on the H200 (ncu, 1 spp): read through L1, the variance's loads held
+// memory throughput at 91% and packKernel took 388 us at 45 registers and 52% achieved
+// occupancy; from the tile, 195 us at 31 registers and 94%, bound by the taps' arithmetic (87% of
+// the SMs' throughput). The whole 1-spp denoise went from 1.27 to 1.12 ms (`pt-render bench`).
+// The firefly limits, two passes over their window read through L1, took 96 us at 25% of the
+// issue slots, 75% of the cycles stalled on the loads; from a tile of surfaces and luminances,
+// 50 us; from one 8-byte word a pixel (FireflyTile), 47 us.
+static_assert(denoise::kFireflyRadius == denoise::kSpreadRadius, "one tile size serves both windows");
 constexpr int kTileSide = int(kBlockSide) + 2 * denoise::kSpreadRadius;
 constexpr int kTilePixels = kTileSide * kTileSide;
 
+// Calls load(t, q, inside) for each pixel t of the block's tile: q its index in the image, where
+// `inside` it; then waits for the whole block (every thread of the block takes part).
+template <class Load>
+__device__ void loadTile(uint32_t width, uint32_t height, const Load& load) {
+    const int originX = int(blockIdx.x * blockDim.x) - denoise::kSpreadRadius;
+    const int originY = int(blockIdx.y * blockDim.y) - denoise::kSpreadRadius;
+    for (int t = int(threadIdx.y * blockDim.x + threadIdx.x); t < kTilePixels;
+         t += int(blockDim.x * blockDim.y)) {
+        const int qx = originX + t % kTileSide, qy = originY + t / kTileSide;
+        const bool inside = qx >= 0 && qy >= 0 && qx < int(width) && qy < int(height);
+        load(t, inside ? uint32_t(qy) * width + uint32_t(qx) : 0u, inside);
+    }
+    __syncthreads();
+}
+
+// The tile index of the pixel (dx, dy) from this thread's.
+__device__ int tileIndex(int dx, int dy) {
+    return (int(threadIdx.y) + denoise::kSpreadRadius + dy) * kTileSide + int(threadIdx.x) +
+           denoise::kSpreadRadius + dx;
+}
+
+// What the firefly limits read of each pixel, one 8-byte word (the limit's two passes read the
+// window twice).
+struct FireflyTile {
+    float2 luminance[kTilePixels];  // x: the luminance; y: 1 where it is in the window (inFireflyWindow)
+
+    __device__ void load(const DenoiseSample* in, const denoise::DenoiseSurface* surfaces, uint32_t width,
+                         uint32_t height) {
+        loadTile(width, height, [&](int t, uint32_t q, bool inside) {
+            const bool inWindow = inside && denoise::inFireflyWindow(in[q], surfaces[q]);
+            luminance[t] =
+                inWindow ? make_float2(pt::luminance(in[q].radiance), 1.0f) : make_float2(0.0f, 0.0f);
+        });
+    }
+    // fireflyLimitAt of this thread's pixel, whose sample and surface are `own` and
+    // `ownSurface`: the same sums in the same order.
+    __device__ float limit(const DenoiseSample& own, const denoise::DenoiseSurface& ownSurface) const {
+        if (!denoise::inFireflyWindow(own, ownSurface)) return denoise::kNoLuminanceLimit;
+        return denoise::fireflyLimit([&](int dx, int dy, float& l) {
+            const float2 v = luminance[tileIndex(dx, dy)];
+            l = v.x;
+            return v.y > 0.0f;
+        });
+    }
+};
+
+// What the neighbours' variance reads of each pixel.
 struct SpreadTile {
     float4 surface[kTilePixels];  // DenoiseSurface: normal, depth
     float luminance[kTilePixels];
     bool included[kTilePixels];  // inside the image and not left out
 
-    // The block's window from `in` (every thread of the block takes part).
     __device__ void load(const DenoiseSample* in, const denoise::DenoiseSurface* surfaces, uint32_t width,
                          uint32_t height) {
-        const int originX = int(blockIdx.x * blockDim.x) - denoise::kSpreadRadius;
-        const int originY = int(blockIdx.y * blockDim.y) - denoise::kSpreadRadius;
-        for (int t = int(threadIdx.y * blockDim.x + threadIdx.x); t < kTilePixels;
-             t += int(blockDim.x * blockDim.y)) {
-            const int qx = originX + t % kTileSide, qy = originY + t / kTileSide;
-            const bool inside = qx >= 0 && qy >= 0 && qx < int(width) && qy < int(height);
-            const uint32_t q = inside ? uint32_t(qy) * width + uint32_t(qx) : 0;
+        loadTile(width, height, [&](int t, uint32_t q, bool inside) {
             const bool takesPart = inside && in[q].valid();
             const denoise::DenoiseSurface s =
                 takesPart ? denoise::loadSurface(surfaces, q) : denoise::DenoiseSurface{Vec3(0.0f), 0.0f};
             surface[t] = make_float4(s.normal.x, s.normal.y, s.normal.z, s.depth);
             luminance[t] = takesPart ? pt::luminance(in[q].radiance) : 0.0f;
             included[t] = takesPart;
-        }
-        __syncthreads();
+        });
     }
     // spatialVarianceAt of this thread's pixel, `edges` its own, the same sums in the same order.
     __device__ float variance(const denoise::EdgeStops& edges) const {
-        const int centre = (int(threadIdx.y) + denoise::kSpreadRadius) * kTileSide + int(threadIdx.x) +
-                           denoise::kSpreadRadius;
         return denoise::windowVariance(edges, [&](int dx, int dy, denoise::DenoiseSurface& s, float& l) {
-            const int t = centre + dy * kTileSide + dx;
+            const int t = tileIndex(dx, dy);
             const float4 v = surface[t];
             s = {{v.x, v.y, v.z}, v.w};
             l = luminance[t];
@@ -117,6 +148,18 @@ struct SpreadTile {
         });
     }
 };
+
+// Where each pixel's own variance has too few samples: prepareKernel's samples (`in`) held to
+// their firefly limits, into `out`.
+__global__ void fireflyKernel(const DenoiseSample* in, const denoise::DenoiseSurface* surfaces,
+                              uint32_t width, uint32_t height, DenoiseSample* out) {
+    __shared__ FireflyTile tile;
+    tile.load(in, surfaces, width, height);  // before any thread of the block returns
+    uint32_t x, y;
+    if (!pixelOf(width, height, x, y)) return;
+    const uint32_t i = y * width + x;
+    out[i] = denoise::withoutFirefly(in[i], tile.limit(in[i], surfaces[i]));
+}
 
 // The depth slopes, and the first pass's input, packed; before it, where each pixel's own
 // variance has too few samples (`kFirstSamples`: `samples` below kMinSamplesForOwnVariance) to
@@ -208,14 +251,12 @@ void GpuDenoiser::run(const double* sum, const AovBuffers& aovs, const AovSample
     denoise::SurfaceStops* stops = stops_.data();
     prepareKernel<<<grid, block, 0, stream>>>(sum, aovs, guideSamples, samples, p, surfaces, stops, input);
     PT_CUDA_CHECK_LAUNCH("prepareKernel");
-    if (!ownVariance) {
-        fireflyKernel<<<grid, block, 0, stream>>>(input, surfaces, width, height, demodulated);
-        PT_CUDA_CHECK_LAUNCH("fireflyKernel");
-    }
     if (ownVariance) {
         packKernel<false>
             <<<grid, block, 0, stream>>>(nullptr, surfaces, stops, width, height, samples, input, a);
     } else {
+        fireflyKernel<<<grid, block, 0, stream>>>(input, surfaces, width, height, demodulated);
+        PT_CUDA_CHECK_LAUNCH("fireflyKernel");
         packKernel<true>
             <<<grid, block, 0, stream>>>(demodulated, surfaces, stops, width, height, samples, input, a);
     }
