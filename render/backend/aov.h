@@ -85,9 +85,9 @@ void requireAov(AovMask enabled, Aov aov);
 // The value of channel c of one pixel's sums (aovChannels(aov) doubles at `sums`), as the
 // image shows it: averages, except the ids (as stored), sample_count (`samples`) and the
 // variance of the mean (Welford: M2 / (n - 1), over n). Sums are multiplied by 1 / n, not
-// divided by n: one double division a pixel's AOV, not one a channel (a double division is
-// a long sequence on the GPU: the denoiser's guides took twelve a pixel, and its prepareKernel
-// went from 145 to 106 us at 1080p on the H200 without them).
+// divided by n: a double division is a long sequence on the GPU, and inlined, the calls for
+// one pixel's AOV share one 1 / n (the denoiser's guides went from twelve divisions a pixel to
+// six, and its prepareKernel from 145 to 106 us at 1080p on the H200).
 PT_HD float aovPixelValue(Aov aov, const double* sums, uint32_t c, uint32_t samples) {
     const double n = double(samples);
     switch (aov) {

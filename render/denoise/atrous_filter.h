@@ -22,7 +22,7 @@
 // coverageFreeVariance, fewSamplesVariance, demodulatedSample, boundedByNoise, remodulated);
 // the surface each pixel's edge stops compare (surfaceOf, depthSlopeAt, EdgeStops); the
 // neighbours' variance estimate of the first samples (spatialVarianceAt) and their fireflies
-// (fireflyLimitAt, withoutFirefly); outliers
+// (fireflyLimit, inFireflyWindow, fireflyLimitAt, withoutFirefly); outliers
 // (outlierWeight, neighbourhoodVarianceAt); one a-trous pass (atrousTapWeight, atrousAt).
 #include <cstddef>
 #include <cstdint>
@@ -390,7 +390,7 @@ PT_HD float spatialVarianceAt(const DenoiseSample* in, const DenoiseSurface* sur
 // The geometric mean keeps DepthOfFieldExample's gain at the least cost to the others.
 PT_HD float firstSamplesVariance(float own, float neighbours, uint32_t samples) {
     if (!(neighbours >= 0.0f) || samples < 2 || !(own >= 0.0f)) return neighbours;  // kInvalid stays
-    return sqrtf(own) * sqrtf(neighbours);  // the product could overflow, or be Inf times 0
+    return sqrtf(own) * sqrtf(neighbours);  // the product under one root could overflow or underflow
 }
 
 // Fireflies in the first samples. A pixel whose one sample found a rare bright path (a lamp
@@ -466,8 +466,9 @@ PT_HD float fireflyLimitAt(const DenoiseSample* in, const DenoiseSurface* surfac
         const int qx = int(x) + dx, qy = int(y) + dy;
         if (qx < 0 || qy < 0 || qx >= int(width) || qy >= int(height)) return false;
         const uint32_t q = uint32_t(qy) * width + uint32_t(qx);
+        if (!inFireflyWindow(in[q], surfaces[q])) return false;
         l = luminance(in[q].radiance);
-        return inFireflyWindow(in[q], surfaces[q]);
+        return true;
     });
 }
 
@@ -646,17 +647,18 @@ PT_HD PackedSample atrousAt(const PackedSample* in, const DenoiseSurface* surfac
         // load's immediate, where a 32-bit index made two wide multiply-adds a tap). With it and
         // fastExp's and outlierWeight's flush-to-zero forms, a pass at 1080p on the H200 went
         // from 200 to 174 us (ncu; issue-bound, 0.86 of the issue slots), 46-48 instructions
-        // a tap, and the whole 4-spp denoise from 0.96 to 0.87 ms (`pt-render bench`).
+        // a tap, and the whole 4-spp denoise from 0.96 to 0.87 ms (`pt-render bench`; with the
+        // guides' 1 / n, aov.h, 0.85).
         const ptrdiff_t row = ptrdiff_t(width) * ptrdiff_t(step);
         PT_UNROLL
         for (int j = -2; j <= 2; ++j) {
-            const PackedSample* samples = in + p + j * row;
+            const PackedSample* rowSamples = in + p + j * row;
             const DenoiseSurface* rowSurfaces = surfaces + p + j * row;
             PT_UNROLL
             for (int i = -2; i <= 2; ++i) {
                 const int column = i * int(step);
                 if (i != 0 || j != 0)
-                    tap(i, j, loadPacked(samples, column), loadSurface(rowSurfaces, column));
+                    tap(i, j, loadPacked(rowSamples, column), loadSurface(rowSurfaces, column));
             }
         }
     } else {

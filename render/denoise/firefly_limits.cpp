@@ -28,6 +28,7 @@ struct WindowSums {
     }
 };
 
+// Whether pixel i is in the firefly windows (inFireflyWindow).
 bool takesPart(const DenoiseSample* in, const DenoiseSurface* surfaces, size_t i) {
     return inFireflyWindow(in[i], surfaces[i]);
 }

@@ -61,8 +61,8 @@ __global__ void prepareKernel(const double* sum, AovBuffers aovs, AovSampleCount
     out[i] = denoise::demodulatedSample(beauty, variance, samples, pixel);
 }
 
-// The 7x7 windows around a block of pixels, in shared memory: the firefly limits' (fireflyLimit)
-// and the neighbours' variance's (windowVariance) 48 taps a pixel read them there, not through
+// The 7x7 windows around a block of pixels, in shared memory: the firefly limits' 48 taps a pixel
+// (fireflyLimit) and the neighbours' variance's 49 (windowVariance) read them there, not through
 // the L1 cache. At 1080p on the H200 (ncu, 1 spp): read through L1, the variance's loads held
 // memory throughput at 91% and packKernel took 388 us at 45 registers and 52% achieved
 // occupancy; from the tile, 195 us at 31 registers and 94%, bound by the taps' arithmetic (87% of
