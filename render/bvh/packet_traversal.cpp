@@ -7,7 +7,7 @@
 #include "render/bvh/wide_walk_simd.h"
 #include "render/math/float_error.h"
 
-// Sections: which scenes the packets take / one BLAS / through the TLAS / entry points.
+// Sections: which scenes the packets take / one BLAS / through the TLAS / one packet / entry points.
 
 namespace pt {
 
@@ -58,9 +58,10 @@ void reportHit(const RenderScene& scene, uint32_t entry, Hit& hit) {
 // The closest hits of the lanes in `lanes` in TLAS entry `entry` (an instance, or
 // instances.count for the merged BLAS) below tMax[lane], each as a fresh traverseBlas gives it
 // (ties in t to the lower primitive): rays[lane] are world rays, world[lane] their traversal
-// form. Returns the lanes that hit, their hits (not yet reported) in found[lane].
+// form. Returns the lanes that hit, their hits (not yet reported) in found[lane]. With
+// `anyHit`, the lanes that hit anything (found[lane] then holds no closest hit).
 uint32_t traceEntry(const RenderScene& scene, uint32_t entry, const Ray* rays, const TraversalRay* world,
-                    uint32_t lanes, float* tMax, Hit* found) {
+                    uint32_t lanes, float* tMax, Hit* found, bool anyHit) {
     const bool merged = entry == scene.instances.count;
     const uint32_t index = merged ? scene.mergedBlas : scene.instances[entry].blas;
     const BlasRef& blas = scene.blases[index];
@@ -78,12 +79,12 @@ uint32_t traceEntry(const RenderScene& scene, uint32_t entry, const Ray* rays, c
     if (blas.kind == GeometryKind::Triangles) {
         return simd_detail::walkTriangleWidePacketAvx2(scene.blasWideNodes.data, scene.blasWideRoots[index],
                                                        scene.blasTriangleBlocks.data, local, lanes, tMax,
-                                                       found);
+                                                       found, anyHit);
     }
     uint32_t hit = 0;
     for (uint32_t bits = lanes; bits != 0; bits &= bits - 1) {
         const uint32_t lane = uint32_t(__builtin_ctz(bits));
-        if (traverseBlas(scene, blas, local[lane], tMax[lane], found[lane], NoTraversalCount{}, false))
+        if (traverseBlas(scene, blas, local[lane], tMax[lane], found[lane], NoTraversalCount{}, anyHit))
             hit |= 1u << lane;
     }
     return hit;
@@ -92,21 +93,36 @@ uint32_t traceEntry(const RenderScene& scene, uint32_t entry, const Ray* rays, c
 // ---- through the TLAS ------------------------------------------------------------------------
 
 // The packet's state through the TLAS: per lane the hit so far (intersectClosest's) and its
-// tMax.
+// tMax; for any hits, the lanes that found one (their tMax -infinity: they reach no more).
 struct TlasPacket {
     const RenderScene& scene;
     const Ray* rays;
     const TraversalRay* world;
     float tMax[kRayPacketSize];
     Hit* hits;
+    bool anyHit = false;
+    uint32_t occluded = 0;
 };
 
 // A TLAS leaf's entries in order, as TlasLeaf takes them. A lane with a hit asks each entry for
 // hits up to its t inclusive (the next float up): a nearer one replaces it, one at the same t
 // where its instance is the lower (TlasLeaf's tie rule). So each lane ends with its single-ray
-// hit whatever order the packet meets the entries in.
+// hit whatever order the packet meets the entries in. For any hits, each lane not yet occluded
+// asks each entry for anything up to its tMax; one that finds it is done.
 void visitTlasLeaf(void* context, uint32_t first, uint32_t count, uint32_t lanes) {
     TlasPacket& p = *static_cast<TlasPacket*>(context);
+    if (p.anyHit) {
+        for (uint32_t i = first; i < first + count && (lanes &= ~p.occluded) != 0; ++i) {
+            Hit found[kRayPacketSize];
+            float tMax[kRayPacketSize];
+            std::copy(p.tMax, p.tMax + kRayPacketSize, tMax);
+            const uint32_t hit = traceEntry(p.scene, p.scene.tlasInstanceIndices[i], p.rays, p.world, lanes,
+                                            tMax, found, true);
+            p.occluded |= hit;
+            for (uint32_t bits = hit; bits != 0; bits &= bits - 1) p.tMax[__builtin_ctz(bits)] = -kInf;
+        }
+        return;
+    }
     for (uint32_t i = first; i < first + count; ++i) {
         const uint32_t entry = p.scene.tlasInstanceIndices[i];
         float limit[kRayPacketSize];
@@ -114,7 +130,7 @@ void visitTlasLeaf(void* context, uint32_t first, uint32_t count, uint32_t lanes
             limit[lane] = p.hits[lane].valid() ? nextFloatUp(p.tMax[lane]) : p.tMax[lane];
         }
         Hit found[kRayPacketSize];
-        const uint32_t hit = traceEntry(p.scene, entry, p.rays, p.world, lanes, limit, found);
+        const uint32_t hit = traceEntry(p.scene, entry, p.rays, p.world, lanes, limit, found, false);
         for (uint32_t bits = hit; bits != 0; bits &= bits - 1) {
             const uint32_t lane = uint32_t(__builtin_ctz(bits));
             reportHit(p.scene, entry, found[lane]);
@@ -124,6 +140,48 @@ void visitTlasLeaf(void* context, uint32_t first, uint32_t count, uint32_t lanes
             p.tMax[lane] = found[lane].t;
         }
     }
+}
+
+// ---- one packet ------------------------------------------------------------------------------
+
+// One packet through the scene by `route` (not None): closest hits into hits[lane] (from
+// noHit), or with `anyHit` the lanes that hit anything. Lanes past `count` repeat the last ray
+// and are left out of the walks.
+uint32_t tracePacket(const RenderScene& scene, PacketRoute route, const Ray* rays, uint32_t count, Hit* hits,
+                     bool anyHit) {
+    Ray laneRays[kRayPacketSize];
+    TraversalRay world[kRayPacketSize] = {};
+    Hit laneHits[kRayPacketSize];
+    for (uint32_t lane = 0; lane < kRayPacketSize; ++lane) {
+        laneRays[lane] = rays[std::min(lane, count - 1)];
+        // One instance's rays are taken into its object space alone (traceEntry).
+        if (route != PacketRoute::OneInstance) {
+            world[lane] = makeTraversalRay(laneRays[lane].origin, laneRays[lane].direction);
+        }
+        laneHits[lane] = noHit(laneRays[lane]);
+    }
+    const uint32_t lanes = (1u << count) - 1u;
+    uint32_t hit = 0;
+    if (route == PacketRoute::Tlas) {
+        TlasPacket packet{scene, laneRays, world, {}, laneHits, anyHit};
+        for (uint32_t lane = 0; lane < kRayPacketSize; ++lane) packet.tMax[lane] = laneRays[lane].tMax;
+        simd_detail::walkTlasPacketAvx2(scene.tlasNodes.data, world, lanes, packet.tMax, visitTlasLeaf,
+                                        &packet);
+        hit = packet.occluded;
+    } else {
+        const uint32_t entry = route == PacketRoute::MergedOnly ? scene.instances.count : 0u;
+        float tMax[kRayPacketSize];
+        Hit found[kRayPacketSize];
+        for (uint32_t lane = 0; lane < kRayPacketSize; ++lane) tMax[lane] = laneRays[lane].tMax;
+        hit = traceEntry(scene, entry, laneRays, world, lanes, tMax, found, anyHit);
+        for (uint32_t bits = anyHit ? 0u : hit; bits != 0; bits &= bits - 1) {
+            const uint32_t lane = uint32_t(__builtin_ctz(bits));
+            reportHit(scene, entry, found[lane]);
+            laneHits[lane] = found[lane];
+        }
+    }
+    if (hits) std::copy(laneHits, laneHits + count, hits);
+    return hit;
 }
 
 }  // namespace
@@ -139,37 +197,16 @@ void intersectClosestPacket(const RenderScene& scene, const Ray* rays, uint32_t 
         for (uint32_t i = 0; i < count; ++i) intersectClosest(scene, rays[i], hits[i]);
         return;
     }
-    // Lanes past `count` repeat the last ray and are left out of the walks.
-    Ray laneRays[kRayPacketSize];
-    TraversalRay world[kRayPacketSize] = {};
-    Hit laneHits[kRayPacketSize];
-    for (uint32_t lane = 0; lane < kRayPacketSize; ++lane) {
-        laneRays[lane] = rays[std::min(lane, count - 1)];
-        // One instance's rays are taken into its object space alone (traceEntry).
-        if (route != PacketRoute::OneInstance) {
-            world[lane] = makeTraversalRay(laneRays[lane].origin, laneRays[lane].direction);
-        }
-        laneHits[lane] = noHit(laneRays[lane]);
-    }
-    const uint32_t lanes = (1u << count) - 1u;
-    if (route == PacketRoute::Tlas) {
-        TlasPacket packet{scene, laneRays, world, {}, laneHits};
-        for (uint32_t lane = 0; lane < kRayPacketSize; ++lane) packet.tMax[lane] = laneRays[lane].tMax;
-        simd_detail::walkTlasPacketAvx2(scene.tlasNodes.data, world, lanes, packet.tMax, visitTlasLeaf,
-                                        &packet);
-    } else {
-        const uint32_t entry = route == PacketRoute::MergedOnly ? scene.instances.count : 0u;
-        float tMax[kRayPacketSize];
-        Hit found[kRayPacketSize];
-        for (uint32_t lane = 0; lane < kRayPacketSize; ++lane) tMax[lane] = laneRays[lane].tMax;
-        for (uint32_t bits = traceEntry(scene, entry, laneRays, world, lanes, tMax, found); bits != 0;
-             bits &= bits - 1) {
-            const uint32_t lane = uint32_t(__builtin_ctz(bits));
-            reportHit(scene, entry, found[lane]);
-            laneHits[lane] = found[lane];
-        }
-    }
-    std::copy(laneHits, laneHits + count, hits);
+    tracePacket(scene, route, rays, count, hits, false);
+}
+
+uint32_t intersectAnyPacket(const RenderScene& scene, const Ray* rays, uint32_t count) {
+    assert(count >= 1 && count <= kRayPacketSize && "a packet holds 1 to 8 rays");
+    const PacketRoute route = packetRoute(scene);
+    if (route != PacketRoute::None) return tracePacket(scene, route, rays, count, nullptr, true);
+    uint32_t occluded = 0;
+    for (uint32_t i = 0; i < count; ++i) occluded |= intersectAny(scene, rays[i]) ? 1u << i : 0u;
+    return occluded;
 }
 
 }  // namespace pt

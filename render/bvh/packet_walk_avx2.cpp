@@ -195,8 +195,10 @@ inline void prefetchEntry(const WideBvhNode* nodes, const TriangleBlock* blocks,
     for (uint32_t offset = 0; offset < size; offset += 64) _mm_prefetch(bytes + offset, _MM_HINT_T0);
 }
 
+// For `anyHit` (the leaves' too) a lane that finds a hit is done: its tMax goes to -infinity, so
+// that it reaches nothing more, and the walk ends when every lane is done.
 uint32_t walkPacket(const WideBvhNode* nodes, uint32_t root, const TraversalRay* rays, uint32_t lanes,
-                    float* tMax, Leaf* leaves) {
+                    float* tMax, Leaf* leaves, bool anyHit) {
     const PacketSlabRays slab = packetSlabRays(rays);
     const __m256 nan = _mm256_set1_ps(std::numeric_limits<float>::quiet_NaN());
     const __m256 inf = _mm256_set1_ps(kInf), exitScale = _mm256_set1_ps(kSlabExitScale);
@@ -206,7 +208,12 @@ uint32_t walkPacket(const WideBvhNode* nodes, uint32_t root, const TraversalRay*
     uint32_t size = 0;
     PacketEntry current{_mm256_blendv_ps(nan, _mm256_setzero_ps(), rootLanes), root, 0};
     uint32_t found = 0;
+    const auto laneFound = [&](uint32_t lane) {
+        found |= 1u << lane;
+        if (anyHit) tMax[lane] = -kInf;
+    };
     for (;;) {
+        if (anyHit && found == lanes) return found;
         // The lanes that still reach the entry: as the single-ray walk drops an entry beyond
         // tMax * kSlabExitScale, each lane drops it beyond its own.
         const __m256 limit = _mm256_mul_ps(_mm256_loadu_ps(tMax), exitScale);
@@ -215,14 +222,14 @@ uint32_t walkPacket(const WideBvhNode* nodes, uint32_t root, const TraversalRay*
         if (active != 0 && current.count > 0) {
             for (; active != 0; active &= active - 1) {
                 const uint32_t lane = uint32_t(__builtin_ctz(active));
-                if (leaves[lane](current.child, current.count, tMax[lane])) found |= 1u << lane;
+                if (leaves[lane](current.child, current.count, tMax[lane])) laneFound(lane);
             }
         } else if (active != 0 && uint32_t(__builtin_popcount(active)) <= kAloneLanes) {
             for (; active != 0; active &= active - 1) {
                 const uint32_t lane = uint32_t(__builtin_ctz(active));
                 if ((walkWideBvh)(nodes, current.child, rays[lane], tMax[lane], leaves[lane],
-                                  NoTraversalCount{}, false))
-                    found |= 1u << lane;
+                                  NoTraversalCount{}, anyHit))
+                    laneFound(lane);
             }
         } else if (active != 0) {
             const WideBvhNode& node = nodes[current.child];
@@ -328,14 +335,14 @@ void simd_detail::walkTlasPacketAvx2(const BvhNode* nodes, const TraversalRay* r
 
 uint32_t simd_detail::walkTriangleWidePacketAvx2(const WideBvhNode* nodes, uint32_t root,
                                                  const TriangleBlock* blocks, const TraversalRay* rays,
-                                                 uint32_t lanes, float* tMax, Hit* hits) {
+                                                 uint32_t lanes, float* tMax, Hit* hits, bool anyHit) {
     static_assert(kRayPacketSize == 8, "one leaf functor a lane, listed below");
     avx2::Leaf leaves[kRayPacketSize] = {
-        {blocks, rays[0], hits[0], {}, false}, {blocks, rays[1], hits[1], {}, false},
-        {blocks, rays[2], hits[2], {}, false}, {blocks, rays[3], hits[3], {}, false},
-        {blocks, rays[4], hits[4], {}, false}, {blocks, rays[5], hits[5], {}, false},
-        {blocks, rays[6], hits[6], {}, false}, {blocks, rays[7], hits[7], {}, false}};
-    return avx2::walkPacket(nodes, root, rays, lanes, tMax, leaves);
+        {blocks, rays[0], hits[0], {}, anyHit}, {blocks, rays[1], hits[1], {}, anyHit},
+        {blocks, rays[2], hits[2], {}, anyHit}, {blocks, rays[3], hits[3], {}, anyHit},
+        {blocks, rays[4], hits[4], {}, anyHit}, {blocks, rays[5], hits[5], {}, anyHit},
+        {blocks, rays[6], hits[6], {}, anyHit}, {blocks, rays[7], hits[7], {}, anyHit}};
+    return avx2::walkPacket(nodes, root, rays, lanes, tMax, leaves, anyHit);
 }
 
 }  // namespace pt

@@ -117,8 +117,8 @@ std::vector<TracedRaySet> benchRays(Backend& backend, const Scene& scene, const 
     return sets;
 }
 
-// The CPU's closest hits one ray at a time against its 8-ray packets (packet_traversal.h), in
-// the same run, where the packets are on: what they buy, and that the hits are the same.
+// The CPU's rays one at a time against its 8-ray packets (packet_traversal.h; closest and any
+// hits), in the same run, where the packets are on: what they buy, and that the hits are the same.
 // Returns each set's single-ray rate: the sets' own where they were traced one by one.
 std::vector<double> benchPackets(Backend& backend, const Scene& scene, const std::vector<TracedRaySet>& sets,
                                  const BenchSettings& settings, BenchReport& report) {
@@ -135,7 +135,7 @@ std::vector<double> benchPackets(Backend& backend, const Scene& scene, const std
     syncSettled(backend, scene, SceneChanges::Settings);
     for (size_t i = 0; i < sets.size(); ++i) {
         const TracedRaySet& set = sets[i];
-        if (set.anyHit || set.rays->empty() || set.mraysPerSecond <= 0) continue;
+        if (set.rays->empty() || set.mraysPerSecond <= 0) continue;
         std::vector<Hit> hits;
         const double rate = tracedMrays(backend, set, settings.runs, hits);
         singleRates[i] = rate;

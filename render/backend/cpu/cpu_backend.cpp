@@ -321,15 +321,23 @@ std::vector<double> CpuBackend::traceRays(const std::vector<Ray>& rays, bool any
     if (!compiled_) return seconds;
     std::vector<Hit> results(rays.size());
     const RenderScene& scene = view_;
-    // Closest hits in packets of eight consecutive rays (neighbouring pixels' camera rays in
-    // bench's sets) where the toggle and the scene allow.
-    const bool packets = !anyHit && toggles_.rayPackets && packetWalkApplies(scene);
+    // Packets of eight consecutive rays (neighbouring pixels' rays in bench's sets) where the
+    // toggle and the scene allow.
+    const bool packets = toggles_.rayPackets && packetWalkApplies(scene);
     for (uint32_t run = 0; run < runs; ++run) {
         const auto start = Clock::now();
         tbb::parallel_for(
             tbb::blocked_range<size_t>(0, rays.size(), 1024), [&](const tbb::blocked_range<size_t>& r) {
                 for (size_t i = r.begin(); i < r.end(); ++i) {
-                    if (packets) {
+                    if (packets && anyHit) {
+                        const uint32_t n = uint32_t(std::min<size_t>(kRayPacketSize, r.end() - i));
+                        const uint32_t occluded = intersectAnyPacket(scene, &rays[i], n);
+                        for (uint32_t k = 0; k < n; ++k) {
+                            results[i + k] = Hit{};
+                            results[i + k].instance = occluded & (1u << k) ? 0u : Hit::kNoHit;
+                        }
+                        i += n - 1;
+                    } else if (packets) {
                         const uint32_t n = uint32_t(std::min<size_t>(kRayPacketSize, r.end() - i));
                         intersectClosestPacket(scene, &rays[i], n, &results[i]);
                         i += n - 1;

@@ -1,9 +1,10 @@
 // The CPU's 8-ray packets (render/bvh/packet_traversal.h): each ray of a packet gets exactly the
-// hit intersectClosest gives it alone (t, u, v, primitive and instance bit for bit), on soups
-// that stress the walk differently, for coherent packets (a camera's neighbouring pixels),
-// incoherent ones, packets of fewer than eight rays, finite segments and rays along axes; through
-// an instance's transform and through the merged world-space BLAS; and where the walk does not
-// apply, the rays are traced one by one.
+// hit intersectClosest gives it alone (t, u, v, primitive and instance bit for bit), and the
+// answer intersectAny gives it (also for segments that end at their closest hit or just past it),
+// on soups that stress the walk differently, for coherent packets (a camera's neighbouring
+// pixels), incoherent ones, packets of fewer than eight rays, finite segments and rays along axes;
+// through an instance's transform and through the merged world-space BLAS; and where the walk does
+// not apply, the rays are traced one by one.
 #include "render/bvh/packet_traversal.h"
 
 #include <gtest/gtest.h>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "render/bvh/bvh_test_util.h"
+#include "render/math/float_error.h"
 
 namespace pt {
 namespace {
@@ -70,19 +72,38 @@ bool sameHit(const Hit& a, const Hit& b) {
     return a.t == b.t && a.u == b.u && a.v == b.v && a.primitive == b.primitive && a.instance == b.instance;
 }
 
-// Traces `rays` (the first `count`) as a packet and one by one; returns the rays that differ
-// and adds the valid hits to `hits`.
+// Traces `rays` (the first `count`) as a packet and one by one, for closest hits and for any
+// hits (shadow rays: the finite segments among them end before some hits); returns the rays
+// that differ in either and adds the valid hits to `hits`.
 uint32_t packetDifferences(const RenderScene& scene, const std::vector<Ray>& rays, uint32_t count,
                            uint32_t& hits) {
     Hit packet[kRayPacketSize], single[kRayPacketSize];
     std::fill(packet, packet + kRayPacketSize, Hit{-1.0f, -1.0f, -1.0f, 7u, 7u});  // all overwritten
     intersectClosestPacket(scene, rays.data(), count, packet);
+    const uint32_t occluded = intersectAnyPacket(scene, rays.data(), count);
     uint32_t differ = 0;
     for (uint32_t i = 0; i < count; ++i) {
         intersectClosest(scene, rays[i], single[i]);
-        differ += !sameHit(packet[i], single[i]);
+        differ += !sameHit(packet[i], single[i]) ||
+                  ((occluded >> i) & 1u) != uint32_t(intersectAny(scene, rays[i]));
         hits += single[i].valid();
     }
+    // Shadow rays that end at their closest hit (t < tMax: only another surface at that t or
+    // nearer occludes them) and one float past it (occluded).
+    std::vector<Ray> atHit(rays.begin(), rays.begin() + count), pastHit = atHit;
+    for (uint32_t i = 0; i < count; ++i) {
+        if (!single[i].valid()) continue;
+        atHit[i].tMax = single[i].t;
+        pastHit[i].tMax = nextFloatUp(single[i].t);
+    }
+    for (const std::vector<Ray>* segments : {&atHit, &pastHit}) {
+        const uint32_t segmentsOccluded = intersectAnyPacket(scene, segments->data(), count);
+        for (uint32_t i = 0; i < count; ++i) {
+            differ += ((segmentsOccluded >> i) & 1u) != uint32_t(intersectAny(scene, (*segments)[i]));
+        }
+        differ += segmentsOccluded >> count != 0;
+    }
+    differ += occluded >> count != 0;  // no lane past the packet's rays
     return differ;
 }
 
