@@ -99,7 +99,10 @@ uint32_t packetDifferences(const RenderScene& scene, const std::vector<Ray>& ray
     for (const std::vector<Ray>* segments : {&atHit, &pastHit}) {
         const uint32_t segmentsOccluded = intersectAnyPacket(scene, segments->data(), count);
         for (uint32_t i = 0; i < count; ++i) {
-            differ += ((segmentsOccluded >> i) & 1u) != uint32_t(intersectAny(scene, (*segments)[i]));
+            const bool anyHit = intersectAny(scene, (*segments)[i]);
+            differ += ((segmentsOccluded >> i) & 1u) != uint32_t(anyHit);
+            // One float past its closest hit, a segment holds that hit.
+            differ += segments == &pastHit && single[i].valid() && !anyHit;
         }
         differ += segmentsOccluded >> count != 0;
     }

@@ -2,7 +2,8 @@
 // render/bvh/packet_traversal.h): the image, its variance and the rays counted are those of
 // one ray at a time, bit for bit, on a scene whose instances all merge into the world-space
 // BLAS, on the same instances under a TLAS, and on one mesh through its instance transform, at
-// a size that leaves tiles with partial packets.
+// a size that leaves tiles with partial packets; and traceRays' shadow rays in packets answer as
+// one at a time, merged and under a TLAS.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -92,6 +93,42 @@ TEST(CpuRayPackets, OneTransformedMeshRendersBitForBitAsOneRayAtATime) {
     ASSERT_NE(box, scene.instances.end());
     scene.instances = {*box};
     expectPacketsChangeNothing(scene);
+}
+
+// Occlusion of each ray by traceRays (Hit::instance 0: occluded), with packets on or off.
+std::vector<bool> occlusion(const Scene& scene, const std::vector<Ray>& rays, bool packets, bool merge) {
+    IntegratorToggles toggles;
+    toggles.rayPackets = packets;
+    toggles.mergeInstances = merge;
+    CpuBackend backend;
+    backend.setToggles(toggles);
+    backend.sync(scene, SceneChanges::All, {});
+    std::vector<Hit> hits;
+    backend.traceRays(rays, true, 1, &hits);
+    std::vector<bool> occluded;
+    for (const Hit& hit : hits) occluded.push_back(hit.valid());
+    return occluded;
+}
+
+TEST(CpuRayPackets, ShadowRaysInPacketsAnswerAsOneAtATime) {
+    if (supportedSimdLevel() != SimdLevel::Avx2) GTEST_SKIP() << "this processor runs no AVX2";
+    const Scene scene = roomCorner();
+    // Segments from a grid on the floor to the point light: the boxes shadow some of them. 101
+    // rays, so the last packet holds five.
+    std::vector<Ray> rays;
+    const Vec3 light(1, 1, 2);
+    for (int i = 0; i < 101; ++i) {
+        const Vec3 origin(-1.5f + 0.3f * float(i % 11), -0.999f, -0.9f + 0.3f * float(i / 11));
+        rays.push_back({origin, light - origin, 1.0f});
+    }
+    for (const bool merge : {true, false}) {
+        SCOPED_TRACE(merge ? "merged" : "under a TLAS");
+        const std::vector<bool> packets = occlusion(scene, rays, true, merge);
+        EXPECT_EQ(packets, occlusion(scene, rays, false, merge));
+        const auto shadowed = std::count(packets.begin(), packets.end(), true);
+        EXPECT_GT(shadowed, 0) << "some rays should be shadowed";
+        EXPECT_LT(shadowed, std::ptrdiff_t(rays.size())) << "some rays should reach the light";
+    }
 }
 
 }  // namespace
