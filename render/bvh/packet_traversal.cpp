@@ -112,12 +112,12 @@ struct TlasPacket {
 void visitTlasLeaf(void* context, uint32_t first, uint32_t count, uint32_t lanes) {
     TlasPacket& p = *static_cast<TlasPacket*>(context);
     if (p.anyHit) {
+        // A lane's tMax stays its ray's until it is occluded (then -infinity), so each entry is
+        // walked up to it in place.
         for (uint32_t i = first; i < first + count && (lanes &= ~p.occluded) != 0; ++i) {
             Hit found[kRayPacketSize];
-            float tMax[kRayPacketSize];
-            std::copy(p.tMax, p.tMax + kRayPacketSize, tMax);
             const uint32_t hit = traceEntry(p.scene, p.scene.tlasInstanceIndices[i], p.rays, p.world, lanes,
-                                            tMax, found, true);
+                                            p.tMax, found, true);
             p.occluded |= hit;
             for (uint32_t bits = hit; bits != 0; bits &= bits - 1) p.tMax[__builtin_ctz(bits)] = -kInf;
         }

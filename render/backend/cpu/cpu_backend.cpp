@@ -328,22 +328,24 @@ std::vector<double> CpuBackend::traceRays(const std::vector<Ray>& rays, bool any
         const auto start = Clock::now();
         tbb::parallel_for(
             tbb::blocked_range<size_t>(0, rays.size(), 1024), [&](const tbb::blocked_range<size_t>& r) {
+                // An any-hit answer as traceRays reports it.
+                const auto occlusion = [](bool occluded) {
+                    Hit hit{};
+                    hit.instance = occluded ? 0u : Hit::kNoHit;
+                    return hit;
+                };
                 for (size_t i = r.begin(); i < r.end(); ++i) {
-                    if (packets && anyHit) {
+                    if (packets) {
                         const uint32_t n = uint32_t(std::min<size_t>(kRayPacketSize, r.end() - i));
-                        const uint32_t occluded = intersectAnyPacket(scene, &rays[i], n);
-                        for (uint32_t k = 0; k < n; ++k) {
-                            results[i + k] = Hit{};
-                            results[i + k].instance = occluded & (1u << k) ? 0u : Hit::kNoHit;
+                        if (anyHit) {
+                            const uint32_t occluded = intersectAnyPacket(scene, &rays[i], n);
+                            for (uint32_t k = 0; k < n; ++k) results[i + k] = occlusion((occluded >> k) & 1u);
+                        } else {
+                            intersectClosestPacket(scene, &rays[i], n, &results[i]);
                         }
                         i += n - 1;
-                    } else if (packets) {
-                        const uint32_t n = uint32_t(std::min<size_t>(kRayPacketSize, r.end() - i));
-                        intersectClosestPacket(scene, &rays[i], n, &results[i]);
-                        i += n - 1;
                     } else if (anyHit) {
-                        results[i] = Hit{};
-                        results[i].instance = intersectAny(scene, rays[i]) ? 0u : Hit::kNoHit;
+                        results[i] = occlusion(intersectAny(scene, rays[i]));
                     } else {
                         intersectClosest(scene, rays[i], results[i]);
                     }
