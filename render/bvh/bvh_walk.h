@@ -100,7 +100,7 @@ constexpr float kMinDirection = 1e-30f;
 // differs from o, and pad * 1e30 is far beyond any distance in a scene.
 constexpr float kZeroAxisPad = 1.0f / (1 << 20);
 
-PT_HD TraversalRay makeTraversalRay(Vec3 origin, Vec3 direction) {
+PT_HD TraversalRay makeTraversalRay(const Vec3& origin, const Vec3& direction) {
     TraversalRay r;
     r.watertight = makeWatertightRay(origin, direction);
     r.direction = direction;

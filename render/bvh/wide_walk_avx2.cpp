@@ -24,6 +24,14 @@ bool simd_detail::walkTriangleWideBvhAvx2(const WideBvhNode* nodes, uint32_t roo
     return avx2::walkTriangleBlocks(nodes, root, blocks, ray, tMax, hit, stats, anyHit);
 }
 
+int simd_detail::intersectWideNodeAvx2(const WideBvhNode& node, const TraversalRay& ray, float tMax,
+                                       float* entry) {
+    alignas(32) float entries[WideBvhNode::kWidth];
+    const int hits = avx2::intersectWideNode(avx2::wideSlabRay(ray), node, tMax, entries);
+    for (uint32_t s = 0; s < WideBvhNode::kWidth; ++s) entry[s] = entries[s];
+    return hits;
+}
+
 }  // namespace pt
 
 #include "render/bvh/avx2_target_end.h"

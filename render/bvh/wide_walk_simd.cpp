@@ -23,7 +23,10 @@ const char* simdLevelName(SimdLevel level) { return level == SimdLevel::Avx2 ? "
 SimdLevel supportedSimdLevel() {
     // libgcc's cpuid check also asks the OS (XGETBV) whether it saves the 256-bit registers.
     __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2") ? SimdLevel::Avx2 : SimdLevel::Sse2;
+    // The AVX2 node test takes its plane distances as fused multiply-adds (wide_walk_avx2.h):
+    // every AVX2 processor made has FMA3, but a virtual machine may show one without the other.
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") ? SimdLevel::Avx2
+                                                                           : SimdLevel::Sse2;
 }
 
 SimdLevel wideWalkSimdLevel() { return chosenLevel().load(std::memory_order_relaxed); }
@@ -48,6 +51,13 @@ bool walkTriangleWideBvhSse2(const WideBvhNode* nodes, uint32_t root, const Tria
                              const TraversalRay& ray, float& tMax, Hit& hit, TraversalStats* stats,
                              bool anyHit) {
     return walkTriangleBlocks(nodes, root, blocks, ray, tMax, hit, stats, anyHit);
+}
+
+int intersectWideNodeSse2(const WideBvhNode& node, const TraversalRay& ray, float tMax, float* entry) {
+    alignas(16) float entries[WideBvhNode::kWidth];
+    const int hits = intersectWideNode(wideSlabRay(ray), node, tMax, entries);
+    for (uint32_t s = 0; s < WideBvhNode::kWidth; ++s) entry[s] = entries[s];
+    return hits;
 }
 
 }  // namespace simd_detail

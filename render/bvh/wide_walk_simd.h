@@ -53,6 +53,10 @@ bool walkTriangleWideBvhSse2(const WideBvhNode* nodes, uint32_t root, const Tria
 bool walkTriangleWideBvhAvx2(const WideBvhNode* nodes, uint32_t root, const TriangleBlock* blocks,
                              const TraversalRay& ray, float& tMax, Hit& hit, TraversalStats* stats,
                              bool anyHit);
+// One wide node's slab test at each level, for tests of its bounds: the slots `ray` enters
+// before tMax, as a bit mask, and their entry distances.
+int intersectWideNodeSse2(const WideBvhNode& node, const TraversalRay& ray, float tMax, float* entry);
+int intersectWideNodeAvx2(const WideBvhNode& node, const TraversalRay& ray, float tMax, float* entry);
 }  // namespace simd_detail
 
 }  // namespace pt

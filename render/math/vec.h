@@ -126,6 +126,24 @@ PT_HD float intAsFloat(int32_t i) {
 #endif
 }
 
+// c ? a : b without a branch, where c is data that a branch would mispredict (a ray's largest
+// axis, the sign of its direction: coin tosses for diffuse bounces). GCC turns such selects of
+// floats into jumps; on the host the bits are masked in instead. The device's selects cost no
+// branch.
+PT_HD float selectFloat(bool c, float a, float b) {
+#if defined(__CUDA_ARCH__)
+    return c ? a : b;
+#else
+    const int32_t mask = -int32_t(c);
+    return intAsFloat((floatAsInt(a) & mask) | (floatAsInt(b) & ~mask));
+#endif
+}
+
+// v[i] for i in 0..2 without a branch on i (selectFloat). Through operator[], GCC also spilled
+// v to the stack, whose 8-byte reload across two 4-byte stores stalled on store forwarding (a
+// third of makeTraversalRay's samples under perf).
+PT_HD float componentAt(Vec3 v, int i) { return selectFloat(i == 0, v.x, selectFloat(i == 1, v.y, v.z)); }
+
 constexpr float kPi = 3.14159265358979323846f;
 constexpr float kInvPi = 0.31830988618379067154f;
 constexpr float kInf = __builtin_huge_valf();
