@@ -16,7 +16,7 @@ template <class LeafFn, class Count>
 bool walkWideBvh(const WideBvhNode* nodes, uint32_t root, const TraversalRay& ray, float& tMax, LeafFn& leaf,
                  Count count, bool anyHit) {
     const WideSlabRay slab = (wideSlabRay)(ray);
-    WideWalkEntry stack[kWideStackSize];
+    WideWalkEntry stack[kWideStackSize + 1];
     uint32_t size = 0;
     WideWalkEntry current{root, 0, 0.0f};
     bool found = false;
@@ -41,6 +41,23 @@ bool walkWideBvh(const WideBvhNode* nodes, uint32_t root, const TraversalRay& ra
                     slot = uint32_t(__builtin_ctz(unsigned(hits)));
                 }
                 current = {node.child[slot], node.count[slot], entry[slot]};
+                continue;
+            }
+            const int rest = hits & (hits - 1);  // the hits but the lowest slot's
+            if (hits != 0 && (rest & (rest - 1)) == 0) {
+                // One or two children hit (most nodes): the nearer is taken next and the other
+                // pushed, by selects rather than the sort's data-dependent jumps (one thread,
+                // diffuse rays: 8.17 to 8.72 Mrays/s on a 10k-triangle sphere, 4.74 to 5.14 on the
+                // 1M one), the higher slot first on a tie, as the sort orders them. Any-hit walks
+                // keep the loop above: through here their shadow rays ran 5% slower.
+                const uint32_t low = uint32_t(__builtin_ctz(unsigned(hits)));
+                const uint32_t high = rest != 0 ? uint32_t(__builtin_ctz(unsigned(rest))) : low;
+                const bool highFirst = entry[high] <= entry[low];
+                const uint32_t first = highFirst ? high : low, second = highFirst ? low : high;
+                // Written even for one child, and not counted: the stack keeps a spare entry.
+                stack[size] = {node.child[second], node.count[second], entry[second]};
+                size += rest != 0;
+                current = {node.child[first], node.count[first], entry[first]};
                 continue;
             }
             if (hits != 0) {
