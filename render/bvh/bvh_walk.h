@@ -89,7 +89,7 @@ PT_HD float maxFast(float a, float b) { return a > b ? a : b; }
 struct TraversalRay {
     WatertightRay watertight;  // origin and shear of the triangle test
     Vec3 direction;
-    Vec3 invDirection;  // finite and nonzero
+    Vec3 invDirection;  // finite; nonzero but for an infinite direction component
     Vec3 slabOriginLo;  // where lower box planes are measured from (see above)
     Vec3 slabOriginHi;  // where upper box planes are measured from
 };

@@ -7,6 +7,7 @@
 #include <immintrin.h>
 
 #include <cstddef>
+#include <limits>
 
 #include "render/bvh/wide_walk.h"
 #include "render/bvh/wide_walk_simd.h"

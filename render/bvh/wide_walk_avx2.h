@@ -20,42 +20,51 @@
 #include "render/bvh/lane_ops.h"
 #include "render/bvh/triangle_block_intersect.h"
 #include "render/bvh/wide_walk.h"
-#include "render/math/float_error.h"
 
 namespace pt {
 namespace avx2 {
 
 // The ray as the 256-bit test takes it. Per axis: which of a node's two planes the ray meets
 // first (its lower one where the inverse direction is positive, else its upper one; the
-// inverse is never 0 or NaN, bvh_walk.h), as a byte offset of that plane array in the node;
-// and each plane's distance as one fused multiply-add, t = p * inverse + offset, where
-// offset = -origin * inverse (the plane's slab origin). pt::intersectWideBoxes subtracts and
-// then multiplies: two dependent roundings, and a multiply of the exit by kSlabExitScale after
-// the minimum, on the path from a node's load to the choice of the next node, which is the
-// walk's critical path (the node's test decides which node is loaded next). The FMA form, with
-// the exit planes' inverse scaled once per ray and unused slots culled by their empty boxes
-// (below), took bench's diffuse rays on a 10k-triangle sphere from 7.63 to 8.38 Mrays/s and
-// its shadow rays from 8.72 to 9.21 (one thread pinned to a core, three alternated runs each).
+// inverse is 0 only for an infinite direction component, which `fused` turns away), as a byte offset of that
+// plane array in the node; and each plane's distance as one fused multiply-add, t = p * inverse + offset,
+// where offset = -origin * inverse (the plane's slab origin). pt::intersectWideBoxes subtracts and then
+// multiplies: two dependent roundings, and a multiply of the exit by kSlabExitScale after the minimum, on the
+// path from a node's load to the choice of the next node, which is the walk's critical path (the node's test
+// decides which node is loaded next). The FMA form, with the exit planes' inverse scaled once per ray and
+// unused slots culled by their empty boxes (below), took bench's diffuse rays on a 10k-triangle sphere
+// from 7.63 to 8.38 Mrays/s and its shadow rays from 8.72 to 9.21 (one thread pinned to a core, three
+// alternated runs each).
 //
-// It stays conservative, so the hits stay exact (the leaves decide them). With u = 2^-24 and
-// T the exact distance to a plane from its slab origin (bvh_walk.h's padded origins):
-// - the near offset is at most -origin * inverse (wideSlabRay), so the entry computed is at
-//   most T (1 + u)^2 where T >= 0 (the inverse's rounding and the FMA's), and at most 0 where
-//   T < 0 (rounding is monotonic);
-// - the exit planes' inverse is inverse * kSlabExitScale rounded, and their offset at least
-//   -origin * that inverse, so the exit computed is at least T S (1 - u)^3 where T >= 0,
-//   S = kSlabExitScale = 1 + 6u as a float;
-// - S (1 - u)^3 >= (1 + u)^2 (1 + 3u - O(u^2) against 1 + 2u + u^2), so a box the ray enters
-//   within [0, tMax] is never culled; tMax keeps pt's slack, tMax * S.
-// Offsets must be finite: an infinite one would meet an unused slot's infinite plane
-// (wide_bvh.cpp's emptyNode) as inf - inf. A ray whose offsets are not (|origin * inverse|
-// beyond 3.4e38: coordinates beyond 3.4e8 along a zero axis, whose inverse is 1e30) takes
-// pt::intersectWideBoxes' subtract-then-multiply test instead (`fused` false).
+// It stays conservative, so the hits stay exact (the leaves decide them). With u = 2^-24, S =
+// kSlabExitScale = 1 + 6u as a float, and T the exact distance to a plane from its slab origin
+// (bvh_walk.h's padded origins), on an axis whose direction is not a zero one:
+// - the near offset is at most -origin * inverse (wideSlabRay), so the near FMA's exact value
+//   p * inverse + offset is at most (p - origin) * inverse = T (1 + e), |e| <= u, the inverse's
+//   rounding;
+// - the exit planes' inverse is inverse * S rounded and their offset at least -origin * that
+//   inverse, so the far FMA's exact value is at least T S (1 + e)(1 + e'), at least T S (1 - u)^2
+//   where T >= 0;
+// - where the ray enters the box, max(0, near T) <= far T, and S (1 - u)^2 >= 1 + u (1 + 4u -
+//   O(u^2) against 1 + u): every near value before rounding is at most every far one, and at
+//   most tMax (1 + u) <= tMax * S, and rounding is monotonic (denormals too), so the rounded
+//   values compare the same way and no box the ray enters within [0, tMax] is culled. The
+//   entries, rounded from at most T (1 + u), stay what the walk's pop test (entry > tMax * S)
+//   expects.
+// A zero axis (inverse +-1e30) is conservative by sign, as in pt's test: inside the padded slab
+// the near distance is below 0 and the far one huge; the offsets' slack (below) widens the pad
+// by about half, which costs nothing a finite tMax does not cull.
+// The fused test needs finite offsets and a nonzero inverse: an infinite offset would meet an
+// unused slot's infinite plane (wide_bvh.cpp's emptyNode) as inf - inf, and an inverse of 0 (an
+// infinite direction component) as inf * 0, NaNs that min and max drop, entering the slot. A ray
+// with either (|origin * inverse| beyond 3.4e38: coordinates beyond 3.4e8 along a zero axis,
+// whose inverse is 1e30) takes pt::intersectWideBoxes' subtract-then-multiply test instead,
+// whose mask culls unused slots (`fused` false).
 struct WideSlabRay {
     __m256 nearOffsetX, nearOffsetY, nearOffsetZ, farOffsetX, farOffsetY, farOffsetZ;
     __m256 invX, invY, invZ, farInvX, farInvY, farInvZ;
     uint32_t nearX, nearY, nearZ, farX, farY, farZ;
-    bool fused;               // the offsets are finite: the FMA test applies
+    bool fused;               // finite offsets, nonzero inverses: the FMA test applies
     const TraversalRay* ray;  // for the test of a ray they are not
 };
 
@@ -85,9 +94,11 @@ inline WideSlabRay wideSlabRay(const TraversalRay& ray) {
     _mm_store_ps(farOffset, _mm_add_ps(_mm_sub_ps(_mm_setzero_ps(), farProduct), slack(farProduct)));
     _mm_store_ps(farInv, farInverse);
     const __m128 infinity = _mm_set1_ps(std::numeric_limits<float>::infinity());
-    const int finite =
-        _mm_movemask_ps(_mm_and_ps(_mm_cmplt_ps(_mm_and_ps(_mm_load_ps(nearOffset), magnitude), infinity),
-                                   _mm_cmplt_ps(_mm_and_ps(_mm_load_ps(farOffset), magnitude), infinity)));
+    // Finite offsets, and an inverse that is not 0 (NaN compares false on both).
+    const __m128 finiteOffsets =
+        _mm_and_ps(_mm_cmplt_ps(_mm_and_ps(_mm_load_ps(nearOffset), magnitude), infinity),
+                   _mm_cmplt_ps(_mm_and_ps(_mm_load_ps(farOffset), magnitude), infinity));
+    const int finite = _mm_movemask_ps(_mm_and_ps(finiteOffsets, _mm_cmpneq_ps(inverse, _mm_setzero_ps())));
     const int positiveAxes = _mm_movemask_ps(positive);
     WideSlabRay r;
     uint32_t nearPlane[3], farPlane[3];

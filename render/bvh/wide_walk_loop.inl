@@ -55,6 +55,7 @@ bool walkWideBvh(const WideBvhNode* nodes, uint32_t root, const TraversalRay& ra
                 const bool highFirst = entry[high] <= entry[low];
                 const uint32_t first = highFirst ? high : low, second = highFirst ? low : high;
                 // Written even for one child, and not counted: the stack keeps a spare entry.
+                assert(size + (rest != 0) <= kWideStackSize && "BVH deeper than the wide traversal stack");
                 stack[size] = {node.child[second], node.count[second], entry[second]};
                 size += rest != 0;
                 current = {node.child[first], node.count[first], entry[first]};

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "render/bvh/bvh_test_util.h"
@@ -103,15 +104,17 @@ TEST(WideWalkSimd, EveryLevelWalksTheSameNodesToTheSameHits) {
 }
 
 // The node test at each level against exact arithmetic: eight boxes a node, each built
-// around a point of the ray (which it must enter, whatever the roundings), off the ray or past
-// tMax by a clear margin (which it must cull), or unused (an empty box, never entered). Rays
-// from origins of every scale, with zero axes, and from 1e9 along a zero axis, whose plane
-// offsets overflow and which AVX2 tests unfused (wide_walk_avx2.h).
+// around a point of the ray (which it must enter, whatever the roundings, at a distance no
+// farther than that point's), off the ray, behind its origin or past tMax by a clear margin
+// (which it must cull), or unused (an empty box, never entered). Rays from origins of every
+// scale, with zero axes, and from 1e9 along a zero axis, whose plane offsets overflow and which
+// AVX2 tests unfused (wide_walk_avx2.h).
 TEST(WideWalkSimd, NodeTestsEnterEveryBoxOnTheRayAndCullThoseOffIt) {
     Rng rng(2121);
     const double kScales[] = {1e-3, 1.0, 1e3, 1e6, 1e9};
     const bool avx2 = supportedSimdLevel() == SimdLevel::Avx2;
     uint32_t missedEntered[2] = {0, 0}, keptMissed[2] = {0, 0}, enteredUnused[2] = {0, 0};
+    uint32_t entryBeyond[2] = {0, 0};
     uint32_t onRay = 0, offRay = 0;
     for (int i = 0; i < 20000; ++i) {
         const double scale = kScales[rng.index(5)];
@@ -122,9 +125,10 @@ TEST(WideWalkSimd, NodeTestsEnterEveryBoxOnTheRayAndCullThoseOffIt) {
         const TraversalRay ray = makeTraversalRay(origin, direction);
         const double reach = std::min(double(tMax), 4.0 * scale);
         WideBvhNode node{};
-        enum Kind { kOnRay, kOffRay, kPastTMax, kUnused } kinds[WideBvhNode::kWidth];
+        enum Kind { kOnRay, kOffRay, kBehind, kPastTMax, kUnused } kinds[WideBvhNode::kWidth];
+        double pointAt[WideBvhNode::kWidth];
         for (uint32_t s = 0; s < WideBvhNode::kWidth; ++s) {
-            Kind kind = Kind(rng.index(4));
+            Kind kind = Kind(rng.index(5));
             if (kind == kPastTMax && tMax == kInf) kind = kOffRay;
             kinds[s] = kind;
             node.child[s] = 0, node.count[s] = kind == kUnused ? WideBvhNode::kEmpty : 1u;
@@ -133,11 +137,15 @@ TEST(WideWalkSimd, NodeTestsEnterEveryBoxOnTheRayAndCullThoseOffIt) {
                 node.hiX[s] = node.hiY[s] = node.hiZ[s] = -kInf;
                 continue;
             }
-            // A point of the exact ray, in double, and a box around it: for one on the ray, a
+            // A point of the exact line, in double, and a box around it: for one on the ray, a
             // margin far above double's rounding (and some boxes flat on an axis); off the ray,
-            // moved away across the direction by more than the box's half diagonal; past tMax,
-            // a hundredth of tMax beyond it.
-            const double t = kind == kPastTMax ? double(tMax) * 1.01 + 1e-3 * scale : rng.uniform() * reach;
+            // moved away across the direction by more than the box's half diagonal; behind the
+            // origin, smaller than its distance along the direction's largest axis, so that
+            // the ray leaves that slab before t = 0; past tMax, a hundredth of tMax beyond.
+            const double t = kind == kPastTMax ? double(tMax) * 1.01 + 1e-3 * scale
+                             : kind == kBehind ? -(1e-3 * scale + 1e-5 + rng.uniform() * reach)
+                                               : rng.uniform() * reach;
+            pointAt[s] = t;
             double point[3], away[3] = {0.0, 0.0, 0.0}, half = 0.0;
             for (int a = 0; a < 3; ++a) point[a] = double(origin[a]) + t * double(direction[a]);
             if (kind == kOffRay) {
@@ -147,6 +155,9 @@ TEST(WideWalkSimd, NodeTestsEnterEveryBoxOnTheRayAndCullThoseOffIt) {
                 const double gap = 1e-3 * (scale + t) + 1e-5;
                 for (int a = 0; a < 3; ++a) away[a] = double(side[a]) * gap;
                 half = 0.25 * gap;
+            } else if (kind == kBehind) {
+                const Vec3 a = vabs(direction);
+                half = -0.25 * t * double(std::max(a.x, std::max(a.y, a.z)));
             } else if (kind == kPastTMax) {
                 half = 1e-4 * double(tMax);
             } else {
@@ -173,7 +184,12 @@ TEST(WideWalkSimd, NodeTestsEnterEveryBoxOnTheRayAndCullThoseOffIt) {
             for (uint32_t s = 0; s < WideBvhNode::kWidth; ++s) {
                 const bool entered = hits >> s & 1;
                 missedEntered[level] += kinds[s] == kOnRay && !entered;
-                keptMissed[level] += (kinds[s] == kOffRay || kinds[s] == kPastTMax) && entered;
+                // The exact entry is at most the point's distance; the test's, rounded up to a
+                // few float steps beyond it.
+                entryBeyond[level] +=
+                    kinds[s] == kOnRay && entered &&
+                    !(entry[s] >= 0.0f && double(entry[s]) <= pointAt[s] * (1.0 + 1e-6) + 1e-30);
+                keptMissed[level] += kinds[s] != kOnRay && kinds[s] != kUnused && entered;
                 enteredUnused[level] += kinds[s] == kUnused && entered;
             }
         }
@@ -181,11 +197,37 @@ TEST(WideWalkSimd, NodeTestsEnterEveryBoxOnTheRayAndCullThoseOffIt) {
     for (int level = 0; level < (avx2 ? 2 : 1); ++level) {
         SCOPED_TRACE(level ? "AVX2" : "SSE2");
         EXPECT_EQ(missedEntered[level], 0u) << "boxes the ray enters, culled";
-        EXPECT_EQ(keptMissed[level], 0u) << "boxes off the ray or past tMax, entered";
+        EXPECT_EQ(entryBeyond[level], 0u) << "entries beyond the point the box was built around";
+        EXPECT_EQ(keptMissed[level], 0u) << "boxes off the ray, behind it or past tMax, entered";
         EXPECT_EQ(enteredUnused[level], 0u) << "unused slots entered";
     }
-    EXPECT_GT(onRay, 30000u);
-    EXPECT_GT(offRay, 30000u);
+    EXPECT_GT(onRay, 20000u);
+    EXPECT_GT(offRay, 60000u);
+}
+
+// Directions with infinite components (an inverse of 0, whose plane distances are inf * 0 =
+// NaN) and NaN ones: an unused slot is never entered at either level, however the NaNs fall.
+TEST(WideWalkSimd, NodeTestsNeverEnterUnusedSlotsOfNaNRays) {
+    const float inf = kInf, nan = std::numeric_limits<float>::quiet_NaN();
+    const Vec3 directions[] = {{1.0f, inf, inf},    {inf, inf, inf},   {-inf, 0.0f, 1.0f},
+                               {0.0f, -inf, -0.0f}, {nan, 1.0f, 0.0f}, {inf, nan, -inf}};
+    WideBvhNode node{};
+    for (uint32_t s = 0; s < WideBvhNode::kWidth; ++s) {
+        node.loX[s] = node.loY[s] = node.loZ[s] = kInf;
+        node.hiX[s] = node.hiY[s] = node.hiZ[s] = -kInf;
+        node.count[s] = WideBvhNode::kEmpty;
+    }
+    const bool avx2 = supportedSimdLevel() == SimdLevel::Avx2;
+    for (const Vec3& direction : directions) {
+        for (const float tMax : {1.0f, kInf}) {
+            const TraversalRay ray = makeTraversalRay(Vec3(0.25f, -0.5f, 2.0f), direction);
+            float entry[WideBvhNode::kWidth];
+            EXPECT_EQ(simd_detail::intersectWideNodeSse2(node, ray, tMax, entry), 0);
+            if (avx2) {
+                EXPECT_EQ(simd_detail::intersectWideNodeAvx2(node, ray, tMax, entry), 0);
+            }
+        }
+    }
 }
 
 }  // namespace
