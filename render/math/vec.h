@@ -139,9 +139,8 @@ PT_HD float selectFloat(bool c, float a, float b) {
 #endif
 }
 
-// v[i] for i in 0..2 without a branch on i (selectFloat). Through operator[], GCC also spilled
-// v to the stack, whose 8-byte reload across two 4-byte stores stalled on store forwarding (a
-// third of makeTraversalRay's samples under perf).
+// v[i] for i in 0..2 without a branch on i (selectFloat), where operator[]'s selects become
+// jumps.
 PT_HD float componentAt(Vec3 v, int i) { return selectFloat(i == 0, v.x, selectFloat(i == 1, v.y, v.z)); }
 
 constexpr float kPi = 3.14159265358979323846f;
