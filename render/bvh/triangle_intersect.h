@@ -27,18 +27,13 @@ PT_HD WatertightRay makeWatertightRay(const Vec3& origin, const Vec3& direction)
     const bool xOverY = a.x > a.y, xOverZ = a.x > a.z, yOverZ = a.y > a.z;
     // maxDimension(a), as integer arithmetic on the comparisons.
     const int kz = 2 - 2 * int(xOverY & xOverZ) - int(!xOverY & yOverZ);
-    const float dz = componentAt(direction, kz);
-#if defined(__CUDA_ARCH__)
-    const int next = kz + 1 - 3 * int(kz == 2), afterNext = next + 1 - 3 * int(next == 2);
-    const int kx = dz < 0.0f ? afterNext : next, ky = dz < 0.0f ? next : afterNext;
-#else
     // The next axes after kz in cyclic order, read from two-bit fields (0 -> 1, 2; 1 -> 2, 0;
-    // 2 -> 0, 1) and swapped by masks for a negative direction[kz]: written as the device's
-    // selects above, GCC made both jumps, the second mispredicted for half the diffuse bounces.
+    // 2 -> 0, 1) and swapped by masks for a negative direction[kz]: written as selects, GCC
+    // made both jumps, the second mispredicted for half the diffuse bounces.
     const int next = (0x09 >> (2 * kz)) & 3, afterNext = (0x12 >> (2 * kz)) & 3;
+    const float dz = componentAt(direction, kz);
     const int swap = (next ^ afterNext) & -int(dz < 0.0f);
     const int kx = next ^ swap, ky = afterNext ^ swap;
-#endif
     const float sz = 1.0f / dz;
     return {origin, kx, ky, kz, componentAt(direction, kx) * sz, componentAt(direction, ky) * sz, sz};
 }
