@@ -89,15 +89,16 @@ inline WideSlabRay wideSlabRay(const TraversalRay& ray) {
         return _mm_add_ps(_mm_mul_ps(_mm_and_ps(v, magnitude), _mm_set1_ps(0x1p-21f)),
                           _mm_set1_ps(0x1p-149f));
     };
+    const __m128 nearOffsets = _mm_sub_ps(_mm_sub_ps(_mm_setzero_ps(), nearProduct), slack(nearProduct));
+    const __m128 farOffsets = _mm_add_ps(_mm_sub_ps(_mm_setzero_ps(), farProduct), slack(farProduct));
     alignas(16) float nearOffset[4], farOffset[4], farInv[4];
-    _mm_store_ps(nearOffset, _mm_sub_ps(_mm_sub_ps(_mm_setzero_ps(), nearProduct), slack(nearProduct)));
-    _mm_store_ps(farOffset, _mm_add_ps(_mm_sub_ps(_mm_setzero_ps(), farProduct), slack(farProduct)));
+    _mm_store_ps(nearOffset, nearOffsets);
+    _mm_store_ps(farOffset, farOffsets);
     _mm_store_ps(farInv, farInverse);
     const __m128 infinity = _mm_set1_ps(std::numeric_limits<float>::infinity());
     // Finite offsets, and an inverse that is not 0 (NaN compares false on both).
-    const __m128 finiteOffsets =
-        _mm_and_ps(_mm_cmplt_ps(_mm_and_ps(_mm_load_ps(nearOffset), magnitude), infinity),
-                   _mm_cmplt_ps(_mm_and_ps(_mm_load_ps(farOffset), magnitude), infinity));
+    const __m128 finiteOffsets = _mm_and_ps(_mm_cmplt_ps(_mm_and_ps(nearOffsets, magnitude), infinity),
+                                            _mm_cmplt_ps(_mm_and_ps(farOffsets, magnitude), infinity));
     const int finite = _mm_movemask_ps(_mm_and_ps(finiteOffsets, _mm_cmpneq_ps(inverse, _mm_setzero_ps())));
     const int positiveAxes = _mm_movemask_ps(positive);
     WideSlabRay r;
