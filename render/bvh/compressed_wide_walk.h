@@ -187,13 +187,19 @@ PT_HD uint32_t inVisitingOrder(uint32_t slotBits, uint32_t firstSlot) {
 PT_HD uint32_t leafPrimitiveBits(uint32_t meta) { return ((1u << (meta >> 5)) - 1u) << (meta & 31u); }
 
 // The hits of the slots whose bits are set in `slotHits`, sorted into interior children and
-// leaf primitives.
+// leaf primitives. The leaves' bits are gathered for the leaf slots hit alone: the GPU's test
+// gathered them for every slot in its loop (about six operations of a slot's forty, by count in
+// the source), where a node's leaf slots hit are few; gathered here, bench's rays of the 1M
+// sphere at 1080p on an H200 ran 1.08x, 1.15x and 1.33x as fast as the binary walk's (primary,
+// diffuse, shadow), from 1.01x, 1.00x and 1.21x. The meta word is chosen by a select: indexed,
+// node.w[6 + half] put the header in local memory.
 PT_HD ChildHits classifyHits(const CompressedWalkRay& r, const CompressedNodeHeader& node,
                              uint32_t slotHits) {
     ChildHits hits{inVisitingOrder(slotHits & (node.w[3] >> 24), r.firstSlot), 0u};
     for (uint32_t leaves = slotHits & ~(node.w[3] >> 24); leaves != 0; leaves &= leaves - 1) {
         const uint32_t slot = lowestBit(leaves);
-        hits.primitives |= leafPrimitiveBits((node.w[6 + (slot >> 2)] >> (8 * (slot & 3u))) & 0xffu);
+        const uint32_t metas = slot >= 4 ? node.w[7] : node.w[6];
+        hits.primitives |= leafPrimitiveBits((metas >> (8 * (slot & 3u))) & 0xffu);
     }
     return hits;
 }
@@ -241,15 +247,12 @@ PT_HD ChildHits intersectCompressedChildren(const CompressedWalkRay& r, const Co
     const NodePlanes p = nodePlanes(r, node);
     const Vec3 scale = p.scale, nearOffset = p.nearOffset, farOffset = p.farOffset;
     const float limit = tMax * kSlabExitScale;
-    // Branch-free: each slot sets its hit bit and, if a leaf, its primitives' bits (interior
-    // slots' metas are 0); the interior bits are renumbered once at the end.
-    uint32_t slotHits = 0, primitives = 0;
+    uint32_t slotHits = 0;
     // Half a node at a time: unrolled, the compiler loads both halves' boxes up front and keeps
     // them live (84 registers against 72 in the one-instance ray kernel).
     PT_NO_UNROLL
     for (uint32_t half = 0; half < 2; ++half) {
         const HalfNodeBoxes b = loadHalfBoxes(nodes, index, half, r.negative);
-        const uint32_t meta = half ? node.w[7] : node.w[6];  // a select: w[6 + half] put the header in memory
         for (uint32_t k = 0; k < 4; ++k) {
             const float x0 = fmaf(byteAsFloat(b.nearX, k), scale.x, nearOffset.x);
             const float x1 = fmaf(byteAsFloat(b.farX, k), scale.x, farOffset.x);
@@ -259,12 +262,10 @@ PT_HD ChildHits intersectCompressedChildren(const CompressedWalkRay& r, const Co
             const float z1 = fmaf(byteAsFloat(b.farZ, k), scale.z, farOffset.z);
             const float tNear = maxFast(maxFast(x0, y0), maxFast(z0, 0.0f));
             const float tFar = minFast(x1, minFast(y1, z1)) * kSlabExitScale;
-            const bool hit = tNear <= minFast(tFar, limit);
-            slotHits |= uint32_t(hit) << (4 * half + k);
-            primitives |= hit ? leafPrimitiveBits((meta >> (8 * k)) & 0xffu) : 0u;
+            slotHits |= uint32_t(tNear <= minFast(tFar, limit)) << (4 * half + k);
         }
     }
-    return {inVisitingOrder(slotHits & (node.w[3] >> 24), r.firstSlot), primitives};
+    return classifyHits(r, node, slotHits);
 }
 #endif
 
