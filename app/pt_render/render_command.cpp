@@ -171,6 +171,12 @@ void writeStats(const RenderRequest& r, const Backend& backend, double loadSecon
     j["features"] = featureNames(s.features);
     j["kernel_variant"] = s.kernelVariant;  // "" where the code is not specialised (CPU)
     j["kernel_features"] = featureNames(s.kernelFeatures);
+    if (!s.schedule.empty()) {  // GPU backends: which schedule ran, and under auto what each measured
+        j["schedule"] = s.schedule;
+        if (s.megakernelRate > 0.0) j["megakernel_spp_per_s"] = s.megakernelRate;
+        if (s.wavefrontRate > 0.0) j["wavefront_spp_per_s"] = s.wavefrontRate;
+        if (!s.walk.empty()) j["walk"] = s.walk;  // compressed 8-wide or binary BLAS nodes
+    }
     j["scene"] = r.scenePath;
     writeTextAtomically(r.statsPath, j.dump(2) + "\n");
 }

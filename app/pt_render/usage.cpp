@@ -95,7 +95,8 @@ constexpr const char* kToggleText =
   --megakernel | --wavefront, --regeneration (megakernel: a thread whose path ends starts the
   next at once), --no-compaction, --sort-materials | --no-sort-materials,
   --no-first-hit-cache, --rebuild-ratio R (refit until SAH cost exceeds R x the built one)
-  --gpu-wide-bvh (the GPU walks compressed 8-wide BLASes), --no-gpu-first-build (the GPU's
+  --no-gpu-wide-bvh (the GPU's BLASes get no compressed 8-wide nodes: it walks the binary
+  ones; on by default, where the auto schedule times both walks), --no-gpu-first-build (the GPU's
   first frame waits for the host's SAH trees of large meshes, instead of walking trees built
   on the GPU while those build behind it), --no-ploc (the GPU builds BLASes, for first frames
   and rebuilds, as LBVHs instead of by H-PLOC: faster to build, 1.09-1.21x the binned SAH cost

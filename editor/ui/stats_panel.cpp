@@ -63,6 +63,7 @@ void drawFeatures(const BackendStats& s) {
     } else {
         ImGui::Text("Schedule: %s", s.schedule.c_str());
     }
+    if (!s.walk.empty()) ImGui::Text("BVH walk: %s nodes", s.walk.c_str());
 }
 
 float meanFrameMillis(const EditorUi& ui) {

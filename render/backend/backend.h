@@ -65,6 +65,9 @@ struct BackendStats {
     // auto schedule times both) and, under auto, the rates it measured (spp/s; 0: not yet).
     std::string schedule;
     double megakernelRate = 0.0, wavefrontRate = 0.0;
+    // GPU backends with compressed 8-wide BLASes: the walk that runs ("compressed" or "binary",
+    // as the auto schedule's trial decided; "" while it measures, and where there are none).
+    std::string walk;
 };
 
 // What a backend can do, for front ends that show, time or report what applies to it (rather

@@ -13,43 +13,66 @@
 // wavefront traced 2.5 times the samples in equal time. So the caller's key includes the wave
 // size, trials run whole waves, and each key's decision is kept for when it comes back (the
 // editor alternates one-pass steps after edits with longer ones).
+// Where the scene has compressed 8-wide BLASes, the trial times each schedule with both walks
+// (PassSchedule), and the rest run the fastest of the four.
 #include <cstdint>
 #include <string>
 #include <unordered_map>
 
 namespace pt {
 
+// How a pass runs: its schedule, and whether its kernels walk the BLASes' compressed 8-wide
+// nodes (IntegratorToggles::gpuWideBvh) or their binary ones. Both walks find the same hits, so
+// the images are equal; which is faster depends on the schedule and the scene (measured on an
+// H200 at 1280x720: the compressed walk traced a 64-instance field 9% faster in the wavefront,
+// yet 10% slower in the megakernel, which ran it fastest).
+struct PassSchedule {
+    bool megakernel = true;
+    bool compressedWalk = false;
+};
+
 class ScheduleChooser {
 public:
-    // Passes of each schedule in a trial; each schedule's fastest counts, so that its first
-    // pass's warm-up (buffers, caches) does not decide.
+    // Passes of each schedule (and walk) in a trial; each one's fastest counts, so that its
+    // first pass's warm-up (buffers, caches) does not decide.
     static constexpr uint32_t kTrialPassesEach = 2;
 
     // What the decision holds for (features, image size, depth, toggles that change speed,
-    // samples a wave); a key not seen before starts a new trial, one seen before has its
-    // trial or decision back.
-    void setKey(uint64_t key);
-    bool decided() const {
-        return trial_.megakernelPasses >= kTrialPassesEach && trial_.wavefrontPasses >= kTrialPassesEach;
-    }
-    // The schedule of the next pass: alternating during the trial, then the faster one.
-    bool nextIsMegakernel() const;
+    // samples a wave, whether the scene has compressed nodes); a key not seen before starts a
+    // new trial, one seen before has its trial or decision back. `tryCompressedWalk`: the
+    // scene has compressed nodes, so the trial times both walks under each schedule.
+    void setKey(uint64_t key, bool tryCompressedWalk = false);
+    bool decided() const;
+    // The next pass: the trial's ways in turn, then the fastest.
+    PassSchedule next() const;
     // One timed trial pass (a wave) and the seconds it took per sample a pixel.
-    void record(bool megakernel, double secondsPerSample);
+    void record(PassSchedule pass, double secondsPerSample);
 
-    // Samples per pixel per second as measured (0 until the schedule has run a trial pass).
-    double megakernelRate() const { return rate(trial_.megakernelSeconds); }
-    double wavefrontRate() const { return rate(trial_.wavefrontSeconds); }
+    // Samples per pixel per second as measured, of each schedule's faster walk (0 until the
+    // schedule has run a trial pass).
+    double megakernelRate() const;
+    double wavefrontRate() const;
     // "megakernel", "wavefront", or "measuring" during the trial.
     std::string choice() const;
+    // "compressed" or "binary" once decided where the trial timed both walks; "" otherwise.
+    std::string walkChoice() const;
 
 private:
+    // The ways a pass can run, in the order a trial tries them: megakernel and wavefront on the
+    // binary nodes, then the same on the compressed ones.
+    static constexpr uint32_t kWays = 4;
+    static uint32_t way(PassSchedule p) { return (p.megakernel ? 0u : 1u) | (p.compressedWalk ? 2u : 0u); }
+    static PassSchedule schedule(uint32_t way) { return {(way & 1u) == 0, (way & 2u) != 0}; }
     static double rate(double seconds) { return seconds > 0.0 ? 1.0 / seconds : 0.0; }
 
     struct Trial {
-        uint32_t megakernelPasses = 0, wavefrontPasses = 0;
-        double megakernelSeconds = 0.0, wavefrontSeconds = 0.0;  // fastest pass of each
+        uint32_t ways = 2;  // 4 where the compressed walk is tried too
+        uint32_t passes[kWays] = {};
+        double seconds[kWays] = {};  // fastest pass of each
     };
+    uint32_t fastestWay() const;
+    double fastestSeconds(bool megakernel) const;
+
     // Trials of keys left, kept up to kKeptKeys (then forgotten all at once: a rare rerun).
     static constexpr size_t kKeptKeys = 64;
     uint64_t key_ = ~uint64_t(0);

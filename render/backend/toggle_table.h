@@ -46,15 +46,19 @@ struct IntegratorToggles {
     bool streamCompaction = true;  // wavefront: dead paths leave the queues between bounces
     bool materialSort = false;     // wavefront: paths sorted by material before shading
     bool firstHitCache = true;     // reuse camera-ray hits across passes where the camera allows
-    // The GPU walks compressed 8-wide BLASes (render/bvh/compressed_wide_bvh.h; Ylitie et al.
-    // 2017). Off by default: on an H200 at 1080p it traces a 1M-triangle sphere's shadow rays
-    // 1.24x as fast as the binary walk and its camera and diffuse rays as fast, but the
-    // megakernel's path tracing there at 0.91x (527.8 against 579.4 spp/s; Balloon 0.95x).
-    bool gpuWideBvh = false;
+    // The GPU's BLASes also get compressed 8-wide nodes (render/bvh/compressed_wide_bvh.h;
+    // Ylitie et al. 2017), built on the host beside the binary trees, but for meshes the GPU
+    // builds first (gpuFirstBuild), which walk their binary trees. The auto schedule's trial
+    // times both walks under each schedule (schedule_chooser.h); without it the compressed
+    // nodes are walked. On an H200 at 1280x720 the trial took seven scenes' path tracing from
+    // 0.2% slower (GolfBall, Balloon: the trial's passes; it chose the binary walk) to 2.6%
+    // faster (Cornell box), 1.6% (a barn lamp) and 8-13% (depth of field); the compressed
+    // build cost a 200k-triangle mesh's first sync 50 ms (21 -> 71 ms).
+    bool gpuWideBvh = true;
     // The GPU backend's first frame after a full build walks LBVHs built on the GPU for meshes
     // of kGpuFirstBuildMinPrimitives or more, while the host builds their binned SAH trees on a
     // thread behind it and swaps each in when done (the same hits, so the accumulation goes
-    // on). Not with gpuWideBvh, whose compressed nodes come from the host's SAH tree.
+    // on). With gpuWideBvh those meshes walk their binary trees, the others their compressed nodes.
     bool gpuFirstBuild = true;
     // The GPU backend's builds (the first frame's above, and rebuilds once refits have degraded a
     // tree) by H-PLOC (render/backend/cuda/gpu_bvh.h; Benthin et al. 2024), whose trees cost

@@ -128,11 +128,17 @@ void buildWideBlases(CompiledScene& compiled) {
 
 void buildCompressedBlases(CompiledScene& compiled) {
     const size_t count = compiled.blases.size();
+    // A deferred BLAS's stand-in leaf holds all its primitives, more than a compressed leaf can:
+    // it gets an empty compressed tree, which keeps the host's ranges in order, and the caller
+    // builds its binary tree and walks that (the CUDA backend drops its compressed root then).
+    std::vector<uint8_t> deferred(count, 0);
+    for (const DeferredBlas& d : compiled.deferredBlases) deferred[d.blas] = 1;
     std::vector<CompressedWideBvh> wide(count);
     tbb::parallel_for(size_t(0), count, [&](size_t i) {
         const BlasRef& blas = compiled.blases[i];
-        wide[i] = compressToWide(compiled.blasNodes.data() + blas.nodeOffset, blas.nodeCount,
-                                 compiled.blasPrimIndices.data() + blas.primIndexOffset);
+        wide[i] = deferred[i] ? compressToWide(nullptr, 0, nullptr)
+                              : compressToWide(compiled.blasNodes.data() + blas.nodeOffset, blas.nodeCount,
+                                               compiled.blasPrimIndices.data() + blas.primIndexOffset);
     });
     size_t entries = 0;
     for (const CompressedWideBvh& w : wide) entries += w.primIndices.size();

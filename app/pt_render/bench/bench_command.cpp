@@ -92,9 +92,14 @@ std::vector<TracedRaySet> benchRays(Backend& backend, const Scene& scene, const 
         IntegratorToggles toggles = settings.toggles;
         toggles.bruteForce = layout.bruteForce;
         if (!layout.wide) toggles.wideBvh = toggles.gpuWideBvh = false;
+        // Every layout walks the host's SAH trees: a mesh the GPU builds first has no compressed
+        // nodes (toggle_table.h), and the binary yardstick is then the same tree. The first
+        // layout builds again for that on the GPU; the others' toggles build again anyway.
+        toggles.gpuFirstBuild = false;
         backend.setToggles(toggles);
+        const bool rebuild = bvh && backend.name() != "cpu";
         try {
-            syncSettled(backend, scene, SceneChanges::Settings);
+            syncSettled(backend, scene, rebuild ? SceneChanges::All : SceneChanges::Settings);
         } catch (const std::invalid_argument& e) {
             report.add({"rays", "all", layout.name, 0.0, "Mrays/s", e.what()});
             continue;

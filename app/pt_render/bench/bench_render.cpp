@@ -129,6 +129,7 @@ void benchPathTracing(Backend& backend, const Scene& scene, const BenchSettings&
         std::string note;
         if (!ran.kernelVariant.empty()) note += "kernel variant " + ran.kernelVariant + "; ";
         if (v.toggles.autoSchedule && !ran.schedule.empty()) note += "auto schedule: " + ran.schedule + "; ";
+        if (!ran.walk.empty()) note += ran.walk + " walk; ";
         for (const ToggleState& state : backend.toggleStates()) {
             // A backend without GPU scheduling has no scheduling toggles to speak of.
             const bool scheduling = toggleRow(state.id).scope == ToggleScope::GpuScheduling;

@@ -373,11 +373,8 @@ void CudaBackend::rebuildBlasOnDevice(uint32_t i) {
 }
 
 bool CudaBackend::firstBuildOnGpu(std::string* why) const {
-    const char* reason = !toggles_.gpuFirstBuild ? "off"
-                         : toggles_.bruteForce   ? "the BVH is off"
-                         : toggles_.gpuWideBvh
-                             ? "not with gpu_wide_bvh: its nodes come from the host's SAH tree"
-                             : nullptr;
+    // With gpuWideBvh the meshes it defers walk their binary trees (buildCompressedBlases).
+    const char* reason = !toggles_.gpuFirstBuild ? "off" : toggles_.bruteForce ? "the BVH is off" : nullptr;
     if (reason && why) *why = reason;
     return reason == nullptr;
 }
@@ -558,8 +555,9 @@ FeatureSet CudaBackend::renderFeatures() const {
 
 AovMask CudaBackend::recordingAovs() const { return aovs_.recording(aovSampleCap(), stats_.samplesPerPixel); }
 
-bool CudaBackend::runsMegakernel() const {
-    return toggles_.autoSchedule ? scheduleChooser_.nextIsMegakernel() : toggles_.megakernel;
+PassSchedule CudaBackend::nextPass() const {
+    if (toggles_.autoSchedule) return scheduleChooser_.next();
+    return {toggles_.megakernel, true};  // the compressed nodes wherever the scene has them
 }
 
 uint64_t CudaBackend::scheduleKey(uint32_t samplesPerWave) const {
@@ -582,7 +580,8 @@ uint64_t CudaBackend::scheduleKey(uint32_t samplesPerWave) const {
                               s.pixelJitter,
                               toggles_.streamCompaction,
                               toggles_.materialSort,
-                              toggles_.firstHitCache};
+                              toggles_.firstHitCache,
+                              hasCompressedNodes()};
     uint64_t h = 1469598103934665603ull;
     for (const uint32_t w : words) h = (h ^ w) * 1099511628211ull;
     return h;
@@ -605,17 +604,20 @@ void CudaBackend::render(uint32_t passes) {
         // Per wave (its key says whether path AOVs record): a capped AOV stops where a wave
         // ends at its cap, and from then on the scene's specialised kernels run where no other
         // path AOV records.
-        if (toggles_.autoSchedule) scheduleChooser_.setKey(scheduleKey(wave));
+        if (toggles_.autoSchedule) scheduleChooser_.setKey(scheduleKey(wave), hasCompressedNodes());
         const bool trial = toggles_.autoSchedule && !scheduleChooser_.decided();
-        const bool megakernel = runsMegakernel();
+        const PassSchedule pass = nextPass();
+        // The binary walk: the kernels walk a BLAS's binary nodes where it has no compressed root.
+        RenderScene scene = view_;
+        if (!pass.compressedWalk) scene.blasCompressedRoots = {};
         const uint32_t n =
             std::min({wave, passes, aovs_.samplesUntilFull(aovSampleCap(), stats_.samplesPerPixel)});
         const AovMask recording = recordingAovs();
         const AovBuffers aovs = aovBuffersIn(aovSums_.data(), aovs_, size_t(width_) * height_, recording);
         const auto waveStart = Clock::now();
-        scheduler_.render(view_, stats_.samplesPerPixel, n, scheduleOptions(), sum_.data(), aovs, stream_);
+        scheduler_.render(scene, stats_.samplesPerPixel, n, scheduleOptions(), sum_.data(), aovs, stream_);
         PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
-        if (trial) scheduleChooser_.record(megakernel, secondsSince(waveStart) / n);
+        if (trial) scheduleChooser_.record(pass, secondsSince(waveStart) / n);
         aovs_.skip(recording, n);
         stats_.samplesPerPixel += n;
         passes -= n;
@@ -724,8 +726,10 @@ BackendStats CudaBackend::stats() const {
         s.schedule = scheduleChooser_.choice();
         s.megakernelRate = scheduleChooser_.megakernelRate();
         s.wavefrontRate = scheduleChooser_.wavefrontRate();
+        s.walk = scheduleChooser_.walkChoice();
     } else {
         s.schedule = toggles_.megakernel ? "megakernel" : "wavefront";
+        s.walk = hasCompressedNodes() ? "compressed" : "";
     }
     return s;
 }

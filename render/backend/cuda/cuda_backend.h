@@ -122,8 +122,13 @@ private:
     void retireSahTrees();
     void updateView();
     ScheduleOptions scheduleOptions() const;
-    // The schedule of the next pass: the toggle's, or under the auto schedule the chooser's.
-    bool runsMegakernel() const;
+    // The schedule and walk of the next pass: the toggles', or under the auto schedule the
+    // chooser's (which times both walks where the scene has compressed nodes).
+    PassSchedule nextPass() const;
+    bool runsMegakernel() const { return nextPass().megakernel; }
+    // Whether some BLAS has compressed nodes the kernels walk (gpuWideBvh; not those rebuilt
+    // or first built on the GPU).
+    bool hasCompressedNodes() const { return device_.anyCompressedForm(); }
     // The scene's features with the AOVs accumulated now: what picks the kernel variant.
     FeatureSet renderFeatures() const;
     // The AOVs the next wave records: those accumulated, less those the sample cap holds full.

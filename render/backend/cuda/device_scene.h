@@ -10,6 +10,7 @@
 // traversal walks a lone BLAS (skipsTlasForOneInstance()).
 #include <cuda_runtime.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -87,6 +88,10 @@ public:
     // walk its binary nodes).
     bool hasCompressedForm(uint32_t i) const {
         return i < compressedRoots_.size() && compressedRoots_[i] != kNoCompressedRoot;
+    }
+    bool anyCompressedForm() const {
+        return std::any_of(compressedRoots_.begin(), compressedRoots_.end(),
+                           [](uint32_t root) { return root != kNoCompressedRoot; });
     }
     void requantizeCompressed(uint32_t i, cudaStream_t stream);
     void dropCompressed(uint32_t i, cudaStream_t stream);

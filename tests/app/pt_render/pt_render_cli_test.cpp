@@ -65,6 +65,7 @@ TEST(PtRenderCli, RendersExrPngAndStatsAndPrintsThePaths) {
     EXPECT_EQ(j["kernel_variant"], "");  // the CPU runs one generic kernel
     EXPECT_TRUE(j["kernel_features"].is_array());
     EXPECT_TRUE(j["kernel_features"].empty());
+    EXPECT_FALSE(j.contains("schedule"));  // GPU schedules only
 }
 
 // AOVs asked for are a feature the backend adds to the scene's.

@@ -10,9 +10,10 @@ namespace {
 int runTrial(ScheduleChooser& c, double megakernel, double wavefront) {
     int passes = 0, megakernelRuns = 0, wavefrontRuns = 0;
     while (!c.decided()) {
-        const bool m = c.nextIsMegakernel();
+        const PassSchedule next = c.next();
+        const bool m = next.megakernel;
         int& runs = m ? megakernelRuns : wavefrontRuns;
-        c.record(m, (m ? megakernel : wavefront) * (runs == 0 ? 2.0 : 1.0));
+        c.record(next, (m ? megakernel : wavefront) * (runs == 0 ? 2.0 : 1.0));
         ++runs;
         ++passes;
         if (passes > 100) break;
@@ -27,12 +28,14 @@ TEST(ScheduleChooser, AlternatesDuringTheTrialThenRunsTheFaster) {
     // Megakernel passes take 10 ms, wavefront passes 4 ms.
     for (uint32_t pass = 0; pass < 2 * ScheduleChooser::kTrialPassesEach; ++pass) {
         EXPECT_FALSE(c.decided()) << "pass " << pass;
-        const bool megakernel = c.nextIsMegakernel();
-        EXPECT_EQ(megakernel, pass % 2 == 0) << "the schedules take turns, pass " << pass;
-        c.record(megakernel, megakernel ? 0.010 : 0.004);
+        const PassSchedule next = c.next();
+        EXPECT_EQ(next.megakernel, pass % 2 == 0) << "the schedules take turns, pass " << pass;
+        EXPECT_FALSE(next.compressedWalk) << "no compressed nodes to try, pass " << pass;
+        c.record(next, next.megakernel ? 0.010 : 0.004);
     }
     EXPECT_TRUE(c.decided());
-    EXPECT_FALSE(c.nextIsMegakernel());
+    EXPECT_FALSE(c.next().megakernel);
+    EXPECT_EQ(c.walkChoice(), "");
     EXPECT_EQ(c.choice(), "wavefront");
     EXPECT_DOUBLE_EQ(c.wavefrontRate(), 250.0);
     EXPECT_DOUBLE_EQ(c.megakernelRate(), 100.0);
@@ -43,7 +46,7 @@ TEST(ScheduleChooser, TheFirstPassesWarmUpDoNotDecide) {
     ScheduleChooser c;
     c.setKey(7);
     runTrial(c, 0.003, 0.005);
-    EXPECT_TRUE(c.nextIsMegakernel());
+    EXPECT_TRUE(c.next().megakernel);
     EXPECT_EQ(c.choice(), "megakernel");
 }
 
@@ -76,6 +79,45 @@ TEST(ScheduleChooser, AKeyThatComesBackKeepsItsDecision) {
     c.setKey(11);
     EXPECT_EQ(c.choice(), "wavefront");
     EXPECT_EQ(runTrial(c, 0.004, 0.002), 0);  // nothing left to measure
+}
+
+// With compressed nodes the trial runs each schedule with each walk, in turn, and the rest run
+// the fastest of the four, whichever schedule and walk it is.
+TEST(ScheduleChooser, WithCompressedNodesTheTrialTimesBothWalksUnderEachSchedule) {
+    // Seconds a pass: the compressed walk is faster in the wavefront, slower in the megakernel,
+    // and the megakernel on binary nodes fastest of all (the 64-instance field on an H200).
+    const auto seconds = [](PassSchedule p) {
+        return p.megakernel ? (p.compressedWalk ? 0.0086 : 0.0078) : (p.compressedWalk ? 0.0103 : 0.0114);
+    };
+    ScheduleChooser c;
+    c.setKey(3, true);
+    const PassSchedule order[] = {{true, false}, {false, false}, {true, true}, {false, true}};
+    for (uint32_t pass = 0; pass < 4 * ScheduleChooser::kTrialPassesEach; ++pass) {
+        EXPECT_FALSE(c.decided()) << "pass " << pass;
+        EXPECT_EQ(c.walkChoice(), "");
+        const PassSchedule next = c.next();
+        EXPECT_EQ(next.megakernel, order[pass % 4].megakernel) << "pass " << pass;
+        EXPECT_EQ(next.compressedWalk, order[pass % 4].compressedWalk) << "pass " << pass;
+        c.record(next, seconds(next));
+    }
+    EXPECT_TRUE(c.decided());
+    EXPECT_TRUE(c.next().megakernel);
+    EXPECT_FALSE(c.next().compressedWalk);
+    EXPECT_EQ(c.choice(), "megakernel");
+    EXPECT_EQ(c.walkChoice(), "binary");
+    // Each schedule's rate is that of its faster walk.
+    EXPECT_DOUBLE_EQ(c.megakernelRate(), 1.0 / 0.0078);
+    EXPECT_DOUBLE_EQ(c.wavefrontRate(), 1.0 / 0.0103);
+
+    // Where the compressed walk wins in the megakernel, it is chosen.
+    c.setKey(4, true);
+    while (!c.decided()) {
+        const PassSchedule next = c.next();
+        c.record(next, next.compressedWalk && next.megakernel ? 0.0060 : seconds(next));
+    }
+    EXPECT_TRUE(c.next().megakernel);
+    EXPECT_TRUE(c.next().compressedWalk);
+    EXPECT_EQ(c.walkChoice(), "compressed");
 }
 
 }  // namespace

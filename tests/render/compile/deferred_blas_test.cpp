@@ -6,6 +6,7 @@
 #include "render/bvh/bvh_test_util.h"
 #include "render/compile/compile_geometry.h"
 #include "render/compile/compile_scene.h"
+#include "render/compile/wide_blases.h"
 
 namespace pt {
 namespace {
@@ -13,11 +14,12 @@ namespace {
 using test::InstanceSpec;
 
 // A large soup drawn once, a small one drawn at two places (merged where small enough).
-CompiledScene compileTwoSoups(uint32_t deferFrom, const Mesh& large, const Mesh& small,
-                              bool wideBvh = false) {
+CompiledScene compileTwoSoups(uint32_t deferFrom, const Mesh& large, const Mesh& small, bool wideBvh = false,
+                              bool compressedWideBvh = false) {
     CompileOptions options;
     options.deferBlasesFrom = deferFrom;
     options.wideBvh = wideBvh;
+    options.compressedWideBvh = compressedWideBvh;
     return test::compileTestScene({large, small},
                                   {{0, Affine3{}},
                                    {1, translationTransform(Vec3(3.0f, 0.0f, 0.0f))},
@@ -72,6 +74,35 @@ TEST_P(DeferredBlasLayouts, TheStandInFindsTheBruteForceHits) {
     int failures = 0, hits = 0;
     for (int i = 0; i < 2000; ++i) {
         const Ray ray = i % 2 ? test::rayAtTriangle(rng, large, Vec3(-5.0f), Vec3(5.0f))
+                              : test::randomRay(rng, Vec3(-5.0f), Vec3(5.0f));
+        hits += test::expectBvhMatchesBruteForce(view, ray, failures);
+    }
+    EXPECT_GT(hits, 200) << "too few rays hit to test anything";
+}
+
+// With the GPU's compressed nodes too: the stand-in leaf holds more primitives than a compressed
+// leaf can, so the deferred BLAS gets an empty compressed tree (its caller walks the binary tree
+// it builds: the CUDA backend drops the compressed root), and the others their compressed trees.
+TEST(DeferredBlas, WithCompressedNodesADeferredMeshGetsAnEmptyCompressedTree) {
+    test::Rng rng(15);
+    const Mesh large = test::makeSoup(test::SoupKind::Uniform, 3000, rng);
+    const Mesh small = test::makeSoup(test::SoupKind::Clustered, 300, rng);
+    const CompiledScene deferred = compileTwoSoups(1000, large, small, false, true);
+    ASSERT_EQ(deferred.deferredBlases.size(), 1u);
+    const uint32_t standIn = deferred.deferredBlases[0].blas;
+    ASSERT_EQ(deferred.blasCompressedRoots.size(), deferred.blases.size());
+    for (uint32_t b = 0; b < deferred.blases.size(); ++b) {
+        const auto [first, end] = compressedPrimRange(deferred, b);
+        EXPECT_EQ(end - first, b == standIn ? 0u : deferred.blases[b].primitiveCount) << "BLAS " << b;
+    }
+    // The CUDA backend's view of it: the deferred BLAS's binary nodes, the others' compressed.
+    std::vector<uint32_t> roots = deferred.blasCompressedRoots;
+    roots[standIn] = kNoCompressedRoot;
+    RenderScene view = deferred.view();
+    view.blasCompressedRoots = {roots.data(), uint32_t(roots.size())};
+    int failures = 0, hits = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Ray ray = i % 2 ? test::rayAtTriangle(rng, i % 4 == 1 ? large : small, Vec3(-5.0f), Vec3(5.0f))
                               : test::randomRay(rng, Vec3(-5.0f), Vec3(5.0f));
         hits += test::expectBvhMatchesBruteForce(view, ray, failures);
     }

@@ -502,6 +502,17 @@ TEST(CudaBackend, SchedulingTogglesLeaveTheImageUnchanged) {
     backend.render(4);
     backend.render(4);
     EXPECT_LT(raysCached, backend.stats().rays) << "a cached first hit traces fewer rays";
+    // The compressed 8-wide nodes (a new compile), and the auto schedule over them, whose trial runs each
+    // schedule with each walk: a pass a wave, so that all four ways run and then the fastest.
+    IntegratorToggles wide = base;
+    wide.gpuWideBvh = true;
+    EXPECT_LE(maxAbsDifference(reference, renderWith(backend, scene, 16, wide, 2)), 1e-5f)
+        << "compressed walk";
+    EXPECT_EQ(backend.stats().walk, "compressed");
+    wide.autoSchedule = true;
+    EXPECT_LE(maxAbsDifference(reference, renderWith(backend, scene, 16, wide, 16)), 1e-5f)
+        << "auto schedule, both walks";
+    EXPECT_NE(backend.stats().walk, "") << "the trial should have timed both walks and chosen one";
 }
 
 // The megakernel's threads stay resident and take paths from a counter; with regeneration a

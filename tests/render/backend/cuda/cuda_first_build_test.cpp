@@ -155,20 +155,30 @@ TEST(CudaFirstBuild, ARefitAfterTheSwapRefitsTheSahTree) {
     test::expectSameHits(edited, cpu, test::soupRays(100000, 5), "refitted SAH tree after the swap vs CPU");
 }
 
-TEST(CudaFirstBuild, TheToggleSaysWhenItCannotApply) {
+// With the compressed nodes on, the large mesh is still built on the GPU first and walks its
+// binary trees (before and after its SAH tree lands), the small one its compressed nodes, and
+// the hits are the CPU's throughout.
+TEST(CudaFirstBuild, WithCompressedNodesTheDeferredMeshWalksItsBinaryTrees) {
     PT_REQUIRE_CUDA_DEVICE();
     cuda::CudaBackend backend;
-    IntegratorToggles wide;
+    IntegratorToggles wide = fixedSchedule(true);
     wide.gpuWideBvh = true;
     backend.setToggles(wide);
     const Scene scene = largeSoupScene();
-    const SyncReport report = backend.sync(scene, SceneChanges::All, {});
-    EXPECT_FALSE(hasStep(report, kGpuFirstBuildStep)) << "the compressed nodes need the host's tree first";
+    EXPECT_TRUE(hasStep(backend.sync(scene, SceneChanges::All, {}), kGpuFirstBuildStep));
     for (const ToggleState& s : backend.toggleStates()) {
-        if (s.id != ToggleId::GpuFirstBuild) continue;
-        EXPECT_FALSE(s.active);
-        EXPECT_NE(s.note.find("gpu_wide_bvh"), std::string::npos) << s.note;
+        if (s.id == ToggleId::GpuFirstBuild) {
+            EXPECT_TRUE(s.active) << s.note;
+        }
     }
+    EXPECT_GT(test::bufferBytes(backend, "BLAS compressed leaf triangles"), 0u) << "the small mesh's";
+    EXPECT_EQ(backend.stats().walk, "compressed");
+    CpuBackend cpu;
+    cpu.sync(scene, SceneChanges::All, {});
+    const std::vector<Ray> rays = test::soupRays(100000, 8);
+    test::expectSameHits(backend, cpu, rays, "GPU first build beside compressed nodes vs CPU");
+    backend.finishBackgroundWork();
+    test::expectSameHits(backend, cpu, rays, "landed SAH tree beside compressed nodes vs CPU");
 }
 
 }  // namespace

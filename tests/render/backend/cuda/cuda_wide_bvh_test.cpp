@@ -27,7 +27,10 @@ TEST(CudaWideBvh, TheCompressedWalkFindsTheBinaryWalksAndTheCpusHits) {
     cuda::CudaBackend wide, binary;
     IntegratorToggles on;
     on.gpuWideBvh = true;
+    IntegratorToggles off;
+    off.gpuWideBvh = false;
     wide.setToggles(on);
+    binary.setToggles(off);
     wide.sync(scene, SceneChanges::All, {});
     binary.sync(scene, SceneChanges::All, {});
     EXPECT_GT(test::bufferBytes(wide, "BLAS compressed 8-wide nodes"), 0u);
