@@ -50,10 +50,10 @@ struct IntegratorToggles {
     // Ylitie et al. 2017), built on the host beside the binary trees, but for meshes the GPU
     // builds first (gpuFirstBuild), which walk their binary trees. The auto schedule's trial
     // times both walks under each schedule (schedule_chooser.h); without it the compressed
-    // nodes are walked. On an H200 at 1280x720 the trial took seven scenes' path tracing from
-    // 0.2% slower (GolfBall, Balloon: the trial's passes; it chose the binary walk) to 2.6%
-    // faster (Cornell box), 1.6% (a barn lamp) and 8-13% (depth of field); the compressed
-    // build cost a 200k-triangle mesh's first sync 50 ms (21 -> 71 ms).
+    // nodes are walked. On an H200 at 1280x720, seven scenes' path tracing against the binary
+    // walk alone: 1-1.5% slower on GolfBall and Balloon (the trial's own passes), level on three,
+    // 2.6% faster on the Cornell box, 1.6% on a barn lamp and 7-13% with depth of field; the
+    // compressed build cost a 200k-triangle mesh's first sync 50-58 ms (21 -> 71-79 ms).
     bool gpuWideBvh = true;
     // The GPU backend's first frame after a full build walks LBVHs built on the GPU for meshes
     // of kGpuFirstBuildMinPrimitives or more, while the host builds their binned SAH trees on a
