@@ -25,10 +25,11 @@ bool ScheduleChooser::decided() const {
     return true;
 }
 
-uint32_t ScheduleChooser::fastestWay() const {
-    uint32_t best = 0;
-    for (uint32_t w = 1; w < trial_.ways; ++w) {
-        if (trial_.seconds[w] < trial_.seconds[best]) best = w;
+uint32_t ScheduleChooser::fastestWay(std::optional<bool> megakernel) const {
+    uint32_t best = kWays;
+    for (uint32_t w = 0; w < trial_.ways; ++w) {
+        if (trial_.passes[w] == 0 || (megakernel && schedule(w).megakernel != *megakernel)) continue;
+        if (best == kWays || trial_.seconds[w] < trial_.seconds[best]) best = w;
     }
     return best;
 }
@@ -50,12 +51,8 @@ void ScheduleChooser::record(PassSchedule pass, double secondsPerSample) {
 }
 
 double ScheduleChooser::fastestSeconds(bool megakernel) const {
-    double best = 0.0;
-    for (uint32_t w = 0; w < trial_.ways; ++w) {
-        if (schedule(w).megakernel != megakernel || trial_.passes[w] == 0) continue;
-        if (best == 0.0 || trial_.seconds[w] < best) best = trial_.seconds[w];
-    }
-    return best;
+    const uint32_t w = fastestWay(megakernel);
+    return w < kWays ? trial_.seconds[w] : 0.0;
 }
 
 double ScheduleChooser::megakernelRate() const { return rate(fastestSeconds(true)); }

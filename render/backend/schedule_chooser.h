@@ -16,6 +16,7 @@
 // Where the scene has compressed 8-wide BLASes, the trial times each schedule with both walks
 // (PassSchedule), and the rest run the fastest of the four.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <unordered_map>
 
@@ -70,7 +71,9 @@ private:
         uint32_t passes[kWays] = {};
         double seconds[kWays] = {};  // fastest pass of each
     };
-    uint32_t fastestWay() const;
+    // The way tried with the fewest seconds a sample: of all, or of one schedule's two walks;
+    // kWays where none has run. Ties go to the first.
+    uint32_t fastestWay(std::optional<bool> megakernel = std::nullopt) const;
     double fastestSeconds(bool megakernel) const;
 
     // Trials of keys left, kept up to kKeptKeys (then forgotten all at once: a rare rerun).
