@@ -4,7 +4,8 @@
 
 namespace pt {
 
-BackgroundBvhBuild::BackgroundBvhBuild(LargeArray<Aabb> primBounds) : primBounds_(std::move(primBounds)) {
+BackgroundBvhBuild::BackgroundBvhBuild(LargeArray<Aabb> primBounds, bool compressed)
+    : primBounds_(std::move(primBounds)), wantsCompressed_(compressed) {
     thread_ = std::thread([this] {
         try {
             tbb::task_arena arena;
@@ -14,7 +15,20 @@ BackgroundBvhBuild::BackgroundBvhBuild(LargeArray<Aabb> primBounds) : primBounds
             failure_ = std::current_exception();  // std::thread would terminate the program
         }
         primBounds_ = {};  // its memory back as soon as the tree no longer needs it
-        ready_.store(true, std::memory_order_release);
+        {
+            std::lock_guard<std::mutex> lock(treeMutex_);
+            treeReady_.store(true, std::memory_order_release);
+        }
+        treeSignal_.notify_all();
+        if (wantsCompressed_ && !failure_) {
+            try {
+                compressed_ = compressToWide(result_.nodes.data(), uint32_t(result_.nodes.size()),
+                                             result_.primIndices.data());
+            } catch (const std::bad_alloc&) {
+                compressed_ = {};  // the tree stands without it
+            }
+        }
+        finished_.store(true, std::memory_order_release);
     });
 }
 
@@ -22,10 +36,18 @@ BackgroundBvhBuild::~BackgroundBvhBuild() {
     if (thread_.joinable()) thread_.join();
 }
 
-Bvh BackgroundBvhBuild::take() {
-    if (thread_.joinable()) thread_.join();
+const Bvh& BackgroundBvhBuild::tree() {
+    {
+        std::unique_lock<std::mutex> lock(treeMutex_);  // not a join: the thread may go on compressing
+        treeSignal_.wait(lock, [this] { return ready(); });
+    }
     if (failure_) std::rethrow_exception(failure_);
-    return std::move(result_);
+    return result_;
+}
+
+CompressedWideBvh BackgroundBvhBuild::takeCompressed() {
+    if (thread_.joinable()) thread_.join();
+    return std::move(compressed_);
 }
 
 }  // namespace pt

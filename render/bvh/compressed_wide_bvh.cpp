@@ -132,6 +132,13 @@ CompressedWideBvh compressToWide(const BvhNode* nodes, uint32_t count, const uin
     return Compressor(nodes, count, primIndices).run();
 }
 
+void rebaseCompressedNodes(CompressedWideBvh& wide, uint32_t firstNode, uint32_t firstPrim) {
+    for (CompressedWideNode& node : wide.nodes) {
+        node.childBase += firstNode;
+        node.primBase += firstPrim;
+    }
+}
+
 void requantizeWideBoxes(const BvhNode* binary, const uint32_t* sourceNodes, CompressedWideNode* wide,
                          uint32_t wideCount) {
     for (uint32_t n = 0; n < wideCount; ++n) {

@@ -30,6 +30,10 @@ struct CompressedWideBvh {
 // `primIndices`. An empty tree gives one node with no used slot.
 CompressedWideBvh compressToWide(const BvhNode* nodes, uint32_t count, const uint32_t* primIndices);
 
+// Makes `wide`'s child and primitive bases absolute, for a scene array whose nodes and entries
+// it joins at `firstNode` and `firstPrim`.
+void rebaseCompressedNodes(CompressedWideBvh& wide, uint32_t firstNode, uint32_t firstPrim);
+
 // Requantises the boxes of `wideCount` compressed nodes from the binary nodes their slots came
 // from (after a refit of `binary`).
 void requantizeWideBoxes(const BvhNode* binary, const uint32_t* sourceNodes, CompressedWideNode* wide,

@@ -129,8 +129,9 @@ void buildWideBlases(CompiledScene& compiled) {
 void buildCompressedBlases(CompiledScene& compiled) {
     const size_t count = compiled.blases.size();
     // A deferred BLAS's stand-in leaf holds all its primitives, more than a compressed leaf can:
-    // it gets an empty compressed tree, which keeps the host's ranges in order, and the caller
-    // builds its binary tree and walks that (the CUDA backend drops its compressed root then).
+    // it gets an empty compressed tree, which keeps the host's ranges in order. The caller builds
+    // its binary tree and walks that (the CUDA backend drops its compressed root then), until
+    // its SAH tree lands with a compressed form (DeviceScene::replaceCompressed).
     std::vector<uint8_t> deferred(count, 0);
     for (const DeferredBlas& d : compiled.deferredBlases) deferred[d.blas] = 1;
     std::vector<CompressedWideBvh> wide(count);
@@ -156,10 +157,7 @@ void buildCompressedBlases(CompiledScene& compiled) {
         const uint32_t firstNode = uint32_t(compiled.blasCompressedNodes.size());
         const uint32_t firstPrim = uint32_t(compiled.blasCompressedPrims.size());
         compiled.blasCompressedRoots[i] = firstNode;
-        for (CompressedWideNode& node : wide[i].nodes) {
-            node.childBase += firstNode;
-            node.primBase += firstPrim;
-        }
+        rebaseCompressedNodes(wide[i], firstNode, firstPrim);
         compiled.blasCompressedNodes.insert(compiled.blasCompressedNodes.end(), wide[i].nodes.begin(),
                                             wide[i].nodes.end());
         compiled.blasCompressedPrims.insert(compiled.blasCompressedPrims.end(), wide[i].primIndices.begin(),

@@ -222,8 +222,8 @@ void CudaBackend::fullBuild(const Scene& scene, const ProgressFn& progress, Sync
         timedStep(stream_, report, "wait for the deferred meshes' boxes (host, beside the upload)",
                   [&] { bounds = deferredBounds.get(); });
         for (size_t i = 0; i < deferred.size(); ++i)
-            pendingSahTrees_.push_back(
-                {deferred[i], std::make_unique<BackgroundBvhBuild>(std::move(bounds[i]))});
+            pendingSahTrees_.push_back({deferred[i], std::make_unique<BackgroundBvhBuild>(
+                                                         std::move(bounds[i]), toggles_.gpuWideBvh)});
     }
     skins_.clear();
     skinnedOnDevice_.assign(scene.meshes.size(), false);
@@ -341,7 +341,7 @@ bool CudaBackend::refitBlas(uint32_t i, SyncReport& report) {
     }
     // A tree's topology holds for any positions of its primitives: the SAH tree building
     // behind the first frame is refitted to the current ones when it lands.
-    for (PendingSahTree& pending : pendingSahTrees_) pending.refitOnLanding |= !rebuilt && pending.blas == i;
+    for (PendingSahTree& pending : pendingSahTrees_) pending.refitted |= !rebuilt && pending.blas == i;
     // The host keeps each BLAS's root box current (32 bytes): the host TLAS, and so the
     // scene bounds the light table uses, are built from it. Refit and rebuild give the
     // same root, the union of the primitives' boxes.
@@ -373,7 +373,8 @@ void CudaBackend::rebuildBlasOnDevice(uint32_t i) {
 }
 
 bool CudaBackend::firstBuildOnGpu(std::string* why) const {
-    // With gpuWideBvh the meshes it defers walk their binary trees (buildCompressedBlases).
+    // With gpuWideBvh the meshes it defers walk their binary trees until their SAH trees land
+    // with their compressed forms (buildCompressedBlases, landSahTrees).
     const char* reason = !toggles_.gpuFirstBuild ? "off" : toggles_.bruteForce ? "the BVH is off" : nullptr;
     if (reason && why) *why = reason;
     return reason == nullptr;
@@ -397,31 +398,42 @@ void CudaBackend::buildDeferredBlasesOnDevice(SyncReport& report) {
 void CudaBackend::landSahTrees(bool wait) {
     staleSahTrees_.erase(
         std::remove_if(staleSahTrees_.begin(), staleSahTrees_.end(),
-                       [&](const std::unique_ptr<BackgroundBvhBuild>& b) { return wait || b->ready(); }),
+                       [&](const std::unique_ptr<BackgroundBvhBuild>& b) { return wait || b->finished(); }),
         staleSahTrees_.end());
     bool landed = false;
     for (auto it = pendingSahTrees_.begin(); it != pendingSahTrees_.end();) {
-        if (!wait && !it->build->ready()) {
-            ++it;
+        PendingSahTree& pending = *it;
+        if (!pending.treeLanded && (wait || pending.build->ready())) {
+            const Bvh* tree = nullptr;
+            try {
+                tree = &pending.build->tree();
+            } catch (const std::bad_alloc&) {
+                it = pendingSahTrees_.erase(
+                    it);  // the host ran out of memory for it: the BLAS keeps its GPU build
+                continue;
+            }
+            device_.uploadBlasTree(pending.blas, tree->nodes, tree->primIndices, stream_);
+            if (pending.refitted) refitToPrimitives(pending.blas);
+            builtSah_[pending.blas] = kSahUnknown;  // measured again at its next refit
+            pending.treeLanded = landed = true;
+        }
+        // Its compressed form follows the tree, built from it on the same thread.
+        if (pending.treeLanded && (wait || pending.build->finished())) {
+            const PendingSahTree done = std::move(pending);  // out of the list before anything can throw
+            it = pendingSahTrees_.erase(it);
+            if (device_.replaceCompressed(done.blas, done.build->takeCompressed(), stream_) && done.refitted)
+                device_.requantizeCompressed(done.blas, stream_);  // from the refitted binary boxes
+            landed = true;
             continue;
         }
-        const PendingSahTree done = std::move(*it);  // out of the list before anything can throw
-        it = pendingSahTrees_.erase(it);
-        Bvh tree;
-        try {
-            tree = done.build->take();
-        } catch (const std::bad_alloc&) {
-            continue;  // the host ran out of memory for it: the BLAS keeps its GPU build
-        }
-        device_.uploadBlasTree(done.blas, tree.nodes, tree.primIndices, stream_);
-        if (done.refitOnLanding) refitToPrimitives(done.blas);
-        builtSah_[done.blas] = kSahUnknown;  // measured again at its next refit
-        landed = true;
+        ++it;
     }
-    PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
     if (!landed) return;
-    updateView();                    // fitting a region to its tree moved the BLAS nodes
-    if (pendingSahTrees_.empty()) {  // the first frame's build memory back (a GPU rebuild allocates it again)
+    PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
+    updateView();  // fitting a region to its tree moved the BLAS nodes
+    const bool treesToLand = std::any_of(pendingSahTrees_.begin(), pendingSahTrees_.end(),
+                                         [](const PendingSahTree& p) { return !p.treeLanded; });
+    if (!treesToLand) {  // the first frame's build memory back (a GPU rebuild allocates it again)
         lbvh_.release();
         hploc_.release();
         primBoxes_ = {};
@@ -591,7 +603,6 @@ uint64_t CudaBackend::scheduleKey(uint32_t samplesPerWave) const {
 // waits for one wave, not the call's; and the auto schedule's trial times each wave it runs.
 void CudaBackend::render(uint32_t passes) {
     if (!compiled_ || passes == 0) return;
-    if (!pendingSahTrees_.empty() || !staleSahTrees_.empty()) landSahTrees(false);
     const auto start = Clock::now();
     const uint32_t wave = scheduler_.samplesPerWave(width_ * height_, passes);
     // The trial runs waves of the size this call runs, alternating the schedules, until both
@@ -601,6 +612,9 @@ void CudaBackend::render(uint32_t passes) {
             resetAccumulation();
             return;
         }
+        // Between waves, not only between calls: a call of the CLI's lasts a quarter second,
+        // and the first frame's GPU trees cost more to walk than the SAH trees.
+        if (!pendingSahTrees_.empty() || !staleSahTrees_.empty()) landSahTrees(false);
         // Per wave (its key says whether path AOVs record): a capped AOV stops where a wave
         // ends at its cap, and from then on the scene's specialised kernels run where no other
         // path AOV records.

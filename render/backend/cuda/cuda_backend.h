@@ -113,8 +113,9 @@ private:
     // host.
     void buildDeferredBlasesOnDevice(SyncReport& report);
     bool firstBuildOnGpu(std::string* why = nullptr) const;
-    // Swaps in the SAH trees that are built (all of them, waiting for them, where `wait`); a
-    // swap keeps the accumulation, as every BVH of the same primitives gives the same hits.
+    // Swaps in the SAH trees that are built (all of them, waiting for them, where `wait`), with
+    // their compressed forms under gpuWideBvh; a swap keeps the accumulation, as every BVH of
+    // the same primitives gives the same hits.
     void landSahTrees(bool wait);
     // BLAS `blas` was rebuilt, or every BLAS changed (a new compile): what is building for it
     // would be stale, and is dropped once done (never waited for).
@@ -127,7 +128,7 @@ private:
     PassSchedule nextPass() const;
     bool runsMegakernel() const { return nextPass().megakernel; }
     // Whether some BLAS has compressed nodes the kernels walk (gpuWideBvh; not those rebuilt
-    // or first built on the GPU).
+    // on the GPU, nor those first built there until their SAH trees land).
     bool hasCompressedNodes() const { return device_.anyCompressedForm(); }
     // The scene's features with the AOVs accumulated now: what picks the kernel variant.
     FeatureSet renderFeatures() const;
@@ -158,11 +159,15 @@ private:
     DeviceBuffer<Hit> queryHits_;
     std::vector<float> builtSah_;             // per BLAS, after its last build; kSahUnknown until needed
     std::vector<uint32_t> meshVertexOffset_;  // per mesh: its first vertex in compiled_->positions
-    // The binned SAH trees building on the host behind the first frame, by BLAS.
+    // The binned SAH trees building on the host behind the first frame, by BLAS, until their
+    // compressed forms (where gpuWideBvh asks for them) have landed too.
     struct PendingSahTree {
         uint32_t blas;
         std::unique_ptr<BackgroundBvhBuild> build;
-        bool refitOnLanding = false;  // the BLAS was refitted since: its positions moved
+        // The BLAS was refitted since the build began (its positions moved): the tree is
+        // refitted as it lands, and its compressed form requantised.
+        bool refitted = false;
+        bool treeLanded = false;  // its compressed form is still to come
     };
     std::vector<PendingSahTree> pendingSahTrees_;
     std::vector<std::unique_ptr<BackgroundBvhBuild>> staleSahTrees_;

@@ -48,6 +48,27 @@ public:
         size_ = count;
     }
 
+    // Sets the element count to `count` (at least the current one), keeping the contents: a
+    // reallocation, to exactly `count`, copies them on `stream`.
+    void growKeeping(size_t count, cudaStream_t stream = nullptr) {
+        PT_CHECK(count >= size_);
+        if (count > capacity_) {
+            DeviceBuffer grown(count);
+            if (size_) {
+                PT_CUDA_CHECK(
+                    cudaMemcpyAsync(grown.data_, data_, size_ * sizeof(T), cudaMemcpyDeviceToDevice, stream));
+            }
+            swap(grown);  // the old memory goes with `grown`: cudaFree waits for the copy
+        }
+        size_ = count;
+    }
+    // Appends `count` elements after the current ones (growKeeping).
+    void append(const T* host, size_t count, cudaStream_t stream = nullptr) {
+        const size_t first = size_;
+        growKeeping(first + count, stream);
+        uploadAt(first, host, count, stream);
+    }
+
     void upload(const T* host, size_t count, cudaStream_t stream = nullptr) {
         resize(count);
         if (count)

@@ -116,6 +116,31 @@ void DeviceScene::dropCompressed(uint32_t i, cudaStream_t stream) {
     blasCompressedRoots_.uploadAt(i, &compressedRoots_[i], 1, stream);
 }
 
+bool DeviceScene::replaceCompressed(uint32_t i, CompressedWideBvh wide, cudaStream_t stream) {
+    if (compressedRoots_.empty() || wide.nodes.empty()) return false;
+    const uint32_t firstNode = uint32_t(blasCompressedNodes_.size());
+    const uint32_t firstPrim = uint32_t(blasCompressedPrims_.size());
+    const uint32_t entries = uint32_t(wide.primIndices.size());
+    if (uint64_t(firstPrim) + entries >= kCompressedPrimitiveLimit) {
+        dropCompressed(i, stream);
+        return false;
+    }
+    // Appended, not in place: the BLAS's old range (one node, for a deferred BLAS) stays unused
+    // until the next upload, and no other BLAS moves.
+    rebaseCompressedNodes(wide, firstNode, firstPrim);
+    blasCompressedNodes_.append(wide.nodes.data(), wide.nodes.size(), stream);
+    blasCompressedPrims_.append(wide.primIndices.data(), entries, stream);
+    compressedSources_.append(wide.sourceNodes.data(), wide.sourceNodes.size(), stream);
+    blasCompressedTriangles_.growKeeping(size_t(firstPrim) + entries, stream);
+    compressedRoots_[i] = firstNode;
+    compressedCounts_[i] = uint32_t(wide.nodes.size());
+    compressedPrimRanges_[i] = {firstPrim, firstPrim + entries};
+    blasCompressedRoots_.uploadAt(i, &compressedRoots_[i], 1, stream);
+    gatherLeafTriangles(blasCompressedTriangles_.data() + firstPrim, blasCompressedPrims_.data() + firstPrim,
+                        entries, triangles_.data(), positions_.data(), hostBlases_[i], stream);
+    return true;
+}
+
 void DeviceScene::uploadMaterials(const CompiledScene& host, cudaStream_t stream) {
     materials_.upload(host.materials, stream);
 }

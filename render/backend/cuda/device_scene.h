@@ -18,6 +18,7 @@
 
 #include "render/backend/cuda/device_buffer.h"
 #include "render/backend/cuda/gpu_bvh.h"
+#include "render/bvh/compressed_wide_bvh.h"
 #include "render/compile/compile_scene.h"
 
 namespace pt::cuda {
@@ -95,6 +96,13 @@ public:
     }
     void requantizeCompressed(uint32_t i, cudaStream_t stream);
     void dropCompressed(uint32_t i, cudaStream_t stream);
+    // BLAS i's compressed form, of the binary tree now in its region (uploadBlasTree), in place
+    // of the one it had (a deferred BLAS's empty one, or one dropped): appended after every
+    // BLAS's nodes and entries, its leaf triangles gathered from the current positions. Where
+    // the scene has no compressed nodes (gpuWideBvh off), or the entries would pass
+    // kCompressedPrimitiveLimit, it keeps walking its binary nodes; returns whether it walks
+    // the compressed ones.
+    bool replaceCompressed(uint32_t i, CompressedWideBvh wide, cudaStream_t stream);
 
     // The TLAS over the instances (GPU LBVH over their world boxes, `boxes` its scratch), or
     // only tlasInstanceIndices = {0} for one instance where skipsTlasForOneInstance().

@@ -1,10 +1,12 @@
-// BackgroundBvhBuild: the binned SAH build on a thread of its own gives the builder's tree,
-// finishes without being waited for, and is joined (never left running) when dropped.
+// BackgroundBvhBuild: the binned SAH build on a thread of its own gives the builder's tree (and
+// its compressed form where asked), finishes without being waited for, and is joined (never left running)
+// when dropped.
 #include "render/bvh/background_bvh_build.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstring>
 #include <thread>
 
 #include "render/bvh/bvh_test_util.h"
@@ -26,7 +28,7 @@ TEST(BackgroundBvhBuild, BuildsTheBinnedSahTree) {
         test::triangleBounds(test::makeSoup(test::SoupKind::Clustered, 20000, rng));
     const Bvh direct = buildBinnedSahBvh(bounds.data(), uint32_t(bounds.size()));
     BackgroundBvhBuild build(copyOf(bounds));
-    const Bvh background = build.take();
+    const Bvh& background = build.tree();
     EXPECT_TRUE(build.ready());
     ASSERT_EQ(background.nodes.size(), direct.nodes.size());
     EXPECT_EQ(background.primIndices, direct.primIndices);
@@ -38,14 +40,38 @@ TEST(BackgroundBvhBuild, BuildsTheBinnedSahTree) {
     }
 }
 
+// Asked for, the compressed form is the collapse of the thread's tree, byte for byte; not asked
+// for, it is empty.
+TEST(BackgroundBvhBuild, CompressesItsTreeWhereAsked) {
+    test::Rng rng(17);
+    const std::vector<Aabb> bounds =
+        test::triangleBounds(test::makeSoup(test::SoupKind::Clustered, 20000, rng));
+    BackgroundBvhBuild build(copyOf(bounds), true);
+    const Bvh& tree = build.tree();
+    const CompressedWideBvh background = build.takeCompressed();
+    const CompressedWideBvh direct =
+        compressToWide(tree.nodes.data(), uint32_t(tree.nodes.size()), tree.primIndices.data());
+    ASSERT_GT(direct.nodes.size(), 1u);
+    ASSERT_EQ(background.nodes.size(), direct.nodes.size());
+    EXPECT_EQ(0, std::memcmp(background.nodes.data(), direct.nodes.data(),
+                             direct.nodes.size() * sizeof(CompressedWideNode)));
+    EXPECT_EQ(background.primIndices, direct.primIndices);
+    EXPECT_EQ(background.sourceNodes, direct.sourceNodes);
+
+    BackgroundBvhBuild binaryOnly(copyOf(bounds));
+    EXPECT_EQ(binaryOnly.tree().nodes.size(), tree.nodes.size());
+    EXPECT_TRUE(binaryOnly.takeCompressed().nodes.empty());
+}
+
 TEST(BackgroundBvhBuild, FinishesWithoutBeingTakenAndIsWaitedForOnDestruction) {
     test::Rng rng(16);
     const std::vector<Aabb> bounds =
         test::triangleBounds(test::makeSoup(test::SoupKind::Uniform, 50000, rng));
     {
         BackgroundBvhBuild finished(copyOf(bounds));
-        while (!finished.ready()) std::this_thread::yield();  // done without anyone taking it
-        EXPECT_EQ(finished.take().primIndices.size(), bounds.size());
+        while (!finished.finished()) std::this_thread::yield();  // done without anyone taking it
+        EXPECT_TRUE(finished.ready());
+        EXPECT_EQ(finished.tree().primIndices.size(), bounds.size());
     }
     { BackgroundBvhBuild dropped(copyOf(bounds)); }  // joined, or std::thread's destructor terminates
 }

@@ -1,8 +1,11 @@
 #pragma once
 // What GPU tests compare between two backends (or one backend before and after an edit): the
-// hits of the same rays, and a device buffer's size by its name in deviceMemoryByBuffer().
+// hits of the same rays, their images, and a device buffer's size by its name in
+// deviceMemoryByBuffer().
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -38,6 +41,18 @@ inline std::vector<Ray> raysInBox(uint32_t count, uint32_t seed, Vec3 lo, Vec3 h
     std::vector<Ray> rays;
     for (uint32_t i = 0; i < count; ++i) rays.push_back(randomRay(rng, lo, hi));
     return rays;
+}
+
+// The largest difference of any channel of any pixel between `a`'s and `b`'s mean images
+// (infinity where their sizes differ).
+inline float largestBeautyDifference(const Backend& a, const Backend& b) {
+    std::vector<float> pa, pb;
+    a.readBeauty(pa);
+    b.readBeauty(pb);
+    if (pa.size() != pb.size()) return INFINITY;
+    float worst = 0.0f;
+    for (size_t i = 0; i < pa.size(); ++i) worst = std::max(worst, std::fabs(pa[i] - pb[i]));
+    return worst;
 }
 
 inline uint64_t bufferBytes(const Backend& backend, const std::string& name) {

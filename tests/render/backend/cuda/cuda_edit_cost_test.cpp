@@ -139,13 +139,8 @@ TEST(CudaEditCost, MovingAnObjectWithItsLightsRendersLikeAFreshBuild) {
     fresh.setToggles(fixed);
     fresh.sync(scene, SceneChanges::All, {});
     fresh.render(16);
-    std::vector<float> a, b;
-    edited.readBeauty(a);
-    fresh.readBeauty(b);
-    ASSERT_EQ(a.size(), b.size());
-    float worst = 0.0f;
-    for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(a[i] - b[i]));
-    EXPECT_LE(worst, 1e-6f) << "same samples of the same scene and light table";
+    EXPECT_LE(test::largestBeautyDifference(edited, fresh), 1e-6f)
+        << "same samples of the same scene and light table";
 }
 
 TEST(CudaEditCost, DeviceMemoryByBufferLeavesOutWhatTheSceneDoesNotUse) {

@@ -97,13 +97,7 @@ TEST(CudaFirstBuild, TheFirstFrameWalksAGpuBuildAndTheSahTreeLandsBehindIt) {
     deferred.render(2);
     hostBuilt.render(4);
     EXPECT_EQ(deferred.stats().samplesPerPixel, 4u);
-    std::vector<float> a, b;
-    deferred.readBeauty(a);
-    hostBuilt.readBeauty(b);
-    ASSERT_EQ(a.size(), b.size());
-    float worst = 0.0f;
-    for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::fabs(a[i] - b[i]));
-    EXPECT_LE(worst, 1e-6f) << "the image changed with the tree";
+    EXPECT_LE(test::largestBeautyDifference(deferred, hostBuilt), 1e-6f) << "the image changed with the tree";
 }
 
 // A tree's topology holds for any positions of its primitives: the SAH tree built from the
@@ -156,29 +150,83 @@ TEST(CudaFirstBuild, ARefitAfterTheSwapRefitsTheSahTree) {
 }
 
 // With the compressed nodes on, the large mesh is still built on the GPU first and walks its
-// binary trees (before and after its SAH tree lands), the small one its compressed nodes, and
-// the hits are the CPU's throughout.
-TEST(CudaFirstBuild, WithCompressedNodesTheDeferredMeshWalksItsBinaryTrees) {
+// binary trees, the small one its compressed nodes. Its SAH tree lands with a compressed form
+// built behind the first frame too, appended after the others': the same nodes and entries the
+// host's build of that tree gives, less the deferred mesh's empty stand-in. The hits are the
+// CPU's throughout.
+TEST(CudaFirstBuild, WithCompressedNodesTheDeferredMeshGetsItsCompressedFormWithItsSahTree) {
     PT_REQUIRE_CUDA_DEVICE();
-    cuda::CudaBackend backend;
     IntegratorToggles wide = fixedSchedule(true);
     wide.gpuWideBvh = true;
+    cuda::CudaBackend backend, hostBuilt;
     backend.setToggles(wide);
+    wide.gpuFirstBuild = false;
+    hostBuilt.setToggles(wide);
     const Scene scene = largeSoupScene();
     EXPECT_TRUE(hasStep(backend.sync(scene, SceneChanges::All, {}), kGpuFirstBuildStep));
+    hostBuilt.sync(scene, SceneChanges::All, {});
     for (const ToggleState& s : backend.toggleStates()) {
         if (s.id == ToggleId::GpuFirstBuild) {
             EXPECT_TRUE(s.active) << s.note;
         }
     }
-    EXPECT_GT(test::bufferBytes(backend, "BLAS compressed leaf triangles"), 0u) << "the small mesh's";
+    const char* nodes = "BLAS compressed 8-wide nodes";
+    const char* entries = "BLAS compressed primitive indices";
+    const char* triangles = "BLAS compressed leaf triangles";
+    const uint64_t smallMeshNodes = test::bufferBytes(backend, nodes);
+    EXPECT_GT(test::bufferBytes(backend, triangles), 0u) << "the small mesh's";
+    EXPECT_LT(smallMeshNodes, test::bufferBytes(hostBuilt, nodes) / 10)
+        << "the large mesh's before it landed";
     EXPECT_EQ(backend.stats().walk, "compressed");
     CpuBackend cpu;
     cpu.sync(scene, SceneChanges::All, {});
     const std::vector<Ray> rays = test::soupRays(100000, 8);
     test::expectSameHits(backend, cpu, rays, "GPU first build beside compressed nodes vs CPU");
-    backend.finishBackgroundWork();
-    test::expectSameHits(backend, cpu, rays, "landed SAH tree beside compressed nodes vs CPU");
+
+    EXPECT_TRUE(backend.finishBackgroundWork().has_value());
+    EXPECT_EQ(test::bufferBytes(backend, nodes),
+              test::bufferBytes(hostBuilt, nodes) + sizeof(CompressedWideNode))
+        << "the landed tree's compressed nodes, after the stand-in's one";
+    EXPECT_EQ(test::bufferBytes(backend, entries), test::bufferBytes(hostBuilt, entries));
+    EXPECT_EQ(test::bufferBytes(backend, triangles), test::bufferBytes(hostBuilt, triangles));
+    EXPECT_EQ(test::bufferBytes(backend, "BLAS compressed sources (refit)"),
+              test::bufferBytes(hostBuilt, "BLAS compressed sources (refit)") +
+                  CompressedWideNode::kWidth * sizeof(uint32_t));
+    test::expectSameHits(backend, cpu, rays, "landed SAH tree's compressed nodes vs CPU");
+
+    // The images of the landed compressed form and of the host's, at equal samples.
+    backend.render(4);
+    hostBuilt.render(4);
+    EXPECT_LE(test::largestBeautyDifference(backend, hostBuilt), 1e-6f) << "the image changed with the tree";
+}
+
+// With the compressed nodes on, an edit before the swap and one after it: the landed tree is
+// refitted and its compressed form requantised (and its leaf triangles gathered again) from it,
+// and a refit after the swap requantises the appended form.
+TEST(CudaFirstBuild, WithCompressedNodesEditsBeforeAndAfterTheSwapRequantiseTheLandedForm) {
+    PT_REQUIRE_CUDA_DEVICE();
+    Scene scene = largeSoupScene();
+    cuda::CudaBackend edited;
+    IntegratorToggles neverRebuild = fixedSchedule(true);
+    neverRebuild.rebuildSahRatio = 1e9f;
+    neverRebuild.gpuWideBvh = true;
+    edited.setToggles(neverRebuild);
+    edited.sync(scene, SceneChanges::All, {});
+    const uint64_t before = test::bufferBytes(edited, "BLAS compressed 8-wide nodes");
+    for (Vec3& p : scene.meshes[0].positions) p = p * 1.3f + Vec3(0.0f, 0.4f, 0.0f);
+    EXPECT_EQ(edited.sync(scene, SceneChanges::Geometry, {}).action, "refit");
+    EXPECT_TRUE(edited.finishBackgroundWork().has_value()) << "nothing was building behind the first frame";
+    EXPECT_GT(test::bufferBytes(edited, "BLAS compressed 8-wide nodes"), 10 * before)
+        << "no compressed form landed";
+    CpuBackend cpu;
+    cpu.sync(scene, SceneChanges::All, {});
+    test::expectSameHits(edited, cpu, test::soupRays(100000, 9),
+                         "compressed form landed after an edit vs CPU");
+
+    for (Vec3& p : scene.meshes[0].positions) p = p * 0.8f + Vec3(0.2f, -0.3f, 0.1f);
+    EXPECT_EQ(edited.sync(scene, SceneChanges::Geometry, {}).action, "refit");
+    cpu.sync(scene, SceneChanges::Geometry, {});
+    test::expectSameHits(edited, cpu, test::soupRays(100000, 10), "landed compressed form refitted vs CPU");
 }
 
 }  // namespace
