@@ -47,18 +47,19 @@ struct IntegratorToggles {
     bool materialSort = false;     // wavefront: paths sorted by material before shading
     bool firstHitCache = true;     // reuse camera-ray hits across passes where the camera allows
     // The GPU's BLASes also get compressed 8-wide nodes (render/bvh/compressed_wide_bvh.h;
-    // Ylitie et al. 2017), built on the host beside the binary trees, but for meshes the GPU
-    // builds first (gpuFirstBuild), which walk their binary trees. The auto schedule's trial
-    // times both walks under each schedule (schedule_chooser.h); without it the compressed
-    // nodes are walked. On an H200 at 1280x720, seven scenes' path tracing against the binary
-    // walk alone: 1-1.5% slower on GolfBall and Balloon (the trial's own passes), level on three,
-    // 2.6% faster on the Cornell box, 1.6% on a barn lamp and 7-13% with depth of field; the
-    // compressed build cost a 200k-triangle mesh's first sync 50-58 ms (21 -> 71-79 ms).
+    // Ylitie et al. 2017), collapsed from the host's SAH trees on threads behind the first
+    // frame, which walks the binary nodes (so a 200k-triangle mesh's first sync stays at 28 ms,
+    // where collapsing in the compile made it 71-88 ms, H200). The auto schedule's trial times
+    // both walks under each schedule (schedule_chooser.h); without it the compressed nodes are
+    // walked where they exist. On an H200 at 1280x720, seven scenes' path tracing to 1024 spp
+    // against the binary walk alone: 0.3-1.8% slower on GolfBall, Balloon and a 64-instance
+    // field (the trial's own passes; it chose binary), level on a 1M sphere, 2.5% faster on
+    // the Cornell box, 1.7% on a barn lamp and 14% with depth of field.
     bool gpuWideBvh = true;
     // The GPU backend's first frame after a full build walks LBVHs built on the GPU for meshes
     // of kGpuFirstBuildMinPrimitives or more, while the host builds their binned SAH trees on a
     // thread behind it and swaps each in when done (the same hits, so the accumulation goes
-    // on). With gpuWideBvh those meshes walk their binary trees, the others their compressed nodes.
+    // on). With gpuWideBvh the SAH tree's compressed form follows it, collapsed on that thread.
     bool gpuFirstBuild = true;
     // The GPU backend's builds (the first frame's above, and rebuilds once refits have degraded a
     // tree) by H-PLOC (render/backend/cuda/gpu_bvh.h; Benthin et al. 2024), whose trees cost

@@ -17,10 +17,12 @@
 namespace pt {
 
 struct CompileOptions {
-    bool bruteForce = false;             // no BVH: validation only
-    bool mergeSmallInstances = true;     // merged_geometry.h (never with bruteForce)
-    bool wideBvh = false;                // the CPU's 8-wide BLASes too (wide_blases.h)
-    bool compressedWideBvh = false;      // the GPU's compressed 8-wide BLASes too (wide_blases.h)
+    bool bruteForce = false;          // no BVH: validation only
+    bool mergeSmallInstances = true;  // merged_geometry.h (never with bruteForce)
+    bool wideBvh = false;             // the CPU's 8-wide BLASes too (wide_blases.h)
+    // The GPU's compressed 8-wide BLASes too (wide_blases.h): for tests of the host's walk of
+    // them; the CUDA backend collapses them behind its first frame instead.
+    bool compressedWideBvh = false;
     uint64_t bruteForceBudget = 100000;  // triangles x instances above which bruteForce is refused
     // Meshes of at least this many primitives get a stand-in BLAS (one leaf over them all) and
     // a CompiledScene::deferredBlases entry, for the caller to build the tree elsewhere (the

@@ -21,6 +21,19 @@ std::pair<uint32_t, uint32_t> nodeRange(const std::vector<uint32_t>& roots, size
     return {roots[blas], blas + 1 < roots.size() ? roots[blas + 1] : uint32_t(total)};
 }
 
+// Entries [first, end) of BLAS `blas` in compressed forms whose BLASes start at `roots` (in
+// order) and which hold `total` entries. A BLAS's root is its first node filled, so its
+// primBase is the BLAS's first entry.
+std::pair<uint32_t, uint32_t> primRangeOf(const std::vector<CompressedWideNode>& nodes,
+                                          const std::vector<uint32_t>& roots, size_t total, uint32_t blas) {
+    const auto primBaseOf = [&](uint32_t b) {
+        PT_CHECK(roots[b] < nodes.size());
+        return nodes[roots[b]].primBase;
+    };
+    PT_CHECK(blas < roots.size());
+    return {primBaseOf(blas), blas + 1 < roots.size() ? primBaseOf(blas + 1) : uint32_t(total)};
+}
+
 // The most triangles one wide leaf of a triangle BLAS gathers from a binary subtree: two
 // blocks. A block tests four for about the price of one, and the boxes of small subtrees cull
 // less than they cost to test. Measured with the 8-wide AVX2 walk on a 1M-triangle sphere
@@ -126,20 +139,15 @@ void buildWideBlases(CompiledScene& compiled) {
     }
 }
 
-void buildCompressedBlases(CompiledScene& compiled) {
+CompressedBlases compressBlases(const CompiledScene& compiled, const std::vector<uint8_t>& skip) {
     const size_t count = compiled.blases.size();
-    // A deferred BLAS's stand-in leaf holds all its primitives, more than a compressed leaf can:
-    // it gets an empty compressed tree, which keeps the host's ranges in order. The caller builds
-    // its binary tree and walks that (the CUDA backend drops its compressed root then), until
-    // its SAH tree lands with a compressed form (DeviceScene::replaceCompressed).
-    std::vector<uint8_t> deferred(count, 0);
-    for (const DeferredBlas& d : compiled.deferredBlases) deferred[d.blas] = 1;
+    PT_CHECK(skip.size() == count);
     std::vector<CompressedWideBvh> wide(count);
     tbb::parallel_for(size_t(0), count, [&](size_t i) {
         const BlasRef& blas = compiled.blases[i];
-        wide[i] = deferred[i] ? compressToWide(nullptr, 0, nullptr)
-                              : compressToWide(compiled.blasNodes.data() + blas.nodeOffset, blas.nodeCount,
-                                               compiled.blasPrimIndices.data() + blas.primIndexOffset);
+        wide[i] = skip[i] ? compressToWide(nullptr, 0, nullptr)
+                          : compressToWide(compiled.blasNodes.data() + blas.nodeOffset, blas.nodeCount,
+                                           compiled.blasPrimIndices.data() + blas.primIndexOffset);
     });
     size_t entries = 0;
     for (const CompressedWideBvh& w : wide) entries += w.primIndices.size();
@@ -148,25 +156,39 @@ void buildCompressedBlases(CompiledScene& compiled) {
                                     std::to_string(entries) +
                                     " primitives, the compressed BVH at most 2^31 - 1");
     }
-    compiled.blasCompressedNodes.clear();
-    compiled.blasCompressedPrims.clear();
-    compiled.blasCompressedTriangles.clear();
-    compiled.compressedSourceNodes.clear();
-    compiled.blasCompressedRoots.assign(count, 0);
+    CompressedBlases out;
+    out.roots.assign(count, 0);
     for (size_t i = 0; i < count; ++i) {
-        const uint32_t firstNode = uint32_t(compiled.blasCompressedNodes.size());
-        const uint32_t firstPrim = uint32_t(compiled.blasCompressedPrims.size());
-        compiled.blasCompressedRoots[i] = firstNode;
-        rebaseCompressedNodes(wide[i], firstNode, firstPrim);
-        compiled.blasCompressedNodes.insert(compiled.blasCompressedNodes.end(), wide[i].nodes.begin(),
-                                            wide[i].nodes.end());
-        compiled.blasCompressedPrims.insert(compiled.blasCompressedPrims.end(), wide[i].primIndices.begin(),
-                                            wide[i].primIndices.end());
-        compiled.compressedSourceNodes.insert(compiled.compressedSourceNodes.end(),
-                                              wide[i].sourceNodes.begin(), wide[i].sourceNodes.end());
+        const uint32_t firstNode = uint32_t(out.forms.nodes.size());
+        out.roots[i] = firstNode;
+        rebaseCompressedNodes(wide[i], firstNode, uint32_t(out.forms.primIndices.size()));
+        out.forms.nodes.insert(out.forms.nodes.end(), wide[i].nodes.begin(), wide[i].nodes.end());
+        out.forms.primIndices.insert(out.forms.primIndices.end(), wide[i].primIndices.begin(),
+                                     wide[i].primIndices.end());
+        out.forms.sourceNodes.insert(out.forms.sourceNodes.end(), wide[i].sourceNodes.begin(),
+                                     wide[i].sourceNodes.end());
     }
+    return out;
+}
+
+std::pair<uint32_t, uint32_t> CompressedBlases::nodeRange(uint32_t blas) const {
+    return pt::nodeRange(roots, forms.nodes.size(), blas);
+}
+
+std::pair<uint32_t, uint32_t> CompressedBlases::primRange(uint32_t blas) const {
+    return primRangeOf(forms.nodes, roots, forms.primIndices.size(), blas);
+}
+
+void buildCompressedBlases(CompiledScene& compiled) {
+    std::vector<uint8_t> deferred(compiled.blases.size(), 0);
+    for (const DeferredBlas& d : compiled.deferredBlases) deferred[d.blas] = 1;
+    CompressedBlases built = compressBlases(compiled, deferred);
+    compiled.blasCompressedNodes = std::move(built.forms.nodes);
+    compiled.blasCompressedPrims = std::move(built.forms.primIndices);
+    compiled.compressedSourceNodes = std::move(built.forms.sourceNodes);
+    compiled.blasCompressedRoots = std::move(built.roots);
     compiled.blasCompressedTriangles.resize(compiled.blasCompressedPrims.size());
-    for (uint32_t i = 0; i < count; ++i) gatherCompressedTriangles(compiled, i);
+    for (uint32_t i = 0; i < compiled.blases.size(); ++i) gatherCompressedTriangles(compiled, i);
 }
 
 std::pair<uint32_t, uint32_t> compressedNodeRange(const CompiledScene& compiled, uint32_t blas) {
@@ -174,16 +196,8 @@ std::pair<uint32_t, uint32_t> compressedNodeRange(const CompiledScene& compiled,
 }
 
 std::pair<uint32_t, uint32_t> compressedPrimRange(const CompiledScene& compiled, uint32_t blas) {
-    // A BLAS's root is its first node filled, so its primBase is the BLAS's first entry. The
-    // host's roots are all set, in order (buildCompressedBlases); only the device drops one.
-    const auto primBaseOf = [&](uint32_t b) {
-        PT_CHECK(compiled.blasCompressedRoots[b] < compiled.blasCompressedNodes.size());
-        return compiled.blasCompressedNodes[compiled.blasCompressedRoots[b]].primBase;
-    };
-    PT_CHECK(blas < compiled.blasCompressedRoots.size());
-    return {primBaseOf(blas), blas + 1 < compiled.blasCompressedRoots.size()
-                                  ? primBaseOf(blas + 1)
-                                  : uint32_t(compiled.blasCompressedPrims.size())};
+    return primRangeOf(compiled.blasCompressedNodes, compiled.blasCompressedRoots,
+                       compiled.blasCompressedPrims.size(), blas);
 }
 
 void refreshWideBlas(CompiledScene& compiled, uint32_t blas) {

@@ -92,14 +92,12 @@ std::vector<TracedRaySet> benchRays(Backend& backend, const Scene& scene, const 
         IntegratorToggles toggles = settings.toggles;
         toggles.bruteForce = layout.bruteForce;
         if (!layout.wide) toggles.wideBvh = toggles.gpuWideBvh = false;
-        // Every layout walks the host's SAH trees: a mesh the GPU builds first has no compressed
-        // nodes (toggle_table.h), and the binary yardstick is then the same tree. The first
-        // layout builds again for that on the GPU; the others' toggles build again anyway.
-        toggles.gpuFirstBuild = false;
+        // Settled, every layout walks the host's SAH trees (a mesh the GPU builds first gets its
+        // SAH tree and compressed nodes behind its first frame), so the binary yardstick walks
+        // the same tree as the compressed nodes.
         backend.setToggles(toggles);
-        const bool rebuild = bvh && backend.name() != "cpu";
         try {
-            syncSettled(backend, scene, rebuild ? SceneChanges::All : SceneChanges::Settings);
+            syncSettled(backend, scene, SceneChanges::Settings);
         } catch (const std::invalid_argument& e) {
             report.add({"rays", "all", layout.name, 0.0, "Mrays/s", e.what()});
             continue;

@@ -1,6 +1,9 @@
 #include "render/backend/cuda/cuda_backend.h"
 
+#include <tbb/task_arena.h>
+
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <future>
 #include <new>
@@ -84,6 +87,11 @@ SyncReport CudaBackend::sync(const Scene& scene, const SceneDelta& changes, cons
     SyncReport report;
     const bool resized = scene.render.width != width_ || scene.render.height != height_;
     const SyncPlan plan = planSync(compiled_.get(), scene, changes);
+    // The collapse behind the first frame reads the compiled BLASes, which these change.
+    if (plan.fullBuild)
+        discardCompressedBlases();
+    else if (plan.refitGeometry || plan.instances)
+        landCompressedBlases(true);
     report.action = syncActionName(executeSyncPlan(plan, scene, *this, report, progress));
     compiled_->camera = makeRenderCamera(scene.camera, scene.render.width, scene.render.height);
     compiled_->settings = compileSettings(scene.render);
@@ -177,7 +185,7 @@ void CudaBackend::fullBuild(const Scene& scene, const ProgressFn& progress, Sync
     CompileOptions options;
     options.bruteForce = toggles_.bruteForce;
     options.mergeSmallInstances = toggles_.mergeInstances;
-    options.compressedWideBvh = toggles_.gpuWideBvh;
+    // The compressed forms (gpuWideBvh) are built behind the first frame, startCompressing().
     options.deferBlasesFrom = firstBuildOnGpu() ? kGpuFirstBuildMinPrimitives : 0u;
     auto compiled = std::make_unique<CompiledScene>(compileRenderScene(scene, options, progress));
     report.steps.push_back(
@@ -187,6 +195,7 @@ void CudaBackend::fullBuild(const Scene& scene, const ProgressFn& progress, Sync
                                 : "build BLAS (host, binned SAH; large meshes deferred)",
                             compiled->stats.blasSeconds});
     retireSahTrees();
+    compressedRefusal_.clear();
     pinnedVertices_.clear();
     compiled_ = std::move(compiled);
     // The deferred meshes' SAH trees build on threads behind the first frame, from their
@@ -216,6 +225,8 @@ void CudaBackend::fullBuild(const Scene& scene, const ProgressFn& progress, Sync
     timedStep(stream_, report, "upload", [&] { device_.uploadAll(*compiled_, stream_); });
     // Measured when a BLAS is first refitted, not here: most meshes never are.
     builtSah_.assign(device_.blasCount(), kSahUnknown);
+    compressedPlan_.assign(device_.blasCount(), CompressedPlan::Take);
+    if (compressesBlases()) device_.expectCompressed(stream_);
     buildDeferredBlasesOnDevice(report);
     if (!deferred.empty()) {
         std::vector<LargeArray<Aabb>> bounds;
@@ -237,6 +248,61 @@ void CudaBackend::fullBuild(const Scene& scene, const ProgressFn& progress, Sync
     if (!pending.empty()) refitChangedMeshes(scene, TouchedIds::only(pending), report, needsFullBuild);
     buildTlasOnDevice(report);
     hostTlasStale_ = !pending.empty();  // else the compile built the host's TLAS too
+    if (compressesBlases()) startCompressing(deferred);
+}
+
+bool CudaBackend::compressesBlases() const { return toggles_.gpuWideBvh && !toggles_.bruteForce; }
+
+void CudaBackend::startCompressing(const std::vector<uint32_t>& deferred) {
+    // The deferred meshes' forms come with their SAH trees (landSahTrees).
+    std::vector<uint8_t> skip(compiled_->blases.size(), 0);
+    for (const uint32_t blas : deferred) skip[blas] = 1;
+    compressing_ = std::async(std::launch::async, [this, skip] {
+        // An arena of its own, as BackgroundBvhBuild's: no other thread's wait steals from it.
+        tbb::task_arena arena;
+        return arena.execute([&] { return compressBlases(*compiled_, skip); });
+    });
+}
+
+void CudaBackend::landCompressedBlases(bool wait) {
+    if (!compressing_.valid()) return;
+    if (!wait && compressing_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+    CompressedBlases built;
+    try {
+        built = compressing_.get();
+    } catch (const std::invalid_argument& e) {
+        compressedRefusal_ = e.what();  // too many primitives: the binary walk stays
+        return;
+    } catch (const std::bad_alloc&) {
+        compressedRefusal_ = "the host ran out of memory for the compressed BVH";
+        return;
+    }
+    std::vector<DeviceScene::CompressedRange> ranges;
+    for (uint32_t i = 0; i < compressedPlan_.size(); ++i) {
+        if (compressedPlan_[i] == CompressedPlan::Skip) continue;  // its tree is not the compiled one
+        const auto [firstNode, endNode] = built.nodeRange(i);
+        const auto [firstPrim, endPrim] = built.primRange(i);
+        ranges.push_back({i, firstNode, endNode - firstNode, firstPrim, endPrim - firstPrim});
+    }
+    if (!device_.appendCompressed(std::move(built.forms), ranges, stream_)) return;
+    for (uint32_t i = 0; i < compressedPlan_.size(); ++i) {
+        // Built from the host's boxes: the device refitted these since (a pose skinned there).
+        if (compressedPlan_[i] == CompressedPlan::Requantize) device_.requantizeCompressed(i, stream_);
+    }
+}
+
+void CudaBackend::discardCompressedBlases() {
+    if (compressing_.valid()) compressing_.wait();  // it reads the compiled scene about to go
+    compressing_ = {};
+}
+
+void CudaBackend::landBackgroundWork(bool wait) {
+    const bool compressedLanding = compressing_.valid();
+    landCompressedBlases(wait);
+    const bool landed = landSahTrees(wait) || (compressedLanding && !compressing_.valid());
+    if (!landed) return;
+    PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
+    updateView();  // fitting a region to its tree, or appending compressed nodes, moved buffers
 }
 
 bool CudaBackend::uploadChangedVertices(const Mesh& mesh, uint32_t meshIndex) {
@@ -327,6 +393,7 @@ std::optional<SyncAction> CudaBackend::refitChangedMeshes(const Scene& scene, co
 bool CudaBackend::refitBlas(uint32_t i, SyncReport& report) {
     if (builtSah_[i] == kSahUnknown) builtSah_[i] = blasSahCost(i);  // still as built
     timedStep(stream_, report, "refit BLAS", [&] { refitToPrimitives(i); });
+    if (compressedPlan_[i] == CompressedPlan::Take) compressedPlan_[i] = CompressedPlan::Requantize;
     bool rebuilt = false;
     const float cost = blasSahCost(i);
     if (cost > toggles_.rebuildSahRatio * builtSah_[i]) {
@@ -369,7 +436,8 @@ void CudaBackend::rebuildBlasOnDevice(uint32_t i) {
         lbvh_.build(primBoxes_.data(), primitives, device_.blasNodes(i), device_.blasPrimIndices(i), stream_);
     }
     device_.setBlasNodeCount(i, lbvhNodeCount(primitives), stream_);
-    device_.dropCompressed(i, stream_);  // the kernels walk the new tree's binary nodes
+    device_.dropCompressed(i, stream_);         // the kernels walk the new tree's binary nodes
+    compressedPlan_[i] = CompressedPlan::Skip;  // and its compressed form, if still to come, is stale
 }
 
 bool CudaBackend::firstBuildOnGpu(std::string* why) const {
@@ -395,7 +463,7 @@ void CudaBackend::buildDeferredBlasesOnDevice(SyncReport& report) {
     compiled_->deferredBlases.clear();  // their boxes went to the SAH builds
 }
 
-void CudaBackend::landSahTrees(bool wait) {
+bool CudaBackend::landSahTrees(bool wait) {
     staleSahTrees_.erase(
         std::remove_if(staleSahTrees_.begin(), staleSahTrees_.end(),
                        [&](const std::unique_ptr<BackgroundBvhBuild>& b) { return wait || b->finished(); }),
@@ -421,29 +489,32 @@ void CudaBackend::landSahTrees(bool wait) {
         if (pending.treeLanded && (wait || pending.build->finished())) {
             const PendingSahTree done = std::move(pending);  // out of the list before anything can throw
             it = pendingSahTrees_.erase(it);
-            if (device_.replaceCompressed(done.blas, done.build->takeCompressed(), stream_) && done.refitted)
+            CompressedWideBvh wide = done.build->takeCompressed();
+            const DeviceScene::CompressedRange range{done.blas, 0, uint32_t(wide.nodes.size()), 0,
+                                                     uint32_t(wide.primIndices.size())};
+            if (!wide.nodes.empty() && device_.appendCompressed(std::move(wide), {range}, stream_) &&
+                done.refitted)
                 device_.requantizeCompressed(done.blas, stream_);  // from the refitted binary boxes
             landed = true;
             continue;
         }
         ++it;
     }
-    if (!landed) return;
-    PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
-    updateView();  // fitting a region to its tree moved the BLAS nodes
     const bool treesToLand = std::any_of(pendingSahTrees_.begin(), pendingSahTrees_.end(),
                                          [](const PendingSahTree& p) { return !p.treeLanded; });
-    if (!treesToLand) {  // the first frame's build memory back (a GPU rebuild allocates it again)
+    if (landed && !treesToLand) {  // the first frame's build memory back (a GPU rebuild allocates it again)
+        PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
         lbvh_.release();
         hploc_.release();
         primBoxes_ = {};
     }
+    return landed;
 }
 
 std::optional<double> CudaBackend::finishBackgroundWork() {
-    if (pendingSahTrees_.empty() && staleSahTrees_.empty()) return std::nullopt;
+    if (pendingSahTrees_.empty() && staleSahTrees_.empty() && !compressing_.valid()) return std::nullopt;
     const auto start = Clock::now();
-    landSahTrees(true);
+    landBackgroundWork(true);
     return secondsSince(start);
 }
 
@@ -510,6 +581,7 @@ void CudaBackend::setToggles(const IntegratorToggles& toggles) {
                             toggles.gpuWideBvh != toggles_.gpuWideBvh;
     toggles_ = toggles;
     if (bvhChanged) {  // the next sync recompiles (and checks the budget)
+        discardCompressedBlases();
         retireSahTrees();
         pinnedVertices_.clear();
         compiled_.reset();
@@ -614,7 +686,7 @@ void CudaBackend::render(uint32_t passes) {
         }
         // Between waves, not only between calls: a call of the CLI's lasts a quarter second,
         // and the first frame's GPU trees cost more to walk than the SAH trees.
-        if (!pendingSahTrees_.empty() || !staleSahTrees_.empty()) landSahTrees(false);
+        landBackgroundWork(false);
         // Per wave (its key says whether path AOVs record): a capped AOV stops where a wave
         // ends at its cap, and from then on the scene's specialised kernels run where no other
         // path AOV records.
@@ -760,6 +832,9 @@ std::vector<ToggleState> CudaBackend::toggleStates() const {
         } else if (s.id == ToggleId::PathRegeneration && !runsMegakernel()) {
             s.active = false;
             s.note = "megakernel only; the wavefront is on";
+        } else if (s.id == ToggleId::GpuWideBvh && !compressedRefusal_.empty()) {
+            s.active = false;
+            s.note = compressedRefusal_;
         } else if (s.id == ToggleId::GpuFirstBuild) {
             s.active = firstBuildOnGpu(&s.note);
         } else if (s.id == ToggleId::WideBvh) {

@@ -9,8 +9,11 @@
 // vertex edit uploads the range of vertices that changed.
 #include <cuda_runtime.h>
 
+#include <future>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "render/backend/backend.h"
 #include "render/backend/cuda/device_scene.h"
@@ -23,6 +26,7 @@
 #include "render/backend/sync_steps.h"
 #include "render/bvh/background_bvh_build.h"
 #include "render/compile/compile_scene.h"
+#include "render/compile/wide_blases.h"
 
 namespace pt::cuda {
 
@@ -113,10 +117,25 @@ private:
     // host.
     void buildDeferredBlasesOnDevice(SyncReport& report);
     bool firstBuildOnGpu(std::string* why = nullptr) const;
+    // Whether BLASes get compressed 8-wide nodes (gpuWideBvh, and a BVH at all).
+    bool compressesBlases() const;
+    // The compressed forms of the compiled BLASes (but the `deferred` ones', which come with
+    // their SAH trees), collapsed on a thread behind the first frame, which walks the binary
+    // nodes: on the H200 the collapse was 50-67 ms of a 64-instance field's first sync (one
+    // 200k-triangle mesh). The thread reads compiled_'s BLASes: a sync that changes them lands
+    // it first (waiting), and one that replaces them discards it.
+    void startCompressing(const std::vector<uint32_t>& deferred);
+    // Appends the forms once built (waiting for them where `wait`), for the BLASes whose trees
+    // are still the compiled ones, requantised where refitted since.
+    void landCompressedBlases(bool wait);
+    void discardCompressedBlases();
+    // The background work that is done (all of it, waiting, where `wait`): compressed forms and
+    // SAH trees.
+    void landBackgroundWork(bool wait);
     // Swaps in the SAH trees that are built (all of them, waiting for them, where `wait`), with
     // their compressed forms under gpuWideBvh; a swap keeps the accumulation, as every BVH of
-    // the same primitives gives the same hits.
-    void landSahTrees(bool wait);
+    // the same primitives gives the same hits. Returns whether anything landed.
+    bool landSahTrees(bool wait);
     // BLAS `blas` was rebuilt, or every BLAS changed (a new compile): what is building for it
     // would be stale, and is dropped once done (never waited for).
     void retireSahTree(uint32_t blas);
@@ -142,6 +161,17 @@ private:
     // compiled_'s vertex arrays, pinned for vertex-edit uploads; declared after compiled_ so they
     // are unpinned before its memory goes.
     std::vector<PinnedRange> pinnedVertices_;
+    // startCompressing's thread; declared after compiled_, which it reads, so that it is waited
+    // for before compiled_ goes.
+    std::future<CompressedBlases> compressing_;
+    // Per BLAS: what to do with its compressed form when compressing_ lands.
+    enum class CompressedPlan : uint8_t {
+        Take,
+        Requantize,  // refitted on the device since the compile
+        Skip,        // built on the device since (a deferred mesh, a rebuild): another tree
+    };
+    std::vector<CompressedPlan> compressedPlan_;
+    std::string compressedRefusal_;  // why the scene has no compressed nodes, where it was refused
     DeviceScene device_;
     LbvhBuilder lbvh_;  // BLAS builds without gpuPloc, and the TLAS beyond kHostTlasMaxInstances
     HplocBuilder hploc_;

@@ -78,26 +78,29 @@ void DeviceScene::uploadAll(const CompiledScene& host, cudaStream_t stream) {
     uploadFitted(blasPrimIndices_, host.blasPrimIndices, stream);
     uploadFitted(blases_, hostBlases_, stream);
 
-    uploadCompressed(host, stream);
+    clearCompressed();  // they come behind the first frame (expectCompressed)
     uploadMaterials(host, stream);
     uploadInstances(host, stream);
     uploadLights(host, stream);
 }
 
-void DeviceScene::uploadCompressed(const CompiledScene& host, cudaStream_t stream) {
-    uploadFitted(blasCompressedNodes_, host.blasCompressedNodes, stream);
-    uploadFitted(blasCompressedPrims_, host.blasCompressedPrims, stream);
-    uploadFitted(blasCompressedTriangles_, host.blasCompressedTriangles, stream);
-    uploadFitted(blasCompressedRoots_, host.blasCompressedRoots, stream);
-    uploadFitted(compressedSources_, host.compressedSourceNodes, stream);
-    compressedRoots_ = host.blasCompressedRoots;
-    compressedCounts_.assign(compressedRoots_.size(), 0);
-    compressedPrimRanges_.assign(compressedRoots_.size(), {0, 0});
-    for (uint32_t i = 0; i < compressedRoots_.size(); ++i) {
-        const auto [first, end] = compressedNodeRange(host, i);
-        compressedCounts_[i] = end - first;
-        compressedPrimRanges_[i] = compressedPrimRange(host, i);
-    }
+void DeviceScene::clearCompressed() {
+    blasCompressedNodes_ = {};
+    blasCompressedPrims_ = {};
+    blasCompressedTriangles_ = {};
+    blasCompressedRoots_ = {};
+    compressedSources_ = {};
+    compressedRoots_.clear();
+    compressedCounts_.clear();
+    compressedPrimRanges_.clear();
+}
+
+void DeviceScene::expectCompressed(cudaStream_t stream) {
+    clearCompressed();
+    compressedRoots_.assign(hostBlases_.size(), kNoCompressedRoot);
+    compressedCounts_.assign(hostBlases_.size(), 0);
+    compressedPrimRanges_.assign(hostBlases_.size(), {0, 0});
+    blasCompressedRoots_.upload(compressedRoots_, stream);
 }
 
 void DeviceScene::requantizeCompressed(uint32_t i, cudaStream_t stream) {
@@ -116,28 +119,30 @@ void DeviceScene::dropCompressed(uint32_t i, cudaStream_t stream) {
     blasCompressedRoots_.uploadAt(i, &compressedRoots_[i], 1, stream);
 }
 
-bool DeviceScene::replaceCompressed(uint32_t i, CompressedWideBvh wide, cudaStream_t stream) {
-    if (compressedRoots_.empty() || wide.nodes.empty()) return false;
+bool DeviceScene::appendCompressed(CompressedWideBvh forms, const std::vector<CompressedRange>& ranges,
+                                   cudaStream_t stream) {
+    if (compressedRoots_.empty() || ranges.empty()) return false;
     const uint32_t firstNode = uint32_t(blasCompressedNodes_.size());
     const uint32_t firstPrim = uint32_t(blasCompressedPrims_.size());
-    const uint32_t entries = uint32_t(wide.primIndices.size());
-    if (uint64_t(firstPrim) + entries >= kCompressedPrimitiveLimit) {
-        dropCompressed(i, stream);
-        return false;
-    }
-    // Appended, not in place: the BLAS's old range (one node, for a deferred BLAS) stays unused
+    const uint32_t entries = uint32_t(forms.primIndices.size());
+    if (uint64_t(firstPrim) + entries >= kCompressedPrimitiveLimit) return false;
+    // Appended, not in place: a BLAS's old range (one node, where it was deferred) stays unused
     // until the next upload, and no other BLAS moves.
-    rebaseCompressedNodes(wide, firstNode, firstPrim);
-    blasCompressedNodes_.append(wide.nodes.data(), wide.nodes.size(), stream);
-    blasCompressedPrims_.append(wide.primIndices.data(), entries, stream);
-    compressedSources_.append(wide.sourceNodes.data(), wide.sourceNodes.size(), stream);
+    rebaseCompressedNodes(forms, firstNode, firstPrim);
+    blasCompressedNodes_.append(forms.nodes.data(), forms.nodes.size(), stream);
+    blasCompressedPrims_.append(forms.primIndices.data(), entries, stream);
+    compressedSources_.append(forms.sourceNodes.data(), forms.sourceNodes.size(), stream);
     blasCompressedTriangles_.growKeeping(size_t(firstPrim) + entries, stream);
-    compressedRoots_[i] = firstNode;
-    compressedCounts_[i] = uint32_t(wide.nodes.size());
-    compressedPrimRanges_[i] = {firstPrim, firstPrim + entries};
-    blasCompressedRoots_.uploadAt(i, &compressedRoots_[i], 1, stream);
-    gatherLeafTriangles(blasCompressedTriangles_.data() + firstPrim, blasCompressedPrims_.data() + firstPrim,
-                        entries, triangles_.data(), positions_.data(), hostBlases_[i], stream);
+    for (const CompressedRange& r : ranges) {
+        PT_CHECK(r.blas < compressedRoots_.size());
+        compressedRoots_[r.blas] = firstNode + r.firstNode;
+        compressedCounts_[r.blas] = r.nodeCount;
+        compressedPrimRanges_[r.blas] = {firstPrim + r.firstPrim, firstPrim + r.firstPrim + r.primCount};
+        gatherLeafTriangles(blasCompressedTriangles_.data() + firstPrim + r.firstPrim,
+                            blasCompressedPrims_.data() + firstPrim + r.firstPrim, r.primCount,
+                            triangles_.data(), positions_.data(), hostBlases_[r.blas], stream);
+    }
+    blasCompressedRoots_.uploadAt(0, compressedRoots_.data(), compressedRoots_.size(), stream);
     return true;
 }
 

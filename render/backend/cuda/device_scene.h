@@ -96,13 +96,19 @@ public:
     }
     void requantizeCompressed(uint32_t i, cudaStream_t stream);
     void dropCompressed(uint32_t i, cudaStream_t stream);
-    // BLAS i's compressed form, of the binary tree now in its region (uploadBlasTree), in place
-    // of the one it had (a deferred BLAS's empty one, or one dropped): appended after every
-    // BLAS's nodes and entries, its leaf triangles gathered from the current positions. Where
-    // the scene has no compressed nodes (gpuWideBvh off), or the entries would pass
-    // kCompressedPrimitiveLimit, it keeps walking its binary nodes; returns whether it walks
-    // the compressed ones.
-    bool replaceCompressed(uint32_t i, CompressedWideBvh wide, cudaStream_t stream);
+    // A scene's compressed forms come after its upload, built on the host behind the first
+    // frame: until then every BLAS walks its binary nodes. With the toggle on, expectCompressed
+    // gives each BLAS an empty root (kNoCompressedRoot); appendCompressed then adds forms built
+    // from binary trees now in their regions, after every BLAS's nodes and entries, and points
+    // the BLASes of `ranges` (each a range of `forms`) at theirs, their leaf triangles gathered
+    // from the current positions. It returns false, and those BLASes keep walking their binary
+    // nodes, where the toggle is off or the entries would pass kCompressedPrimitiveLimit.
+    struct CompressedRange {
+        uint32_t blas, firstNode, nodeCount, firstPrim, primCount;
+    };
+    void expectCompressed(cudaStream_t stream);
+    bool appendCompressed(CompressedWideBvh forms, const std::vector<CompressedRange>& ranges,
+                          cudaStream_t stream);
 
     // The TLAS over the instances (GPU LBVH over their world boxes, `boxes` its scratch), or
     // only tlasInstanceIndices = {0} for one instance where skipsTlasForOneInstance().
@@ -116,7 +122,7 @@ public:
     uint64_t bytes() const;
 
 private:
-    void uploadCompressed(const CompiledScene& host, cudaStream_t stream);
+    void clearCompressed();
     // A new layout of the BLAS node regions (and parent links) with BLAS i's holding `capacity`
     // nodes, of which it keeps its first `keep` (at most `capacity`); the others move as they
     // are.
