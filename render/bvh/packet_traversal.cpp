@@ -190,6 +190,18 @@ uint32_t tracePacket(const RenderScene& scene, PacketRoute route, const Ray* ray
 
 bool packetWalkApplies(const RenderScene& scene) { return packetRoute(scene) != PacketRoute::None; }
 
+bool raysCoherent(const Ray* rays, uint32_t count) {
+    constexpr float kCosSquared = 0.81f;  // cos(25.8 degrees)^2
+    const Vec3 first = rays[0].direction;
+    const float firstLengthSquared = dot(first, first);
+    for (uint32_t i = 1; i < count; ++i) {
+        const Vec3 d = rays[i].direction;
+        const float c = dot(first, d);
+        if (!(c > 0.0f && c * c >= kCosSquared * firstLengthSquared * dot(d, d))) return false;
+    }
+    return true;
+}
+
 void intersectClosestPacket(const RenderScene& scene, const Ray* rays, uint32_t count, Hit* hits) {
     assert(count >= 1 && count <= kRayPacketSize && "a packet holds 1 to 8 rays");
     const PacketRoute route = packetRoute(scene);

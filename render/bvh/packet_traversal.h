@@ -33,6 +33,14 @@ constexpr uint32_t kRayPacketSize = 8;
 // traces the rays one by one.
 bool packetWalkApplies(const RenderScene& scene);
 
+// Whether `count` rays point about one way (each within about 25 degrees of the first), so that
+// they enter mostly the same nodes and walking them together pays: camera rays of neighbouring
+// pixels, shadow rays toward one light. Diffuse bounces point every way: in packets their
+// closest hits ran 0.88-0.96x as fast as one at a time (bench's 1M sphere at 640x480, one
+// thread pinned), since the packet's interval test needs one sign per axis and each lane then
+// tests every box it is offered.
+bool raysCoherent(const Ray* rays, uint32_t count);
+
 // hits[i] = what intersectClosest(scene, rays[i], hits[i]) gives, bit for bit, for i < count
 // (1 <= count <= kRayPacketSize).
 void intersectClosestPacket(const RenderScene& scene, const Ray* rays, uint32_t count, Hit* hits);
