@@ -24,8 +24,8 @@ BackgroundBvhBuild::BackgroundBvhBuild(LargeArray<Aabb> primBounds, bool compres
             try {
                 compressed_ = compressToWide(result_.nodes.data(), uint32_t(result_.nodes.size()),
                                              result_.primIndices.data());
-            } catch (const std::bad_alloc&) {
-                compressed_ = {};  // the tree stands without it
+            } catch (...) {
+                compressed_ = {};  // out of memory, say: the tree stands without it
             }
         }
         finished_.store(true, std::memory_order_release);

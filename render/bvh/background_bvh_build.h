@@ -42,7 +42,7 @@ public:
     // threw (std::bad_alloc).
     const Bvh& tree();
     // The tree's compressed form, once, waiting for the thread; empty (no nodes) where not asked
-    // for or where the host ran out of memory for it (the tree stands without it).
+    // for or where its collapse failed (the host ran out of memory: the tree stands without it).
     CompressedWideBvh takeCompressed();
 
 private:
