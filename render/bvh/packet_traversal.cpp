@@ -212,6 +212,14 @@ void intersectClosestPacket(const RenderScene& scene, const Ray* rays, uint32_t 
     tracePacket(scene, route, rays, count, hits, false);
 }
 
+void intersectClosestGrouped(const RenderScene& scene, const Ray* rays, uint32_t count, Hit* hits) {
+    if (raysCoherent(rays, count)) {
+        intersectClosestPacket(scene, rays, count, hits);
+        return;
+    }
+    for (uint32_t i = 0; i < count; ++i) intersectClosest(scene, rays[i], hits[i]);
+}
+
 uint32_t intersectAnyPacket(const RenderScene& scene, const Ray* rays, uint32_t count) {
     assert(count >= 1 && count <= kRayPacketSize && "a packet holds 1 to 8 rays");
     const PacketRoute route = packetRoute(scene);

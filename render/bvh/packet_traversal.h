@@ -44,6 +44,8 @@ bool raysCoherent(const Ray* rays, uint32_t count);
 // hits[i] = what intersectClosest(scene, rays[i], hits[i]) gives, bit for bit, for i < count
 // (1 <= count <= kRayPacketSize).
 void intersectClosestPacket(const RenderScene& scene, const Ray* rays, uint32_t count, Hit* hits);
+// The same hits, walked as a packet where raysCoherent, else one ray at a time.
+void intersectClosestGrouped(const RenderScene& scene, const Ray* rays, uint32_t count, Hit* hits);
 
 // Shadow rays: bit i set where intersectAny(scene, rays[i]) is true, for i < count (1 <= count
 // <= kRayPacketSize). The walk is intersectClosestPacket's with any-hit leaves; a lane that finds

@@ -265,11 +265,7 @@ bool CpuBackend::renderTile(const RenderScene& scene, const AovBuffers& aovs, ui
                         states[k] = generatePath(scene, px[k], py[k], sample);
                         rays[k] = states[k].ray;
                     }
-                    if (raysCoherent(rays, n)) {
-                        intersectClosestPacket(scene, rays, n, hits);
-                    } else {  // a wide lens's rays, say: one at a time is faster
-                        for (uint32_t k = 0; k < n; ++k) intersectClosest(scene, rays[k], hits[k]);
-                    }
+                    intersectClosestGrouped(scene, rays, n, hits);  // a wide lens's blocks one by one
                     for (uint32_t k = 0; k < n; ++k)
                         L[k] = finishPathFromCameraHit(scene, states[k], hits[k], counters);
                 } else {
@@ -338,15 +334,12 @@ void traceRange(const RenderScene& scene, const std::vector<Ray>& rays, size_t b
         if (n > 1 && anyHit) {
             const uint32_t occluded = intersectAnyPacket(scene, &rays[i], n);
             for (uint32_t k = 0; k < n; ++k) results[i + k] = occlusion((occluded >> k) & 1u);
-        } else if (n > 1 && raysCoherent(&rays[i], n)) {
-            intersectClosestPacket(scene, &rays[i], n, &results[i]);
+        } else if (n > 1) {
+            intersectClosestGrouped(scene, &rays[i], n, &results[i]);
+        } else if (anyHit) {
+            results[i] = occlusion(intersectAny(scene, rays[i]));
         } else {
-            for (size_t k = i; k < i + n; ++k) {
-                if (anyHit)
-                    results[k] = occlusion(intersectAny(scene, rays[k]));
-                else
-                    intersectClosest(scene, rays[k], results[k]);
-            }
+            intersectClosest(scene, rays[i], results[i]);
         }
     }
 }

@@ -264,18 +264,18 @@ void CudaBackend::startCompressing(const std::vector<uint32_t>& deferred) {
     });
 }
 
-void CudaBackend::landCompressedBlases(bool wait) {
-    if (!compressing_.valid()) return;
-    if (!wait && compressing_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+bool CudaBackend::landCompressedBlases(bool wait) {
+    if (!compressing_.valid()) return false;
+    if (!wait && compressing_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return false;
     CompressedBlases built;
     try {
         built = compressing_.get();
     } catch (const std::invalid_argument& e) {
         compressedRefusal_ = e.what();  // too many primitives: the binary walk stays
-        return;
+        return true;
     } catch (const std::bad_alloc&) {
         compressedRefusal_ = "the host ran out of memory for the compressed BVH";
-        return;
+        return true;
     }
     std::vector<DeviceScene::CompressedRange> ranges;
     for (uint32_t i = 0; i < compressedPlan_.size(); ++i) {
@@ -284,11 +284,12 @@ void CudaBackend::landCompressedBlases(bool wait) {
         const auto [firstPrim, endPrim] = built.primRange(i);
         ranges.push_back({i, firstNode, endNode - firstNode, firstPrim, endPrim - firstPrim});
     }
-    if (!device_.appendCompressed(std::move(built.forms), ranges, stream_)) return;
+    if (!device_.appendCompressed(std::move(built.forms), ranges, stream_)) return true;
     for (uint32_t i = 0; i < compressedPlan_.size(); ++i) {
         // Built from the host's boxes: the device refitted these since (a pose skinned there).
         if (compressedPlan_[i] == CompressedPlan::Requantize) device_.requantizeCompressed(i, stream_);
     }
+    return true;
 }
 
 void CudaBackend::discardCompressedBlases() {
@@ -297,10 +298,8 @@ void CudaBackend::discardCompressedBlases() {
 }
 
 void CudaBackend::landBackgroundWork(bool wait) {
-    const bool compressedLanding = compressing_.valid();
-    landCompressedBlases(wait);
-    const bool landed = landSahTrees(wait) || (compressedLanding && !compressing_.valid());
-    if (!landed) return;
+    const bool compressedLanded = landCompressedBlases(wait);
+    if (!landSahTrees(wait) && !compressedLanded) return;
     PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
     updateView();  // fitting a region to its tree, or appending compressed nodes, moved buffers
 }
@@ -476,8 +475,8 @@ bool CudaBackend::landSahTrees(bool wait) {
             try {
                 tree = &pending.build->tree();
             } catch (const std::bad_alloc&) {
-                it = pendingSahTrees_.erase(
-                    it);  // the host ran out of memory for it: the BLAS keeps its GPU build
+                // The host ran out of memory for it: the BLAS keeps its GPU build.
+                it = pendingSahTrees_.erase(it);
                 continue;
             }
             device_.uploadBlasTree(pending.blas, tree->nodes, tree->primIndices, stream_);

@@ -126,8 +126,9 @@ private:
     // it first (waiting), and one that replaces them discards it.
     void startCompressing(const std::vector<uint32_t>& deferred);
     // Appends the forms once built (waiting for them where `wait`), for the BLASes whose trees
-    // are still the compiled ones, requantised where refitted since.
-    void landCompressedBlases(bool wait);
+    // are still the compiled ones, requantised where refitted since. Returns whether the
+    // collapse was done (landed, or refused).
+    bool landCompressedBlases(bool wait);
     void discardCompressedBlases();
     // The background work that is done (all of it, waiting, where `wait`): compressed forms and
     // SAH trees.
