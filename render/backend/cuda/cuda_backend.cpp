@@ -856,11 +856,15 @@ std::vector<double> CudaBackend::traceRays(const std::vector<Ray>& rays, bool an
     if (!compiled_) return seconds;
     queryRays_.upload(rays, stream_);
     queryHits_.resize(rays.size());
+    if (queryClaims_.size() == 0) {
+        queryClaims_.resize(1);
+        queryClaims_.fillZero(stream_);
+    }
     StreamTimer timer;
     for (uint32_t run = 0; run < runs; ++run) {
         seconds.push_back(timer.time(stream_, [&] {
             launchTraceRays(view_, queryRays_.data(), uint32_t(rays.size()), anyHit, queryHits_.data(),
-                            stream_);
+                            queryClaims_.data(), stream_);
         }));
     }
     if (hits) queryHits_.download(*hits);
@@ -878,7 +882,7 @@ std::vector<std::pair<std::string, uint64_t>> CudaBackend::deviceMemoryByBuffer(
     rows.emplace_back("BVH scratch (refit visits)", refitVisits_.bytes());
     rows.emplace_back("BVH scratch (LBVH builder)", lbvh_.bytes());
     rows.emplace_back("BVH scratch (H-PLOC builder)", hploc_.bytes());
-    rows.emplace_back("ray queries", queryRays_.bytes() + queryHits_.bytes());
+    rows.emplace_back("ray queries", queryRays_.bytes() + queryHits_.bytes() + queryClaims_.bytes());
     return rows;
 }
 

@@ -22,6 +22,7 @@
 #include "render/backend/cuda/gpu_denoiser.h"
 #include "render/backend/cuda/path_scheduler.h"
 #include "render/backend/cuda/pinned_range.h"
+#include "render/backend/cuda/work_claims.h"
 #include "render/backend/schedule_chooser.h"
 #include "render/backend/sync_steps.h"
 #include "render/bvh/background_bvh_build.h"
@@ -188,6 +189,7 @@ private:
     DeviceBuffer<uint32_t> refitVisits_;
     DeviceBuffer<Ray> queryRays_;
     DeviceBuffer<Hit> queryHits_;
+    DeviceBuffer<WorkClaims> queryClaims_;    // the ray-query kernel's (persistent_grid.cuh)
     std::vector<float> builtSah_;             // per BLAS, after its last build; kSahUnknown until needed
     std::vector<uint32_t> meshVertexOffset_;  // per mesh: its first vertex in compiled_->positions
     // The binned SAH trees building on the host behind the first frame, by BLAS, until their

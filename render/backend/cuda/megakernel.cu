@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "render/backend/cuda/cuda_check.h"
+#include "render/backend/cuda/persistent_grid.cuh"
 #include "render/backend/cuda/register_cap.cuh"
 #include "render/backend/cuda/variant_dispatch.cuh"
 #include "render/backend/cuda/warp_atomics.cuh"
@@ -107,15 +108,6 @@ __global__ void __launch_bounds__(kBlock, kMinBlocks)
     warpAtomicAdd(&b.counters->nonfinite, uint32_t(counters.nonfiniteSamples));
 }
 
-// Blocks of `kernel` the whole GPU keeps resident at once: the persistent grid.
-uint32_t residentBlocks(const void* kernel) {
-    int device = 0, sms = 0, perSm = 0;
-    PT_CUDA_CHECK(cudaGetDevice(&device));
-    PT_CUDA_CHECK(cudaDeviceGetAttribute(&sms, cudaDevAttrMultiProcessorCount, device));
-    PT_CUDA_CHECK(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&perSm, kernel, int(kBlock), 0));
-    return uint32_t(std::max(sms * perSm, 1));
-}
-
 }  // namespace
 
 const void* megakernelSymbol(uint32_t variant) {
@@ -134,13 +126,10 @@ void launchMegakernel(uint32_t variant, const RenderScene& scene, const WaveBuff
         PT_CUDA_CHECK_LAUNCH("aovMegakernel");
         return;
     }
-    // Looked up once a variant: the occupancy query walks the kernel's attributes.
-    static uint32_t resident[kKernelVariantCount] = {};
-    if (resident[variant] == 0) resident[variant] = residentBlocks(megakernelSymbol(variant));
     PT_CUDA_CHECK(cudaMemsetAsync(&b.counters->claimedPaths, 0, sizeof(uint32_t), stream));
     forKernelVariant(variant, [&](auto features) {
-        megakernel<decltype(features)::value>
-            <<<std::min(blocks, resident[variant]), kBlock, 0, stream>>>(scene, b, shape, regeneration);
+        launchPersistent<megakernel<decltype(features)::value>, kBlock>(shape.pathCount, stream, scene, b,
+                                                                        shape, regeneration);
     });
     PT_CUDA_CHECK_LAUNCH("megakernel");
 }

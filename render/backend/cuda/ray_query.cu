@@ -1,5 +1,7 @@
 // Traversal alone over a batch of rays: what benchmarks time as Mrays/s and picking asks.
 #include "render/backend/cuda/cuda_check.h"
+#include "render/backend/cuda/persistent_grid.cuh"
+#include "render/backend/cuda/register_cap.cuh"
 #include "render/backend/cuda/wavefront_kernels.h"
 #include "render/bvh/traversal.h"
 
@@ -12,8 +14,8 @@ constexpr uint32_t kBlock = 128;
 // The traversal code a scene needs (feature_set.h), as the path kernels' variants choose theirs
 // (kernel_variants.h): a scene of one instance walks its BLAS without a TLAS. A kernel's
 // registers are those of its heaviest path, and the TLAS walk keeps its own state live under
-// every BLAS walk: the generic kernel takes 108 registers (ptxas, sm_90) where the one-instance
-// kernel takes 72 (closest hit; 70 for any hit), so timing a one-instance scene with it measured
+// every BLAS walk: the generic kernel took 108 registers (ptxas, sm_90) where the one-instance
+// kernel took 72 (closest hit; 70 for any hit), so timing a one-instance scene with it measured
 // the TLAS, not the walk (H200, 1080p, 1M-triangle sphere, Mrays/s primary / diffuse / shadow:
 // 2231 / 1197 / 167 with the generic kernel, 2895 / 1527 / 1036 with this one). Instanced
 // scenes keep the generic kernel: one for them without the brute-force loop took as many
@@ -22,29 +24,51 @@ constexpr uint32_t kBlock = 128;
 constexpr FeatureSet kSingleInstanceTraversal =
     kAllFeatures & ~(feature::kMultipleInstances | feature::kBruteForce);
 
+// Registers a thread (register_cap.cuh), and a persistent grid (persistent_grid.cuh).
+// Uncapped, the one-instance kernel took 79 registers (closest hit; 6 blocks of 128 an SM) and
+// the generic one 114. H200, bench's rays, medians of 7 launches, Mrays/s, camera / diffuse /
+// shadow rays, one ray a thread uncapped, then persistent and capped (64 and 72):
+//   1M-triangle sphere, 1080p, compressed walk: 2869-2883 / 1717-1727 / 1309-1311 to 3176-3177 /
+//   1825-1827 / 1444-1453 (capped alone: 2971-2986 / 1784-1785 / 1396-1397; persistent alone:
+//   3157 / 1793-1795 / 1443-1456); its binary walk: 2564-2572 / 1467-1479 / 997-1003 to
+//   2956-2963 / 1646-1658 / 1061-1074;
+//   64 instances of a 200k-triangle sphere, 720p, compressed walk: 3292-3299 / 144 / 303-305
+//   to 3465-3700 / 221-231 / 271-274; binary walk: 2558-2573 / 119 / 174-178 to 2832-2900 /
+//   163-165 / 172-178 (its diffuse and shadow sets are small, 53,028 and 40,177 rays).
+// The generic kernel spilled at 64 registers: one ray a thread, 3290-3448 camera rays a second
+// against 3563-3581 at 72 on the field.
+template <FeatureSet kF>
+constexpr uint32_t kRayRegisters = (kF & feature::kMultipleInstances) ? 72u : 64u;
+
 template <FeatureSet kF, bool kAnyHit>
-__global__ void traceRaysKernel(RenderScene scene, const Ray* rays, uint32_t count, Hit* hits) {
-    const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
-    if (i >= count) return;
-    const Ray ray = rays[i];
-    Hit hit;
-    if (kAnyHit) {
-        hit = Hit{};
-        hit.instance = intersectAny<kF>(scene, ray) ? 0u : Hit::kNoHit;
-    } else {
-        intersectClosest<kF>(scene, ray, hit);
-    }
-    hits[i] = hit;
+__global__ void __launch_bounds__(kBlock, blocksPerSmFor(kBlock, kRayRegisters<kF>))
+    traceRaysKernel(RenderScene scene, const Ray* rays, uint32_t count, Hit* hits, WorkClaims* claims) {
+    forClaimedItems(claims, count, [&](uint32_t i) {
+        const Ray ray = rays[i];
+        Hit hit;
+        if (kAnyHit) {
+            hit = Hit{};
+            hit.instance = intersectAny<kF>(scene, ray) ? 0u : Hit::kNoHit;
+        } else {
+            intersectClosest<kF>(scene, ray, hit);
+        }
+        hits[i] = hit;
+    });
+}
+
+template <FeatureSet kF, bool kAnyHit>
+void launchFor(const RenderScene& scene, const Ray* rays, uint32_t count, Hit* hits, WorkClaims* claims,
+               cudaStream_t stream) {
+    launchPersistent<traceRaysKernel<kF, kAnyHit>, kBlock>(count, stream, scene, rays, count, hits, claims);
 }
 
 template <FeatureSet kF>
 void launchWith(const RenderScene& scene, const Ray* rays, uint32_t count, bool anyHit, Hit* hits,
-                cudaStream_t stream) {
-    const uint32_t blocks = (count + kBlock - 1) / kBlock;
+                WorkClaims* claims, cudaStream_t stream) {
     if (anyHit) {
-        traceRaysKernel<kF, true><<<blocks, kBlock, 0, stream>>>(scene, rays, count, hits);
+        launchFor<kF, true>(scene, rays, count, hits, claims, stream);
     } else {
-        traceRaysKernel<kF, false><<<blocks, kBlock, 0, stream>>>(scene, rays, count, hits);
+        launchFor<kF, false>(scene, rays, count, hits, claims, stream);
     }
     PT_CUDA_CHECK_LAUNCH("traceRaysKernel");
 }
@@ -52,12 +76,12 @@ void launchWith(const RenderScene& scene, const Ray* rays, uint32_t count, bool 
 }  // namespace
 
 void launchTraceRays(const RenderScene& scene, const Ray* rays, uint32_t count, bool anyHit, Hit* hits,
-                     cudaStream_t stream) {
+                     WorkClaims* claims, cudaStream_t stream) {
     if (count == 0) return;
     if (scene.bruteForce || scene.instances.count > 1) {
-        launchWith<kAllFeatures>(scene, rays, count, anyHit, hits, stream);
+        launchWith<kAllFeatures>(scene, rays, count, anyHit, hits, claims, stream);
     } else {
-        launchWith<kSingleInstanceTraversal>(scene, rays, count, anyHit, hits, stream);
+        launchWith<kSingleInstanceTraversal>(scene, rays, count, anyHit, hits, claims, stream);
     }
 }
 
