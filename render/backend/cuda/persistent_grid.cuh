@@ -46,22 +46,21 @@ void launchPersistent(uint32_t count, cudaStream_t stream, const Args&... args) 
     kKernel<<<blocks, kBlockThreads, 0, stream>>>(args...);
 }
 
-// Calls work(i) once for every i in [0, count). A warp's first 32 items are its own (its index
-// in the grid), later batches are claimed from claims->claimed: claims made at the start, every
-// warp at once, would queue on one address (a set of 40,177 rays, fewer than the grid has
-// threads, traced 10% slower with them). Every thread of the grid must call it (no thread may
-// return before), and blocks must be whole warps.
+// Calls work(i) once for every i in [0, count), each warp taking 32 consecutive items at a time
+// from claims->claimed. Every thread of the grid must call it (no thread may return before),
+// and blocks must be whole warps.
 template <class Work>
 __device__ __forceinline__ void forClaimedItems(WorkClaims* claims, uint32_t count, Work&& work) {
-    const uint32_t gridItems = gridDim.x * blockDim.x;
-    for (uint32_t i = blockIdx.x * blockDim.x + threadIdx.x; i < count;
-         i = gridItems + warpReserve(&claims->claimed, true)) {
-        work(i);  // a lane past the count stops; the counter only grows, so its warp's others follow
+    for (;;) {
+        const uint32_t i = warpReserve(&claims->claimed, true);
+        if (i >= count) break;  // the counter only grows: the warp's other lanes stop at their next claim
+        work(i);
     }
     __syncwarp();
     if (laneId() == 0) {
         __threadfence();  // this warp's claims happen before it counts itself done
-        if (atomicAdd(&claims->finished, 1u) == gridItems / 32u - 1u) {
+        const uint32_t warps = gridDim.x * blockDim.x / 32u;
+        if (atomicAdd(&claims->finished, 1u) == warps - 1u) {
             claims->claimed = 0;  // every other warp has finished claiming
             claims->finished = 0;
         }

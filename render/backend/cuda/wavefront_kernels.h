@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "render/backend/cuda/sliced_array.cuh"
+#include "render/backend/cuda/work_claims.h"
 #include "render/bvh/hit.h"
 #include "render/integrator/aov.h"
 #include "render/integrator/path_state.h"
@@ -122,9 +123,10 @@ WavefrontSymbols wavefrontSymbols(uint32_t variant);
 const void* megakernelSymbol(uint32_t variant);
 
 // Traversal alone (Backend::traceRays): closest hits, or with anyHit occlusion as instance 0 /
-// Hit::kNoHit, of `count` world-space rays.
+// Hit::kNoHit, of `count` world-space rays, on a persistent grid that hands the rays out with
+// `claims` (persistent_grid.cuh).
 void launchTraceRays(const RenderScene& scene, const Ray* rays, uint32_t count, bool anyHit, Hit* hits,
-                     cudaStream_t stream);
+                     WorkClaims* claims, cudaStream_t stream);
 
 // Adds the wave's samples to the per-pixel double sums (RGB), samples of a pixel in order, and
 // to the variance AOV where it is on.
