@@ -1,6 +1,5 @@
 // The megakernel schedule: one thread runs whole paths, the loop the CPU backend runs (tracePath's
 // fused steps), compiled once per kernel variant (kernel_variants.h).
-#include <algorithm>
 
 #include "render/backend/cuda/cuda_check.h"
 #include "render/backend/cuda/persistent_grid.cuh"
