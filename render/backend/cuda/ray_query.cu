@@ -43,9 +43,10 @@ constexpr FeatureSet kSingleInstanceTraversal =
 // a time and claimed rays for the idle ones once fewer than N of them held a ray. On the 1M
 // sphere (H200, 1080p, compressed walk, two rounds, Mrays/s camera / diffuse / shadow) it was
 // slower at every N: 2480-2520 / 1498-1548 / 1195-1221 at N = 20 and 24, 2061-2082 /
-// 1244-1247 / 1081-1097 at 32, against this kernel's 2991-2998 / 1710-1716 / 1372-1377. ncu:
-// active threads a warp 18.7 against 19.1 on camera rays (the idle ones are within the walk,
-// between its node and leaf steps) and 15.5 against 13.7 on diffuse rays, but the walk's
+// 1244-1247 / 1081-1097 at 32, against 2991-2998 / 1710-1716 / 1372-1377 for this kernel on
+// the same stepped walk (3182 / 1818 / 1424 on the walk as it is, which stepping slowed). ncu:
+// active threads a warp 18.7 against 19.1 on camera rays (so the idle threads were not ones
+// whose rays had ended) and 15.5 against 13.7 on diffuse rays, but the walk's
 // state, carried from step to step, went through local memory (19M spill requests a launch at
 // 64 registers; at 72 it was no faster).
 template <FeatureSet kF>
