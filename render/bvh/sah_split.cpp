@@ -277,27 +277,32 @@ struct MisplacedRuns {
 uint32_t partitionInParallel(const PrimRange& prims, const BinMapping& mapping, const SahSplit& split,
                              Box4 centroids[2]) {
     const uint32_t n = prims.count, chunks = (n + kPartitionChunk - 1) / kPartitionChunk;
-    std::vector<uint32_t> lefts(chunks);
-    std::vector<Box4> chunkCentroids(2 * size_t(chunks), Box4::empty());
+    const auto chunkEnd = [&](uint32_t begin) { return std::min(n, begin + kPartitionChunk); };
+    struct ChunkPartition {
+        uint32_t lefts = 0;
+        Box4 centroids[2] = {Box4::empty(), Box4::empty()};  // right, left
+    };
+    std::vector<ChunkPartition> parts(chunks);
     tbb::parallel_for(tbb::blocked_range<uint32_t>(0, chunks, 1), [&](const tbb::blocked_range<uint32_t>& r) {
         for (uint32_t c = r.begin(); c != r.end(); ++c) {
-            const uint32_t begin = c * kPartitionChunk, end = std::min(n, begin + kPartitionChunk);
-            lefts[c] = partitionRange(prims, begin, end, mapping, split, &chunkCentroids[2 * size_t(c)]);
+            const uint32_t begin = c * kPartitionChunk;
+            parts[c].lefts =
+                partitionRange(prims, begin, chunkEnd(begin), mapping, split, parts[c].centroids);
         }
     });
     uint32_t left = 0;
-    for (uint32_t c = 0; c < chunks; ++c) {
-        left += lefts[c];
-        centroids[0].grow(chunkCentroids[2 * size_t(c)]);
-        centroids[1].grow(chunkCentroids[2 * size_t(c) + 1]);
+    for (const ChunkPartition& part : parts) {
+        left += part.lefts;
+        centroids[0].grow(part.centroids[0]);
+        centroids[1].grow(part.centroids[1]);
     }
-    // Chunk c holds its left primitives in [begin, begin + lefts[c]), its right ones after:
+    // Chunk c holds its left primitives in [begin, begin + parts[c].lefts), its right ones after:
     // the left ones at or past `left` are misplaced, and the right ones before it.
     MisplacedRuns lost, strays;  // left primitives on the right side; right ones on the left side
     uint32_t misplaced = 0, straying = 0;
     for (uint32_t c = 0; c < chunks; ++c) {
-        const uint32_t begin = c * kPartitionChunk, end = std::min(n, begin + kPartitionChunk);
-        const uint32_t rightBegin = begin + lefts[c];
+        const uint32_t begin = c * kPartitionChunk, end = chunkEnd(begin);
+        const uint32_t rightBegin = begin + parts[c].lefts;
         const uint32_t lostFirst = std::max(begin, left);
         lost.first.push_back(lostFirst);
         lost.before.push_back(misplaced);
