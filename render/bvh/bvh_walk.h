@@ -63,10 +63,29 @@ PT_HD bool rareInWarp(bool mine) {
 #endif
 }
 
-// min/max written as comparisons: one minss/maxss each on x86, where fminf's NaN rules cost
-// extra instructions; inputs here are never NaN, so the two agree.
-PT_HD float minFast(float a, float b) { return a < b ? a : b; }
-PT_HD float maxFast(float a, float b) { return a > b ? a : b; }
+// min/max for inputs that are never NaN, where the comparison and fminf/fmaxf agree. On x86
+// the comparison is one minss/maxss, where fminf's NaN rules cost extra instructions; on the
+// GPU fminf/fmaxf are one FMNMX, where ptxas keeps the comparison's NaN rule with a compare
+// and a select, two (they were a fifth of the ray kernel's instructions, ncu: FSETP 10.8%,
+// FSEL 10.7%; H200, camera rays of a 1M-triangle sphere). With FMNMX, and the compressed node
+// test's permutes and hit bits (compressed_wide_walk.h), that launch went from 413M to 358M
+// instructions, and bench's rays at 1080p (Mrays/s, camera / diffuse / shadow, two runs) from
+// 3188-3197 / 1801-1817 / 1425-1439 to 3483-3524 / 2045-2048 / 1594-1598 on the compressed
+// walk, from 2841-2874 / 1616-1617 / 1038-1041 to 2899-2955 / 1672 / 1052-1057 on this one.
+PT_HD float minFast(float a, float b) {
+#if defined(__CUDA_ARCH__)
+    return fminf(a, b);
+#else
+    return a < b ? a : b;
+#endif
+}
+PT_HD float maxFast(float a, float b) {
+#if defined(__CUDA_ARCH__)
+    return fmaxf(a, b);
+#else
+    return a > b ? a : b;
+#endif
+}
 
 // A ray in one space (world for the TLAS, object space of one instance for a BLAS), with what
 // the slab and triangle tests precompute.

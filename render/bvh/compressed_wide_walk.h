@@ -99,10 +99,13 @@ PT_HD HalfNodeBoxes loadHalfBoxes(const CompressedWideNode* nodes, uint32_t inde
 
 // Byte k of `word` as a float, exactly. On the GPU one byte permute puts it under the exponent
 // of 2^23 and one subtraction takes 2^23 away: conversions (I2F) issue at a quarter of the
-// rate of additions, and a node tests 48 such bytes (Ylitie et al. 2017, section 4).
+// rate of additions, and a node tests 48 such bytes (Ylitie et al. 2017, section 4). The
+// permute takes the exponent's word first: a PRMT holds one of its selector and second word
+// as an immediate, and with the constant second ptxas moved each selector into a register
+// before its PRMT, one instruction more a byte.
 PT_HD float byteAsFloat(uint32_t word, uint32_t k) {
 #if defined(__CUDA_ARCH__)
-    return __uint_as_float(__byte_perm(word, 0x4b000000u, k | 0x7540u)) - 8388608.0f;
+    return __uint_as_float(__byte_perm(0x4b000000u, word, 0x3104u + k)) - 8388608.0f;
 #else
     return float((word >> (8 * k)) & 0xffu);
 #endif
@@ -250,9 +253,12 @@ PT_HD ChildHits intersectCompressedChildren(const CompressedWalkRay& r, const Co
     uint32_t slotHits = 0;
     // Half a node at a time: unrolled, the compiler loads both halves' boxes up front and keeps
     // them live (84 registers against 72 in the one-instance ray kernel).
+    // The half's four bits are gathered at fixed shifts and placed once: shifted by 4 * half + k
+    // each, every bit took its own shift amount (ptxas, sm_90).
     PT_NO_UNROLL
     for (uint32_t half = 0; half < 2; ++half) {
         const HalfNodeBoxes b = loadHalfBoxes(nodes, index, half, r.negative);
+        uint32_t halfHits = 0;
         for (uint32_t k = 0; k < 4; ++k) {
             const float x0 = fmaf(byteAsFloat(b.nearX, k), scale.x, nearOffset.x);
             const float x1 = fmaf(byteAsFloat(b.farX, k), scale.x, farOffset.x);
@@ -262,8 +268,9 @@ PT_HD ChildHits intersectCompressedChildren(const CompressedWalkRay& r, const Co
             const float z1 = fmaf(byteAsFloat(b.farZ, k), scale.z, farOffset.z);
             const float tNear = maxFast(maxFast(x0, y0), maxFast(z0, 0.0f));
             const float tFar = minFast(x1, minFast(y1, z1)) * kSlabExitScale;
-            slotHits |= uint32_t(tNear <= minFast(tFar, limit)) << (4 * half + k);
+            halfHits |= uint32_t(tNear <= minFast(tFar, limit)) << k;
         }
+        slotHits |= halfHits << (4 * half);
     }
     return classifyHits(r, node, slotHits);
 }

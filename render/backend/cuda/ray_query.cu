@@ -49,6 +49,14 @@ constexpr FeatureSet kSingleInstanceTraversal =
 // whose rays had ended) and 15.5 against 13.7 on diffuse rays, but the walk's
 // state, carried from step to step, went through local memory (19M spill requests a launch at
 // 64 registers; at 72 it was no faster).
+//
+// Tried and dropped: the compressed walk's stack in shared memory, as Ylitie et al. keep theirs:
+// its bottom K entries in a row a thread of a 128-thread block (K * 1 KB a block), the rest
+// in local memory as before. On the 1M sphere (H200, 1080p, two rounds, Mrays/s camera /
+// diffuse / shadow) it was no faster at any K: 3125-3163 / 1785-1792 / 1418-1432 at K = 8,
+// 3130-3139 / 1775-1788 / 1422-1448 at 4, 3119-3129 / 1765-1787 / 1424-1439 at 12, against
+// 3188-3197 / 1801-1817 / 1425-1439 with the stack in local memory, which L1 holds; on the
+// 64-instance field (720p) 3497 / 219 / 258 at K = 8 against 3624 / 229 / 275.
 template <FeatureSet kF>
 constexpr uint32_t kRayRegisters = (kF & feature::kMultipleInstances) ? 72u : 64u;
 
