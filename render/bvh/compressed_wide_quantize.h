@@ -4,7 +4,8 @@
 // so a refitted node is quantised exactly as a freshly built one.
 //
 // Why the boxes stay conservative: the walk computes a plane's distance as
-// fma(q, 2^e / d, (origin - o) / d), three roundings where the binary slab test has two, and
+// fma(q, 2^e / d, (origin - o) / d), three roundings where the binary slab test has two (the
+// GPU's form, compressedSlotHits in compressed_wide_walk.h, one more, which it accounts for), and
 // the error of (origin - o) / d scales with the distance from the grid's origin rather than
 // with the plane's own distance. Each plane is therefore placed at least one grid step
 // outside the exact box (floor - 1, ceil + 1), which covers that error with a wide margin

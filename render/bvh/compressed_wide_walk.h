@@ -97,18 +97,28 @@ PT_HD HalfNodeBoxes loadHalfBoxes(const CompressedWideNode* nodes, uint32_t inde
             ny ? p[1] : p[4], nz ? p[5] : p[2], nz ? p[2] : p[5]};
 }
 
-// Byte k of `word` as a float, exactly. On the GPU one byte permute puts it under the exponent
-// of 2^23 and one subtraction takes 2^23 away: conversions (I2F) issue at a quarter of the
-// rate of additions, and a node tests 48 such bytes (Ylitie et al. 2017, section 4). The
-// permute takes the exponent's word first: a PRMT holds one of its selector and second word
-// as an immediate, and with the constant second ptxas moved each selector into a register
-// before its PRMT, one instruction more a byte.
-PT_HD float byteAsFloat(uint32_t word, uint32_t k) {
+// __byte_perm(x, y, selector) on both sides: byte n of the result is byte (nibble n of the
+// selector) & 7 of y:x (x's bytes 0-3, y's 4-7). The host's form lets the tests check the
+// selectors the GPU uses.
+PT_HD uint32_t bytePermute(uint32_t x, uint32_t y, uint32_t selector) {
 #if defined(__CUDA_ARCH__)
-    return __uint_as_float(__byte_perm(0x4b000000u, word, 0x3104u + k)) - 8388608.0f;
+    return __byte_perm(x, y, selector);
 #else
-    return float((word >> (8 * k)) & 0xffu);
+    const uint64_t bytes = uint64_t(y) << 32 | x;
+    uint32_t result = 0;
+    for (uint32_t n = 0; n < 4; ++n) {
+        result |= uint32_t(bytes >> (8 * ((selector >> (4 * n)) & 7u)) & 0xffu) << (8 * n);
+    }
+    return result;
 #endif
+}
+
+// Byte k (q) of `word` as 1 + q 2^-15, exactly: q goes into bits 8-15 of the float 1.0
+// (bytes 00 00 80 3f), one byte permute on the GPU. The permute takes the constant first: a PRMT
+// holds one of its selector and its second word as an immediate, and with the constant second
+// ptxas moved each selector into a register first, one instruction more a byte.
+PT_HD float byteUnderOne(uint32_t word, uint32_t k) {
+    return intAsFloat(int32_t(bytePermute(0x3f800000u, word, 0x3240u + 16u * k)));
 }
 
 // Whether the compressed walk can take `ray`. A direction component below 1e-20 (an exact zero
@@ -116,8 +126,9 @@ PT_HD float byteAsFloat(uint32_t word, uint32_t k) {
 // plane offsets (origin - o) / d would then overflow for nodes 3.4e8 away: fma(q, scale, -inf)
 // is -inf even where the plane lies on the other side, and a subtree would be culled. The
 // binary slab test subtracts before it multiplies and keeps the right sign, so such rays walk
-// the binary nodes. Below 1e20 nothing overflows short of coordinates beyond 1e18.
-constexpr float kMaxCompressedInverse = 1e20f;
+// the binary nodes. Below 1e16 nothing overflows short of coordinates beyond 1e18: offsets
+// stay below 2e34, and the GPU test's 2^15 scale (compressedSlotHits) below 6e36.
+constexpr float kMaxCompressedInverse = 1e16f;
 PT_HD bool compressedWalkTakes(const TraversalRay& ray) {
     return fabsf(ray.invDirection.x) <= kMaxCompressedInverse &&
            fabsf(ray.invDirection.y) <= kMaxCompressedInverse &&
@@ -208,10 +219,11 @@ PT_HD ChildHits classifyHits(const CompressedWalkRay& r, const CompressedNodeHea
 }
 
 #if !defined(__CUDACC__)
-// The host's form of the child test: four slots a time with SSE2 (part of every x86-64 CPU).
-// It rounds q * scale and the sum apart where the GPU fuses them, one rounding more, which the
-// planes' step of margin covers as well (compressed_wide_quantize.h): the boxes stay
-// conservative and the hits exact, so both backends find the same hits.
+// The host's form of the child test, for the host's walks of the GPU's tree (the tests): four
+// slots a time with SSE2 (part of every x86-64 CPU). It rounds q * scale and the sum apart, one
+// rounding more than fma(q, scale, offset), which the planes' step of margin covers as well
+// (compressed_wide_quantize.h): the boxes stay conservative and the hits exact, so both
+// backends find the same hits. The GPU's form is compressedSlotHits, below.
 inline __m128 bytesAsFloats(uint32_t word) {
     const __m128i zero = _mm_setzero_si128();
     const __m128i bytes = _mm_cvtsi32_si128(int32_t(word));
@@ -244,35 +256,64 @@ inline ChildHits intersectCompressedChildren(const CompressedWalkRay& r, const C
     }
     return classifyHits(r, node, slotHits);
 }
-#else
-PT_HD ChildHits intersectCompressedChildren(const CompressedWalkRay& r, const CompressedNodeHeader& node,
-                                            const CompressedWideNode* nodes, uint32_t index, float tMax) {
+#endif
+
+// The GPU's child test: each of a node's 48 plane distances in one FFMA. With f = 1 + q 2^-15
+// (byteUnderOne), S = 2^15 scale and O = offset - S for the node, fma(f, S, O) =
+// q scale + offset + e, where e, O's rounding, is at most u (|offset| + 2^15 |scale|). Of that,
+// u 2^15 |scale| is 2^-9 of a grid step, which the planes' step of margin covers
+// (compressed_wide_quantize.h), and u |offset| <= u (|t| + 255 steps) is one rounding of the
+// distance more than fma(q, scale, offset) makes, which kCompressedExitScale's gamma(4) covers
+// where the binary walk's gamma(3) covers three. The first form here subtracted 2^23 from each
+// byte, one instruction more a plane (Ylitie et al. 2017, section 4: conversions issue at a
+// quarter of the rate); without it camera rays of a 1M-triangle sphere took 341M instructions
+// instead of 358M (ncu, H200, 1080p), and bench's rays ran 3542-3590 / 2070-2079 / 1640-1662
+// Mrays/s (camera / diffuse / shadow, two runs) against 3483-3524 / 2045-2048 / 1594-1598.
+// The host runs it in the tests (compressed_wide_bvh_test.cpp), with its own fused
+// multiply-add.
+constexpr float kCompressedExitScale = 1.0f + 2.0f * gammaBound(4);
+
+// Bit s: slot s's box is entered before tMax (whatever the slot holds).
+PT_HD uint32_t compressedSlotHits(const CompressedWalkRay& r, const CompressedNodeHeader& node,
+                                  const CompressedWideNode* nodes, uint32_t index, float tMax) {
     const NodePlanes p = nodePlanes(r, node);
-    const Vec3 scale = p.scale, nearOffset = p.nearOffset, farOffset = p.farOffset;
-    const float limit = tMax * kSlabExitScale;
+    Vec3 scale, nearOffset, farOffset;
+    for (int a = 0; a < 3; ++a) {
+        const float maxScale = 3.4028235e38f;
+        scale[a] = clampf(p.scale[a] * 32768.0f, -maxScale, maxScale);
+        nearOffset[a] = p.nearOffset[a] - scale[a];
+        farOffset[a] = p.farOffset[a] - scale[a];
+    }
+    const float limit = tMax * kCompressedExitScale;
     uint32_t slotHits = 0;
     // Half a node at a time: unrolled, the compiler loads both halves' boxes up front and keeps
-    // them live (84 registers against 72 in the one-instance ray kernel).
-    // The half's four bits are gathered at fixed shifts and placed once: shifted by 4 * half + k
-    // each, every bit took its own shift amount (ptxas, sm_90).
+    // them live (84 registers against 72 in the one-instance ray kernel). The half's four bits
+    // are gathered at fixed shifts and placed once: shifted by 4 * half + k each, every bit took
+    // its own shift amount (ptxas, sm_90).
     PT_NO_UNROLL
     for (uint32_t half = 0; half < 2; ++half) {
         const HalfNodeBoxes b = loadHalfBoxes(nodes, index, half, r.negative);
         uint32_t halfHits = 0;
         for (uint32_t k = 0; k < 4; ++k) {
-            const float x0 = fmaf(byteAsFloat(b.nearX, k), scale.x, nearOffset.x);
-            const float x1 = fmaf(byteAsFloat(b.farX, k), scale.x, farOffset.x);
-            const float y0 = fmaf(byteAsFloat(b.nearY, k), scale.y, nearOffset.y);
-            const float y1 = fmaf(byteAsFloat(b.farY, k), scale.y, farOffset.y);
-            const float z0 = fmaf(byteAsFloat(b.nearZ, k), scale.z, nearOffset.z);
-            const float z1 = fmaf(byteAsFloat(b.farZ, k), scale.z, farOffset.z);
+            const float x0 = fmaf(byteUnderOne(b.nearX, k), scale.x, nearOffset.x);
+            const float x1 = fmaf(byteUnderOne(b.farX, k), scale.x, farOffset.x);
+            const float y0 = fmaf(byteUnderOne(b.nearY, k), scale.y, nearOffset.y);
+            const float y1 = fmaf(byteUnderOne(b.farY, k), scale.y, farOffset.y);
+            const float z0 = fmaf(byteUnderOne(b.nearZ, k), scale.z, nearOffset.z);
+            const float z1 = fmaf(byteUnderOne(b.farZ, k), scale.z, farOffset.z);
             const float tNear = maxFast(maxFast(x0, y0), maxFast(z0, 0.0f));
-            const float tFar = minFast(x1, minFast(y1, z1)) * kSlabExitScale;
+            const float tFar = minFast(x1, minFast(y1, z1)) * kCompressedExitScale;
             halfHits |= uint32_t(tNear <= minFast(tFar, limit)) << k;
         }
         slotHits |= halfHits << (4 * half);
     }
-    return classifyHits(r, node, slotHits);
+    return slotHits;
+}
+
+#if defined(__CUDACC__)
+PT_HD ChildHits intersectCompressedChildren(const CompressedWalkRay& r, const CompressedNodeHeader& node,
+                                            const CompressedWideNode* nodes, uint32_t index, float tMax) {
+    return classifyHits(r, node, compressedSlotHits(r, node, nodes, index, tMax));
 }
 #endif
 

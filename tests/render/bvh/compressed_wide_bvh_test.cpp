@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -164,6 +165,120 @@ TEST(CompressedWideBvh, QuantisedBoxesHoldTheirBinaryBoxesWithAStepOfMargin) {
             }
         }
         EXPECT_EQ(failures, 0);
+    }
+}
+
+// The slab test in double of `ray` (the float origin and direction, tMax) against the box
+// [lo, hi]: whether it enters it within [0, tMax], up to `slack` relative to the distances.
+bool entersInDouble(Vec3 origin, Vec3 direction, double tMax, const double lo[3], const double hi[3],
+                    double slack = 0.0) {
+    double tNear = 0.0, tFar = tMax;
+    for (int a = 0; a < 3; ++a) {
+        const double inverse = 1.0 / double(direction[a]);
+        const double t0 = (lo[a] - double(origin[a])) * inverse, t1 = (hi[a] - double(origin[a])) * inverse;
+        tNear = std::max(tNear, std::min(t0, t1));
+        tFar = std::min(tFar, std::max(t0, t1));
+    }
+    return tNear <= tFar + slack * std::max(std::fabs(tNear), std::fabs(tFar));
+}
+
+// The GPU's child test (compressedSlotHits: a plane in one fused multiply-add, its 2^15 bias
+// folded into the node's offsets; the host's fmaf rounds as the GPU's FFMA does) against exact
+// slab tests in double: every binary box a ray enters must be hit (the quantised box holds it
+// with a step of margin), and every slot hit must be one whose quantised box the ray enters,
+// give or take a hundredth of a step and the exit scale's slack. Rays from inside the scene,
+// from far outside it (distances where a float's ulp nears a grid step), and nearly along an
+// axis (inverse directions up to the compressed walk's limit); unit, tiny and far, huge and
+// needle-shaped meshes.
+TEST(CompressedWideBvh, TheGpuChildTestHoldsEveryBoxItsRayEntersAndNoFarOther) {
+    Rng rng(21);
+    struct Case {
+        test::SoupKind kind;
+        Vec3 offset;
+        float scale;
+    };
+    int64_t entered = 0, missed = 0;
+    for (const Case c : {Case{test::SoupKind::Uniform, Vec3(0.0f), 1.0f},
+                         Case{test::SoupKind::Clustered, Vec3(4.0e4f, -3.0e4f, 1.0e3f), 1.0e-3f},
+                         Case{test::SoupKind::Uniform, Vec3(0.0f), 1.0e6f},
+                         Case{test::SoupKind::Needles, Vec3(1.0f, 2.0f, 3.0f), 1.0f}}) {
+        const Bvh bvh = buildSoupBvh(c.kind, 3000, rng, c.offset, c.scale);
+        const CompressedWideBvh wide =
+            compressToWide(bvh.nodes.data(), uint32_t(bvh.nodes.size()), bvh.primIndices.data());
+        const Vec3 lo = bvh.nodes[0].lo, hi = bvh.nodes[0].hi, centre = (lo + hi) * 0.5f;
+        const float size = length(hi - lo);
+        int unsound = 0, loose = 0;
+        for (int i = 0; i < 600; ++i) {
+            Vec3 origin = rng.inBox(lo, hi), direction = rng.unitVector();
+            if (i % 3 == 1) {  // from 1e2 to 1e5 sizes away, towards the scene
+                origin = centre + rng.unitVector() * (size * std::pow(10.0f, rng.uniform(2.0f, 5.0f)));
+                direction = normalize(rng.inBox(lo, hi) - origin);
+            } else if (i % 3 == 2) {  // nearly along an axis
+                const uint32_t axis = rng.index(3);
+                for (uint32_t a = 0; a < 3; ++a) {
+                    const float tiny = std::pow(10.0f, rng.uniform(-15.9f, -3.0f));
+                    direction[a] = a == axis ? 1.0f : (rng.uniform() < 0.5f ? -tiny : tiny);
+                }
+            }
+            const float tMax = i % 2 ? kInf : rng.uniform(0.0f, 2.0f) * size;
+            const TraversalRay ray = makeTraversalRay(origin, direction);
+            ASSERT_TRUE(compressedWalkTakes(ray))
+                << "direction " << direction.x << " " << direction.y << " " << direction.z;
+            const CompressedWalkRay r = compressedWalkRay(ray);
+            for (uint32_t n = 0; n < wide.nodes.size(); ++n) {
+                const uint32_t hits = compressedSlotHits(r, loadCompressedNodeHeader(wide.nodes.data(), n),
+                                                         wide.nodes.data(), n, tMax);
+                const CompressedWideNode& node = wide.nodes[n];
+                for (uint32_t s = 0; s < CompressedWideNode::kWidth; ++s) {
+                    const uint32_t source = wide.sourceNodes[n * CompressedWideNode::kWidth + s];
+                    if (source == kNoSourceNode) continue;
+                    const bool hit = (hits >> s) & 1u;
+                    const double binaryLo[3] = {bvh.nodes[source].lo.x, bvh.nodes[source].lo.y,
+                                                bvh.nodes[source].lo.z};
+                    const double binaryHi[3] = {bvh.nodes[source].hi.x, bvh.nodes[source].hi.y,
+                                                bvh.nodes[source].hi.z};
+                    const bool enters = entersInDouble(origin, direction, tMax, binaryLo, binaryHi);
+                    entered += enters;
+                    missed += !hit;
+                    using P = CompressedWideNode::BoxPlane;
+                    double quantisedLo[3], quantisedHi[3];
+                    for (uint32_t a = 0; a < 3; ++a) {
+                        const double margin = 0.01 * exponentStep(node.exponent[a]);
+                        quantisedLo[a] =
+                            decode(node.origin[a], node.exponent[a], node.plane(P(P::kLoX + a), s)) - margin;
+                        quantisedHi[a] =
+                            decode(node.origin[a], node.exponent[a], node.plane(P(P::kHiX + a), s)) + margin;
+                    }
+                    const bool nearQuantised = entersInDouble(origin, direction, double(tMax) * (1.0 + 1e-5),
+                                                              quantisedLo, quantisedHi, 1e-5);
+                    if (enters && !hit && ++unsound <= 3) {
+                        ADD_FAILURE() << test::soupName(c.kind) << ": ray " << i << " enters node " << n
+                                      << " slot " << s << "'s binary box, not hit";
+                    }
+                    if (hit && !nearQuantised && ++loose <= 3) {
+                        ADD_FAILURE() << test::soupName(c.kind) << ": ray " << i << " hits node " << n
+                                      << " slot " << s << ", far from its quantised box";
+                    }
+                }
+            }
+        }
+        EXPECT_EQ(unsound, 0) << test::soupName(c.kind);
+        EXPECT_EQ(loose, 0) << test::soupName(c.kind);
+    }
+    // Both answers were common: the checks above had cases to catch.
+    EXPECT_GT(entered, 10000);
+    EXPECT_GT(missed, 100000);
+}
+
+// The byte permutes behind it put byte k of a word under the exponent of 1, exactly.
+TEST(CompressedWideBvh, ByteUnderOneIsOnePlusTheByteTimesTwoToTheMinus15) {
+    Rng rng(22);
+    for (int i = 0; i < 1000; ++i) {
+        const uint32_t word = rng.index(0xffffffffu) ^ (rng.index(2) << 31);
+        for (uint32_t k = 0; k < 4; ++k) {
+            const uint32_t q = (word >> (8 * k)) & 0xffu;
+            ASSERT_EQ(byteUnderOne(word, k), 1.0f + float(q) / 32768.0f) << std::hex << word << " byte " << k;
+        }
     }
 }
 
