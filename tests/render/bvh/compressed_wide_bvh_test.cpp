@@ -53,6 +53,18 @@ double decode(float origin, uint8_t exponent, uint8_t q) {
     return double(origin) + double(exponentStep(exponent)) * double(q);
 }
 
+// Meshes for the quantised boxes: a unit scene, a tiny mesh far from the origin (steps near the
+// coordinates' ulps), a huge one, and needles (boxes flat along some axes).
+struct BoxCase {
+    test::SoupKind kind;
+    Vec3 offset;
+    float scale;
+};
+const BoxCase kBoxCases[] = {{test::SoupKind::Uniform, Vec3(0.0f), 1.0f},
+                             {test::SoupKind::Clustered, Vec3(4.0e4f, -3.0e4f, 1.0e3f), 1.0e-3f},
+                             {test::SoupKind::Uniform, Vec3(0.0f), 1.0e6f},
+                             {test::SoupKind::Needles, Vec3(1.0f, 2.0f, 3.0f), 1.0f}};
+
 TEST(CompressedWideBvh, TheCollapseKeepsEveryPrimitiveOnceInConsecutiveChildren) {
     Rng rng(5);
     for (const uint32_t triangles : {1u, 2u, 9u, 100u, 5000u, 30000u}) {
@@ -122,17 +134,7 @@ TEST(CompressedWideBvh, TheCollapseKeepsEveryPrimitiveOnceInConsecutiveChildren)
 
 TEST(CompressedWideBvh, QuantisedBoxesHoldTheirBinaryBoxesWithAStepOfMargin) {
     Rng rng(9);
-    // Unit scenes, a tiny mesh far from the origin (steps near the coordinates' ulps), a huge
-    // one, and needles (boxes flat along some axes).
-    struct Case {
-        test::SoupKind kind;
-        Vec3 offset;
-        float scale;
-    };
-    for (const Case c : {Case{test::SoupKind::Uniform, Vec3(0.0f), 1.0f},
-                         Case{test::SoupKind::Clustered, Vec3(4.0e4f, -3.0e4f, 1.0e3f), 1.0e-3f},
-                         Case{test::SoupKind::Uniform, Vec3(0.0f), 1.0e6f},
-                         Case{test::SoupKind::Needles, Vec3(1.0f, 2.0f, 3.0f), 1.0f}}) {
+    for (const BoxCase c : kBoxCases) {
         const Bvh bvh = buildSoupBvh(c.kind, 4000, rng, c.offset, c.scale);
         const CompressedWideBvh wide =
             compressToWide(bvh.nodes.data(), uint32_t(bvh.nodes.size()), bvh.primIndices.data());
@@ -192,16 +194,8 @@ bool entersInDouble(Vec3 origin, Vec3 direction, double tMax, const double lo[3]
 // needle-shaped meshes.
 TEST(CompressedWideBvh, TheGpuChildTestHoldsEveryBoxItsRayEntersAndNoFarOther) {
     Rng rng(21);
-    struct Case {
-        test::SoupKind kind;
-        Vec3 offset;
-        float scale;
-    };
     int64_t entered = 0, missed = 0;
-    for (const Case c : {Case{test::SoupKind::Uniform, Vec3(0.0f), 1.0f},
-                         Case{test::SoupKind::Clustered, Vec3(4.0e4f, -3.0e4f, 1.0e3f), 1.0e-3f},
-                         Case{test::SoupKind::Uniform, Vec3(0.0f), 1.0e6f},
-                         Case{test::SoupKind::Needles, Vec3(1.0f, 2.0f, 3.0f), 1.0f}}) {
+    for (const BoxCase c : kBoxCases) {
         const Bvh bvh = buildSoupBvh(c.kind, 3000, rng, c.offset, c.scale);
         const CompressedWideBvh wide =
             compressToWide(bvh.nodes.data(), uint32_t(bvh.nodes.size()), bvh.primIndices.data());
