@@ -121,9 +121,9 @@ PT_HD float byteUnderOne(uint32_t word, uint32_t k) {
     return intAsFloat(int32_t(bytePermute(0x3f800000u, word, 0x3240u + 16u * k)));
 }
 
-// Whether the compressed walk can take `ray`. A direction component below 1e-20 (an exact zero
-// is common: an axis-aligned camera's centre pixel) has an inverse up to 1e30, and the walk's
-// plane offsets (origin - o) / d would then overflow for nodes 3.4e8 away: fma(q, scale, -inf)
+// Whether the compressed walk can take `ray`. A direction component below 1e-16 has an inverse
+// beyond 1e16, up to 1e30 for an exact zero (common: an axis-aligned camera's centre pixel),
+// where the walk's plane offsets (origin - o) / d overflow for nodes 3.4e8 away: fma(q, scale, -inf)
 // is -inf even where the plane lies on the other side, and a subtree would be culled. The
 // binary slab test subtracts before it multiplies and keeps the right sign, so such rays walk
 // the binary nodes. Below 1e16 nothing overflows short of coordinates beyond 1e18: offsets
