@@ -54,7 +54,9 @@ double decode(float origin, uint8_t exponent, uint8_t q) {
 }
 
 // Meshes for the quantised boxes: a unit scene, a tiny mesh far from the origin (steps near the
-// coordinates' ulps), a huge one, and needles (boxes flat along some axes).
+// coordinates' ulps), a huge one, a huge one far out (rays from 1e5 of its sizes away start
+// near 1e17, short of the 1e18 up to which the compressed walk's offsets cannot overflow), and
+// needles (boxes flat along some axes).
 struct BoxCase {
     test::SoupKind kind;
     Vec3 offset;
@@ -63,6 +65,7 @@ struct BoxCase {
 const BoxCase kBoxCases[] = {{test::SoupKind::Uniform, Vec3(0.0f), 1.0f},
                              {test::SoupKind::Clustered, Vec3(4.0e4f, -3.0e4f, 1.0e3f), 1.0e-3f},
                              {test::SoupKind::Uniform, Vec3(0.0f), 1.0e6f},
+                             {test::SoupKind::Clustered, Vec3(3.0e12f, -2.0e12f, 1.0e12f), 1.0e11f},
                              {test::SoupKind::Needles, Vec3(1.0f, 2.0f, 3.0f), 1.0f}};
 
 TEST(CompressedWideBvh, TheCollapseKeepsEveryPrimitiveOnceInConsecutiveChildren) {
