@@ -55,8 +55,8 @@ double decode(float origin, uint8_t exponent, uint8_t q) {
 
 // Meshes for the quantised boxes: a unit scene, a tiny mesh far from the origin (steps near the
 // coordinates' ulps), a huge one, a huge one far out (rays from 1e5 of its sizes away start
-// near 1e17, short of the 1e18 up to which the compressed walk's offsets cannot overflow), and
-// needles (boxes flat along some axes).
+// about 2e16 off, short of the 1e18 up to which the compressed walk's offsets cannot
+// overflow), and needles (boxes flat along some axes).
 struct BoxCase {
     test::SoupKind kind;
     Vec3 offset;
@@ -193,8 +193,7 @@ bool entersInDouble(Vec3 origin, Vec3 direction, double tMax, const double lo[3]
 // with a step of margin), and every slot hit must be one whose quantised box the ray enters,
 // give or take a hundredth of a step and the exit scale's slack. Rays from inside the scene,
 // from far outside it (distances where a float's ulp nears a grid step), and nearly along an
-// axis (inverse directions up to the compressed walk's limit); unit, tiny and far, huge and
-// needle-shaped meshes.
+// axis (inverse directions up to the compressed walk's limit); the meshes of kBoxCases.
 TEST(CompressedWideBvh, TheGpuChildTestHoldsEveryBoxItsRayEntersAndNoFarOther) {
     Rng rng(21);
     int64_t entered = 0, missed = 0, notTaken = 0;
