@@ -100,7 +100,8 @@ constexpr const char* kToggleText =
   first frame waits for the host's SAH trees of large meshes, instead of walking trees built
   on the GPU while those build behind it), --no-ploc (the GPU builds BLASes, for first frames
   and rebuilds, as LBVHs instead of by H-PLOC: faster to build, 1.09-1.21x the binned SAH cost
-  where H-PLOC is at 1.04-1.14x)
+  where H-PLOC is at 1.04-1.14x), --no-leaf-collapse (those GPU builds keep leaves of one
+  primitive instead of ending in the SAH's leaves of up to four)
 )";
 
 constexpr const char* kDisplayText =

@@ -1,8 +1,8 @@
 #pragma once
 // What `pt-render bench` measures of a GPU backend's BVH builders, behind Backend (issue 16:
 // the front end times nothing on the device itself): the device LBVH, PLOC and H-PLOC builds of
-// one mesh's triangle boxes and their SAH costs, bottom-up refits of that tree and of the CPU-built tree, and
-// the TLAS build over the instances' world boxes.
+// one mesh's triangle boxes and their SAH costs (each also with the leaf collapse after it), bottom-up refits
+// of that tree and of the CPU-built tree, and the TLAS build over the instances' world boxes.
 #include <cstdint>
 #include <vector>
 
@@ -17,19 +17,20 @@ struct BvhBuildInput {
     std::vector<Aabb> instanceBoxes;  // world space
 };
 
-// A clustering build over meshBoxes: its median time, its tree's SAH cost (sah_cost.h).
-struct ClusteringBuildFigures {
+// A device build over meshBoxes: its median time and its tree's SAH cost (sah_cost.h), as the
+// builder leaves it (one primitive a leaf) and with the leaf collapse after it.
+struct GpuBuildFigures {
     double seconds = 0.0;
     float sahCost = 0.0f;
-    bool fellBack = false;  // its tree was too deep: an LBVH took its place
+    double collapsedSeconds = 0.0;  // the build and BvhLeafCollapse, as the backend runs them
+    float collapsedSahCost = 0.0f;
+    bool fellBack = false;  // PLOC, H-PLOC: its tree was too deep and an LBVH took its place
 };
 
 // Medians over the runs, in seconds of device time.
 struct DeviceBvhFigures {
-    double buildSeconds = 0.0;  // LBVH over meshBoxes
-    float sahCost = 0.0f;       // of that LBVH (sah_cost.h)
-    ClusteringBuildFigures ploc, hploc;
-    double refitSeconds = 0.0;  // of that LBVH
+    GpuBuildFigures lbvh, ploc, hploc;
+    double refitSeconds = 0.0;  // of the LBVH (uncollapsed)
     double refitCpuTreeSeconds = 0.0;
     double tlasSeconds = 0.0;  // LBVH over instanceBoxes
 };

@@ -40,6 +40,8 @@ const std::vector<ToggleRow>& toggleTable() {
          "GPU first build", "", "--no-gpu-first-build", &T::gpuFirstBuild, false, S::GpuScheduling},
         {ToggleId::GpuPloc, "gpu_ploc", "GPU BVH builds by H-PLOC (else LBVH)", "H-PLOC GPU builds", "",
          "--no-ploc", &T::gpuPloc, false, S::GpuScheduling},
+        {ToggleId::GpuLeafCollapse, "gpu_leaf_collapse", "GPU BVH builds end in SAH leaves (of up to 4)",
+         "GPU BVH leaf collapse", "", "--no-leaf-collapse", &T::gpuLeafCollapse, false, S::GpuScheduling},
         {ToggleId::FirstHitCache, "first_hit_cache", "First-hit cache", "first-hit cache", "",
          "--no-first-hit-cache", &T::firstHitCache, false, S::GpuScheduling},
     };

@@ -66,6 +66,10 @@ struct IntegratorToggles {
     // 1.04-1.14x the binned SAH build's on an H200; off: by LBVH, faster to build (1M triangles
     // in 0.42 ms against 0.80 ms) but at 1.09-1.21x.
     bool gpuPloc = true;
+    // Those builds end in the SAH leaf rule (BvhLeafCollapse, render/bvh/subtree_collapse.h):
+    // subtrees of up to four primitives become leaves where that is cheaper by the SAH, as the
+    // binned build's leaves are; off: leaves of one primitive, as the builders make them.
+    bool gpuLeafCollapse = true;
     // A refitted BLAS is rebuilt once its SAH cost exceeds this times its cost when last built.
     float rebuildSahRatio = 1.25f;
 };
@@ -89,6 +93,7 @@ enum class ToggleId {
     GpuWideBvh,
     GpuFirstBuild,
     GpuPloc,
+    GpuLeafCollapse,
 };
 
 // Who can apply a toggle: every backend, or a GPU backend's scheduler only (the CPU runs one

@@ -168,16 +168,17 @@ struct ChildHits {
 
 // A plane q steps from a node's origin lies at t = q * scale + offset: scale = 2^e / d is exact
 // (clamped where it would overflow), offset = (origin - o) / d, for the near and far planes.
+// The clamp: the largest finite float, so that a scale stays finite and keeps its sign.
+constexpr float kMaxPlaneScale = 3.4028235e38f;
 struct NodePlanes {
     Vec3 scale, nearOffset, farOffset;
 };
 
 PT_HD NodePlanes nodePlanes(const CompressedWalkRay& r, const CompressedNodeHeader& node) {
-    const float maxScale = 3.4028235e38f;
     NodePlanes p;
     for (int a = 0; a < 3; ++a) {
         const uint32_t exponent = (node.w[3] >> (8 * a)) & 0xffu;
-        p.scale[a] = clampf(exponentStep(exponent) * r.invDirection[a], -maxScale, maxScale);
+        p.scale[a] = clampf(exponentStep(exponent) * r.invDirection[a], -kMaxPlaneScale, kMaxPlaneScale);
         const float origin = intAsFloat(int32_t(node.w[a]));
         p.nearOffset[a] = (origin - r.nearOrigin[a]) * r.invDirection[a];
         p.farOffset[a] = (origin - r.farOrigin[a]) * r.invDirection[a];
@@ -279,8 +280,7 @@ PT_HD uint32_t compressedSlotHits(const CompressedWalkRay& r, const CompressedNo
     const NodePlanes p = nodePlanes(r, node);
     Vec3 scale, nearOffset, farOffset;
     for (int a = 0; a < 3; ++a) {
-        const float maxScale = 3.4028235e38f;
-        scale[a] = clampf(p.scale[a] * 32768.0f, -maxScale, maxScale);
+        scale[a] = clampf(p.scale[a] * 32768.0f, -kMaxPlaneScale, kMaxPlaneScale);
         nearOffset[a] = p.nearOffset[a] - scale[a];
         farOffset[a] = p.farOffset[a] - scale[a];
     }

@@ -1,5 +1,6 @@
 #pragma once
-// The bottom-up box pass shared by the LBVH builder and the refit (device code, nvcc only):
+// The bottom-up climb shared by the LBVH builder, the refit and the leaf collapse (device code,
+// nvcc only), and its box pass:
 // the thread that finished a node's box climbs to its parent; of the two children's threads
 // the second to arrive (an atomic counter per node) computes the parent's box, the first stops.
 // Every node is thus written exactly once, after both of its children, with no global barrier.
@@ -33,22 +34,35 @@ __device__ __forceinline__ void storeBox(BvhNode* node, const Aabb& box) {
     __stcg(&node->hi.z, box.hi.z);
 }
 
-// Called by the thread that has just stored the final box of `node`. `parentOf(i)` is the index
-// of node i's parent (i > 0); `visits` holds one zeroed counter per node, indexed like `nodes`.
-// The children of every interior node (leftOrFirst, count) must already be in `nodes`.
-template <class ParentOf>
-__device__ void propagateBoxesUp(BvhNode* nodes, uint32_t node, uint32_t* visits, ParentOf parentOf) {
+// The climb itself, for any bottom-up pass. Called by the thread that has just stored what its
+// pass computes of `node`: climbs while it is the second of two siblings' threads to arrive
+// (an atomic counter per node), calling finishParent(parent), which computes the parent from
+// both children and returns whether to climb on. `parentOf(i)` is the index of node i's parent
+// (i > 0); `visits` holds one zeroed counter per node, indexed like the nodes.
+template <class ParentOf, class FinishParent>
+__device__ void climbAsSecondArrival(uint32_t node, uint32_t* visits, ParentOf parentOf,
+                                     FinishParent finishParent) {
     while (node != 0) {
         const uint32_t parent = parentOf(node);
-        __threadfence();  // release: this node's box is visible before the arrival is counted
+        __threadfence();  // release: this node's result is visible before the arrival is counted
         if (atomicAdd(&visits[parent], 1u) == 0) return;  // the sibling's thread will finish
-        __threadfence();  // acquire: the sibling's box, fenced before its arrival, is read after ours
+        __threadfence();  // acquire: the sibling's result, fenced before its arrival, is read after ours
+        if (!finishParent(parent)) return;
+        node = parent;
+    }
+}
+
+// Called by the thread that has just stored the final box of `node`. The children of every
+// interior node (leftOrFirst, count) must already be in `nodes`.
+template <class ParentOf>
+__device__ void propagateBoxesUp(BvhNode* nodes, uint32_t node, uint32_t* visits, ParentOf parentOf) {
+    climbAsSecondArrival(node, visits, parentOf, [&](uint32_t parent) {
         const uint32_t left = nodes[parent].leftOrFirst;  // topology: not written by this pass
         Aabb box = loadBoxCoherent(nodes + left);
         box.grow(loadBoxCoherent(nodes + left + 1));
         storeBox(nodes + parent, box);
-        node = parent;
-    }
+        return true;
+    });
 }
 
 // Launch shape of the one-thread-per-item kernels here.

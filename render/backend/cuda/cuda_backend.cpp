@@ -434,7 +434,11 @@ void CudaBackend::rebuildBlasOnDevice(uint32_t i) {
     } else {
         lbvh_.build(primBoxes_.data(), primitives, device_.blasNodes(i), device_.blasPrimIndices(i), stream_);
     }
-    device_.setBlasNodeCount(i, lbvhNodeCount(primitives), stream_);
+    const uint32_t nodeCount = toggles_.gpuLeafCollapse
+                                   ? leafCollapse_.collapse(device_.blasNodes(i), lbvhNodeCount(primitives),
+                                                            device_.blasPrimIndices(i), primitives, stream_)
+                                   : lbvhNodeCount(primitives);
+    device_.setBlasNodeCount(i, nodeCount, stream_);
     device_.dropCompressed(i, stream_);         // the kernels walk the new tree's binary nodes
     compressedPlan_[i] = CompressedPlan::Skip;  // and its compressed form, if still to come, is stale
 }
@@ -505,6 +509,7 @@ bool CudaBackend::landSahTrees(bool wait) {
         PT_CUDA_CHECK(cudaStreamSynchronize(stream_));
         lbvh_.release();
         hploc_.release();
+        leafCollapse_.release();
         primBoxes_ = {};
     }
     return landed;
@@ -882,6 +887,7 @@ std::vector<std::pair<std::string, uint64_t>> CudaBackend::deviceMemoryByBuffer(
     rows.emplace_back("BVH scratch (refit visits)", refitVisits_.bytes());
     rows.emplace_back("BVH scratch (LBVH builder)", lbvh_.bytes());
     rows.emplace_back("BVH scratch (H-PLOC builder)", hploc_.bytes());
+    rows.emplace_back("BVH scratch (leaf collapse)", leafCollapse_.bytes());
     rows.emplace_back("ray queries", queryRays_.bytes() + queryHits_.bytes() + queryClaims_.bytes());
     return rows;
 }

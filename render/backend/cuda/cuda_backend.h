@@ -177,6 +177,7 @@ private:
     DeviceScene device_;
     LbvhBuilder lbvh_;  // BLAS builds without gpuPloc, and the TLAS beyond kHostTlasMaxInstances
     HplocBuilder hploc_;
+    BvhLeafCollapse leafCollapse_;  // after either builder (IntegratorToggles::gpuLeafCollapse)
     PathScheduler scheduler_;
     ScheduleChooser scheduleChooser_;
     DeviceBuffer<double> sum_;

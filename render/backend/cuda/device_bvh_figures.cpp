@@ -2,6 +2,7 @@
 #include "render/backend/cuda/device_bvh_figures.h"
 
 #include <algorithm>
+#include <type_traits>
 
 #include "render/backend/cuda/gpu_bvh.h"
 #include "render/backend/cuda/stream_timer.h"
@@ -21,15 +22,24 @@ double medianDeviceSeconds(uint32_t runs, cudaStream_t stream, Queue&& queue) {
     return seconds[seconds.size() / 2];
 }
 
+// `builder`'s build of the n `boxes` into `nodes` and `primIndices`, timed alone and with the
+// leaf collapse after it; the tree it leaves there is the uncollapsed one.
 template <class Builder>
-ClusteringBuildFigures measureClusteringBuild(const Aabb* boxes, uint32_t n, BvhNode* nodes,
-                                              uint32_t* primIndices, uint32_t runs, cudaStream_t stream) {
-    Builder builder;
-    ClusteringBuildFigures figures;
+GpuBuildFigures measureBuild(Builder& builder, const Aabb* boxes, uint32_t n, BvhNode* nodes,
+                             uint32_t* primIndices, uint32_t runs, cudaStream_t stream) {
+    GpuBuildFigures figures;
     figures.seconds =
         medianDeviceSeconds(runs, stream, [&] { builder.build(boxes, n, nodes, primIndices, stream); });
     figures.sahCost = sahCostOnDevice(nodes, lbvhNodeCount(n), stream);
-    figures.fellBack = builder.lastBuildFellBack();
+    if constexpr (!std::is_same_v<Builder, LbvhBuilder>) figures.fellBack = builder.lastBuildFellBack();
+    BvhLeafCollapse collapse;
+    uint32_t collapsedCount = 0;
+    figures.collapsedSeconds = medianDeviceSeconds(runs, stream, [&] {
+        builder.build(boxes, n, nodes, primIndices, stream);
+        collapsedCount = collapse.collapse(nodes, lbvhNodeCount(n), primIndices, n, stream);
+    });
+    figures.collapsedSahCost = sahCostOnDevice(nodes, collapsedCount, stream);
+    builder.build(boxes, n, nodes, primIndices, stream);
     return figures;
 }
 
@@ -44,15 +54,13 @@ DeviceBvhFigures measureDeviceBvhBuilds(const BvhBuildInput& in, uint32_t runs, 
     DeviceBuffer<uint32_t> primIndices(std::max(n, 1u));
     const uint32_t parentCount = std::max(lbvhNodeCount(n), uint32_t(in.cpuTree.nodes.size()));
     DeviceBuffer<uint32_t> parents(parentCount), visits(parentCount);
+    PlocBuilder ploc;
+    HplocBuilder hploc;
     LbvhBuilder builder;
-    figures.buildSeconds = medianDeviceSeconds(
-        runs, stream, [&] { builder.build(boxes.data(), n, nodes.data(), primIndices.data(), stream); });
-    figures.sahCost = sahCostOnDevice(nodes.data(), lbvhNodeCount(n), stream);
-    figures.ploc =
-        measureClusteringBuild<PlocBuilder>(boxes.data(), n, nodes.data(), primIndices.data(), runs, stream);
-    figures.hploc =
-        measureClusteringBuild<HplocBuilder>(boxes.data(), n, nodes.data(), primIndices.data(), runs, stream);
-    builder.build(boxes.data(), n, nodes.data(), primIndices.data(), stream);  // the LBVH again, to refit
+    figures.ploc = measureBuild(ploc, boxes.data(), n, nodes.data(), primIndices.data(), runs, stream);
+    figures.hploc = measureBuild(hploc, boxes.data(), n, nodes.data(), primIndices.data(), runs, stream);
+    // Last, so that its tree is the one refitted below.
+    figures.lbvh = measureBuild(builder, boxes.data(), n, nodes.data(), primIndices.data(), runs, stream);
 
     computeParents(nodes.data(), lbvhNodeCount(n), parents.data(), stream);
     figures.refitSeconds = medianDeviceSeconds(runs, stream, [&] {

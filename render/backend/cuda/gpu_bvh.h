@@ -11,7 +11,8 @@
 #include "render/backend/cuda/device_buffer.h"
 #include "render/backend/cuda/morton_sort.h"
 #include "render/bvh/aabb.h"
-#include "render/bvh/bvh_walk.h"  // kBvhStackSize
+#include "render/bvh/bvh_walk.h"          // kBvhStackSize
+#include "render/bvh/subtree_collapse.h"  // kMaxCollapsedLeaf
 #include "render/kernel/bvh_node.h"
 #include "render/kernel/render_scene.h"
 
@@ -158,6 +159,48 @@ private:
     DeviceBuffer<uint32_t> siblingBounds_;
     DeviceBuffer<uint32_t> counters_;  // PlocCounter: slots taken after the root's, -, root height
     LbvhBuilder fallback_;             // from the same sorted keys
+};
+
+// The SAH leaf rule of a top-down build (render/bvh/subtree_collapse.h) applied to a tree the
+// builders above made: every subtree of at most kMaxCollapsedLeaf primitives whose optimal SAH
+// cost is as one leaf becomes that leaf, and the nodes below it go. On an H200 it takes H-PLOC's
+// trees of pt-render bench's 1M sphere from 1.119x to 1.085x the binned SAH build's cost (1.048x
+// to 1.036x on 100k random triangles, 1.040x to 0.992x clustered, 1.091x to 1.070x on an 82k
+// icosphere: gpu_bvh_test), keeping 62% of the nodes, for 0.35-0.43 ms more at 1M primitives.
+// Keeps its scratch between collapses, as the builders do.
+class BvhLeafCollapse {
+public:
+    // `nodes` holds `nodeCount` nodes in the builders' layout (root at 0; the children of every
+    // interior node at slots 2p + 1 and 2p + 2), over `primCount` entries of `primIndices`.
+    // Rewrites both in place, in that layout, with the kept nodes in their order and each leaf's
+    // primitives in their order below it, and returns the new node count. The result obeys every
+    // rule of the builders' trees but the leaf size, which is at most kMaxCollapsedLeaf (a leaf
+    // of more primitives is kept as it is), and its depth does not grow. Synchronises `stream`;
+    // throws std::logic_error where the primitives placed do not add up (a tree not in that
+    // layout: never one of the builders').
+    uint32_t collapse(BvhNode* nodes, uint32_t nodeCount, uint32_t* primIndices, uint32_t primCount,
+                      cudaStream_t stream);
+    void release();
+    uint64_t bytes() const {
+        return choices_.bytes() + parentsThenPairKept_.bytes() + visitsThenPairSlots_.bytes() +
+               costsThenLeafPrimitives_.bytes() + primitiveOffsets_.bytes() + outNodes_.bytes() +
+               outPrimIndices_.bytes() + scanScratch_.bytes();
+    }
+
+private:
+    void reserve(uint32_t nodeCount, uint32_t primCount);
+
+    uint32_t nodeCapacity_ = 0, primCapacity_ = 0;
+    // Per node: the primitives below it (up to the limit) and whether it is to be a leaf.
+    DeviceBuffer<uint8_t> choices_;
+    // A word a node, each for the choices' pass and then for the marks (bvh_leaf_collapse.cu):
+    // parent links, then 1 where a sibling pair stays; arrivals, then each kept pair's new pair
+    // index; optimal costs, then each kept leaf's primitives.
+    DeviceBuffer<uint32_t> parentsThenPairKept_, visitsThenPairSlots_, costsThenLeafPrimitives_;
+    DeviceBuffer<uint32_t> primitiveOffsets_;  // each kept leaf's first entry (exclusive scan)
+    DeviceBuffer<BvhNode> outNodes_;           // the kept nodes, sized to them
+    DeviceBuffer<uint32_t> outPrimIndices_;
+    DeviceBuffer<uint8_t> scanScratch_;
 };
 
 // The object-space box of each primitive of `blas` (mesh-local order), read from the device

@@ -26,7 +26,7 @@ TEST(ToggleTable, EveryToggleHasOneRowWithUniqueKeysAndFlags) {
         }
         EXPECT_EQ(&toggleRow(row.id), &row);
     }
-    EXPECT_EQ(ids.size(), size_t(ToggleId::GpuPloc) + 1) << "an id without a row";
+    EXPECT_EQ(ids.size(), size_t(ToggleId::GpuLeafCollapse) + 1) << "an id without a row";
 }
 
 TEST(ToggleTable, EachRowFlipsItsOwnToggleOnly) {

@@ -74,11 +74,23 @@ TEST(CudaFirstBuild, TheFirstFrameWalksAGpuBuildAndTheSahTreeLandsBehindIt) {
         std::cout << "[ sah      ] first frame's BLAS of 300,000 triangles: H-PLOC " << hplocCost << ", LBVH "
                   << lbvhCost << ", host binned SAH " << sahCost << "\n";
         EXPECT_LT(hplocCost, lbvhCost) << "H-PLOC's tree should cost less to walk than the LBVH's";
+        // Without the leaf collapse: leaves of one primitive, dearer to walk, with the same hits.
+        cuda::CudaBackend singleLeaves;
+        IntegratorToggles uncollapsed = fixedSchedule(true);
+        uncollapsed.gpuLeafCollapse = false;
+        singleLeaves.setToggles(uncollapsed);
+        EXPECT_TRUE(hasStep(singleLeaves.sync(scene, SceneChanges::All, {}), kGpuFirstBuildStep));
+        const float singleLeafCost = singleLeaves.blasSahCost(0);
+        std::cout << "[ sah      ] H-PLOC without the leaf collapse " << singleLeafCost << "\n";
+        EXPECT_LT(hplocCost, singleLeafCost) << "the collapse should pay on 300,000 triangles";
+        EXPECT_EQ(test::bufferBytes(singleLeaves, "BVH scratch (leaf collapse)"), 0u);
+        test::expectSameHits(singleLeaves, hostBuilt, test::soupRays(20000, 7), "H-PLOC's single leaves");
     }
     EXPECT_EQ(deferred.blasSahCost(1), hostBuilt.blasSahCost(1))
         << "a mesh under the threshold, built on the host";
 
     EXPECT_GT(test::bufferBytes(deferred, "BVH scratch (H-PLOC builder)"), 1u << 20);
+    EXPECT_GT(test::bufferBytes(deferred, "BVH scratch (leaf collapse)"), 1u << 20);
     const std::vector<Ray> rays = test::soupRays(100000, 3);
     test::expectSameHits(deferred, hostBuilt, rays, "GPU first build vs host SAH");
     deferred.render(2);               // on the GPU's tree, or on the SAH tree where it was done
@@ -87,6 +99,7 @@ TEST(CudaFirstBuild, TheFirstFrameWalksAGpuBuildAndTheSahTreeLandsBehindIt) {
     EXPECT_FALSE(deferred.finishBackgroundWork().has_value()) << "work left after finishing it";
     // The first build's scratch went with it (300,000 boxes are 7 MiB).
     EXPECT_EQ(test::bufferBytes(deferred, "BVH scratch (H-PLOC builder)"), 0u);
+    EXPECT_EQ(test::bufferBytes(deferred, "BVH scratch (leaf collapse)"), 0u);
     EXPECT_EQ(test::bufferBytes(deferred, "BVH scratch (LBVH builder)"), 0u);
     EXPECT_EQ(test::bufferBytes(deferred, "BVH scratch (primitive boxes)"), 0u);
     EXPECT_EQ(test::bufferBytes(deferred, "BLAS nodes"), test::bufferBytes(hostBuilt, "BLAS nodes"))

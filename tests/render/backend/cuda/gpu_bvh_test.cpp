@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <type_traits>
 
@@ -25,11 +26,18 @@ using test::TestStream;
 
 // ---- LBVH structure ---------------------------------------------------------------------------
 
-// Every promise of gpu_bvh.h's LbvhBuilder::build (and PlocBuilder::build), for a tree of
-// `boxes`; its depth to `treeDepth`.
-void expectValidTree(const Bvh& bvh, const std::vector<Aabb>& boxes, uint32_t* treeDepth = nullptr) {
+// Every promise of gpu_bvh.h's LbvhBuilder::build (and PlocBuilder::build, HplocBuilder::build),
+// for a tree of `boxes`; its depth to `treeDepth`. With `collapsed`, BvhLeafCollapse's: leaves of
+// up to kMaxCollapsedLeaf primitives, and no more nodes than the builders'.
+void expectValidTree(const Bvh& bvh, const std::vector<Aabb>& boxes, uint32_t* treeDepth = nullptr,
+                     bool collapsed = false) {
     const uint32_t n = uint32_t(boxes.size());
-    ASSERT_EQ(bvh.nodes.size(), cuda::lbvhNodeCount(n));
+    if (collapsed) {
+        ASSERT_LE(bvh.nodes.size(), cuda::lbvhNodeCount(n));
+        ASSERT_EQ(bvh.nodes.size() % 2, 1u) << "a root and sibling pairs";
+    } else {
+        ASSERT_EQ(bvh.nodes.size(), cuda::lbvhNodeCount(n));
+    }
     ASSERT_EQ(bvh.primIndices.size(), n);
     if (n == 0) {
         EXPECT_EQ(bvh.nodes[0].count, 0u);
@@ -49,14 +57,21 @@ void expectValidTree(const Bvh& bvh, const std::vector<Aabb>& boxes, uint32_t* t
         const BvhNode& node = bvh.nodes[index];
         Aabb exact;
         if (node.isLeaf()) {
-            ASSERT_EQ(node.count, 1u) << "leaves hold one primitive";
-            ASSERT_LT(node.leftOrFirst, n);
-            const uint32_t prim = bvh.primIndices[node.leftOrFirst];
-            ASSERT_LT(prim, n);
-            ++seenPrim[prim];
-            exact = boxes[prim];
+            if (collapsed) {
+                ASSERT_LE(node.count, kMaxCollapsedLeaf) << "node " << index;
+            } else {
+                ASSERT_EQ(node.count, 1u) << "leaves hold one primitive";
+            }
+            ASSERT_LE(node.leftOrFirst + node.count, n);
+            for (uint32_t k = node.leftOrFirst; k < node.leftOrFirst + node.count; ++k) {
+                const uint32_t prim = bvh.primIndices[k];
+                ASSERT_LT(prim, n);
+                ++seenPrim[prim];
+                exact.grow(boxes[prim]);
+            }
         } else {
             ASSERT_LT(node.leftOrFirst + 1, bvh.nodes.size());
+            ASSERT_EQ(node.leftOrFirst % 2, 1u) << "a left child opens a sibling pair at an odd slot";
             for (uint32_t c = 0; c < 2; ++c) {
                 exact.grow(test::boxOf(bvh.nodes[node.leftOrFirst + c]));
                 stack.push_back({node.leftOrFirst + c, depth + 1});
@@ -249,6 +264,94 @@ TYPED_TEST(GpuTreeBuilder, ClosestHitsMatchBruteForce) {
     }
 }
 
+// ---- leaf collapse ----------------------------------------------------------------------------
+
+// BvhLeafCollapse over each builder's trees: the host's worked-out result bit for bit (so every
+// choice, slot and primitive offset), a valid tree with leaves of up to four, its cost the
+// recursive optimum's, never above the tree's as built, no deeper; and a second collapse
+// changes nothing. Sizes around the leaf limit include trees that become one root leaf.
+TYPED_TEST(GpuTreeBuilder, LeafCollapseIsTheHostsOptimumAndAValidTree) {
+    PT_REQUIRE_CUDA_DEVICE();
+    TestStream s;
+    Rng rng(113);
+    TypeParam builder;
+    cuda::BvhLeafCollapse collapse;  // one throughout: its scratch grows and is reused
+    uint32_t collapsedSomewhere = 0;
+    for (uint32_t n : {0u, 1u, 2u, 3u, 4u, 5u, 9u, 100000u, 17u, 1000u, 33u}) {
+        for (SoupKind kind :
+             {SoupKind::Uniform, SoupKind::Clustered, SoupKind::Needles, SoupKind::CoincidentCentroids}) {
+            SCOPED_TRACE(std::to_string(n) + " " + test::soupName(kind));
+            const std::vector<Aabb> boxes = soupBoxes(kind, n, rng);
+            const auto [built, collapsed] = test::buildAndCollapseOnDevice(builder, collapse, boxes, s);
+            const Bvh expected = test::collapseOnHost(built);
+            ASSERT_EQ(collapsed.nodes.size(), expected.nodes.size());
+            ASSERT_EQ(std::memcmp(collapsed.nodes.data(), expected.nodes.data(),
+                                  expected.nodes.size() * sizeof(BvhNode)),
+                      0)
+                << "nodes differ from the host's";
+            ASSERT_EQ(collapsed.primIndices, expected.primIndices);
+            uint32_t builtDepth = 0, collapsedDepth = 0;
+            expectValidTree(built, boxes, &builtDepth);
+            expectValidTree(collapsed, boxes, &collapsedDepth, true);
+            EXPECT_LE(collapsedDepth, builtDepth);
+            if (n < 2) continue;
+            const float builtCost = sahCost(built), collapsedCost = sahCost(collapsed);
+            EXPECT_LE(collapsedCost, builtCost);
+            if (nodeSurfaceArea(built.nodes[0]) > 0.0f) {
+                // The optimum of the whole tree, summed in another order: float rounding apart.
+                float optimum = 0.0f;
+                std::vector<uint32_t> stack{0};
+                while (!stack.empty()) {
+                    const uint32_t i = stack.back();
+                    stack.pop_back();
+                    const SubtreeChoice choice = collapseChoice(built.nodes.data(), i);
+                    if (choice.primitives) {
+                        optimum += choice.cost;
+                    } else {
+                        optimum += nodeSurfaceArea(built.nodes[i]);
+                        stack.push_back(built.nodes[i].leftOrFirst);
+                        stack.push_back(built.nodes[i].leftOrFirst + 1);
+                    }
+                }
+                EXPECT_NEAR(collapsedCost, optimum / nodeSurfaceArea(built.nodes[0]), 1e-4f * builtCost);
+            }
+            collapsedSomewhere += collapsed.nodes.size() < built.nodes.size();
+            // Collapsing a collapsed tree again keeps it as it is.
+            cuda::DeviceBuffer<BvhNode> nodes;
+            cuda::DeviceBuffer<uint32_t> prims;
+            nodes.upload(collapsed.nodes, s.stream);
+            prims.upload(collapsed.primIndices, s.stream);
+            EXPECT_EQ(
+                collapse.collapse(nodes.data(), uint32_t(collapsed.nodes.size()), prims.data(), n, s.stream),
+                collapsed.nodes.size());
+            EXPECT_EQ(nodes.download().size(), collapsed.nodes.size());
+            EXPECT_EQ(std::memcmp(nodes.download().data(), collapsed.nodes.data(),
+                                  collapsed.nodes.size() * sizeof(BvhNode)),
+                      0);
+            EXPECT_EQ(prims.download(), collapsed.primIndices);
+        }
+    }
+    EXPECT_GE(collapsedSomewhere, 12u) << "the collapse should have removed nodes from most trees";
+}
+
+TYPED_TEST(GpuTreeBuilder, ClosestHitsThroughCollapsedTreesMatchBruteForce) {
+    PT_REQUIRE_CUDA_DEVICE();
+    TestStream s;
+    Rng rng(114);
+    TypeParam builder;
+    cuda::BvhLeafCollapse collapse;
+    for (SoupKind kind : {SoupKind::Uniform, SoupKind::Clustered, SoupKind::Needles}) {
+        for (const SoupSize& size : {SoupSize{3, 2000}, {2000, 20000}, {20000, 2000}}) {
+            const auto [triangles, rays] = size;
+            SCOPED_TRACE(std::to_string(triangles) + " " + test::soupName(kind));
+            const Mesh mesh = test::makeSoup(kind, triangles, rng);
+            Bvh tree =
+                test::buildAndCollapseOnDevice(builder, collapse, test::triangleBounds(mesh), s).second;
+            EXPECT_EQ(test::compareClosestHits(mesh, std::move(tree), rays, rng), 0);
+        }
+    }
+}
+
 // ---- refit ------------------------------------------------------------------------------------
 
 // A triangle mesh on the device, as the backend holds one: global arrays and one BlasRef.
@@ -413,6 +516,7 @@ TEST(GpuBvh, SahCostOfGpuBuildsAgainstTheBinnedBuilder) {
     cuda::LbvhBuilder lbvhBuilder;
     cuda::PlocBuilder plocBuilder;
     cuda::HplocBuilder hplocBuilder;
+    cuda::BvhLeafCollapse collapse;
     const std::pair<const char*, Mesh> meshes[] = {
         {"random100k", test::makeSoup(SoupKind::Uniform, 100000, rng)},
         {"clustered100k", test::makeSoup(SoupKind::Clustered, 100000, rng)},
@@ -423,10 +527,21 @@ TEST(GpuBvh, SahCostOfGpuBuildsAgainstTheBinnedBuilder) {
         const float lbvh = sahCost(test::buildTreeOnDevice(lbvhBuilder, boxes, s)) / binned;
         const float ploc = sahCost(test::buildTreeOnDevice(plocBuilder, boxes, s)) / binned;
         const float hploc = sahCost(test::buildTreeOnDevice(hplocBuilder, boxes, s)) / binned;
+        const float hplocCollapsed =
+            sahCost(test::buildAndCollapseOnDevice(hplocBuilder, collapse, boxes, s).second) / binned;
+        const float lbvhCollapsed =
+            sahCost(test::buildAndCollapseOnDevice(lbvhBuilder, collapse, boxes, s).second) / binned;
         std::cout << "[ sah      ] " << name << " (" << boxes.size()
                   << " triangles), cost over the binned SAH"
                   << " build's " << binned << ": LBVH " << lbvh << ", PLOC " << ploc << ", H-PLOC " << hploc
+                  << "; after the leaf collapse: LBVH " << lbvhCollapsed << ", H-PLOC " << hplocCollapsed
                   << "\n";
+        // The binned build's leaves hold up to four: one-primitive leaves cost more, by 2% on a
+        // tessellation (subtree_collapse_test.cpp) and less on soups.
+        EXPECT_LT(hplocCollapsed, (std::string(name) == "icosphere82k" ? 0.99f : 1.0f) * hploc);
+        EXPECT_LT(lbvhCollapsed, lbvh);
+        ::testing::Test::RecordProperty(std::string("hploc_collapsed_sah_ratio_") + name,
+                                        std::to_string(hplocCollapsed));
         EXPECT_FALSE(hplocBuilder.lastBuildFellBack());
         EXPECT_LT(hploc, lbvh);
         ::testing::Test::RecordProperty(std::string("lbvh_sah_ratio_") + name, std::to_string(lbvh));
@@ -592,6 +707,28 @@ TEST(GpuBvh, BuildAndRefitSpeedOfOneMillionTriangles) {
         nodes.download(tree.nodes);
         primIndices.download(tree.primIndices);
         expectValidTree(tree, test::triangleBounds(mesh));
+    }
+    {
+        // The collapse after it, as the backend runs them (each run collapses a fresh build).
+        cuda::BvhLeafCollapse collapse;
+        uint32_t kept = 0;
+        const float bothMs = medianMilliseconds(s, 10, [&] {
+            hploc.build(boxes.data(), n, nodes.data(), primIndices.data(), s.stream);
+            kept = collapse.collapse(nodes.data(), nodeCount, primIndices.data(), n, s.stream);
+        });
+        std::printf("[ speed    ] H-PLOC build and leaf collapse %.3f ms, SAH %.2f, %u of %u nodes kept\n",
+                    bothMs, cuda::sahCostOnDevice(nodes.data(), kept, s.stream), kept, nodeCount);
+        ::testing::Test::RecordProperty("hploc_collapse_1m_ms", std::to_string(bothMs));
+        // And at this scale, where many blocks climb at once, checked whole against the host's.
+        const std::vector<Aabb> hostBoxes = test::triangleBounds(mesh);
+        const auto [built, collapsed] = test::buildAndCollapseOnDevice(hploc, collapse, hostBoxes, s);
+        const Bvh expected = test::collapseOnHost(built);
+        ASSERT_EQ(collapsed.nodes.size(), expected.nodes.size());
+        EXPECT_EQ(std::memcmp(collapsed.nodes.data(), expected.nodes.data(),
+                              expected.nodes.size() * sizeof(BvhNode)),
+                  0);
+        EXPECT_EQ(collapsed.primIndices, expected.primIndices);
+        expectValidTree(collapsed, hostBoxes, nullptr, true);
     }
     const float buildMs = medianMilliseconds(
         s, 10, [&] { builder.build(boxes.data(), n, nodes.data(), primIndices.data(), s.stream); });

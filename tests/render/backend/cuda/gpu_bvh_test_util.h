@@ -51,6 +51,82 @@ Bvh buildTreeOnDevice(Builder& builder, const std::vector<Aabb>& boxes, const Te
     return bvh;
 }
 
+// BvhLeafCollapse's result worked out on the host, one node after another, from the choices of
+// render/bvh/subtree_collapse.h: kept nodes (those no chosen leaf lies above) in their order,
+// each kept pair at the next free pair of slots, each leaf's primitives (left to right) after
+// the previous kept leaf's. The device's result must equal it bit for bit.
+inline Bvh collapseOnHost(const Bvh& tree) {
+    const uint32_t count = uint32_t(tree.nodes.size());
+    if (tree.primIndices.size() <= 1 || count <= 1) return tree;
+    const auto becomesLeaf = [&](uint32_t i) {
+        return tree.nodes[i].isLeaf() || collapseChoice(tree.nodes.data(), i).asLeaf;
+    };
+    std::vector<uint8_t> kept(count, 0);
+    std::vector<uint32_t> stack{0};
+    while (!stack.empty()) {
+        const uint32_t i = stack.back();
+        stack.pop_back();
+        kept[i] = 1;
+        if (!becomesLeaf(i)) {
+            stack.push_back(tree.nodes[i].leftOrFirst);
+            stack.push_back(tree.nodes[i].leftOrFirst + 1);
+        }
+    }
+    std::vector<uint32_t> slot(count, 0);
+    uint32_t nextSlot = 1;
+    for (uint32_t i = 1; i < count; i += 2) {
+        if (!kept[i]) continue;
+        slot[i] = nextSlot;
+        slot[i + 1] = nextSlot + 1;
+        nextSlot += 2;
+    }
+    Bvh out;
+    out.nodes.resize(nextSlot);
+    for (uint32_t i = 0; i < count; ++i) {
+        if (!kept[i]) continue;
+        BvhNode node = tree.nodes[i];
+        if (becomesLeaf(i)) {
+            const uint32_t first = uint32_t(out.primIndices.size());
+            forEachSmallSubtreeLeaf(tree.nodes.data(), i, [&](const BvhNode& leaf) {
+                for (uint32_t k = 0; k < leaf.count; ++k)
+                    out.primIndices.push_back(tree.primIndices[leaf.leftOrFirst + k]);
+            });
+            node.leftOrFirst = first;
+            node.count = uint32_t(out.primIndices.size()) - first;
+        } else {
+            node.leftOrFirst = slot[node.leftOrFirst];
+        }
+        out.nodes[slot[i]] = node;
+    }
+    return out;
+}
+
+// A tree of `boxes` built on the device with `builder`, downloaded as built and again after
+// BvhLeafCollapse on the device.
+template <class Builder>
+std::pair<Bvh, Bvh> buildAndCollapseOnDevice(Builder& builder, cuda::BvhLeafCollapse& collapse,
+                                             const std::vector<Aabb>& boxes, const TestStream& s) {
+    const uint32_t n = uint32_t(boxes.size());
+    cuda::DeviceBuffer<Aabb> deviceBoxes;
+    deviceBoxes.upload(boxes, s.stream);
+    cuda::DeviceBuffer<BvhNode> nodes(cuda::lbvhNodeCount(n));
+    cuda::DeviceBuffer<uint32_t> primIndices(std::max(n, 1u));
+    builder.build(deviceBoxes.data(), n, nodes.data(), primIndices.data(), s.stream);
+    s.sync();
+    std::pair<Bvh, Bvh> trees;
+    nodes.download(trees.first.nodes);
+    primIndices.download(trees.first.primIndices);
+    trees.first.primIndices.resize(n);
+    const uint32_t kept =
+        collapse.collapse(nodes.data(), cuda::lbvhNodeCount(n), primIndices.data(), n, s.stream);
+    s.sync();
+    nodes.download(trees.second.nodes);
+    primIndices.download(trees.second.primIndices);
+    trees.second.nodes.resize(kept);
+    trees.second.primIndices.resize(n);
+    return trees;
+}
+
 // The box every node of `bvh` must hold: the exact union of its primitives' boxes, computed
 // from scratch in post-order (node indices say nothing about the order: an LBVH's children
 // may precede their parent).

@@ -1,0 +1,232 @@
+// BvhLeafCollapse (gpu_bvh.h): the SAH leaf rule of render/bvh/subtree_collapse.h over a tree
+// the GPU builders made, then the tree compacted into the same layout. Passes, all queued on the
+// caller's stream:
+//   1. parent links (computeParents), then each node's choice bottom-up: a thread a leaf climbs
+//      while the subtree below stays within kMaxCollapsedLeaf primitives (the second child's
+//      thread to arrive goes on, as in the refit: bvh_bottom_up.cuh), recording how many
+//      primitives lie below each node it reaches, its optimal cost, and whether that is as one
+//      leaf. A node it does not reach has more primitives below (its choice stays 0);
+//   2. which sibling pairs stay and which nodes become leaves: a node above more than
+//      kMaxCollapsedLeaf primitives always stays, so its thread walks down its small children's
+//      subtrees (at most 7 nodes each) and marks what the choices keep; every mark is written
+//      by one thread;
+//   3. exclusive scans of the marks give each kept pair its new slot and each leaf its place in
+//      the primitive list (cub::DeviceScan);
+//   4. each kept node writes itself at its new slot, a leaf gathering the primitives below it,
+//      into scratch that is then copied over the input.
+// The first pass's buffers (parents, arrivals, costs) hold the second's marks once it is done.
+#include <algorithm>
+#include <cub/device/device_scan.cuh>
+#include <stdexcept>
+#include <string>
+
+#include "render/backend/cuda/bvh_bottom_up.cuh"
+#include "render/backend/cuda/gpu_bvh.h"
+#include "render/bvh/subtree_collapse.h"
+
+namespace pt::cuda {
+
+namespace {
+
+// A node's choice in one byte: bits 0-6 the primitives below it (0: more than
+// kMaxCollapsedLeaf), bit 7 set where it is to be a leaf (a leaf already, or collapsed).
+constexpr uint8_t kChoiceLeaf = 0x80;
+constexpr uint8_t kChoicePrimitives = 0x7F;
+static_assert(kMaxCollapsedLeaf <= kChoicePrimitives, "the primitive count fits below the leaf bit");
+
+// The sibling pair a left child opens: the GPU builders put the children of every interior
+// node at slots 2p + 1 and 2p + 2.
+__device__ __forceinline__ uint32_t pairOf(uint32_t leftChild) { return (leftChild - 1) / 2; }
+
+// Thread per node; the leaves' threads climb. `choices` zeroed, `visits` zeroed.
+__global__ void chooseKernel(const BvhNode* nodes, uint32_t nodeCount, const uint32_t* parents,
+                             uint32_t* visits, uint8_t* choices, float* costs) {
+    const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= nodeCount) return;
+    const BvhNode leaf = nodes[i];
+    if (!leaf.isLeaf()) return;
+    if (leaf.count > kMaxCollapsedLeaf) {  // stays as it is; its parent is above more too
+        choices[i] = kChoiceLeaf;
+        return;
+    }
+    __stcg(costs + i, leafCost(leaf));
+    __stcg(choices + i, uint8_t(kChoiceLeaf | leaf.count));
+    climbAsSecondArrival(
+        i, visits, [&](uint32_t node) { return parents[node]; },
+        [&](uint32_t parent) {
+            const BvhNode above = nodes[parent];  // boxes and topology: not written by this pass
+            const uint32_t left = above.leftOrFirst;
+            // L2's copies: L1 is not coherent across SMs.
+            const uint32_t primitives = (__ldcg(choices + left) & kChoicePrimitives) +
+                                        (__ldcg(choices + left + 1) & kChoicePrimitives);
+            // Both children arrived, so both are small; together they may not be.
+            if (primitives > kMaxCollapsedLeaf) return false;
+            const SubtreeChoice choice = leafOrSplit(nodeSurfaceArea(above), primitives, __ldcg(costs + left),
+                                                     __ldcg(costs + left + 1));
+            __stcg(costs + parent, choice.cost);
+            __stcg(choices + parent, uint8_t(primitives | (choice.asLeaf ? kChoiceLeaf : 0)));
+            return true;
+        });
+}
+
+// Marks what stays of the subtree under `top`, a kept node of at most kMaxCollapsedLeaf
+// primitives: down to the first node on each path whose choice is a leaf.
+__device__ void markSmallSubtree(const BvhNode* nodes, const uint8_t* choices, uint32_t top,
+                                 uint32_t* pairKept, uint32_t* leafPrimitives) {
+    uint32_t stack[kMaxCollapsedLeaf];
+    uint32_t depth = 0;
+    stack[depth++] = top;
+    while (depth > 0) {
+        const uint32_t index = stack[--depth];
+        const uint8_t choice = choices[index];
+        if (choice & kChoiceLeaf) {
+            leafPrimitives[index] = choice & kChoicePrimitives;
+            continue;
+        }
+        const uint32_t left = nodes[index].leftOrFirst;
+        pairKept[pairOf(left)] = 1;
+        if (depth + 2 > kMaxCollapsedLeaf) continue;  // unreachable below a small subtree's root
+        stack[depth++] = left + 1;
+        stack[depth++] = left;
+    }
+}
+
+__global__ void markKernel(const BvhNode* nodes, uint32_t nodeCount, const uint8_t* choices,
+                           uint32_t* pairKept, uint32_t* leafPrimitives) {
+    const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= nodeCount) return;
+    const bool small = (choices[i] & kChoicePrimitives) != 0;
+    if (small) {
+        // Marked by the thread of its nearest large ancestor, unless it is the root.
+        if (i == 0) markSmallSubtree(nodes, choices, 0, pairKept, leafPrimitives);
+        return;
+    }
+    const BvhNode node = nodes[i];
+    if (node.isLeaf()) {  // more than kMaxCollapsedLeaf primitives: it stays as it is
+        leafPrimitives[i] = node.count;
+        return;
+    }
+    pairKept[pairOf(node.leftOrFirst)] = 1;
+    for (uint32_t child = node.leftOrFirst; child < node.leftOrFirst + 2; ++child) {
+        if (choices[child] & kChoicePrimitives)
+            markSmallSubtree(nodes, choices, child, pairKept, leafPrimitives);
+    }
+}
+
+__global__ void writeKernel(const BvhNode* nodes, uint32_t nodeCount, const uint32_t* primIndices,
+                            const uint8_t* choices, const uint32_t* pairKept, const uint32_t* pairSlots,
+                            const uint32_t* primitiveOffsets, BvhNode* outNodes, uint32_t* outPrimIndices) {
+    const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= nodeCount) return;
+    if (i != 0 && !pairKept[pairOf(i)]) return;
+    const uint32_t slot = i == 0 ? 0 : 1 + 2 * pairSlots[pairOf(i)] + ((i - 1) & 1);
+    BvhNode out = nodes[i];
+    if (choices[i] & kChoiceLeaf) {  // its primitives, in their order below it, from its offset on
+        uint32_t next = primitiveOffsets[i];
+        out.leftOrFirst = next;
+        forEachSmallSubtreeLeaf(nodes, i, [&](const BvhNode& leaf) {
+            for (uint32_t k = 0; k < leaf.count; ++k)
+                outPrimIndices[next++] = primIndices[leaf.leftOrFirst + k];
+        });
+        out.count = next - out.leftOrFirst;
+    } else {
+        out.leftOrFirst = 1 + 2 * pairSlots[pairOf(out.leftOrFirst)];
+    }
+    outNodes[slot] = out;
+}
+
+}  // namespace
+
+void BvhLeafCollapse::reserve(uint32_t nodeCount, uint32_t primCount) {
+    if (nodeCount > nodeCapacity_) {
+        nodeCapacity_ = grownCapacity(nodeCount, nodeCapacity_);
+        choices_.resize(nodeCapacity_);
+        parentsThenPairKept_.resize(nodeCapacity_);
+        visitsThenPairSlots_.resize(nodeCapacity_);
+        costsThenLeafPrimitives_.resize(nodeCapacity_);
+        primitiveOffsets_.resize(nodeCapacity_);
+        size_t pairScanBytes = 0, primitiveScanBytes = 0;
+        PT_CUDA_CHECK(cub::DeviceScan::ExclusiveSum(nullptr, pairScanBytes, parentsThenPairKept_.data(),
+                                                    visitsThenPairSlots_.data(), int(nodeCapacity_ / 2)));
+        PT_CUDA_CHECK(cub::DeviceScan::ExclusiveSum(nullptr, primitiveScanBytes,
+                                                    costsThenLeafPrimitives_.data(), primitiveOffsets_.data(),
+                                                    int(nodeCapacity_)));
+        scanScratch_.resize(std::max(pairScanBytes, primitiveScanBytes));
+    }
+    if (primCount > primCapacity_) {
+        primCapacity_ = grownCapacity(primCount, primCapacity_);
+        outPrimIndices_.resize(primCapacity_);
+    }
+}
+
+void BvhLeafCollapse::release() {
+    choices_ = {};
+    parentsThenPairKept_ = {};
+    visitsThenPairSlots_ = {};
+    costsThenLeafPrimitives_ = {};
+    primitiveOffsets_ = {};
+    outNodes_ = {};
+    outPrimIndices_ = {};
+    scanScratch_ = {};
+    nodeCapacity_ = 0;
+    primCapacity_ = 0;
+}
+
+uint32_t BvhLeafCollapse::collapse(BvhNode* nodes, uint32_t nodeCount, uint32_t* primIndices,
+                                   uint32_t primCount, cudaStream_t stream) {
+    if (primCount <= 1 || nodeCount <= 1) return nodeCount;  // the empty root or a single leaf
+    reserve(nodeCount, primCount);
+    const uint32_t pairs = (nodeCount - 1) / 2;
+    uint32_t* parents = parentsThenPairKept_.data();
+    uint32_t* visits = visitsThenPairSlots_.data();
+    float* costs = reinterpret_cast<float*>(costsThenLeafPrimitives_.data());
+    computeParents(nodes, nodeCount, parents, stream);
+    PT_CUDA_CHECK(cudaMemsetAsync(visits, 0, nodeCount * sizeof(uint32_t), stream));
+    PT_CUDA_CHECK(cudaMemsetAsync(choices_.data(), 0, nodeCount, stream));
+    chooseKernel<<<bvhBlocks(nodeCount), kBvhBlockSize, 0, stream>>>(nodes, nodeCount, parents, visits,
+                                                                     choices_.data(), costs);
+    PT_CUDA_CHECK_LAUNCH("chooseKernel");
+
+    uint32_t* pairKept = parentsThenPairKept_.data();
+    uint32_t* pairSlots = visitsThenPairSlots_.data();
+    uint32_t* leafPrimitives = costsThenLeafPrimitives_.data();
+    PT_CUDA_CHECK(cudaMemsetAsync(pairKept, 0, pairs * sizeof(uint32_t), stream));
+    PT_CUDA_CHECK(cudaMemsetAsync(leafPrimitives, 0, nodeCount * sizeof(uint32_t), stream));
+    markKernel<<<bvhBlocks(nodeCount), kBvhBlockSize, 0, stream>>>(nodes, nodeCount, choices_.data(),
+                                                                   pairKept, leafPrimitives);
+    PT_CUDA_CHECK_LAUNCH("markKernel");
+    size_t scanBytes = scanScratch_.size();
+    PT_CUDA_CHECK(cub::DeviceScan::ExclusiveSum(scanScratch_.data(), scanBytes, pairKept, pairSlots,
+                                                int(pairs), stream));
+    PT_CUDA_CHECK(cub::DeviceScan::ExclusiveSum(scanScratch_.data(), scanBytes, leafPrimitives,
+                                                primitiveOffsets_.data(), int(nodeCount), stream));
+    // The totals: kept pairs (the last pair's slot and mark) and primitives placed.
+    uint32_t tail[4];
+    const uint32_t* tailWords[4] = {pairSlots + pairs - 1, pairKept + pairs - 1,
+                                    primitiveOffsets_.data() + nodeCount - 1, leafPrimitives + nodeCount - 1};
+    for (int k = 0; k < 4; ++k) {
+        PT_CUDA_CHECK(
+            cudaMemcpyAsync(tail + k, tailWords[k], sizeof(uint32_t), cudaMemcpyDeviceToHost, stream));
+    }
+    PT_CUDA_CHECK(cudaStreamSynchronize(stream));
+    const uint32_t keptNodes = 1 + 2 * (tail[0] + tail[1]), placed = tail[2] + tail[3];
+    // Every primitive lands in exactly one kept leaf: any other total is a defect here (or a
+    // tree not in the GPU builders' layout), which must not pass silently.
+    if (placed != primCount || keptNodes > nodeCount) {
+        throw std::logic_error("BVH leaf collapse placed " + std::to_string(placed) + " of " +
+                               std::to_string(primCount) + " primitives in " + std::to_string(keptNodes) +
+                               " of " + std::to_string(nodeCount) + " nodes");
+    }
+    if (keptNodes > outNodes_.size()) outNodes_.resize(grownCapacity(keptNodes, uint32_t(outNodes_.size())));
+    writeKernel<<<bvhBlocks(nodeCount), kBvhBlockSize, 0, stream>>>(
+        nodes, nodeCount, primIndices, choices_.data(), pairKept, pairSlots, primitiveOffsets_.data(),
+        outNodes_.data(), outPrimIndices_.data());
+    PT_CUDA_CHECK_LAUNCH("writeKernel");
+    PT_CUDA_CHECK(cudaMemcpyAsync(nodes, outNodes_.data(), keptNodes * sizeof(BvhNode),
+                                  cudaMemcpyDeviceToDevice, stream));
+    PT_CUDA_CHECK(cudaMemcpyAsync(primIndices, outPrimIndices_.data(), primCount * sizeof(uint32_t),
+                                  cudaMemcpyDeviceToDevice, stream));
+    return keptNodes;
+}
+
+}  // namespace pt::cuda
