@@ -15,6 +15,11 @@
 //   4. each kept node writes itself at its new slot, a leaf gathering the primitives below it,
 //      into scratch that is then copied over the input.
 // The first pass's buffers (parents, arrivals, costs) hold the second's marks once it is done.
+// On an H200 (1M random triangles, ncu) the choices' pass takes 188 us, held up by the latency
+// of its atomics and fences (118 cycles an issued instruction). Two trials of it were slower: a
+// thread a node walking down with collapseChoice, depth first, 206 us; the same opening both
+// children together with a lower bound that gives up early, 436 us (its arrays in local memory).
+// Then mark 48 us, write 81 us (40 registers, 75% occupancy), parents 28 us.
 #include <algorithm>
 #include <cub/device/device_scan.cuh>
 #include <stdexcept>
