@@ -536,8 +536,8 @@ TEST(GpuBvh, SahCostOfGpuBuildsAgainstTheBinnedBuilder) {
                   << " build's " << binned << ": LBVH " << lbvh << ", PLOC " << ploc << ", H-PLOC " << hploc
                   << "; after the leaf collapse: LBVH " << lbvhCollapsed << ", H-PLOC " << hplocCollapsed
                   << "\n";
-        // The binned build's leaves hold up to four: one-primitive leaves cost more, by 2% on a
-        // tessellation (subtree_collapse_test.cpp) and less on soups.
+        // The binned build's leaves hold up to four: one-primitive leaves cost more (on an H200
+        // the collapse took off 1.9% on the icosphere, 4.6% clustered and 1.1% random).
         EXPECT_LT(hplocCollapsed, (std::string(name) == "icosphere82k" ? 0.99f : 1.0f) * hploc);
         EXPECT_LT(lbvhCollapsed, lbvh);
         ::testing::Test::RecordProperty(std::string("hploc_collapsed_sah_ratio_") + name,
