@@ -83,6 +83,21 @@ TEST(SubtreeCollapse, SubtreesOfMoreThanTheLimitReportNoChoice) {
     EXPECT_EQ(collapseChoice(pairOfTwos.data(), 0).primitives, 0u) << "two leaves of five primitives in all";
 }
 
+// A leaf over the limit (a tree built elsewhere): it and every node above it report no choice,
+// while a small subtree beside it still gets its own.
+TEST(SubtreeCollapse, ALeafOverTheLimitLeavesItsSmallNeighboursTheirChoice) {
+    const Vec3 lo(0.0f), hi(1.0f);
+    // 0 -> (1, 2); 1: a leaf of five; 2 -> (3, 4), two leaves sharing one box.
+    const std::vector<BvhNode> nodes{interior(lo, hi, 1), leaf(lo, hi, 0, 5), interior(lo, hi, 3),
+                                     leaf(lo, hi, 5), leaf(lo, hi, 6)};
+    EXPECT_EQ(collapseChoice(nodes.data(), 1).primitives, 0u);
+    EXPECT_EQ(collapseChoice(nodes.data(), 0).primitives, 0u);
+    const SubtreeChoice small = collapseChoice(nodes.data(), 2);
+    EXPECT_EQ(small.primitives, 2u);
+    EXPECT_TRUE(small.asLeaf);
+    EXPECT_EQ(optimum(nodes, 2).cost, small.cost);
+}
+
 TEST(SubtreeCollapse, EveryNodeOfBuiltTreesMatchesTheRecursiveOptimum) {
     Rng rng(31);
     BvhBuildOptions oneALeaf;
