@@ -24,13 +24,14 @@ struct GpuBuildFigures {
     float sahCost = 0.0f;
     double collapsedSeconds = 0.0;  // the build and BvhLeafCollapse, as the backend runs them
     float collapsedSahCost = 0.0f;
-    bool fellBack = false;  // PLOC, H-PLOC: its tree was too deep and an LBVH took its place
+    uint32_t collapsedNodes = 0;  // the collapsed tree's node count
+    bool fellBack = false;        // PLOC, H-PLOC: its tree was too deep and an LBVH took its place
 };
 
 // Medians over the runs, in seconds of device time.
 struct DeviceBvhFigures {
     GpuBuildFigures lbvh, ploc, hploc;
-    double refitSeconds = 0.0;  // of the LBVH (uncollapsed)
+    double refitSeconds = 0.0;  // of H-PLOC's tree after the leaf collapse
     double refitCpuTreeSeconds = 0.0;
     double tlasSeconds = 0.0;  // LBVH over instanceBoxes
 };

@@ -5,7 +5,9 @@
 //      while the subtree below stays within kMaxCollapsedLeaf primitives (the second child's
 //      thread to arrive goes on, as in the refit: bvh_bottom_up.cuh), recording how many
 //      primitives lie below each node it reaches, its optimal cost, and whether that is as one
-//      leaf. A node it does not reach has more primitives below (its choice stays 0);
+//      leaf. A node it does not reach has more primitives below (its choice stays 0). Where
+//      the PLOC builders made the tree they give these bytes, worked out as they merged
+//      (subtree_choices.cuh), and this pass is left out;
 //   2. which sibling pairs stay and which nodes become leaves: a node above more than
 //      kMaxCollapsedLeaf primitives always stays, so its thread walks down its small children's
 //      subtrees (at most 7 nodes each) and marks what the choices keep; every mark is written
@@ -27,21 +29,12 @@
 
 #include "render/backend/cuda/bvh_bottom_up.cuh"
 #include "render/backend/cuda/gpu_bvh.h"
+#include "render/backend/cuda/subtree_choices.cuh"
 #include "render/bvh/subtree_collapse.h"
 
 namespace pt::cuda {
 
 namespace {
-
-// A node's choice in one byte: bits 0-6 the primitives below it (0: more than
-// kMaxCollapsedLeaf), bit 7 set where it is to be a leaf (a leaf already, or collapsed).
-constexpr uint8_t kChoiceLeaf = 0x80;
-constexpr uint8_t kChoicePrimitives = 0x7F;
-static_assert(kMaxCollapsedLeaf <= kChoicePrimitives, "the primitive count fits below the leaf bit");
-
-// The sibling pair a left child opens: the GPU builders put the children of every interior
-// node at slots 2p + 1 and 2p + 2.
-__device__ __forceinline__ uint32_t pairOf(uint32_t leftChild) { return (leftChild - 1) / 2; }
 
 // Thread per node; the leaves' threads climb. `choices` zeroed, `visits` zeroed.
 __global__ void chooseKernel(const BvhNode* nodes, uint32_t nodeCount, const uint32_t* parents,
@@ -69,7 +62,7 @@ __global__ void chooseKernel(const BvhNode* nodes, uint32_t nodeCount, const uin
             const SubtreeChoice choice = leafOrSplit(nodeSurfaceArea(above), primitives, __ldcg(costs + left),
                                                      __ldcg(costs + left + 1));
             __stcg(costs + parent, choice.cost);
-            __stcg(choices + parent, uint8_t(primitives | (choice.asLeaf ? kChoiceLeaf : 0)));
+            __stcg(choices + parent, choiceByte(choice));
             return true;
         });
 }
@@ -177,11 +170,7 @@ void BvhLeafCollapse::release() {
     primCapacity_ = 0;
 }
 
-uint32_t BvhLeafCollapse::collapse(BvhNode* nodes, uint32_t nodeCount, uint32_t* primIndices,
-                                   uint32_t primCount, cudaStream_t stream) {
-    if (primCount <= 1 || nodeCount <= 1) return nodeCount;  // the empty root or a single leaf
-    reserve(nodeCount, primCount);
-    const uint32_t pairs = (nodeCount - 1) / 2;
+void BvhLeafCollapse::choose(const BvhNode* nodes, uint32_t nodeCount, cudaStream_t stream) {
     uint32_t* parents = parentsThenPairKept_.data();
     uint32_t* visits = visitsThenPairSlots_.data();
     float* costs = reinterpret_cast<float*>(costsThenLeafPrimitives_.data());
@@ -191,14 +180,28 @@ uint32_t BvhLeafCollapse::collapse(BvhNode* nodes, uint32_t nodeCount, uint32_t*
     chooseKernel<<<bvhBlocks(nodeCount), kBvhBlockSize, 0, stream>>>(nodes, nodeCount, parents, visits,
                                                                      choices_.data(), costs);
     PT_CUDA_CHECK_LAUNCH("chooseKernel");
+}
+
+uint32_t BvhLeafCollapse::collapse(BvhNode* nodes, uint32_t nodeCount, uint32_t* primIndices,
+                                   uint32_t primCount, cudaStream_t stream, const uint8_t* builtChoices) {
+    if (primCount <= 1 || nodeCount <= 1) return nodeCount;  // the empty root or a single leaf
+    // A root and whole sibling pairs: an even count would have the passes read past the pairs.
+    if (nodeCount % 2 == 0) {
+        throw std::logic_error("BVH leaf collapse given " + std::to_string(nodeCount) +
+                               " nodes: a tree of sibling pairs under a root has an odd count");
+    }
+    reserve(nodeCount, primCount);
+    const uint32_t pairs = (nodeCount - 1) / 2;
+    if (builtChoices == nullptr) choose(nodes, nodeCount, stream);
+    const uint8_t* choices = builtChoices ? builtChoices : choices_.data();
 
     uint32_t* pairKept = parentsThenPairKept_.data();
     uint32_t* pairSlots = visitsThenPairSlots_.data();
     uint32_t* leafPrimitives = costsThenLeafPrimitives_.data();
     PT_CUDA_CHECK(cudaMemsetAsync(pairKept, 0, pairs * sizeof(uint32_t), stream));
     PT_CUDA_CHECK(cudaMemsetAsync(leafPrimitives, 0, nodeCount * sizeof(uint32_t), stream));
-    markKernel<<<bvhBlocks(nodeCount), kBvhBlockSize, 0, stream>>>(nodes, nodeCount, choices_.data(),
-                                                                   pairKept, leafPrimitives);
+    markKernel<<<bvhBlocks(nodeCount), kBvhBlockSize, 0, stream>>>(nodes, nodeCount, choices, pairKept,
+                                                                   leafPrimitives);
     PT_CUDA_CHECK_LAUNCH("markKernel");
     size_t scanBytes = scanScratch_.size();
     PT_CUDA_CHECK(cub::DeviceScan::ExclusiveSum(scanScratch_.data(), scanBytes, pairKept, pairSlots,
@@ -224,7 +227,7 @@ uint32_t BvhLeafCollapse::collapse(BvhNode* nodes, uint32_t nodeCount, uint32_t*
     }
     if (keptNodes > outNodes_.size()) outNodes_.resize(grownCapacity(keptNodes, uint32_t(outNodes_.size())));
     writeKernel<<<bvhBlocks(nodeCount), kBvhBlockSize, 0, stream>>>(
-        nodes, nodeCount, primIndices, choices_.data(), pairKept, pairSlots, primitiveOffsets_.data(),
+        nodes, nodeCount, primIndices, choices, pairKept, pairSlots, primitiveOffsets_.data(),
         outNodes_.data(), outPrimIndices_.data());
     PT_CUDA_CHECK_LAUNCH("writeKernel");
     PT_CUDA_CHECK(cudaMemcpyAsync(nodes, outNodes_.data(), keptNodes * sizeof(BvhNode),

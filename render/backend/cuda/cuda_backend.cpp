@@ -434,10 +434,12 @@ void CudaBackend::rebuildBlasOnDevice(uint32_t i) {
     } else {
         lbvh_.build(primBoxes_.data(), primitives, device_.blasNodes(i), device_.blasPrimIndices(i), stream_);
     }
-    const uint32_t nodeCount = toggles_.gpuLeafCollapse
-                                   ? leafCollapse_.collapse(device_.blasNodes(i), lbvhNodeCount(primitives),
-                                                            device_.blasPrimIndices(i), primitives, stream_)
-                                   : lbvhNodeCount(primitives);
+    const uint8_t* builtChoices = toggles_.gpuPloc ? hploc_.subtreeChoices() : lbvh_.subtreeChoices();
+    const uint32_t nodeCount =
+        toggles_.gpuLeafCollapse
+            ? leafCollapse_.collapse(device_.blasNodes(i), lbvhNodeCount(primitives),
+                                     device_.blasPrimIndices(i), primitives, stream_, builtChoices)
+            : lbvhNodeCount(primitives);
     device_.setBlasNodeCount(i, nodeCount, stream_);
     device_.dropCompressed(i, stream_);         // the kernels walk the new tree's binary nodes
     compressedPlan_[i] = CompressedPlan::Skip;  // and its compressed form, if still to come, is stale

@@ -23,7 +23,7 @@ double medianDeviceSeconds(uint32_t runs, cudaStream_t stream, Queue&& queue) {
 }
 
 // `builder`'s build of the n `boxes` into `nodes` and `primIndices`, timed alone and with the
-// leaf collapse after it; the tree it leaves there is the uncollapsed one.
+// leaf collapse after it; the tree it leaves there is the collapsed one.
 template <class Builder>
 GpuBuildFigures measureBuild(Builder& builder, const Aabb* boxes, uint32_t n, BvhNode* nodes,
                              uint32_t* primIndices, uint32_t runs, cudaStream_t stream) {
@@ -36,10 +36,11 @@ GpuBuildFigures measureBuild(Builder& builder, const Aabb* boxes, uint32_t n, Bv
     uint32_t collapsedCount = 0;
     figures.collapsedSeconds = medianDeviceSeconds(runs, stream, [&] {
         builder.build(boxes, n, nodes, primIndices, stream);
-        collapsedCount = collapse.collapse(nodes, lbvhNodeCount(n), primIndices, n, stream);
+        collapsedCount =
+            collapse.collapse(nodes, lbvhNodeCount(n), primIndices, n, stream, builder.subtreeChoices());
     });
     figures.collapsedSahCost = sahCostOnDevice(nodes, collapsedCount, stream);
-    builder.build(boxes, n, nodes, primIndices, stream);
+    figures.collapsedNodes = collapsedCount;
     return figures;
 }
 
@@ -58,14 +59,15 @@ DeviceBvhFigures measureDeviceBvhBuilds(const BvhBuildInput& in, uint32_t runs, 
     HplocBuilder hploc;
     LbvhBuilder builder;
     figures.ploc = measureBuild(ploc, boxes.data(), n, nodes.data(), primIndices.data(), runs, stream);
-    figures.hploc = measureBuild(hploc, boxes.data(), n, nodes.data(), primIndices.data(), runs, stream);
-    // Last, so that its tree is the one refitted below.
     figures.lbvh = measureBuild(builder, boxes.data(), n, nodes.data(), primIndices.data(), runs, stream);
+    // Last, so that its tree, collapsed as the backend's rebuilds leave it, is the one refitted below.
+    figures.hploc = measureBuild(hploc, boxes.data(), n, nodes.data(), primIndices.data(), runs, stream);
 
-    computeParents(nodes.data(), lbvhNodeCount(n), parents.data(), stream);
+    const uint32_t refitNodes = figures.hploc.collapsedNodes;
+    computeParents(nodes.data(), refitNodes, parents.data(), stream);
     figures.refitSeconds = medianDeviceSeconds(runs, stream, [&] {
-        refitBvh(nodes.data(), lbvhNodeCount(n), parents.data(), primIndices.data(), boxes.data(),
-                 visits.data(), stream);
+        refitBvh(nodes.data(), refitNodes, parents.data(), primIndices.data(), boxes.data(), visits.data(),
+                 stream);
     });
     // The CPU-built tree, as the backend uploads it, refitted on the GPU.
     DeviceBuffer<BvhNode> cpuNodes;

@@ -49,6 +49,9 @@ public:
     // builder has sorted them already.
     void buildFromSortedKeys(const Aabb* boxes, const uint64_t* sortedKeys, uint32_t count, BvhNode* nodes,
                              uint32_t* primIndices, cudaStream_t stream);
+    // The LBVH works out no leaf-collapse choices (see PlocBuilder::subtreeChoices): its boxes
+    // are computed bottom-up after the topology, where BvhLeafCollapse's own pass does as well.
+    const uint8_t* subtreeChoices() const { return nullptr; }
     // Frees the scratch (the next build allocates it again): once the trees it built for a first
     // frame have been replaced, at 10M triangles it would hold about 400 MiB for nothing.
     void release();
@@ -90,11 +93,17 @@ public:
     // The depth of the last build's tree as PLOC made it (deeper than kGpuBvhMaxDepth where it
     // fell back; 0 for fewer than two primitives).
     uint32_t lastBuildDepth() const { return depth_; }
+    // The last build's choice byte for every node (subtree_choices.cuh), worked out as its merges
+    // made the nodes, for BvhLeafCollapse::collapse to take in place of its own pass; device
+    // memory, valid until the next build. nullptr where the build made no merges (fewer than
+    // two primitives) or fell back.
+    const uint8_t* subtreeChoices() const { return choicesValid_ ? choices_.data() : nullptr; }
     // Frees the scratch, as LbvhBuilder::release.
     void release();
     uint64_t bytes() const {
         return morton_.bytes() + clusters_.bytes() + merged_.bytes() + keep_.bytes() +
-               selectScratch_.bytes() + counters_.bytes() + fallback_.bytes();
+               selectScratch_.bytes() + counters_.bytes() + choices_.bytes() + pairCosts_.bytes() +
+               fallback_.bytes();
     }
 
 private:
@@ -112,6 +121,10 @@ private:
     DeviceBuffer<uint8_t> keep_;  // 1: the cluster goes on to the next round
     DeviceBuffer<uint8_t> selectScratch_;
     DeviceBuffer<uint32_t> counters_;  // PlocCounter: the next free node slot, clusters left, root height
+    // The merges' choice bytes (a node each) and small subtrees' costs (a sibling pair each).
+    DeviceBuffer<uint8_t> choices_;
+    DeviceBuffer<float> pairCosts_;
+    bool choicesValid_ = false;
     LbvhBuilder fallback_;
 };
 
@@ -138,10 +151,11 @@ public:
     void build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint32_t* primIndices, cudaStream_t stream);
     bool lastBuildFellBack() const { return fellBack_; }
     uint32_t lastBuildDepth() const { return depth_; }
+    const uint8_t* subtreeChoices() const { return choicesValid_ ? choices_.data() : nullptr; }
     void release();
     uint64_t bytes() const {
         return morton_.bytes() + clusters_.bytes() + siblingBounds_.bytes() + counters_.bytes() +
-               fallback_.bytes();
+               choices_.bytes() + pairCosts_.bytes() + fallback_.bytes();
     }
 
 private:
@@ -158,7 +172,10 @@ private:
     // arrived first, ~0u until then.
     DeviceBuffer<uint32_t> siblingBounds_;
     DeviceBuffer<uint32_t> counters_;  // PlocCounter: slots taken after the root's, -, root height
-    LbvhBuilder fallback_;             // from the same sorted keys
+    DeviceBuffer<uint8_t> choices_;    // as PlocBuilder's
+    DeviceBuffer<float> pairCosts_;
+    bool choicesValid_ = false;
+    LbvhBuilder fallback_;  // from the same sorted keys
 };
 
 // The SAH leaf rule of a top-down build (render/bvh/subtree_collapse.h) applied to a tree the
@@ -166,9 +183,10 @@ private:
 // cost is as one leaf becomes that leaf, and the nodes below it go. On an H200 it takes H-PLOC's
 // trees of pt-render bench's 1M sphere from 1.119x to 1.085x the binned SAH build's cost (1.048x
 // to 1.036x on 100k random triangles, 1.040x to 0.992x clustered, 1.091x to 1.070x on an 82k
-// icosphere: gpu_bvh_test), for 0.35-0.43 ms more at 1M primitives; of 1M random triangles' tree
-// it keeps 62% of the nodes. Keeps its scratch between collapses, as the builders do: about 40
-// bytes a node of the input (0.8 GB at 10M primitives) until release().
+// icosphere: gpu_bvh_test), for 0.35-0.43 ms more at 1M primitives with its own choices' pass,
+// 0.17-0.21 ms with H-PLOC's (bench's 1M sphere: H-PLOC and the collapse 0.90-0.93 ms); of 1M
+// random triangles' tree it keeps 62% of the nodes. Keeps its scratch between collapses, as the builders do:
+// about 40 bytes a node of the input (0.8 GB at 10M primitives) until release().
 class BvhLeafCollapse {
 public:
     // `nodes` holds `nodeCount` nodes in the builders' layout (root at 0; the children of every
@@ -178,9 +196,12 @@ public:
     // rule of the builders' trees but the leaf size, which is at most kMaxCollapsedLeaf (a leaf
     // of more primitives is kept as it is), and its depth does not grow. Synchronises `stream`;
     // throws std::logic_error where the primitives placed do not add up (a tree not in that
-    // layout: never one of the builders').
+    // layout: never one of the builders'), or where nodeCount is even.
+    // `builtChoices`, where the builder that made the tree gives them (subtreeChoices()), stand
+    // in for the choices' own pass (parent links and a climb from every leaf), with the same
+    // result.
     uint32_t collapse(BvhNode* nodes, uint32_t nodeCount, uint32_t* primIndices, uint32_t primCount,
-                      cudaStream_t stream);
+                      cudaStream_t stream, const uint8_t* builtChoices = nullptr);
     void release();
     uint64_t bytes() const {
         return choices_.bytes() + parentsThenPairKept_.bytes() + visitsThenPairSlots_.bytes() +
@@ -190,6 +211,8 @@ public:
 
 private:
     void reserve(uint32_t nodeCount, uint32_t primCount);
+    // Pass 1 (bvh_leaf_collapse.cu): every node's choice into choices_.
+    void choose(const BvhNode* nodes, uint32_t nodeCount, cudaStream_t stream);
 
     uint32_t nodeCapacity_ = 0, primCapacity_ = 0;
     // Per node: the primitives below it (up to the limit) and whether it is to be a leaf.

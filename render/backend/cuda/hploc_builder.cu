@@ -89,7 +89,7 @@ __device__ __forceinline__ int nearestInWarp(const ClusterWords& c, const WarpCl
 // them over the range's first kHplocThreshold positions, empty ones after them; the root merges
 // to one and writes it as node 0, its height to counters[kRootHeight].
 __device__ void mergeNode(uint32_t first, uint32_t split, uint32_t last, uint32_t count, BvhNode* clusters,
-                          BvhNode* nodes, uint32_t* counters, int lane, WarpClusters& scratch) {
+                          const MergeOutput& out, uint32_t* counters, int lane, WarpClusters& scratch) {
     // A child over more than kHplocThreshold positions kept at most that many clusters, first in
     // its range; a smaller child is still its leaves. The left child's go to lanes from 0, the
     // right child's to lanes from kHplocThreshold.
@@ -124,13 +124,13 @@ __device__ void mergeNode(uint32_t first, uint32_t split, uint32_t last, uint32_
         if (lane == leader) base = 1u + atomicAdd(counters + kNextSlot, 2u * uint32_t(__popc(merging)));
         base = __shfl_sync(kFullWarp, base, leader);
         if (mutual && lane < best)
-            c = mergeClusters(c, {scratch.low[best], scratch.high[best]}, nodes,  // the partner, as compacted
+            c = mergeClusters(c, {scratch.low[best], scratch.high[best]}, out,  // the partner, as compacted
                               base + 2u * __popc(merging & lanesBelow(lane)));
         n = compact(c, __ballot_sync(kFullWarp, lane < n && !(mutual && lane > best)), lane, scratch);
     }
     if (root) {
         if (lane == 0) {
-            storeAsNode(nodes, c);
+            storeAsNode(out, 0, c);
             counters[kRootHeight] = c.height();
         }
         return;
@@ -140,7 +140,7 @@ __device__ void mergeNode(uint32_t first, uint32_t split, uint32_t last, uint32_
 
 __global__ void __launch_bounds__(kBvhBlockSize)
     hplocKernel(const Aabb* boxes, const uint64_t* keys, uint32_t count, BvhNode* clusters,
-                uint32_t* primIndices, uint32_t* siblingBounds, BvhNode* nodes, uint32_t* counters) {
+                uint32_t* primIndices, uint32_t* siblingBounds, MergeOutput out, uint32_t* counters) {
     __shared__ WarpClusters scratch[kBvhBlockSize / kWarpSize];
     const int lane = int(threadIdx.x) % kWarpSize;
     WarpClusters& warpScratch = scratch[threadIdx.x / kWarpSize];
@@ -185,8 +185,7 @@ __global__ void __launch_bounds__(kBvhBlockSize)
         for (uint32_t pending = merges; pending != 0; pending &= pending - 1) {
             const int owner = __ffs(pending) - 1;
             mergeNode(__shfl_sync(kFullWarp, first, owner), __shfl_sync(kFullWarp, split, owner),
-                      __shfl_sync(kFullWarp, last, owner), count, clusters, nodes, counters, lane,
-                      warpScratch);
+                      __shfl_sync(kFullWarp, last, owner), count, clusters, out, counters, lane, warpScratch);
         }
         wrote = merges != 0;
         if (first == 0 && last == count - 1) climbing = false;  // the root is done
@@ -201,6 +200,8 @@ void HplocBuilder::reserve(uint32_t count) {
     clusters_.resize(capacity);
     siblingBounds_.resize(capacity);
     counters_.resize(kPlocCounters);
+    choices_.resize(lbvhNodeCount(capacity));
+    pairCosts_.resize(capacity);
     capacity_ = capacity;
 }
 
@@ -209,6 +210,8 @@ void HplocBuilder::release() {
     clusters_ = {};
     siblingBounds_ = {};
     counters_ = {};
+    choices_ = {};
+    pairCosts_ = {};
     fallback_.release();
     capacity_ = 0;
 }
@@ -216,6 +219,7 @@ void HplocBuilder::release() {
 void HplocBuilder::build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint32_t* primIndices,
                          cudaStream_t stream) {
     fellBack_ = false;
+    choicesValid_ = false;
     depth_ = 0;
     if (count <= 1) {  // the empty root or a single leaf, as the LBVH makes them
         fallback_.build(boxes, count, nodes, primIndices, stream);
@@ -225,8 +229,9 @@ void HplocBuilder::build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint
     const uint64_t* sorted = morton_.sort(boxes, count, stream);
     PT_CUDA_CHECK(cudaMemsetAsync(siblingBounds_.data(), 0xFF, (count - 1) * sizeof(uint32_t), stream));
     PT_CUDA_CHECK(cudaMemsetAsync(counters_.data(), 0, kPlocCounters * sizeof(uint32_t), stream));
+    const MergeOutput out{nodes, {choices_.data(), pairCosts_.data()}};
     hplocKernel<<<bvhBlocks(count), kBvhBlockSize, 0, stream>>>(
-        boxes, sorted, count, clusters_.data(), primIndices, siblingBounds_.data(), nodes, counters_.data());
+        boxes, sorted, count, clusters_.data(), primIndices, siblingBounds_.data(), out, counters_.data());
     PT_CUDA_CHECK_LAUNCH("hplocKernel");
     uint32_t counters[kPlocCounters];
     PT_CUDA_CHECK(
@@ -244,7 +249,9 @@ void HplocBuilder::build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint
     if (depth_ > kGpuBvhMaxDepth) {
         fallback_.buildFromSortedKeys(boxes, sorted, count, nodes, primIndices, stream);
         fellBack_ = true;
+        return;
     }
+    choicesValid_ = true;
 }
 
 }  // namespace pt::cuda

@@ -52,18 +52,18 @@ __device__ __forceinline__ int nearestNeighbour(int i, int count, const ClusterA
 }
 
 // Cluster i's part in its round's merges, given its neighbour j: a mutual pair is merged by
-// its lower end (its two clusters written as nodes into fresh slots, `nodes` + the slot from
+// its lower end (its two clusters written as nodes into fresh slots of `out`, the slot from
 // `nextSlot`), and dropped by its higher end; any other cluster goes on as it is. Returns
 // whether cluster i goes on, as `next`.
 __device__ __forceinline__ bool mergeStep(int i, int j, bool mutual, const ClusterWords& mine,
-                                          const ClusterWords& neighbour, BvhNode* nodes, uint32_t* nextSlot,
-                                          ClusterWords& next) {
+                                          const ClusterWords& neighbour, const MergeOutput& out,
+                                          uint32_t* nextSlot, ClusterWords& next) {
     if (!mutual) {
         next = mine;
         return true;
     }
     if (i > j) return false;
-    next = mergeClusters(mine, neighbour, nodes, atomicAdd(nextSlot, 2u));
+    next = mergeClusters(mine, neighbour, out, atomicAdd(nextSlot, 2u));
     return true;
 }
 
@@ -88,7 +88,7 @@ constexpr int kRoundNeighbours = kBvhBlockSize + 2 * kPlocRadius;
 constexpr int kRoundTile = kBvhBlockSize + 4 * kPlocRadius;
 __global__ void __launch_bounds__(kBvhBlockSize)
     roundKernel(const BvhNode* clusters, uint32_t bound, uint32_t* counters, BvhNode* merged, uint8_t* keep,
-                BvhNode* nodes) {
+                MergeOutput out) {
     __shared__ float4 low[kRoundTile], high[kRoundTile];
     __shared__ int32_t neighbour[kRoundNeighbours];
     const int count = int(counters[kClustersLeft]);
@@ -124,8 +124,8 @@ __global__ void __launch_bounds__(kBvhBlockSize)
     }
     const int j = neighbour[i - neighboursStart];  // within kPlocRadius of i: in the block's range
     ClusterWords next;
-    const bool goesOn = mergeStep(i, j, neighbour[j - neighboursStart] == i, clusterAt(i), clusterAt(j),
-                                  nodes, counters + kNextSlot, next);
+    const bool goesOn = mergeStep(i, j, neighbour[j - neighboursStart] == i, clusterAt(i), clusterAt(j), out,
+                                  counters + kNextSlot, next);
     if (goesOn) storeCluster(merged + i, next);
     keep[i] = goesOn ? 1 : 0;
 }
@@ -133,7 +133,7 @@ __global__ void __launch_bounds__(kBvhBlockSize)
 // Pass 4: the rounds of the last counters[kClustersLeft] <= kFinishClusters clusters, in one
 // block of kFinishClusters threads; the root to node 0 and its height to counters[kRootHeight].
 __global__ void __launch_bounds__(kFinishClusters)
-    finishKernel(const BvhNode* clusters, BvhNode* nodes, uint32_t* counters) {
+    finishKernel(const BvhNode* clusters, MergeOutput out, uint32_t* counters) {
     using Scan = cub::BlockScan<int, kFinishClusters>;
     __shared__ typename Scan::TempStorage scanStorage;
     __shared__ float4 low[kFinishClusters], high[kFinishClusters];
@@ -154,8 +154,8 @@ __global__ void __launch_bounds__(kFinishClusters)
         int goesOn = 0;
         if (t < left) {
             const int j = neighbour[t];
-            goesOn = mergeStep(t, j, neighbour[j] == t, clusterAt(t), clusterAt(j), nodes,
-                               counters + kNextSlot, next);
+            goesOn = mergeStep(t, j, neighbour[j] == t, clusterAt(t), clusterAt(j), out, counters + kNextSlot,
+                               next);
         }
         int position = 0, total = 0;
         Scan(scanStorage).ExclusiveSum(goesOn, position, total);
@@ -169,7 +169,7 @@ __global__ void __launch_bounds__(kFinishClusters)
     }
     if (t == 0) {
         const ClusterWords root = clusterAt(0);
-        storeAsNode(nodes, root);
+        storeAsNode(out, 0, root);
         counters[kRootHeight] = root.height();
     }
 }
@@ -183,6 +183,8 @@ void PlocBuilder::reserve(uint32_t count) {
     merged_.resize(capacity);
     keep_.resize(capacity);
     counters_.resize(kPlocCounters);
+    choices_.resize(lbvhNodeCount(capacity));
+    pairCosts_.resize(capacity);
     size_t selectBytes = 0;
     PT_CUDA_CHECK(cub::DeviceSelect::Flagged(nullptr, selectBytes, merged_.data(), keep_.data(),
                                              clusters_.data(), counters_.data() + kClustersLeft, capacity));
@@ -197,6 +199,8 @@ void PlocBuilder::release() {
     keep_ = {};
     selectScratch_ = {};
     counters_ = {};
+    choices_ = {};
+    pairCosts_ = {};
     fallback_.release();
     capacity_ = 0;
 }
@@ -204,6 +208,7 @@ void PlocBuilder::release() {
 void PlocBuilder::build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint32_t* primIndices,
                         cudaStream_t stream) {
     fellBack_ = false;
+    choicesValid_ = false;
     depth_ = 0;
     if (count <= 1) {  // the empty root or a single leaf, as the LBVH makes them
         fallback_.build(boxes, count, nodes, primIndices, stream);
@@ -211,6 +216,7 @@ void PlocBuilder::build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint3
     }
     reserve(count);
     const uint64_t* sorted = morton_.sort(boxes, count, stream);
+    const MergeOutput out{nodes, {choices_.data(), pairCosts_.data()}};
     leafClustersKernel<<<bvhBlocks(count), kBvhBlockSize, 0, stream>>>(boxes, sorted, count, clusters_.data(),
                                                                        primIndices, counters_.data());
     PT_CUDA_CHECK_LAUNCH("leafClustersKernel");
@@ -218,7 +224,7 @@ void PlocBuilder::build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint3
     while (bound > uint32_t(kFinishClusters)) {
         for (int round = 0; round < kRoundsPerReadBack; ++round) {
             roundKernel<<<bvhBlocks(bound), kBvhBlockSize, 0, stream>>>(
-                clusters_.data(), bound, counters_.data(), merged_.data(), keep_.data(), nodes);
+                clusters_.data(), bound, counters_.data(), merged_.data(), keep_.data(), out);
             PT_CUDA_CHECK_LAUNCH("roundKernel");
             size_t selectBytes = selectScratch_.bytes();
             PT_CUDA_CHECK(cub::DeviceSelect::Flagged(selectScratch_.data(), selectBytes, merged_.data(),
@@ -229,7 +235,7 @@ void PlocBuilder::build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint3
                                       cudaMemcpyDeviceToHost, stream));
         PT_CUDA_CHECK(cudaStreamSynchronize(stream));
     }
-    finishKernel<<<1, kFinishClusters, 0, stream>>>(clusters_.data(), nodes, counters_.data());
+    finishKernel<<<1, kFinishClusters, 0, stream>>>(clusters_.data(), out, counters_.data());
     PT_CUDA_CHECK_LAUNCH("finishKernel");
     PT_CUDA_CHECK(cudaMemcpyAsync(&depth_, counters_.data() + kRootHeight, sizeof(depth_),
                                   cudaMemcpyDeviceToHost, stream));
@@ -237,7 +243,9 @@ void PlocBuilder::build(const Aabb* boxes, uint32_t count, BvhNode* nodes, uint3
     if (depth_ > kGpuBvhMaxDepth) {
         fallback_.buildFromSortedKeys(boxes, sorted, count, nodes, primIndices, stream);
         fellBack_ = true;
+        return;
     }
+    choicesValid_ = true;
 }
 
 }  // namespace pt::cuda

@@ -6,7 +6,9 @@
 
 #include <cstdint>
 
+#include "render/backend/cuda/subtree_choices.cuh"
 #include "render/bvh/aabb.h"
+#include "render/bvh/subtree_collapse.h"
 #include "render/kernel/bvh_node.h"
 
 namespace pt::cuda {
@@ -16,19 +18,36 @@ namespace pt::cuda {
 enum PlocCounter : uint32_t { kNextSlot, kClustersLeft, kRootHeight, kStalls, kPlocCounters };
 
 // A cluster is the node it will become. A leaf's count is 1 (its height 0); an interior
-// cluster's count field holds kInteriorCluster | its height, set to 0 when it is written as a
-// node. A count of 0 marks no cluster (H-PLOC's slots past a subtree's clusters).
+// cluster's count field holds kInteriorCluster, its subtree choice byte (subtree_choices.cuh)
+// at kClusterChoiceShift, and its height (saturated at kClusterHeightMask, far past any depth
+// a tree may have), set to 0 when it is written as a node. A count of 0 marks no cluster
+// (H-PLOC's slots past a subtree's clusters).
 constexpr uint32_t kInteriorCluster = 0x80000000u;
+constexpr uint32_t kClusterChoiceShift = 16;
+constexpr uint32_t kClusterHeightMask = 0xFFFFu;
 
 __device__ __forceinline__ uint32_t clusterHeight(uint32_t count) {
-    return count & kInteriorCluster ? count & ~kInteriorCluster : 0u;
+    return count & kInteriorCluster ? count & kClusterHeightMask : 0u;
 }
 
 // A cluster as two 16-byte words: lo and leftOrFirst, hi and count.
 struct ClusterWords {
     float4 low, high;
     __device__ uint32_t count() const { return __float_as_uint(high.w); }
+    __device__ bool interior() const { return (count() & kInteriorCluster) != 0; }
     __device__ uint32_t height() const { return clusterHeight(count()); }
+    // The leaf collapse's byte for the node it will become: a leaf is one primitive, as leaf.
+    __device__ uint8_t choice() const {
+        return interior() ? uint8_t(count() >> kClusterChoiceShift) : uint8_t(kChoiceLeaf | count());
+    }
+    __device__ BvhNode asNode() const {
+        BvhNode node;
+        node.lo = Vec3(low.x, low.y, low.z);
+        node.leftOrFirst = __float_as_uint(low.w);
+        node.hi = Vec3(high.x, high.y, high.z);
+        node.count = interior() ? 0u : count();
+        return node;
+    }
 };
 
 // A cluster an earlier kernel wrote (PLOC's rounds). May come from L1: never for clusters other
@@ -50,10 +69,19 @@ __device__ __forceinline__ void storeCluster(BvhNode* out, const ClusterWords& c
     words[1] = c.high;
 }
 
-// The cluster written as a node: an interior cluster's count becomes 0.
-__device__ __forceinline__ void storeAsNode(BvhNode* out, ClusterWords c) {
-    if (c.count() & kInteriorCluster) c.high.w = __uint_as_float(0u);
-    storeCluster(out, c);
+// Where merges write: the tree's nodes, and beside them each node's choice byte for the leaf
+// collapse with the small subtrees' costs.
+struct MergeOutput {
+    BvhNode* nodes = nullptr;
+    SubtreeChoiceArrays choices;
+};
+
+// The cluster written as node `slot`, with its choice byte: an interior cluster's count
+// becomes 0.
+__device__ __forceinline__ void storeAsNode(const MergeOutput& out, uint32_t slot, ClusterWords c) {
+    out.choices.choices[slot] = c.choice();
+    if (c.interior()) c.high.w = __uint_as_float(0u);
+    storeCluster(out.nodes + slot, c);
 }
 
 // Half the surface area of the union of two boxes: PLOC's distance. Symmetric to the bit (min
@@ -87,18 +115,45 @@ __device__ __forceinline__ bool betterNeighbour(int i, int j, float cost, int be
     return best < 0 || cost < bestCost || (cost == bestCost && tieOrder(i, j) < tieOrder(i, best));
 }
 
-// Writes clusters a and b as nodes into the fresh pair of slots `slot`, `slot` + 1, and returns
-// the cluster of their union, which points at them.
+// The optimal cost of a cluster of at most kMaxCollapsedLeaf primitives: a leaf's own, an
+// interior one's as the merge that made it stored it. Read from L2: another SM's merge may have
+// stored it (see bvh_bottom_up.cuh).
+__device__ __forceinline__ float smallClusterCost(const ClusterWords& c, const SubtreeChoiceArrays& out) {
+    return c.interior() ? __ldcg(out.pairCosts + pairOf(__float_as_uint(c.low.w))) : leafCost(c.asNode());
+}
+
+// The choice byte of `merged`, the union of clusters a and b whose children go to the pair at
+// `slot`: one step of the leaf collapse's programme (leafOrSplit, the same arithmetic on the
+// same floats as BvhLeafCollapse's own pass, so the bytes agree bit for bit), its cost stored
+// where a later merge may still need it.
+__device__ __forceinline__ uint8_t mergedChoice(const ClusterWords& a, const ClusterWords& b,
+                                                const ClusterWords& merged, uint32_t slot,
+                                                const SubtreeChoiceArrays& out) {
+    const uint32_t primitives = (a.choice() & kChoicePrimitives) + (b.choice() & kChoicePrimitives);
+    if ((a.choice() & kChoicePrimitives) == 0 || (b.choice() & kChoicePrimitives) == 0 ||
+        primitives > kMaxCollapsedLeaf) {
+        return 0;  // above more than kMaxCollapsedLeaf primitives
+    }
+    const SubtreeChoice choice = leafOrSplit(nodeSurfaceArea(merged.asNode()), primitives,
+                                             smallClusterCost(a, out), smallClusterCost(b, out));
+    if (primitives < kMaxCollapsedLeaf) __stcg(out.pairCosts + pairOf(slot), choice.cost);
+    return choiceByte(choice);
+}
+
+// Writes clusters a and b as nodes into the fresh pair of slots `slot`, `slot` + 1, with their
+// choice bytes, and returns the cluster of their union, which points at them.
 __device__ __forceinline__ ClusterWords mergeClusters(const ClusterWords& a, const ClusterWords& b,
-                                                      BvhNode* nodes, uint32_t slot) {
-    storeAsNode(nodes + slot, a);
-    storeAsNode(nodes + slot + 1, b);
-    const uint32_t height = max(a.height(), b.height()) + 1u;
+                                                      const MergeOutput& out, uint32_t slot) {
+    storeAsNode(out, slot, a);
+    storeAsNode(out, slot + 1, b);
+    const uint32_t height = min(max(a.height(), b.height()) + 1u, kClusterHeightMask);
     ClusterWords merged;
     merged.low = make_float4(fminf(a.low.x, b.low.x), fminf(a.low.y, b.low.y), fminf(a.low.z, b.low.z),
                              __uint_as_float(slot));
     merged.high = make_float4(fmaxf(a.high.x, b.high.x), fmaxf(a.high.y, b.high.y), fmaxf(a.high.z, b.high.z),
                               __uint_as_float(kInteriorCluster | height));
+    const uint32_t choice = mergedChoice(a, b, merged, slot, out.choices);
+    merged.high.w = __uint_as_float(kInteriorCluster | choice << kClusterChoiceShift | height);
     return merged;
 }
 

@@ -44,6 +44,15 @@ IntegratorToggles fixedSchedule(bool gpuFirstBuild) {
     return t;
 }
 
+// A first build of `scene` with `toggles` in `backend`, which must take the sync step `step`;
+// returns the SAH cost of its first BLAS.
+float firstBuildCost(cuda::CudaBackend& backend, const Scene& scene, const IntegratorToggles& toggles,
+                     const char* step) {
+    backend.setToggles(toggles);
+    EXPECT_TRUE(hasStep(backend.sync(scene, SceneChanges::All, {}), step)) << step;
+    return backend.blasSahCost(0);
+}
+
 // A first build of `scene` whose edits will refit and never rebuild. By LBVH: its cost is
 // above the SAH tree's (H-PLOC's may be below), so a fall in cost shows that tree landed.
 void syncForRefits(cuda::CudaBackend& backend, const Scene& scene) {
@@ -68,9 +77,7 @@ TEST(CudaFirstBuild, TheFirstFrameWalksAGpuBuildAndTheSahTreeLandsBehindIt) {
         cuda::CudaBackend lbvhFirst;
         IntegratorToggles lbvh = fixedSchedule(true);
         lbvh.gpuPloc = false;
-        lbvhFirst.setToggles(lbvh);
-        EXPECT_TRUE(hasStep(lbvhFirst.sync(scene, SceneChanges::All, {}), kLbvhFirstBuildStep));
-        const float lbvhCost = lbvhFirst.blasSahCost(0);
+        const float lbvhCost = firstBuildCost(lbvhFirst, scene, lbvh, kLbvhFirstBuildStep);
         std::cout << "[ sah      ] first frame's BLAS of 300,000 triangles: H-PLOC " << hplocCost << ", LBVH "
                   << lbvhCost << ", host binned SAH " << sahCost << "\n";
         EXPECT_LT(hplocCost, lbvhCost) << "H-PLOC's tree should cost less to walk than the LBVH's";
@@ -78,9 +85,7 @@ TEST(CudaFirstBuild, TheFirstFrameWalksAGpuBuildAndTheSahTreeLandsBehindIt) {
         cuda::CudaBackend singleLeaves;
         IntegratorToggles uncollapsed = fixedSchedule(true);
         uncollapsed.gpuLeafCollapse = false;
-        singleLeaves.setToggles(uncollapsed);
-        EXPECT_TRUE(hasStep(singleLeaves.sync(scene, SceneChanges::All, {}), kGpuFirstBuildStep));
-        const float singleLeafCost = singleLeaves.blasSahCost(0);
+        const float singleLeafCost = firstBuildCost(singleLeaves, scene, uncollapsed, kGpuFirstBuildStep);
         std::cout << "[ sah      ] H-PLOC without the leaf collapse " << singleLeafCost << "\n";
         EXPECT_LT(hplocCost, singleLeafCost) << "the collapse should pay on 300,000 triangles";
         EXPECT_EQ(test::bufferBytes(singleLeaves, "BVH scratch (leaf collapse)"), 0u);

@@ -276,7 +276,7 @@ TYPED_TEST(GpuTreeBuilder, LeafCollapseIsTheHostsOptimumAndAValidTree) {
     Rng rng(113);
     TypeParam builder;
     cuda::BvhLeafCollapse collapse;  // one throughout: its scratch grows and is reused
-    uint32_t collapsedSomewhere = 0;
+    uint32_t collapsedSomewhere = 0, choicesFromTheBuild = 0;
     for (uint32_t n : {0u, 1u, 2u, 3u, 4u, 5u, 9u, 100000u, 17u, 1000u, 33u}) {
         for (SoupKind kind :
              {SoupKind::Uniform, SoupKind::Clustered, SoupKind::Needles, SoupKind::CoincidentCentroids}) {
@@ -284,12 +284,7 @@ TYPED_TEST(GpuTreeBuilder, LeafCollapseIsTheHostsOptimumAndAValidTree) {
             const std::vector<Aabb> boxes = soupBoxes(kind, n, rng);
             const auto [built, collapsed] = test::buildAndCollapseOnDevice(builder, collapse, boxes, s);
             const Bvh expected = test::collapseOnHost(built);
-            ASSERT_EQ(collapsed.nodes.size(), expected.nodes.size());
-            ASSERT_EQ(std::memcmp(collapsed.nodes.data(), expected.nodes.data(),
-                                  expected.nodes.size() * sizeof(BvhNode)),
-                      0)
-                << "nodes differ from the host's";
-            ASSERT_EQ(collapsed.primIndices, expected.primIndices);
+            test::expectSameTree(collapsed, expected);
             uint32_t builtDepth = 0, collapsedDepth = 0;
             expectValidTree(built, boxes, &builtDepth);
             expectValidTree(collapsed, boxes, &collapsedDepth, true);
@@ -316,22 +311,103 @@ TYPED_TEST(GpuTreeBuilder, LeafCollapseIsTheHostsOptimumAndAValidTree) {
                 EXPECT_NEAR(collapsedCost, optimum / nodeSurfaceArea(built.nodes[0]), 1e-4f * builtCost);
             }
             collapsedSomewhere += collapsed.nodes.size() < built.nodes.size();
+            // The PLOC builders' choices stand in for the collapse's own pass: the same tree.
+            if (builder.subtreeChoices() != nullptr) {
+                const Bvh ownPass = test::collapseOnDevice(collapse, built, s);
+                test::expectSameTree(ownPass, expected);
+                choicesFromTheBuild += 1;
+            }
             // Collapsing a collapsed tree again keeps it as it is.
-            cuda::DeviceBuffer<BvhNode> nodes;
-            cuda::DeviceBuffer<uint32_t> prims;
-            nodes.upload(collapsed.nodes, s.stream);
-            prims.upload(collapsed.primIndices, s.stream);
-            EXPECT_EQ(
-                collapse.collapse(nodes.data(), uint32_t(collapsed.nodes.size()), prims.data(), n, s.stream),
-                collapsed.nodes.size());
-            EXPECT_EQ(nodes.download().size(), collapsed.nodes.size());
-            EXPECT_EQ(std::memcmp(nodes.download().data(), collapsed.nodes.data(),
-                                  collapsed.nodes.size() * sizeof(BvhNode)),
-                      0);
-            EXPECT_EQ(prims.download(), collapsed.primIndices);
+            const Bvh again = test::collapseOnDevice(collapse, collapsed, s);
+            test::expectSameTree(again, collapsed);
         }
     }
     EXPECT_GE(collapsedSomewhere, 12u) << "the collapse should have removed nodes from most trees";
+    if (!std::is_same_v<TypeParam, cuda::LbvhBuilder>) {
+        EXPECT_GE(choicesFromTheBuild, 32u) << "every build of two or more primitives gives its choices";
+    }
+}
+
+// Copies the subtree of `from` under node `index` to slot `slot` of `into`, in the builders'
+// layout (each pair of children appended), its leaves' ranges moved by `firstOffset` (where its
+// primitive list starts in `into`'s).
+void spliceSubtree(const Bvh& from, uint32_t index, Bvh& into, uint32_t slot, uint32_t firstOffset) {
+    BvhNode node = from.nodes[index];
+    if (node.isLeaf()) {
+        node.leftOrFirst += firstOffset;
+        into.nodes[slot] = node;
+        return;
+    }
+    const uint32_t pair = uint32_t(into.nodes.size());
+    into.nodes.resize(pair + 2);
+    const uint32_t left = node.leftOrFirst;
+    node.leftOrFirst = pair;
+    into.nodes[slot] = node;
+    spliceSubtree(from, left, into, pair, firstOffset);
+    spliceSubtree(from, left + 1, into, pair + 1, firstOffset);
+}
+
+// One tree over `boxes`: the binned builder's tree of the first half with leaves of up to 8 (cheap
+// intersections make big leaves) beside its tree of the second half with leaves of one, which
+// the collapse can shorten. A binned tree alone never offers both: where it split a small node,
+// the split was the cheaper with leaves as children, so with cost 1 as well.
+Bvh bigAndSingleLeaves(const std::vector<Aabb>& boxes) {
+    const uint32_t half = uint32_t(boxes.size() / 2), rest = uint32_t(boxes.size()) - half;
+    BvhBuildOptions bigLeaves, singleLeaves;
+    bigLeaves.maxLeafSize = 8;
+    bigLeaves.intersectionCost = 0.25f;
+    singleLeaves.maxLeafSize = 1;
+    const Bvh left = buildBinnedSahBvh(boxes.data(), half, bigLeaves);
+    const Bvh right = buildBinnedSahBvh(boxes.data() + half, rest, singleLeaves);
+    Bvh tree;
+    tree.nodes.resize(3);
+    Aabb rootBox = test::boxOf(left.nodes[0]);
+    rootBox.grow(test::boxOf(right.nodes[0]));
+    tree.nodes[0] = BvhNode{rootBox.lo, 1, rootBox.hi, 0};
+    tree.primIndices = left.primIndices;
+    for (uint32_t p : right.primIndices) tree.primIndices.push_back(p + half);
+    spliceSubtree(left, 0, tree, 1, 0);
+    spliceSubtree(right, 0, tree, 2, uint32_t(left.primIndices.size()));
+    return tree;
+}
+
+// Trees with leaves over kMaxCollapsedLeaf beside subtrees of single leaves: the device's
+// collapse keeps the big leaves as they are, collapses the small subtrees, and equals the host's
+// worked-out result bit for bit; collapsing again changes nothing. A node count that cannot be a
+// root and sibling pairs is refused.
+TEST(GpuBvh, LeafCollapseKeepsLeavesOverTheLimit) {
+    PT_REQUIRE_CUDA_DEVICE();
+    TestStream s;
+    Rng rng(115);
+    cuda::BvhLeafCollapse collapse;
+    uint32_t bigLeaves = 0, collapsedSomewhere = 0;
+    for (uint32_t n : {12u, 40u, 5000u}) {
+        for (SoupKind kind : {SoupKind::Uniform, SoupKind::Clustered}) {
+            SCOPED_TRACE(std::to_string(n) + " " + test::soupName(kind));
+            const std::vector<Aabb> boxes = soupBoxes(kind, n, rng);
+            const Bvh built = bigAndSingleLeaves(boxes);
+            // The splice itself: exact boxes, every primitive once.
+            const std::vector<Aabb> exact = test::exactNodeBoxes(built, boxes);
+            for (size_t i = 0; i < built.nodes.size(); ++i)
+                ASSERT_TRUE(test::sameBox(built.nodes[i], exact[i])) << i;
+            std::vector<uint32_t> prims = built.primIndices;
+            std::sort(prims.begin(), prims.end());
+            for (uint32_t k = 0; k < n; ++k) ASSERT_EQ(prims[k], k);
+            const Bvh collapsed = test::collapseOnDevice(collapse, built, s);
+            const Bvh expected = test::collapseOnHost(built);
+            test::expectSameTree(collapsed, expected);
+            EXPECT_LE(sahCost(collapsed), sahCost(built));
+            for (const BvhNode& node : collapsed.nodes) bigLeaves += node.count > kMaxCollapsedLeaf;
+            collapsedSomewhere += collapsed.nodes.size() < built.nodes.size();
+            const Bvh again = test::collapseOnDevice(collapse, collapsed, s);
+            test::expectSameTree(again, collapsed);
+        }
+    }
+    EXPECT_GT(bigLeaves, 0u) << "the trees should hold leaves over the collapse's limit";
+    EXPECT_GE(collapsedSomewhere, 2u) << "and subtrees it collapses (3 of the 6 trees on an H200)";
+    cuda::DeviceBuffer<BvhNode> nodes(2);
+    cuda::DeviceBuffer<uint32_t> prims(2);
+    EXPECT_THROW(collapse.collapse(nodes.data(), 2, prims.data(), 2, s.stream), std::logic_error);
 }
 
 TYPED_TEST(GpuTreeBuilder, ClosestHitsThroughCollapsedTreesMatchBruteForce) {
@@ -714,7 +790,8 @@ TEST(GpuBvh, BuildAndRefitSpeedOfOneMillionTriangles) {
         uint32_t kept = 0;
         const float bothMs = medianMilliseconds(s, 10, [&] {
             hploc.build(boxes.data(), n, nodes.data(), primIndices.data(), s.stream);
-            kept = collapse.collapse(nodes.data(), nodeCount, primIndices.data(), n, s.stream);
+            kept = collapse.collapse(nodes.data(), nodeCount, primIndices.data(), n, s.stream,
+                                     hploc.subtreeChoices());
         });
         std::printf("[ speed    ] H-PLOC build and leaf collapse %.3f ms, SAH %.2f, %u of %u nodes kept\n",
                     bothMs, cuda::sahCostOnDevice(nodes.data(), kept, s.stream), kept, nodeCount);
@@ -723,11 +800,7 @@ TEST(GpuBvh, BuildAndRefitSpeedOfOneMillionTriangles) {
         const std::vector<Aabb> hostBoxes = test::triangleBounds(mesh);
         const auto [built, collapsed] = test::buildAndCollapseOnDevice(hploc, collapse, hostBoxes, s);
         const Bvh expected = test::collapseOnHost(built);
-        ASSERT_EQ(collapsed.nodes.size(), expected.nodes.size());
-        EXPECT_EQ(std::memcmp(collapsed.nodes.data(), expected.nodes.data(),
-                              expected.nodes.size() * sizeof(BvhNode)),
-                  0);
-        EXPECT_EQ(collapsed.primIndices, expected.primIndices);
+        test::expectSameTree(collapsed, expected);
         expectValidTree(collapsed, hostBoxes, nullptr, true);
     }
     const float buildMs = medianMilliseconds(

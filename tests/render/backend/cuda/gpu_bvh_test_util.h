@@ -101,8 +101,36 @@ inline Bvh collapseOnHost(const Bvh& tree) {
     return out;
 }
 
+// Two trees equal bit for bit: nodes and primitive lists.
+inline void expectSameTree(const Bvh& actual, const Bvh& expected) {
+    ASSERT_EQ(actual.nodes.size(), expected.nodes.size());
+    EXPECT_EQ(
+        std::memcmp(actual.nodes.data(), expected.nodes.data(), expected.nodes.size() * sizeof(BvhNode)), 0)
+        << "the nodes differ";
+    EXPECT_EQ(actual.primIndices, expected.primIndices);
+}
+
+// `tree` uploaded, collapsed on the device by BvhLeafCollapse's own passes (no builder's
+// choices), and downloaded.
+inline Bvh collapseOnDevice(cuda::BvhLeafCollapse& collapse, const Bvh& tree, const TestStream& s) {
+    cuda::DeviceBuffer<BvhNode> nodes;
+    cuda::DeviceBuffer<uint32_t> primIndices;
+    nodes.upload(tree.nodes, s.stream);
+    primIndices.upload(tree.primIndices, s.stream);
+    const uint32_t primCount = uint32_t(tree.primIndices.size());
+    const uint32_t kept =
+        collapse.collapse(nodes.data(), uint32_t(tree.nodes.size()), primIndices.data(), primCount, s.stream);
+    s.sync();  // the collapse's last copies are queued on the stream, which cudaMemcpy does not wait for
+    Bvh out;
+    nodes.download(out.nodes);
+    primIndices.download(out.primIndices);
+    out.nodes.resize(kept);
+    return out;
+}
+
 // A tree of `boxes` built on the device with `builder`, downloaded as built and again after
-// BvhLeafCollapse on the device.
+// BvhLeafCollapse on the device, which takes the builder's choices where it gives them (the
+// PLOC builders: subtreeChoices()).
 template <class Builder>
 std::pair<Bvh, Bvh> buildAndCollapseOnDevice(Builder& builder, cuda::BvhLeafCollapse& collapse,
                                              const std::vector<Aabb>& boxes, const TestStream& s) {
@@ -117,8 +145,8 @@ std::pair<Bvh, Bvh> buildAndCollapseOnDevice(Builder& builder, cuda::BvhLeafColl
     nodes.download(trees.first.nodes);
     primIndices.download(trees.first.primIndices);
     trees.first.primIndices.resize(n);
-    const uint32_t kept =
-        collapse.collapse(nodes.data(), cuda::lbvhNodeCount(n), primIndices.data(), n, s.stream);
+    const uint32_t kept = collapse.collapse(nodes.data(), cuda::lbvhNodeCount(n), primIndices.data(), n,
+                                            s.stream, builder.subtreeChoices());
     s.sync();
     nodes.download(trees.second.nodes);
     primIndices.download(trees.second.primIndices);
