@@ -91,12 +91,13 @@ public:
     // Whether the last build's tree was too deep and an LBVH took its place.
     bool lastBuildFellBack() const { return fellBack_; }
     // The depth of the last build's tree as PLOC made it (deeper than kGpuBvhMaxDepth where it
-    // fell back; 0 for fewer than two primitives).
+    // fell back, saturated at 65535; 0 for fewer than two primitives).
     uint32_t lastBuildDepth() const { return depth_; }
     // The last build's choice byte for every node (subtree_choices.cuh), worked out as its merges
     // made the nodes, for BvhLeafCollapse::collapse to take in place of its own pass; device
-    // memory, valid until the next build. nullptr where the build made no merges (fewer than
-    // two primitives) or fell back.
+    // memory, written on the build's stream, and true of the tree until the next build or until
+    // a collapse rewrites it. nullptr where the build made no merges (fewer than two primitives)
+    // or fell back.
     const uint8_t* subtreeChoices() const { return choicesValid_ ? choices_.data() : nullptr; }
     // Frees the scratch, as LbvhBuilder::release.
     void release();
@@ -114,8 +115,8 @@ private:
     bool fellBack_ = false;
     uint32_t depth_ = 0;
     MortonSort morton_;
-    // The clusters of a round in Morton order, each as the node it will become (ploc_builder.cu
-    // says how an interior cluster's count field carries its height), and the round's clusters
+    // The clusters of a round in Morton order, each as the node it will become (ploc_clusters.cuh
+    // says what an interior cluster's count field carries), and the round's clusters
     // after merging, before the merged-away ones are compacted out.
     DeviceBuffer<BvhNode> clusters_, merged_;
     DeviceBuffer<uint8_t> keep_;  // 1: the cluster goes on to the next round
@@ -194,7 +195,8 @@ public:
     // Rewrites both in place, in that layout, with the kept nodes in their order and each leaf's
     // primitives in their order below it, and returns the new node count. The result obeys every
     // rule of the builders' trees but the leaf size, which is at most kMaxCollapsedLeaf (a leaf
-    // of more primitives is kept as it is), and its depth does not grow. Synchronises `stream`;
+    // of more primitives is kept as it is), and its depth does not grow. Waits for `stream` once
+    // (it reads the kept count back) and returns with its last pass and copies queued on it;
     // throws std::logic_error where the primitives placed do not add up (a tree not in that
     // layout: never one of the builders'), or where nodeCount is even.
     // `builtChoices`, where the builder that made the tree gives them (subtreeChoices()), stand

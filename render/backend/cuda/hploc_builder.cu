@@ -213,6 +213,7 @@ void HplocBuilder::release() {
     choices_ = {};
     pairCosts_ = {};
     fallback_.release();
+    choicesValid_ = false;
     capacity_ = 0;
 }
 

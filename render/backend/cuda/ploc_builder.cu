@@ -202,6 +202,7 @@ void PlocBuilder::release() {
     choices_ = {};
     pairCosts_ = {};
     fallback_.release();
+    choicesValid_ = false;
     capacity_ = 0;
 }
 

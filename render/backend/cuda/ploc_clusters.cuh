@@ -19,8 +19,9 @@ enum PlocCounter : uint32_t { kNextSlot, kClustersLeft, kRootHeight, kStalls, kP
 
 // A cluster is the node it will become. A leaf's count is 1 (its height 0); an interior
 // cluster's count field holds kInteriorCluster, its subtree choice byte (subtree_choices.cuh)
-// at kClusterChoiceShift, and its height (saturated at kClusterHeightMask, far past any depth
-// a tree may have), set to 0 when it is written as a node. A count of 0 marks no cluster
+// at kClusterChoiceShift, and its height (saturated at kClusterHeightMask, far past
+// kGpuBvhMaxDepth, beyond which the builders fall back to an LBVH), set to 0 when it is written
+// as a node. A count of 0 marks no cluster
 // (H-PLOC's slots past a subtree's clusters).
 constexpr uint32_t kInteriorCluster = 0x80000000u;
 constexpr uint32_t kClusterChoiceShift = 16;
@@ -115,8 +116,9 @@ __device__ __forceinline__ bool betterNeighbour(int i, int j, float cost, int be
     return best < 0 || cost < bestCost || (cost == bestCost && tieOrder(i, j) < tieOrder(i, best));
 }
 
-// The optimal cost of a cluster of at most kMaxCollapsedLeaf primitives: a leaf's own, an
-// interior one's as the merge that made it stored it. Read from L2: another SM's merge may have
+// The optimal cost of a cluster of fewer than kMaxCollapsedLeaf primitives (a merge takes it only
+// where its partner adds at least one): a leaf's own, an interior one's as the merge that made
+// it stored it. Read from L2: another SM's merge may have
 // stored it (see bvh_bottom_up.cuh).
 __device__ __forceinline__ float smallClusterCost(const ClusterWords& c, const SubtreeChoiceArrays& out) {
     return c.interior() ? __ldcg(out.pairCosts + pairOf(__float_as_uint(c.low.w))) : leafCost(c.asNode());

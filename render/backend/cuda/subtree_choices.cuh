@@ -28,8 +28,9 @@ __device__ __forceinline__ uint8_t choiceByte(const SubtreeChoice& choice) {
 __device__ __forceinline__ uint32_t pairOf(uint32_t leftChild) { return (leftChild - 1) / 2; }
 
 // Where a builder writes the choices as it merges: `choices` one byte a node slot;
-// `pairCosts`, the optimal cost of each small subtree (at most kMaxCollapsedLeaf primitives)
-// for its parent's merge, indexed by the pair its children sit in.
+// `pairCosts`, the optimal cost of each subtree of fewer than kMaxCollapsedLeaf primitives (the
+// only ones a parent's merge can still collapse with a sibling), indexed by the pair its
+// children sit in.
 struct SubtreeChoiceArrays {
     uint8_t* choices = nullptr;
     float* pairCosts = nullptr;

@@ -209,6 +209,7 @@ TYPED_TEST(GpuClusteringBuilder, FallsBackToAnLbvhBeyondTheStacksDepth) {
     for (int k = 0; k < 400; ++k, half *= 1.1f) nested.push_back(Aabb{Vec3(-half), Vec3(half)});
     expectValidTree(test::buildTreeOnDevice(builder, nested, s), nested);
     EXPECT_TRUE(builder.lastBuildFellBack());
+    EXPECT_EQ(builder.subtreeChoices(), nullptr) << "the merges' choices are not the fallback LBVH's";
     EXPECT_GT(builder.lastBuildDepth(), cuda::kGpuBvhMaxDepth);
     if constexpr (std::is_same_v<TypeParam, cuda::PlocBuilder>) {
         EXPECT_EQ(builder.lastBuildDepth(), 399u);
@@ -217,6 +218,7 @@ TYPED_TEST(GpuClusteringBuilder, FallsBackToAnLbvhBeyondTheStacksDepth) {
     const std::vector<Aabb> soup = soupBoxes(SoupKind::Uniform, 5000, rng);
     expectValidTree(test::buildTreeOnDevice(builder, soup, s), soup);
     EXPECT_FALSE(builder.lastBuildFellBack());
+    EXPECT_NE(builder.subtreeChoices(), nullptr);
 }
 
 // The clustering is a function of the sorted keys, so every build of the same boxes gives the
@@ -284,7 +286,7 @@ TYPED_TEST(GpuTreeBuilder, LeafCollapseIsTheHostsOptimumAndAValidTree) {
             const std::vector<Aabb> boxes = soupBoxes(kind, n, rng);
             const auto [built, collapsed] = test::buildAndCollapseOnDevice(builder, collapse, boxes, s);
             const Bvh expected = test::collapseOnHost(built);
-            test::expectSameTree(collapsed, expected);
+            ASSERT_NO_FATAL_FAILURE(test::expectSameTree(collapsed, expected));
             uint32_t builtDepth = 0, collapsedDepth = 0;
             expectValidTree(built, boxes, &builtDepth);
             expectValidTree(collapsed, boxes, &collapsedDepth, true);
@@ -312,19 +314,23 @@ TYPED_TEST(GpuTreeBuilder, LeafCollapseIsTheHostsOptimumAndAValidTree) {
             }
             collapsedSomewhere += collapsed.nodes.size() < built.nodes.size();
             // The PLOC builders' choices stand in for the collapse's own pass: the same tree.
+            if constexpr (!std::is_same_v<TypeParam, cuda::LbvhBuilder>) {
+                EXPECT_EQ(builder.subtreeChoices() != nullptr, !builder.lastBuildFellBack())
+                    << "every build of two or more primitives that did not fall back gives its choices";
+            }
             if (builder.subtreeChoices() != nullptr) {
                 const Bvh ownPass = test::collapseOnDevice(collapse, built, s);
-                test::expectSameTree(ownPass, expected);
+                ASSERT_NO_FATAL_FAILURE(test::expectSameTree(ownPass, expected));
                 choicesFromTheBuild += 1;
             }
             // Collapsing a collapsed tree again keeps it as it is.
             const Bvh again = test::collapseOnDevice(collapse, collapsed, s);
-            test::expectSameTree(again, collapsed);
+            ASSERT_NO_FATAL_FAILURE(test::expectSameTree(again, collapsed));
         }
     }
     EXPECT_GE(collapsedSomewhere, 12u) << "the collapse should have removed nodes from most trees";
     if (!std::is_same_v<TypeParam, cuda::LbvhBuilder>) {
-        EXPECT_GE(choicesFromTheBuild, 32u) << "every build of two or more primitives gives its choices";
+        EXPECT_GE(choicesFromTheBuild, 32u) << "the soups should not fall back";
     }
 }
 
@@ -395,12 +401,12 @@ TEST(GpuBvh, LeafCollapseKeepsLeavesOverTheLimit) {
             for (uint32_t k = 0; k < n; ++k) ASSERT_EQ(prims[k], k);
             const Bvh collapsed = test::collapseOnDevice(collapse, built, s);
             const Bvh expected = test::collapseOnHost(built);
-            test::expectSameTree(collapsed, expected);
+            ASSERT_NO_FATAL_FAILURE(test::expectSameTree(collapsed, expected));
             EXPECT_LE(sahCost(collapsed), sahCost(built));
             for (const BvhNode& node : collapsed.nodes) bigLeaves += node.count > kMaxCollapsedLeaf;
             collapsedSomewhere += collapsed.nodes.size() < built.nodes.size();
             const Bvh again = test::collapseOnDevice(collapse, collapsed, s);
-            test::expectSameTree(again, collapsed);
+            ASSERT_NO_FATAL_FAILURE(test::expectSameTree(again, collapsed));
         }
     }
     EXPECT_GT(bigLeaves, 0u) << "the trees should hold leaves over the collapse's limit";
@@ -800,7 +806,7 @@ TEST(GpuBvh, BuildAndRefitSpeedOfOneMillionTriangles) {
         const std::vector<Aabb> hostBoxes = test::triangleBounds(mesh);
         const auto [built, collapsed] = test::buildAndCollapseOnDevice(hploc, collapse, hostBoxes, s);
         const Bvh expected = test::collapseOnHost(built);
-        test::expectSameTree(collapsed, expected);
+        ASSERT_NO_FATAL_FAILURE(test::expectSameTree(collapsed, expected));
         expectValidTree(collapsed, hostBoxes, nullptr, true);
     }
     const float buildMs = medianMilliseconds(
