@@ -12,16 +12,22 @@
 //      kMaxCollapsedLeaf primitives always stays, so its thread walks down its small children's
 //      subtrees (at most 7 nodes each) and marks what the choices keep; every mark is written
 //      by one thread;
-//   3. exclusive scans of the marks give each kept pair its new slot and each leaf its place in
-//      the primitive list (cub::DeviceScan);
-//   4. each kept node writes itself at its new slot, a leaf gathering the primitives below it,
-//      into scratch that is then copied over the input.
+//   3. one exclusive scan of a word pair a sibling pair, the pair's mark and its leaves'
+//      primitives, gives each kept pair its new slot and each leaf its place in the primitive
+//      list (cub::DeviceScan), and in a last word past the pairs the totals;
+//   4. each kept node writes itself at its new slot of the output, a leaf gathering the
+//      primitives below it. The backend's builders build into this object's scratch, so the
+//      output is the BLAS's own place and nothing is copied after (collapseInto); the totals
+//      are read back at the end, so the GPU does not wait for the host between passes.
 // The first pass's buffers (parents, arrivals, costs) hold the second's marks once it is done.
 // On an H200 (1M random triangles, ncu) the choices' pass takes 188 us, held up by the latency
 // of its atomics and fences (118 cycles an issued instruction). Two trials of it were slower: a
 // thread a node walking down with collapseChoice, depth first, 206 us; the same opening both
 // children together with a lower bound that gives up early, 436 us (its arrays in local memory).
 // Then mark 48 us, write 81 us (40 registers, 75% occupancy), parents 28 us.
+#include <thrust/iterator/counting_iterator.h>
+#include <thrust/iterator/transform_iterator.h>
+
 #include <algorithm>
 #include <cub/device/device_scan.cuh>
 #include <stdexcept>
@@ -111,26 +117,58 @@ __global__ void markKernel(const BvhNode* nodes, uint32_t nodeCount, const uint8
     }
 }
 
+// The scan's input: for sibling pair p, 1 << 32 where it stays plus the primitives of its kept
+// leaves (all of them together are primCount < 2^32, so the low word never carries into the
+// high), and for pair 0 the root's too, where the root is the one leaf (then no pair stays, and
+// its own offset is 0). Past the last pair a 0, whose exclusive scan is then the totals: the
+// pairs kept and the primitives placed.
+struct PairWord {
+    const uint32_t* pairKept;
+    const uint32_t* leafPrimitives;
+    uint32_t pairs;
+    __device__ uint64_t operator()(uint32_t p) const {
+        if (p == pairs) return 0;
+        const uint32_t root = p == 0 ? leafPrimitives[0] : 0u;
+        return uint64_t(pairKept[p]) << 32 | (root + leafPrimitives[2 * p + 1] + leafPrimitives[2 * p + 2]);
+    }
+};
+
+// `pairStarts[p]`, the exclusive scan of PairWord: the pairs kept before pair p (high word) and
+// the primitives of the kept leaves before its own (low word).
 __global__ void writeKernel(const BvhNode* nodes, uint32_t nodeCount, const uint32_t* primIndices,
-                            const uint8_t* choices, const uint32_t* pairKept, const uint32_t* pairSlots,
-                            const uint32_t* primitiveOffsets, BvhNode* outNodes, uint32_t* outPrimIndices) {
+                            uint32_t primCount, const uint8_t* choices, const uint32_t* pairKept,
+                            const uint32_t* leafPrimitives, const uint64_t* pairStarts, BvhNode* outNodes,
+                            uint32_t* outPrimIndices) {
     const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i >= nodeCount) return;
     if (i != 0 && !pairKept[pairOf(i)]) return;
-    const uint32_t slot = i == 0 ? 0 : 1 + 2 * pairSlots[pairOf(i)] + ((i - 1) & 1);
+    uint32_t slot = 0, next = 0;  // the root: slot 0, and its primitives first where it is a leaf
+    if (i != 0) {
+        const uint64_t start = pairStarts[pairOf(i)];
+        const bool right = (i - 1) & 1u;
+        slot = 1 + 2 * uint32_t(start >> 32) + uint32_t(right);
+        next = uint32_t(start) + (right ? leafPrimitives[i - 1] : 0u);  // after its left sibling's
+    }
     BvhNode out = nodes[i];
     if (choices[i] & kChoiceLeaf) {  // its primitives, in their order below it, from its offset on
-        uint32_t next = primitiveOffsets[i];
         out.leftOrFirst = next;
         forEachSmallSubtreeLeaf(nodes, i, [&](const BvhNode& leaf) {
-            for (uint32_t k = 0; k < leaf.count; ++k)
-                outPrimIndices[next++] = primIndices[leaf.leftOrFirst + k];
+            for (uint32_t k = 0; k < leaf.count; ++k, ++next) {
+                // Never past the output, even for a tree whose totals the host then refuses.
+                if (next < primCount) outPrimIndices[next] = primIndices[leaf.leftOrFirst + k];
+            }
         });
         out.count = next - out.leftOrFirst;
     } else {
-        out.leftOrFirst = 1 + 2 * pairSlots[pairOf(out.leftOrFirst)];
+        out.leftOrFirst = 1 + 2 * uint32_t(pairStarts[pairOf(out.leftOrFirst)] >> 32);
     }
     outNodes[slot] = out;
+}
+
+// The scan's input iterator (PairWord over pair indices 0..pairs).
+auto pairWords(const uint32_t* pairKept, const uint32_t* leafPrimitives, uint32_t pairs) {
+    return thrust::make_transform_iterator(thrust::make_counting_iterator(0u),
+                                           PairWord{pairKept, leafPrimitives, pairs});
 }
 
 }  // namespace
@@ -140,39 +178,42 @@ void BvhLeafCollapse::reserve(uint32_t nodeCount, uint32_t primCount) {
         nodeCapacity_ = grownCapacity(nodeCount, nodeCapacity_);
         choices_.resize(nodeCapacity_);
         parentsThenPairKept_.resize(nodeCapacity_);
-        visitsThenPairSlots_.resize(nodeCapacity_);
+        // A word a node (arrivals), or a word pair for each pair and one past them.
+        visitsThenPairStarts_.resize(nodeCapacity_ / 2 + 1);
         costsThenLeafPrimitives_.resize(nodeCapacity_);
-        primitiveOffsets_.resize(nodeCapacity_);
-        size_t pairScanBytes = 0, primitiveScanBytes = 0;
-        PT_CUDA_CHECK(cub::DeviceScan::ExclusiveSum(nullptr, pairScanBytes, parentsThenPairKept_.data(),
-                                                    visitsThenPairSlots_.data(), int(nodeCapacity_ / 2)));
-        PT_CUDA_CHECK(cub::DeviceScan::ExclusiveSum(nullptr, primitiveScanBytes,
-                                                    costsThenLeafPrimitives_.data(), primitiveOffsets_.data(),
-                                                    int(nodeCapacity_)));
-        scanScratch_.resize(std::max(pairScanBytes, primitiveScanBytes));
+        builtNodes_.resize(nodeCapacity_);
+        size_t scanBytes = 0;
+        PT_CUDA_CHECK(cub::DeviceScan::ExclusiveSum(nullptr, scanBytes, pairWords(nullptr, nullptr, 0),
+                                                    visitsThenPairStarts_.data(),
+                                                    int(nodeCapacity_ / 2 + 1)));
+        scanScratch_.resize(std::max<size_t>(scanBytes, 1));
     }
     if (primCount > primCapacity_) {
         primCapacity_ = grownCapacity(primCount, primCapacity_);
-        outPrimIndices_.resize(primCapacity_);
+        builtPrimIndices_.resize(primCapacity_);
     }
 }
 
 void BvhLeafCollapse::release() {
     choices_ = {};
     parentsThenPairKept_ = {};
-    visitsThenPairSlots_ = {};
+    visitsThenPairStarts_ = {};
     costsThenLeafPrimitives_ = {};
-    primitiveOffsets_ = {};
-    outNodes_ = {};
-    outPrimIndices_ = {};
+    builtNodes_ = {};
+    builtPrimIndices_ = {};
     scanScratch_ = {};
     nodeCapacity_ = 0;
     primCapacity_ = 0;
 }
 
+BvhLeafCollapse::BuildScratch BvhLeafCollapse::buildScratch(uint32_t nodeCount, uint32_t primCount) {
+    reserve(std::max(nodeCount, 1u), std::max(primCount, 1u));
+    return {builtNodes_.data(), builtPrimIndices_.data()};
+}
+
 void BvhLeafCollapse::choose(const BvhNode* nodes, uint32_t nodeCount, cudaStream_t stream) {
     uint32_t* parents = parentsThenPairKept_.data();
-    uint32_t* visits = visitsThenPairSlots_.data();
+    uint32_t* visits = reinterpret_cast<uint32_t*>(visitsThenPairStarts_.data());
     float* costs = reinterpret_cast<float*>(costsThenLeafPrimitives_.data());
     computeParents(nodes, nodeCount, parents, stream);
     PT_CUDA_CHECK(cudaMemsetAsync(visits, 0, nodeCount * sizeof(uint32_t), stream));
@@ -185,6 +226,26 @@ void BvhLeafCollapse::choose(const BvhNode* nodes, uint32_t nodeCount, cudaStrea
 uint32_t BvhLeafCollapse::collapse(BvhNode* nodes, uint32_t nodeCount, uint32_t* primIndices,
                                    uint32_t primCount, cudaStream_t stream, const uint8_t* builtChoices) {
     if (primCount <= 1 || nodeCount <= 1) return nodeCount;  // the empty root or a single leaf
+    const BuildScratch built = buildScratch(nodeCount, primCount);
+    PT_CUDA_CHECK(
+        cudaMemcpyAsync(built.nodes, nodes, nodeCount * sizeof(BvhNode), cudaMemcpyDeviceToDevice, stream));
+    PT_CUDA_CHECK(cudaMemcpyAsync(built.primIndices, primIndices, primCount * sizeof(uint32_t),
+                                  cudaMemcpyDeviceToDevice, stream));
+    return collapseInto(built.nodes, nodeCount, built.primIndices, primCount, nodes, primIndices, stream,
+                        builtChoices);
+}
+
+uint32_t BvhLeafCollapse::collapseInto(const BvhNode* builtNodes, uint32_t nodeCount,
+                                       const uint32_t* builtPrimIndices, uint32_t primCount, BvhNode* nodes,
+                                       uint32_t* primIndices, cudaStream_t stream,
+                                       const uint8_t* builtChoices) {
+    if (primCount <= 1 || nodeCount <= 1) {  // the empty root or a single leaf, as they are
+        PT_CUDA_CHECK(cudaMemcpyAsync(nodes, builtNodes, nodeCount * sizeof(BvhNode),
+                                      cudaMemcpyDeviceToDevice, stream));
+        PT_CUDA_CHECK(cudaMemcpyAsync(primIndices, builtPrimIndices, primCount * sizeof(uint32_t),
+                                      cudaMemcpyDeviceToDevice, stream));
+        return nodeCount;
+    }
     // A root and whole sibling pairs: an even count would have the passes read past the pairs.
     if (nodeCount % 2 == 0) {
         throw std::logic_error("BVH leaf collapse given " + std::to_string(nodeCount) +
@@ -192,32 +253,30 @@ uint32_t BvhLeafCollapse::collapse(BvhNode* nodes, uint32_t nodeCount, uint32_t*
     }
     reserve(nodeCount, primCount);
     const uint32_t pairs = (nodeCount - 1) / 2;
-    if (builtChoices == nullptr) choose(nodes, nodeCount, stream);
+    if (builtChoices == nullptr) choose(builtNodes, nodeCount, stream);
     const uint8_t* choices = builtChoices ? builtChoices : choices_.data();
 
     uint32_t* pairKept = parentsThenPairKept_.data();
-    uint32_t* pairSlots = visitsThenPairSlots_.data();
+    uint64_t* pairStarts = visitsThenPairStarts_.data();
     uint32_t* leafPrimitives = costsThenLeafPrimitives_.data();
     PT_CUDA_CHECK(cudaMemsetAsync(pairKept, 0, pairs * sizeof(uint32_t), stream));
     PT_CUDA_CHECK(cudaMemsetAsync(leafPrimitives, 0, nodeCount * sizeof(uint32_t), stream));
-    markKernel<<<bvhBlocks(nodeCount), kBvhBlockSize, 0, stream>>>(nodes, nodeCount, choices, pairKept,
+    markKernel<<<bvhBlocks(nodeCount), kBvhBlockSize, 0, stream>>>(builtNodes, nodeCount, choices, pairKept,
                                                                    leafPrimitives);
     PT_CUDA_CHECK_LAUNCH("markKernel");
     size_t scanBytes = scanScratch_.size();
-    PT_CUDA_CHECK(cub::DeviceScan::ExclusiveSum(scanScratch_.data(), scanBytes, pairKept, pairSlots,
-                                                int(pairs), stream));
-    PT_CUDA_CHECK(cub::DeviceScan::ExclusiveSum(scanScratch_.data(), scanBytes, leafPrimitives,
-                                                primitiveOffsets_.data(), int(nodeCount), stream));
-    // The totals: kept pairs (the last pair's slot and mark) and primitives placed.
-    uint32_t tail[4];
-    const uint32_t* tailWords[4] = {pairSlots + pairs - 1, pairKept + pairs - 1,
-                                    primitiveOffsets_.data() + nodeCount - 1, leafPrimitives + nodeCount - 1};
-    for (int k = 0; k < 4; ++k) {
-        PT_CUDA_CHECK(
-            cudaMemcpyAsync(tail + k, tailWords[k], sizeof(uint32_t), cudaMemcpyDeviceToHost, stream));
-    }
+    PT_CUDA_CHECK(cub::DeviceScan::ExclusiveSum(scanScratch_.data(), scanBytes,
+                                                pairWords(pairKept, leafPrimitives, pairs), pairStarts,
+                                                int(pairs + 1), stream));
+    writeKernel<<<bvhBlocks(nodeCount), kBvhBlockSize, 0, stream>>>(
+        builtNodes, nodeCount, builtPrimIndices, primCount, choices, pairKept, leafPrimitives, pairStarts,
+        nodes, primIndices);
+    PT_CUDA_CHECK_LAUNCH("writeKernel");
+    uint64_t totals = 0;
+    PT_CUDA_CHECK(
+        cudaMemcpyAsync(&totals, pairStarts + pairs, sizeof(totals), cudaMemcpyDeviceToHost, stream));
     PT_CUDA_CHECK(cudaStreamSynchronize(stream));
-    const uint32_t keptNodes = 1 + 2 * (tail[0] + tail[1]), placed = tail[2] + tail[3];
+    const uint32_t keptNodes = 1 + 2 * uint32_t(totals >> 32), placed = uint32_t(totals);
     // Every primitive lands in exactly one kept leaf: any other total is a defect here (or a
     // tree not in the GPU builders' layout), which must not pass silently.
     if (placed != primCount || keptNodes > nodeCount) {
@@ -225,15 +284,6 @@ uint32_t BvhLeafCollapse::collapse(BvhNode* nodes, uint32_t nodeCount, uint32_t*
                                std::to_string(primCount) + " primitives in " + std::to_string(keptNodes) +
                                " of " + std::to_string(nodeCount) + " nodes");
     }
-    if (keptNodes > outNodes_.size()) outNodes_.resize(grownCapacity(keptNodes, uint32_t(outNodes_.size())));
-    writeKernel<<<bvhBlocks(nodeCount), kBvhBlockSize, 0, stream>>>(
-        nodes, nodeCount, primIndices, choices, pairKept, pairSlots, primitiveOffsets_.data(),
-        outNodes_.data(), outPrimIndices_.data());
-    PT_CUDA_CHECK_LAUNCH("writeKernel");
-    PT_CUDA_CHECK(cudaMemcpyAsync(nodes, outNodes_.data(), keptNodes * sizeof(BvhNode),
-                                  cudaMemcpyDeviceToDevice, stream));
-    PT_CUDA_CHECK(cudaMemcpyAsync(primIndices, outPrimIndices_.data(), primCount * sizeof(uint32_t),
-                                  cudaMemcpyDeviceToDevice, stream));
     return keptNodes;
 }
 

@@ -427,19 +427,25 @@ void CudaBackend::refitToPrimitives(uint32_t i) {
 
 void CudaBackend::rebuildBlasOnDevice(uint32_t i) {
     device_.reserveLbvhNodes(i, stream_);  // room for 2n - 1 nodes, on a first rebuild
-    const uint32_t primitives = device_.blas(i).primitiveCount;
+    const uint32_t primitives = device_.blas(i).primitiveCount, builtNodes = lbvhNodeCount(primitives);
+    // With the collapse on, the builder builds into its scratch and the collapse writes the
+    // kept tree to the BLAS's place; without, the builder writes there itself.
+    const BvhLeafCollapse::BuildScratch into =
+        toggles_.gpuLeafCollapse
+            ? leafCollapse_.buildScratch(builtNodes, primitives)
+            : BvhLeafCollapse::BuildScratch{device_.blasNodes(i), device_.blasPrimIndices(i)};
     if (toggles_.gpuPloc) {
-        hploc_.build(primBoxes_.data(), primitives, device_.blasNodes(i), device_.blasPrimIndices(i),
-                     stream_);
+        hploc_.build(primBoxes_.data(), primitives, into.nodes, into.primIndices, stream_);
     } else {
-        lbvh_.build(primBoxes_.data(), primitives, device_.blasNodes(i), device_.blasPrimIndices(i), stream_);
+        lbvh_.build(primBoxes_.data(), primitives, into.nodes, into.primIndices, stream_);
     }
     const uint8_t* builtChoices = toggles_.gpuPloc ? hploc_.subtreeChoices() : lbvh_.subtreeChoices();
     const uint32_t nodeCount =
         toggles_.gpuLeafCollapse
-            ? leafCollapse_.collapse(device_.blasNodes(i), lbvhNodeCount(primitives),
-                                     device_.blasPrimIndices(i), primitives, stream_, builtChoices)
-            : lbvhNodeCount(primitives);
+            ? leafCollapse_.collapseInto(into.nodes, builtNodes, into.primIndices, primitives,
+                                         device_.blasNodes(i), device_.blasPrimIndices(i), stream_,
+                                         builtChoices)
+            : builtNodes;
     device_.setBlasNodeCount(i, nodeCount, stream_);
     device_.dropCompressed(i, stream_);         // the kernels walk the new tree's binary nodes
     compressedPlan_[i] = CompressedPlan::Skip;  // and its compressed form, if still to come, is stale

@@ -32,12 +32,14 @@ GpuBuildFigures measureBuild(Builder& builder, const Aabb* boxes, uint32_t n, Bv
         medianDeviceSeconds(runs, stream, [&] { builder.build(boxes, n, nodes, primIndices, stream); });
     figures.sahCost = sahCostOnDevice(nodes, lbvhNodeCount(n), stream);
     if constexpr (!std::is_same_v<Builder, LbvhBuilder>) figures.fellBack = builder.lastBuildFellBack();
+    // As the backend's rebuilds run them: built into the collapse's scratch, collapsed into place.
     BvhLeafCollapse collapse;
+    const BvhLeafCollapse::BuildScratch built = collapse.buildScratch(lbvhNodeCount(n), n);
     uint32_t collapsedCount = 0;
     figures.collapsedSeconds = medianDeviceSeconds(runs, stream, [&] {
-        builder.build(boxes, n, nodes, primIndices, stream);
-        collapsedCount =
-            collapse.collapse(nodes, lbvhNodeCount(n), primIndices, n, stream, builder.subtreeChoices());
+        builder.build(boxes, n, built.nodes, built.primIndices, stream);
+        collapsedCount = collapse.collapseInto(built.nodes, lbvhNodeCount(n), built.primIndices, n, nodes,
+                                               primIndices, stream, builder.subtreeChoices());
     });
     figures.collapsedSahCost = sahCostOnDevice(nodes, collapsedCount, stream);
     figures.collapsedNodes = collapsedCount;

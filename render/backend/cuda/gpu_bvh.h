@@ -185,30 +185,46 @@ private:
 // trees of pt-render bench's 1M sphere from 1.119x to 1.085x the binned SAH build's cost (1.048x
 // to 1.036x on 100k random triangles, 1.040x to 0.992x clustered, 1.091x to 1.070x on an 82k
 // icosphere: gpu_bvh_test), for 0.35-0.43 ms more at 1M primitives with its own choices' pass,
-// 0.17-0.21 ms with H-PLOC's (bench's 1M sphere: H-PLOC and the collapse 0.90-0.93 ms); of 1M
-// random triangles' tree it keeps 62% of the nodes. Keeps its scratch between collapses, as the builders do:
-// about 40 bytes a node of the input (0.8 GB at 10M primitives) until release().
+// 0.11-0.13 ms with H-PLOC's (bench's 1M sphere: H-PLOC and the collapse 0.82-0.84 ms); of 1M
+// random triangles' tree it keeps 62% of the nodes. The backend's builders build into the
+// collapse's scratch (buildScratch) and the collapse writes the kept tree to the BLAS's place
+// (collapseInto), so no copy follows it. Keeps its scratch between collapses, as the builders
+// do: about 45 bytes a node of the input (0.9 GB at 10M primitives) until release().
 class BvhLeafCollapse {
 public:
-    // `nodes` holds `nodeCount` nodes in the builders' layout (root at 0; the children of every
-    // interior node at slots 2p + 1 and 2p + 2), over `primCount` entries of `primIndices`.
-    // Rewrites both in place, in that layout, with the kept nodes in their order and each leaf's
-    // primitives in their order below it, and returns the new node count. The result obeys every
-    // rule of the builders' trees but the leaf size, which is at most kMaxCollapsedLeaf (a leaf
-    // of more primitives is kept as it is), and its depth does not grow. Waits for `stream` once
-    // (it reads the kept count back) and returns with its last pass and copies queued on it;
-    // throws std::logic_error where the primitives placed do not add up (a tree not in that
-    // layout: never one of the builders'), or where nodeCount is even.
+    // Room for a tree of `nodeCount` nodes over `primCount` primitive indices, for a builder
+    // to build into and collapseInto to read: valid until the next buildScratch, collapse or
+    // release.
+    struct BuildScratch {
+        BvhNode* nodes;
+        uint32_t* primIndices;
+    };
+    BuildScratch buildScratch(uint32_t nodeCount, uint32_t primCount);
+
+    // `builtNodes` holds `nodeCount` nodes in the builders' layout (root at 0; the children of
+    // every interior node at slots 2p + 1 and 2p + 2), over `primCount` entries of
+    // `builtPrimIndices`; both are left as they are. Writes the collapsed tree to `nodes` and
+    // `primIndices` (room for nodeCount and primCount entries, apart from the input), in that
+    // layout, with the kept nodes in their order and each leaf's primitives in their order below
+    // it, and returns the new node count. The result obeys every rule of the builders' trees but
+    // the leaf size, which is at most kMaxCollapsedLeaf (a leaf of more primitives is kept as it
+    // is), and its depth does not grow. Waits for `stream` once, at the end (it reads the kept
+    // count back); throws std::logic_error where the primitives placed do not add up (a tree not
+    // in that layout: never one of the builders'), or where nodeCount is even.
     // `builtChoices`, where the builder that made the tree gives them (subtreeChoices()), stand
     // in for the choices' own pass (parent links and a climb from every leaf), with the same
     // result.
+    uint32_t collapseInto(const BvhNode* builtNodes, uint32_t nodeCount, const uint32_t* builtPrimIndices,
+                          uint32_t primCount, BvhNode* nodes, uint32_t* primIndices, cudaStream_t stream,
+                          const uint8_t* builtChoices = nullptr);
+    // The same in place: `nodes` and `primIndices` are copied to the build scratch first.
     uint32_t collapse(BvhNode* nodes, uint32_t nodeCount, uint32_t* primIndices, uint32_t primCount,
                       cudaStream_t stream, const uint8_t* builtChoices = nullptr);
     void release();
     uint64_t bytes() const {
-        return choices_.bytes() + parentsThenPairKept_.bytes() + visitsThenPairSlots_.bytes() +
-               costsThenLeafPrimitives_.bytes() + primitiveOffsets_.bytes() + outNodes_.bytes() +
-               outPrimIndices_.bytes() + scanScratch_.bytes();
+        return choices_.bytes() + parentsThenPairKept_.bytes() + visitsThenPairStarts_.bytes() +
+               costsThenLeafPrimitives_.bytes() + builtNodes_.bytes() + builtPrimIndices_.bytes() +
+               scanScratch_.bytes();
     }
 
 private:
@@ -219,13 +235,15 @@ private:
     uint32_t nodeCapacity_ = 0, primCapacity_ = 0;
     // Per node: the primitives below it (up to the limit) and whether it is to be a leaf.
     DeviceBuffer<uint8_t> choices_;
-    // A word a node, each for the choices' pass and then for the marks (bvh_leaf_collapse.cu):
-    // parent links, then 1 where a sibling pair stays; arrivals, then each kept pair's new pair
-    // index; optimal costs, then each kept leaf's primitives.
-    DeviceBuffer<uint32_t> parentsThenPairKept_, visitsThenPairSlots_, costsThenLeafPrimitives_;
-    DeviceBuffer<uint32_t> primitiveOffsets_;  // each kept leaf's first entry (exclusive scan)
-    DeviceBuffer<BvhNode> outNodes_;           // the kept nodes, sized to them
-    DeviceBuffer<uint32_t> outPrimIndices_;
+    // Each for the choices' pass and then for the marks (bvh_leaf_collapse.cu): parent links,
+    // then 1 where a sibling pair stays (a word a node); arrivals (a word a node), then a word
+    // pair a pair, the scan of the pairs kept and the primitives placed before it; optimal
+    // costs, then each kept leaf's primitives (a word a node).
+    DeviceBuffer<uint32_t> parentsThenPairKept_;
+    DeviceBuffer<uint64_t> visitsThenPairStarts_;
+    DeviceBuffer<uint32_t> costsThenLeafPrimitives_;
+    DeviceBuffer<BvhNode> builtNodes_;  // buildScratch
+    DeviceBuffer<uint32_t> builtPrimIndices_;
     DeviceBuffer<uint8_t> scanScratch_;
 };
 

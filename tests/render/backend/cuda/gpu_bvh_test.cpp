@@ -793,11 +793,12 @@ TEST(GpuBvh, BuildAndRefitSpeedOfOneMillionTriangles) {
     {
         // The collapse after it, as the backend runs them (each run collapses a fresh build).
         cuda::BvhLeafCollapse collapse;
+        const cuda::BvhLeafCollapse::BuildScratch scratch = collapse.buildScratch(nodeCount, n);
         uint32_t kept = 0;
         const float bothMs = medianMilliseconds(s, 10, [&] {
-            hploc.build(boxes.data(), n, nodes.data(), primIndices.data(), s.stream);
-            kept = collapse.collapse(nodes.data(), nodeCount, primIndices.data(), n, s.stream,
-                                     hploc.subtreeChoices());
+            hploc.build(boxes.data(), n, scratch.nodes, scratch.primIndices, s.stream);
+            kept = collapse.collapseInto(scratch.nodes, nodeCount, scratch.primIndices, n, nodes.data(),
+                                         primIndices.data(), s.stream, hploc.subtreeChoices());
         });
         std::printf("[ speed    ] H-PLOC build and leaf collapse %.3f ms, SAH %.2f, %u of %u nodes kept\n",
                     bothMs, cuda::sahCostOnDevice(nodes.data(), kept, s.stream), kept, nodeCount);

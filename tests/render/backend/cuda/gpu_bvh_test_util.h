@@ -129,24 +129,32 @@ inline Bvh collapseOnDevice(cuda::BvhLeafCollapse& collapse, const Bvh& tree, co
 }
 
 // A tree of `boxes` built on the device with `builder`, downloaded as built and again after
-// BvhLeafCollapse on the device, which takes the builder's choices where it gives them (the
-// PLOC builders: subtreeChoices()).
+// BvhLeafCollapse on the device, as the backend runs them: built into the collapse's scratch and
+// collapsed into buffers of their own, poisoned first so that an entry the collapse leaves
+// unwritten shows; it takes the builder's choices where it gives them (the PLOC builders:
+// subtreeChoices()).
 template <class Builder>
 std::pair<Bvh, Bvh> buildAndCollapseOnDevice(Builder& builder, cuda::BvhLeafCollapse& collapse,
                                              const std::vector<Aabb>& boxes, const TestStream& s) {
-    const uint32_t n = uint32_t(boxes.size());
+    const uint32_t n = uint32_t(boxes.size()), nodeCount = cuda::lbvhNodeCount(n);
     cuda::DeviceBuffer<Aabb> deviceBoxes;
     deviceBoxes.upload(boxes, s.stream);
-    cuda::DeviceBuffer<BvhNode> nodes(cuda::lbvhNodeCount(n));
-    cuda::DeviceBuffer<uint32_t> primIndices(std::max(n, 1u));
-    builder.build(deviceBoxes.data(), n, nodes.data(), primIndices.data(), s.stream);
+    const cuda::BvhLeafCollapse::BuildScratch built = collapse.buildScratch(nodeCount, n);
+    builder.build(deviceBoxes.data(), n, built.nodes, built.primIndices, s.stream);
     s.sync();
     std::pair<Bvh, Bvh> trees;
-    nodes.download(trees.first.nodes);
-    primIndices.download(trees.first.primIndices);
+    trees.first.nodes.resize(nodeCount);
     trees.first.primIndices.resize(n);
-    const uint32_t kept = collapse.collapse(nodes.data(), cuda::lbvhNodeCount(n), primIndices.data(), n,
-                                            s.stream, builder.subtreeChoices());
+    PT_CUDA_CHECK(cudaMemcpy(trees.first.nodes.data(), built.nodes, nodeCount * sizeof(BvhNode),
+                             cudaMemcpyDeviceToHost));
+    PT_CUDA_CHECK(cudaMemcpy(trees.first.primIndices.data(), built.primIndices, n * sizeof(uint32_t),
+                             cudaMemcpyDeviceToHost));
+    cuda::DeviceBuffer<BvhNode> nodes(nodeCount);
+    cuda::DeviceBuffer<uint32_t> primIndices(std::max(n, 1u));
+    PT_CUDA_CHECK(cudaMemsetAsync(nodes.data(), 0xFF, nodes.bytes(), s.stream));
+    PT_CUDA_CHECK(cudaMemsetAsync(primIndices.data(), 0xFF, primIndices.bytes(), s.stream));
+    const uint32_t kept = collapse.collapseInto(built.nodes, nodeCount, built.primIndices, n, nodes.data(),
+                                                primIndices.data(), s.stream, builder.subtreeChoices());
     s.sync();
     nodes.download(trees.second.nodes);
     primIndices.download(trees.second.primIndices);
